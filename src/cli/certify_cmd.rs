@@ -1,0 +1,171 @@
+//! `chatter certify`.
+
+use super::{EXIT_NEGATIVE, EXIT_OK, EXIT_USAGE, usage_error};
+use crate::certificate::{Claim, write};
+use crate::certify::{ClaimChoice, Report, Request, certify};
+use crate::exact::{Q, parse_user_number};
+use crate::finder::FinderOutcome;
+use clap::{Args, ValueEnum};
+use serde_json::json;
+use std::path::PathBuf;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ClaimArg {
+    /// The strongest claim that can be certified (tries complete chatter first).
+    Strongest,
+    /// Conditions 1-2: K in v <= 0 and S_j(K ∩ C_j) ⊆ K.
+    EffectivelyInvariant,
+    /// Also every all-down drop lands in K after its first impact: CC or PCC.
+    CcOrPccFromAllDown,
+    /// Also PCC excluded: every all-down drop ends in complete chatter.
+    CompleteChatterFromAllDown,
+}
+
+/// Raw arguments of `chatter certify`.
+#[derive(Args, Debug)]
+#[command(after_help = "Numbers are read exactly: 1/6, 0.01 (= 1/100), 1e-2.\n\
+Defaults certify the flat homogeneous square plate: n = 4, kappa = 1/6, gamma = 1/100.\n\n\
+Example:\n  chatter certify --n 3 --kappa 3/20 --gamma 0.05 -o triangle.ron")]
+pub struct CertifyArgs {
+    /// Number of contacts (regular n-gon; exact models exist for 3, 4, 6).
+    #[arg(long, default_value = "4")]
+    pub n: String,
+    /// kappa = rho^2 / R^2 (radius of gyration over circumradius, squared), > 0.
+    #[arg(long, default_value = "1/6")]
+    pub kappa: String,
+    /// Coefficient of restitution, in [0, 1].
+    #[arg(long, default_value = "1/100")]
+    pub gamma: String,
+    /// The claim to certify.
+    #[arg(long, value_enum, default_value = "strongest")]
+    pub claim: ClaimArg,
+    /// Write the certificate here (only if the kernel accepts it).
+    #[arg(short = 'o', long)]
+    pub output: Option<PathBuf>,
+    /// Print one JSON object instead of the one-line summary.
+    #[arg(long)]
+    pub json: bool,
+    /// Iteration budget of the float finder.
+    #[arg(long, default_value_t = 3000)]
+    pub max_iterations: usize,
+    /// Vertex budget of the float polygon (outer approximation beyond it).
+    #[arg(long, default_value_t = 40)]
+    pub max_vertices: usize,
+}
+
+/// Validated arguments.
+struct Validated {
+    req: Request,
+    output: Option<PathBuf>,
+    json: bool,
+}
+
+fn validate(a: CertifyArgs) -> Result<Validated, String> {
+    let n: u64 = a.n.trim().parse().map_err(|_| format!("--n: {:?} is not a positive integer", a.n))?;
+    let kappa: Q = parse_user_number(&a.kappa).map_err(|e| format!("--kappa: {e}"))?;
+    let gamma: Q = parse_user_number(&a.gamma).map_err(|e| format!("--gamma: {e}"))?;
+    if let Err(e) = crate::model::body(n, &kappa, &gamma) {
+        use crate::kernel::impact::BodyError;
+        let flag = match e {
+            BodyError::UnsupportedN(_) => "--n",
+            BodyError::KappaNotPositive => "--kappa",
+            BodyError::GammaOutOfRange => "--gamma",
+        };
+        return Err(format!("{flag}: {e}"));
+    }
+    if a.max_vertices < 3 {
+        return Err("--max-vertices must be at least 3".into());
+    }
+    let mut req = Request::new(n, kappa, gamma);
+    req.claim = match a.claim {
+        ClaimArg::Strongest => ClaimChoice::Strongest,
+        ClaimArg::EffectivelyInvariant => ClaimChoice::Exactly(Claim::EffectivelyInvariant),
+        ClaimArg::CcOrPccFromAllDown => ClaimChoice::Exactly(Claim::CcOrPccFromAllDown),
+        ClaimArg::CompleteChatterFromAllDown => ClaimChoice::Exactly(Claim::CompleteChatterFromAllDown),
+    };
+    req.finder.max_iterations = a.max_iterations;
+    req.finder.max_vertices = a.max_vertices;
+    Ok(Validated { req, output: a.output, json: a.json })
+}
+
+fn ms(d: std::time::Duration) -> f64 {
+    d.as_secs_f64() * 1e3
+}
+
+fn finder_json(f: &Option<FinderOutcome>) -> serde_json::Value {
+    match f {
+        None => serde_json::Value::Null,
+        Some(FinderOutcome::Found { polygon, iterations }) => {
+            json!({"outcome": "found", "iterations": iterations, "vertices": polygon.len()})
+        }
+        Some(FinderOutcome::NoCone { iteration, step }) => {
+            json!({"outcome": "no-cone", "iteration": iteration, "step": step})
+        }
+        Some(FinderOutcome::Inconclusive { iterations, reason }) => {
+            json!({"outcome": "inconclusive", "iterations": iterations, "reason": reason})
+        }
+    }
+}
+
+fn summary(v: &Validated, r: &Report) -> String {
+    let req = &v.req;
+    let head = format!("n={} kappa={} gamma={}", req.n, req.kappa, req.gamma);
+    let t = &r.timings;
+    let times = format!(
+        "finder {:.2} ms, exactifier {:.2} ms, kernel {:.2} ms (malachite + num-rational)",
+        ms(t.finder),
+        ms(t.exactify),
+        ms(t.kernel)
+    );
+    let notes: String = r.notes.iter().map(|n| format!("\nnote: {n}")).collect();
+    match &r.result {
+        Ok(c) => {
+            let out = v
+                .output
+                .as_ref()
+                .map_or(String::from(" (no -o: not written)"), |p| format!(" -> {}", p.display()));
+            format!(
+                "CERTIFIED {head} claim={}: {} generators, largest denominator {} bits; {times}{out}{notes}",
+                c.claim.name(),
+                c.cone.len(),
+                r.max_denominator_bits
+            )
+        }
+        Err(e) => format!("NOT CERTIFIED {head}: {e}; {times}{notes}"),
+    }
+}
+
+pub fn run(a: CertifyArgs) -> u8 {
+    let v = match validate(a) {
+        Ok(v) => v,
+        Err(e) => return usage_error(e),
+    };
+    let report = certify(&v.req);
+    if let (Ok(cert), Some(path)) = (&report.result, &v.output) {
+        if let Err(e) = std::fs::write(path, write(cert)) {
+            eprintln!("error: cannot write {}: {e}", path.display());
+            return EXIT_USAGE;
+        }
+    }
+    if v.json {
+        let t = &report.timings;
+        let obj = json!({
+            "status": if report.result.is_ok() { "certified" } else { "not-certified" },
+            "n": v.req.n,
+            "kappa": v.req.kappa.to_string(),
+            "gamma": v.req.gamma.to_string(),
+            "claim": report.result.as_ref().ok().map(|c| c.claim.name()),
+            "generators": report.result.as_ref().ok().map(|c| c.cone.len()),
+            "max_denominator_bits": report.result.as_ref().ok().map(|_| report.max_denominator_bits),
+            "output": v.output.as_ref().filter(|_| report.result.is_ok()).map(|p| p.display().to_string()),
+            "reason": report.result.as_ref().err().map(ToString::to_string),
+            "finder": finder_json(&report.finder),
+            "timings_ms": {"finder": ms(t.finder), "exactify": ms(t.exactify), "kernel": ms(t.kernel)},
+            "notes": report.notes,
+        });
+        println!("{obj}");
+    } else {
+        println!("{}", summary(&v, &report));
+    }
+    if report.result.is_ok() { EXIT_OK } else { EXIT_NEGATIVE }
+}

@@ -1,0 +1,58 @@
+//! The command line: raw arguments (clap) are validated into library requests (ripgrep style:
+//! two layers), then a thin driver calls the library and prints.
+//!
+//! Exit status: 0 success; 1 a negative answer (not certified, a certificate rejected);
+//! 2 bad usage or unreadable input; 3 internal error (the two backends disagree).
+
+mod certify_cmd;
+mod verify_cmd;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+pub const EXIT_OK: u8 = 0;
+pub const EXIT_NEGATIVE: u8 = 1;
+pub const EXIT_USAGE: u8 = 2;
+pub const EXIT_INTERNAL: u8 = 3;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "chatter",
+    version,
+    about = "Exact certificates that a rigid body dropped flat onto a floor comes to rest by complete chatter",
+    long_about = "Exact certificates that a rigid body dropped flat onto a floor comes to rest by complete \
+chatter (infinitely many impacts in finite time).\n\n\
+A floating-point finder proposes a polyhedral cone of velocities, an exactifier turns it into \
+rationals, and a small trusted kernel re-checks it with exact arithmetic on two independent bignum \
+libraries before a RON certificate is written.\n\n\
+Exit status: 0 success, 1 negative answer (not certified / rejected), 2 usage or input error, \
+3 internal error."
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Find, exactify and kernel-check an effectively invariant cone; write a certificate.
+    Certify(certify_cmd::CertifyArgs),
+    /// Check certificate files (or directories of *.ron files) with the trusted kernel.
+    Verify(verify_cmd::VerifyArgs),
+}
+
+/// Parses the process arguments and runs the command.
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let code = match cli.command {
+        Command::Certify(a) => certify_cmd::run(a),
+        Command::Verify(a) => verify_cmd::run(a),
+    };
+    ExitCode::from(code)
+}
+
+/// Prints a usage error and returns the usage exit status.
+pub(crate) fn usage_error(msg: impl std::fmt::Display) -> u8 {
+    eprintln!("error: {msg}");
+    EXIT_USAGE
+}

@@ -1,0 +1,147 @@
+//! The canonical text form of an exact rational: `"p/q"` in lowest terms with `q > 1`, or `"p"`
+//! when the denominator is 1. Everything else is rejected, with the canonical spelling when
+//! there is one.
+
+use super::{Field, Int, Ring};
+use std::fmt;
+
+/// Limits applied while parsing numbers from untrusted text.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ParseLimits {
+    /// Largest number of decimal digits in one number (numerator and denominator together).
+    pub max_digits: usize,
+}
+
+impl Default for ParseLimits {
+    fn default() -> Self {
+        ParseLimits { max_digits: 10_000 }
+    }
+}
+
+/// Why a string is not a canonical rational.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum NumberError {
+    Empty,
+    Whitespace,
+    PlusSign,
+    InvalidCharacter(char),
+    MissingDigits,
+    LeadingZero,
+    NegativeZero,
+    ZeroDenominator,
+    UnitDenominator { canonical: String },
+    NotReduced { canonical: String },
+    TooLong { digits: usize, max: usize },
+}
+
+impl fmt::Display for NumberError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            NumberError::Empty => write!(f, "empty number"),
+            NumberError::Whitespace => write!(f, "whitespace is not allowed in a number"),
+            NumberError::PlusSign => write!(f, "a leading '+' is not canonical"),
+            NumberError::InvalidCharacter(c) => write!(f, "invalid character {c:?}"),
+            NumberError::MissingDigits => write!(f, "missing digits"),
+            NumberError::LeadingZero => write!(f, "leading zeros are not canonical"),
+            NumberError::NegativeZero => write!(f, "\"-0\" is not canonical (write \"0\")"),
+            NumberError::ZeroDenominator => write!(f, "zero denominator"),
+            NumberError::UnitDenominator { canonical } => {
+                write!(f, "denominator 1 is not canonical (write {canonical:?})")
+            }
+            NumberError::NotReduced { canonical } => {
+                write!(f, "not in lowest terms (canonical form {canonical:?})")
+            }
+            NumberError::TooLong { digits, max } => {
+                write!(f, "number has {digits} digits, more than the limit of {max}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for NumberError {}
+
+/// Checks the lexical shape of a run of digits: non-empty, ASCII digits, no leading zero
+/// (a lone "0" is allowed only where `zero_ok`).
+fn check_digits(s: &str, zero_ok: bool) -> Result<(), NumberError> {
+    if s.is_empty() {
+        return Err(NumberError::MissingDigits);
+    }
+    if let Some(c) = s.chars().find(|c| !c.is_ascii_digit()) {
+        return Err(if c.is_whitespace() {
+            NumberError::Whitespace
+        } else if c == '+' {
+            NumberError::PlusSign
+        } else {
+            NumberError::InvalidCharacter(c)
+        });
+    }
+    if s == "0" {
+        return if zero_ok { Ok(()) } else { Err(NumberError::ZeroDenominator) };
+    }
+    if s.starts_with('0') {
+        return Err(NumberError::LeadingZero);
+    }
+    Ok(())
+}
+
+/// Parses a canonical rational (`-?p(/q)?`, lowest terms, `q > 1`) into its numerator and
+/// (positive) denominator, without building a rational.
+pub fn parse_canonical_parts<Z: Int>(s: &str, limits: ParseLimits) -> Result<(Z, Z), NumberError> {
+    if s.is_empty() {
+        return Err(NumberError::Empty);
+    }
+    if s.chars().any(char::is_whitespace) {
+        return Err(NumberError::Whitespace);
+    }
+    let (negative, body) = match s.strip_prefix('-') {
+        Some(rest) => (true, rest),
+        None => (false, s.strip_prefix('+').map_or(Ok(s), |_| Err(NumberError::PlusSign))?),
+    };
+    let (p, q) = match body.split_once('/') {
+        Some((p, q)) => (p, Some(q)),
+        None => (body, None),
+    };
+    let digits = p.len() + q.map_or(0, str::len);
+    if digits > limits.max_digits {
+        return Err(NumberError::TooLong { digits, max: limits.max_digits });
+    }
+    check_digits(p, true)?;
+    if let Some(q) = q {
+        check_digits(q, false)?;
+    }
+    if negative && p == "0" {
+        return Err(NumberError::NegativeZero);
+    }
+    let sign = if negative { "-" } else { "" };
+    let mut num = Z::parse_digits(p).ok_or(NumberError::MissingDigits)?;
+    if negative {
+        num = num.negated();
+    }
+    let Some(q) = q else { return Ok((num, Z::one())) };
+    if p == "0" {
+        return Err(NumberError::NotReduced { canonical: "0".to_string() });
+    }
+    if q == "1" {
+        return Err(NumberError::UnitDenominator { canonical: format!("{sign}{p}") });
+    }
+    let den = Z::parse_digits(q).ok_or(NumberError::MissingDigits)?;
+    let g = num.gcd(&den);
+    if g != Z::one() {
+        let (rn, rd) = (num.div_exact(&g), den.div_exact(&g));
+        let canonical = if rd == Z::one() { rn.to_string() } else { format!("{rn}/{rd}") };
+        return Err(NumberError::NotReduced { canonical });
+    }
+    Ok((num, den))
+}
+
+/// Parses a canonical rational into the field `F` (see [`parse_canonical_parts`]).
+pub fn parse_canonical<F: Field>(s: &str, limits: ParseLimits) -> Result<F, NumberError> {
+    let (n, d) = parse_canonical_parts::<F::Int>(s, limits)?;
+    Ok(F::from_fraction(&n, &d))
+}
+
+/// The canonical text of a rational: `"p/q"` reduced with `q > 1`, or `"p"`.
+pub fn to_canonical<F: Field>(x: &F) -> String {
+    let d = x.denom();
+    if d == F::Int::one() { x.numer().to_string() } else { format!("{}/{}", x.numer(), d) }
+}

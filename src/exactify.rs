@@ -1,0 +1,246 @@
+//! The exactifier (untrusted): turns a floating-point polygon into a rational cone that the
+//! exact check accepts.
+//!
+//! K is kept as an outer approximation { x : n_i . x <= h_i } with a fixed set of small-integer
+//! normals n_i (the float polygon's rounded edge normals plus eight compass directions) and
+//! dyadic offsets h_i. Each round computes the exact images of the vertices of every K ∩ C_j
+//! (and the exact seed points), and raises every offset that an image exceeds to the image's
+//! support value plus a small slack, rounded up. It stops when no image leaves K. Offsets are
+//! raised only as far as exact images demand, so points that the maps send onto each other with
+//! no contraction (two contacts at rest) stay exactly on K with no slack.
+
+use crate::exact::{Field, Int, Q};
+use crate::finder::geometry::P2;
+use crate::kernel::impact::Body;
+use crate::kernel::linalg::{Vec3, mat_vec};
+use crate::kernel::polygon::clip;
+use malachite::Integer;
+use malachite::base::num::arithmetic::traits::Gcd;
+use std::fmt;
+
+/// Tuning of the exactifier.
+#[derive(Clone, Copy, Debug)]
+pub struct ExactifyConfig {
+    /// Normals are rounded to integers of magnitude up to 2^normal_bits.
+    pub normal_bits: u32,
+    /// Offsets are rounded up to multiples of scale * 2^-grid_bits.
+    pub grid_bits: u32,
+    /// Slack added to a raised offset: scale * 2^-slack_bits.
+    pub slack_bits: u32,
+    pub max_rounds: usize,
+}
+
+impl Default for ExactifyConfig {
+    fn default() -> Self {
+        ExactifyConfig { normal_bits: 12, grid_bits: 40, slack_bits: 24, max_rounds: 60 }
+    }
+}
+
+/// Why exactification failed.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExactifyError {
+    /// The float polygon is degenerate or not finite.
+    BadInput(String),
+    /// An exact image of a vertex of K ∩ C_j has v >= 0.
+    ImageAbove { round: usize, step: usize },
+    /// Offsets kept growing.
+    NoConvergence { rounds: usize, worst_excess: f64 },
+}
+
+impl fmt::Display for ExactifyError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ExactifyError::BadInput(s) => write!(f, "bad float polygon: {s}"),
+            ExactifyError::ImageAbove { round, step } => {
+                write!(
+                    f,
+                    "round {round}: an exact image under S_{step} has v >= 0 (the rational cone grew too large)"
+                )
+            }
+            ExactifyError::NoConvergence { rounds, worst_excess } => write!(
+                f,
+                "offsets still growing after {rounds} rounds (largest excess {worst_excess:.3e}): the maps barely contract here"
+            ),
+        }
+    }
+}
+
+/// An exact polygon on the plane v = -1 as primitive integer homogeneous vectors.
+pub type HPoly = Vec<Vec3<Integer>>;
+
+/// Divides a homogeneous vector by the gcd of its entries.
+fn primitive(p: Vec3<Integer>) -> Vec3<Integer> {
+    let g = Integer::from(p[0].unsigned_abs_ref().gcd(p[1].unsigned_abs_ref()).gcd(p[2].unsigned_abs_ref()));
+    if g <= 1u32 { p } else { p.map(|c| c.div_exact(&g)) }
+}
+
+/// n . x for the plane point of q (q_v < 0).
+fn support(n: &(i64, i64), q: &Vec3<Integer>) -> Q {
+    let num = Integer::from(n.0) * &q[0] + Integer::from(n.1) * &q[1];
+    Q::from_fraction(&num, &(-&q[2]))
+}
+
+/// The exact polygon { x : n_i . x <= h_i } (non-empty, bounded by the compass normals).
+fn polygon_of(normals: &[(i64, i64)], h: &[Q]) -> HPoly {
+    let big = h.iter().map(Q::abs).max().expect("normals").ceil_dyadic(0) + Q::int(1);
+    let b = big.numer();
+    let one = -Integer::from(1u32);
+    let mut poly: HPoly = vec![
+        [-b.clone(), -b.clone(), one.clone()],
+        [b.clone(), -b.clone(), one.clone()],
+        [b.clone(), b.clone(), one.clone()],
+        [-b.clone(), b, one],
+    ];
+    for (n, hi) in normals.iter().zip(h) {
+        // n . (p0, p1)/(-p2) <= h  <=>  -n0 p0 - n1 p1 - h p2 >= 0 (scaled by den(h) > 0).
+        let l = [-Integer::from(n.0) * hi.denom(), -Integer::from(n.1) * hi.denom(), -hi.numer()];
+        poly = clip(&poly, &l).into_iter().map(primitive).collect();
+    }
+    poly
+}
+
+/// The exact images of the vertices of every K ∩ C_j, or the step j of an image with v >= 0.
+pub fn exact_images(body: &Body<Q>, poly: &HPoly) -> Result<Vec<Vec3<Integer>>, usize> {
+    let mut out = Vec::new();
+    for j in 1..body.n as i64 {
+        let s = int_mat(&body.step(j));
+        let mut piece = poly.clone();
+        for l in body.next_contact_cone(j) {
+            piece = clip(&piece, &int_vec(&l)).into_iter().map(primitive).collect();
+        }
+        for p in &piece {
+            let q = primitive(mat_vec(&s, p));
+            if q.iter().all(|c| *c == 0u32) {
+                continue;
+            }
+            if q[2] >= 0u32 {
+                return Err(j as usize);
+            }
+            out.push(q);
+        }
+    }
+    Ok(out)
+}
+
+fn int_vec(v: &Vec3<Q>) -> Vec3<Integer> {
+    let z = crate::exact::scale_to_ints(v);
+    std::array::from_fn(|i| z[i].clone())
+}
+
+fn int_mat(m: &[[Q; 3]; 3]) -> [[Integer; 3]; 3] {
+    let flat: Vec<Q> = m.iter().flatten().cloned().collect();
+    let z = crate::exact::scale_to_ints(&flat);
+    std::array::from_fn(|r| std::array::from_fn(|c| z[3 * r + c].clone()))
+}
+
+/// Rounded outward normals of the float polygon's edges plus the compass directions, as
+/// primitive integer vectors, deduplicated.
+fn normals_of(poly: &[P2], bits: u32) -> Vec<(i64, i64)> {
+    let mut out: Vec<(i64, i64)> = vec![(1, 0), (1, 1), (0, 1), (-1, 1), (-1, 0), (-1, -1), (0, -1), (1, -1)];
+    let m = poly.len();
+    let scale = f64::from(2u32.pow(bits));
+    for i in 0..m {
+        let d = poly[(i + 1) % m] - poly[i];
+        let (nx, ny) = (d.y, -d.x);
+        let big = nx.abs().max(ny.abs());
+        if big.is_finite() && big > 0.0 {
+            let (a, b) = ((nx / big * scale).round() as i64, (ny / big * scale).round() as i64);
+            let g = gcd_i64(a, b);
+            if g != 0 {
+                out.push((a / g, b / g));
+            }
+        }
+    }
+    out.sort_by(|p, q| f64::atan2(p.1 as f64, p.0 as f64).total_cmp(&f64::atan2(q.1 as f64, q.0 as f64)));
+    out.dedup();
+    out
+}
+
+fn norm(n: &(i64, i64)) -> f64 {
+    (n.0 as f64).hypot(n.1 as f64)
+}
+
+fn gcd_i64(a: i64, b: i64) -> i64 {
+    let (mut a, mut b) = (a.abs(), b.abs());
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
+}
+
+/// The result of exactification: the generators on the plane v = -1, and the rounds used.
+#[derive(Clone, Debug)]
+pub struct Exactified {
+    pub generators: Vec<[Q; 3]>,
+    pub rounds: usize,
+}
+
+/// Exactifies a float polygon. `seeds` are exact points that K must contain (e.g. I_0 of the
+/// generators of D); every exact image is added as the rounds go.
+pub fn exactify(
+    body: &Body<Q>,
+    float_poly: &[P2],
+    seeds: &[Vec3<Q>],
+    cfg: &ExactifyConfig,
+) -> Result<Exactified, ExactifyError> {
+    if float_poly.len() < 3 || float_poly.iter().any(|p| !p.x.is_finite() || !p.y.is_finite()) {
+        return Err(ExactifyError::BadInput(format!("{} vertices", float_poly.len())));
+    }
+    let normals = normals_of(float_poly, cfg.normal_bits);
+    let size = float_poly.iter().map(|p| p.x.abs().max(p.y.abs())).fold(1.0, f64::max);
+    let e = size.log2().ceil() as i64;
+    let unit = Q(malachite::rational::Rational::from(1u32) >> (i64::from(cfg.slack_bits) - e));
+    // Slack and grid in units of |n|, so that every edge moves by about the same distance.
+    let nbits: Vec<u32> =
+        normals.iter().map(|n| 63 - (n.0.unsigned_abs().max(n.1.unsigned_abs())).leading_zeros()).collect();
+    let slacks: Vec<Q> = nbits.iter().map(|b| Q(unit.0.clone() << i64::from(*b))).collect();
+    let grids: Vec<u64> =
+        nbits.iter().map(|b| (i64::from(cfg.grid_bits) - e - i64::from(*b)).max(0) as u64).collect();
+    let seeds: Vec<Vec3<Integer>> = seeds.iter().map(|s| primitive(int_vec(s))).collect();
+
+    // Initial offsets: support of the float polygon, rounded up, plus slack.
+    let mut h: Vec<Q> = normals
+        .iter()
+        .map(|n| {
+            let m = float_poly
+                .iter()
+                .map(|p| n.0 as f64 * p.x + n.1 as f64 * p.y)
+                .fold(f64::NEG_INFINITY, f64::max);
+            Q::from_f64_exact(m).expect("finite")
+        })
+        .zip(slacks.iter().zip(&grids))
+        .map(|(m, (sl, gb))| (m + sl).ceil_dyadic(*gb))
+        .collect();
+
+    let mut worst_excess = 0.0;
+    for round in 0..cfg.max_rounds {
+        let poly = polygon_of(&normals, &h);
+        let mut pts = exact_images(body, &poly).map_err(|step| ExactifyError::ImageAbove { round, step })?;
+        pts.extend(seeds.iter().cloned());
+        let mut changed = false;
+        worst_excess = 0.0;
+        for (((n, hi), sl), gb) in normals.iter().zip(h.iter_mut()).zip(&slacks).zip(&grids) {
+            let Some(m) = pts.iter().map(|q| support(n, q)).max() else { continue };
+            if m > *hi {
+                // Overshoot by the excess itself: under a contraction the offsets then reach
+                // their fixed point in a few rounds instead of creeping towards it.
+                let excess = &m - &*hi;
+                worst_excess = f64::max(worst_excess, excess.to_f64() / norm(n));
+                let bump = if excess > *sl { excess } else { sl.clone() };
+                *hi = (m + bump).ceil_dyadic(*gb);
+                changed = true;
+            }
+        }
+        if !changed {
+            let generators = poly
+                .iter()
+                .map(|p| {
+                    let w = Q::from_int(&-&p[2]);
+                    [Q::from_int(&p[0]) / &w, Q::from_int(&p[1]) / &w, Q::int(-1)]
+                })
+                .collect();
+            return Ok(Exactified { generators, rounds: round + 1 });
+        }
+    }
+    Err(ExactifyError::NoConvergence { rounds: cfg.max_rounds, worst_excess })
+}

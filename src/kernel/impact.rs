@@ -1,0 +1,130 @@
+//! The exact impact model of a regular n-gon body in contact-velocity coordinates
+//! p = (u0, u1, v) (MODEL.md §2-3): contact covectors, impact maps, relabelling, step maps.
+
+use super::linalg::{Mat3, Vec3, identity, mat_mul};
+use crate::exact::Field;
+
+/// Why a body cannot be modelled exactly.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum BodyError {
+    UnsupportedN(u64),
+    KappaNotPositive,
+    GammaOutOfRange,
+}
+
+impl std::fmt::Display for BodyError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            BodyError::UnsupportedN(n) => write!(
+                f,
+                "n = {n} is not supported: exact models need a rational cos(2*pi/n), i.e. n in {{3, 4, 6}}"
+            ),
+            BodyError::KappaNotPositive => write!(f, "kappa must be > 0"),
+            BodyError::GammaOutOfRange => write!(f, "gamma must lie in [0, 1]"),
+        }
+    }
+}
+
+/// cos(2*pi/n) for the regular polygons whose cosines are rational (Niven: n = 3, 4, 6).
+pub fn cos_step<F: Field>(n: u64) -> Option<F> {
+    match n {
+        3 => Some(F::from_ratio(-1, 2)),
+        4 => Some(F::zero()),
+        6 => Some(F::from_ratio(1, 2)),
+        _ => None,
+    }
+}
+
+/// A flat regular n-gon body: contacts at angles 2*pi*k/n, kappa = rho^2/R^2, restitution gamma.
+#[derive(Clone, Debug)]
+pub struct Body<F> {
+    pub n: usize,
+    pub kappa: F,
+    pub gamma: F,
+    /// c_m = cos(2*pi*m/n), m = 0..n-1.
+    cos: Vec<F>,
+    /// Contact covectors f_k with u_k = f_k . p, k = 0..n-1.
+    contacts: Vec<Vec3<F>>,
+}
+
+impl<F: Field> Body<F> {
+    pub fn new(n: u64, kappa: F, gamma: F) -> Result<Self, BodyError> {
+        let c1: F = cos_step(n).ok_or(BodyError::UnsupportedN(n))?;
+        if !kappa.is_positive() {
+            return Err(BodyError::KappaNotPositive);
+        }
+        if gamma.is_negative() || gamma > F::one() {
+            return Err(BodyError::GammaOutOfRange);
+        }
+        let n = n as usize;
+        let two_c1 = c1.plus(&c1);
+        // Chebyshev: c_m = T_m(c1); U_{-2} = -1, U_{-1} = 0, U_m = 2 c1 U_{m-1} - U_{m-2}.
+        let mut cos = vec![F::one(), c1.clone()];
+        let mut u = vec![F::one().negated(), F::zero()];
+        while cos.len() < n + 1 || u.len() < n + 2 {
+            let m = cos.len();
+            cos.push(two_c1.times(&cos[m - 1]).minus(&cos[m - 2]));
+            let k = u.len();
+            u.push(two_c1.times(&u[k - 1]).minus(&u[k - 2]));
+        }
+        cos.truncate(n);
+        // a_k = -U_{k-2}(c1), b_k = U_{k-1}(c1); u[i] holds U_{i-2}.
+        let contacts = (0..n)
+            .map(|k| {
+                let a = u[k].negated();
+                let b = u[k + 1].clone();
+                let rest = F::one().minus(&a).minus(&b);
+                [a, b, rest]
+            })
+            .collect();
+        Ok(Body { n, kappa, gamma, cos, contacts })
+    }
+
+    /// c_m = cos(2*pi*m/n) for any integer m.
+    pub fn cos(&self, m: i64) -> &F {
+        &self.cos[m.rem_euclid(self.n as i64) as usize]
+    }
+
+    /// Covector f_k of contact k: u_k = a_k u0 + b_k u1 + (1 - a_k - b_k) v (MODEL §2).
+    pub fn contact(&self, k: i64) -> &Vec3<F> {
+        &self.contacts[k.rem_euclid(self.n as i64) as usize]
+    }
+
+    /// beta = (1 + gamma) / (1 + kappa), the impulse factor of every impact.
+    pub fn beta(&self) -> F {
+        let one = F::one();
+        one.plus(&self.gamma).over(&one.plus(&self.kappa)).expect("1 + kappa > 0")
+    }
+
+    /// Direction d_k = (kappa + c_k, kappa + c_{k-1}, kappa) of the velocity change of an impact at k.
+    pub fn impact_direction(&self, k: i64) -> Vec3<F> {
+        let kp = &self.kappa;
+        [kp.plus(self.cos(k)), kp.plus(self.cos(k - 1)), kp.clone()]
+    }
+
+    /// Impact map I_k: p+ = p - beta u_k d_k (MODEL §3, the paper's equation for U_i).
+    pub fn impact(&self, k: i64) -> Mat3<F> {
+        let beta = self.beta();
+        let d = self.impact_direction(k);
+        let f = self.contact(k);
+        let mut m = identity::<F>();
+        for (r, row) in m.iter_mut().enumerate() {
+            for (c, e) in row.iter_mut().enumerate() {
+                *e = e.minus(&beta.times(&d[r]).times(&f[c]));
+            }
+        }
+        m
+    }
+
+    /// Relabelling R_j: (u0, u1, v) -> (u_j, u_{j+1}, v); contact j is renamed 0.
+    pub fn relabel(&self, j: i64) -> Mat3<F> {
+        let (z, o) = (F::zero(), F::one());
+        [self.contact(j).clone(), self.contact(j + 1).clone(), [z.clone(), z, o]]
+    }
+
+    /// Step map S_j = I_0 R_j, the paper's U_0 P_{-2 j pi/n} (equation U0): after an impact at
+    /// contact 0 the next impact is at contact j.
+    pub fn step(&self, j: i64) -> Mat3<F> {
+        mat_mul(&self.impact(0), &self.relabel(j))
+    }
+}

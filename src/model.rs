@@ -1,0 +1,75 @@
+//! Untrusted helpers around the exact model of [`crate::kernel::impact`]: the body built from
+//! user numbers, kinetic energy, the paper's coordinates, and `f64` copies of the maps for the
+//! numerical search.
+
+use crate::exact::{Field, Q};
+use crate::kernel::impact::{Body, BodyError};
+use crate::kernel::linalg::{Mat3, Vec3};
+use nalgebra::{Matrix3, Vector3};
+
+/// Builds the exact body of a regular n-gon.
+pub fn body(n: u64, kappa: &Q, gamma: &Q) -> Result<Body<Q>, BodyError> {
+    Body::new(n, kappa.clone(), gamma.clone())
+}
+
+/// sin^2(2 pi / n) = 1 - c_1^2, rational whenever c_1 is.
+fn sin2<F: Field>(b: &Body<F>) -> F {
+    F::one().minus(&b.cos(1).times(b.cos(1)))
+}
+
+/// Kinetic energy T = kappa |omega|^2 / 2 + v^2 / 2 (mass 1, R = 1) of p = (u0, u1, v), exact.
+/// With s = sin(2 pi/n), c = cos(2 pi/n): omega_y = v - u0, omega_x = (u1 - v + c omega_y) / s.
+pub fn kinetic_energy<F: Field>(b: &Body<F>, p: &Vec3<F>) -> F {
+    let wy = p[2].minus(&p[0]);
+    let sx = p[1].minus(&p[2]).plus(&b.cos(1).times(&wy)); // s * omega_x
+    let wx2 = sx.times(&sx).over(&sin2(b)).expect("sin(2 pi/n) != 0 for n >= 3");
+    let half = F::from_ratio(1, 2);
+    half.times(&b.kappa.times(&wx2.plus(&wy.times(&wy))).plus(&p[2].times(&p[2])))
+}
+
+/// For the square (n = 4): the matrix M with p_contact = M p_paper, p_paper = (omega_x, omega_y, v).
+/// Rows are the paper's f_0 = (y_0, -x_0, 1) = (0, -1, 1), f_1 = (1, 0, 1) and (0, 0, 1).
+pub fn square_paper_to_contact<F: Field>() -> Mat3<F> {
+    let (z, o) = (F::zero(), F::one());
+    [[z.clone(), o.negated(), o.clone()], [o.clone(), z.clone(), o.clone()], [z.clone(), z, o]]
+}
+
+/// `f64` copy of an exact matrix.
+pub fn mat_f64(m: &Mat3<Q>) -> Matrix3<f64> {
+    Matrix3::from_fn(|r, c| m[r][c].to_f64())
+}
+
+/// `f64` copy of an exact vector.
+pub fn vec_f64(v: &Vec3<Q>) -> Vector3<f64> {
+    Vector3::new(v[0].to_f64(), v[1].to_f64(), v[2].to_f64())
+}
+
+/// The maps and cones of a body in `f64`, for the untrusted search.
+#[derive(Clone, Debug)]
+pub struct FloatBody {
+    pub n: usize,
+    /// steps[j - 1] = S_j, j = 1..n-1.
+    pub steps: Vec<Matrix3<f64>>,
+    /// cones[j - 1] = the four covectors of C_j.
+    pub cones: Vec<[Vector3<f64>; 4]>,
+    pub impact0: Matrix3<f64>,
+    pub all_down: Vec<Vector3<f64>>,
+}
+
+impl FloatBody {
+    pub fn new(b: &Body<Q>) -> Self {
+        let js = 1..b.n as i64;
+        FloatBody {
+            n: b.n,
+            steps: js.clone().map(|j| mat_f64(&b.step(j))).collect(),
+            cones: js.map(|j| b.next_contact_cone(j).map(|l| vec_f64(&l))).collect(),
+            impact0: mat_f64(&b.impact(0)),
+            all_down: b.all_down_generators().iter().map(vec_f64).collect(),
+        }
+    }
+}
+
+/// Pure downward translation (every contact and the centre of mass at velocity -1).
+pub fn translation_down() -> Vec3<Q> {
+    [Q::int(-1), Q::int(-1), Q::int(-1)]
+}
