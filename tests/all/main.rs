@@ -1,1 +1,14 @@
+//! All integration tests, in one binary; modules mirror the source tree.
 
+mod common;
+
+mod certificate;
+mod certify;
+mod cli;
+mod corpus;
+mod exact;
+mod exactify;
+mod finder;
+mod kernel;
+mod readme;
+mod verify;

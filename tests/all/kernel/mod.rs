@@ -1,0 +1,5 @@
+//! Tests of `chatter::kernel`.
+
+mod cones;
+mod impact;
+mod pcc;
