@@ -1,1 +1,6 @@
 //! Tests of `chatter::exact`.
+
+mod backends;
+mod canonical;
+mod q;
+mod user;

@@ -1,5 +1,8 @@
 //! Tests of `chatter::kernel`.
 
+mod brute;
+mod check;
 mod cones;
 mod impact;
 mod pcc;
+mod polygon;
