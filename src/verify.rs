@@ -79,6 +79,9 @@ pub struct FileVerdict {
     pub redundant: Option<Vec<usize>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max_denominator_bits: Option<u64>,
+    /// Whether K contains the post-impact velocity of a pure downward translation.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contains_translation: Option<bool>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub code: Option<Code>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -95,6 +98,7 @@ impl FileVerdict {
             generators: None,
             redundant: None,
             max_denominator_bits: None,
+            contains_translation: None,
             code: None,
             reason: None,
         }
@@ -106,8 +110,13 @@ impl FileVerdict {
             "OK" => {
                 let red = self.redundant.as_ref().map_or(0, Vec::len);
                 let red = if red > 0 { format!(", {red} redundant") } else { String::new() };
+                let vacuous = if self.contains_translation == Some(false) {
+                    "; warning: K does not contain the post-impact velocity of a pure translation"
+                } else {
+                    ""
+                };
                 format!(
-                    "{}: OK ({}, n = {}, {} generators{red}, denominators <= {} bits)",
+                    "{}: OK ({}, n = {}, {} generators{red}, denominators <= {} bits{vacuous})",
                     self.path,
                     self.claim.unwrap_or("?"),
                     self.n.unwrap_or(0),
@@ -138,6 +147,7 @@ pub fn verify_file(path: &Path, limits: ParseLimits, backends: Backends) -> File
             v.generators = Some(a.generators);
             v.redundant = Some(a.redundant);
             v.max_denominator_bits = Some(a.max_denominator_bits);
+            v.contains_translation = Some(a.contains_translation);
             v
         }
         BackendVerdict::Rejected(r) => {

@@ -139,6 +139,12 @@ macro_rules! q_binop {
                 Q(self.0 $op &o.0)
             }
         }
+        impl $tr<Q> for &Q {
+            type Output = Q;
+            fn $m(self, o: Q) -> Q {
+                Q(&self.0 $op o.0)
+            }
+        }
     };
 }
 q_binop!(Add, add, +);

@@ -34,11 +34,22 @@ pub struct Accepted {
     pub max_denominator_bits: u64,
     /// For `CompleteChatterFromAllDown`: (p, q, discriminant) of the PCC quadratic, canonical text.
     pub pcc: Option<[String; 3]>,
+    /// Whether K contains I_0(-1, -1, -1), the velocity after the first impact of a pure downward
+    /// translation (informational: without some such velocity the claim is vacuous).
+    pub contains_translation: bool,
+}
+
+/// A number's text for messages, abbreviated when long.
+fn quote(s: &str) -> String {
+    match s.char_indices().nth(24) {
+        Some((i, _)) => format!("\"{}...\" ({} characters)", &s[..i], s.chars().count()),
+        None => format!("{s:?}"),
+    }
 }
 
 fn number<F: Field>(field: &str, s: &str, limits: ParseLimits) -> Result<F, Rejection> {
     parse_canonical(s, limits)
-        .map_err(|e| Rejection::new(Code::BadNumber, format!("field `{field}`: {s:?}: {e}")))
+        .map_err(|e| Rejection::new(Code::BadNumber, format!("field `{field}`: {}: {e}", quote(s))))
 }
 
 /// A positive integer multiple of a rational matrix.
@@ -137,7 +148,7 @@ pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accept
         let mut parts = Vec::with_capacity(3);
         for (c, name) in g.0.iter().zip(["u0", "u1", "v"]) {
             let (p, q) = parse_canonical_parts::<F::Int>(c, limits).map_err(|e| {
-                Rejection::new(Code::BadNumber, format!("field `cone[{i}].{name}`: {c:?}: {e}"))
+                Rejection::new(Code::BadNumber, format!("field `cone[{i}].{name}`: {}: {e}", quote(c)))
             })?;
             max_denominator_bits = max_denominator_bits.max(q.bit_length());
             parts.push((p, q));
@@ -152,6 +163,9 @@ pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accept
 
     // K: the exact convex hull of the projected generators; it must have an interior.
     let hull_idx = hull(&gens);
+    if gens.is_empty() {
+        return Err(Rejection::new(Code::DegenerateCone, "field `cone` is empty: K must be a 3-D cone"));
+    }
     if hull_idx.len() < 3 {
         let msg = format!(
             "the {} generators span only {} distinct extreme ray(s) in a plane or line: K must be a 3-D cone",
@@ -215,13 +229,18 @@ pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accept
         pcc = Some(text);
     }
 
+    let down = [F::Int::from_i64(-1), F::Int::from_i64(-1), F::Int::from_i64(-1)];
+    let translation = mat_vec(&int_mat(&body.impact(0)), &down);
+    let contains_translation = translation[2].is_negative() && k.contains(&translation);
+    let generators = gens.len();
     Ok(Accepted {
         claim: cert.claim,
         n: *n,
-        generators: gens.len(),
+        generators,
         redundant,
         pieces,
         max_denominator_bits,
         pcc,
+        contains_translation,
     })
 }

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Regenerates certificates/valid/ with `chatter certify` (output is deterministic).
+# Each line below is a body; every claim that certifies for it is written.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+cargo build --release --quiet
+bin=target/release/chatter
+out=certificates/valid
+written=0
+while read -r n kappa gamma note; do
+  for claim in effectively-invariant cc-or-pcc-from-all-down complete-chatter-from-all-down; do
+    f="$out/n${n}-kappa${kappa//\//_}-gamma${gamma//\//_}-${claim}.ron"
+    if "$bin" certify --n "$n" --kappa "$kappa" --gamma "$gamma" --claim "$claim" -o "$f" >/dev/null; then
+      written=$((written + 1))
+    else
+      rm -f "$f"
+      echo "not certified: n=$n kappa=$kappa gamma=$gamma $claim ($note)"
+    fi
+  done
+done <<'BODIES'
+4 1/6 1/100 flat-square-plate
+4 1/6 1/50 flat-square-plate
+4 1/6 1/1000 flat-square-plate-pcc-possible
+4 1/8 1/40 square-low-inertia
+4 1/10 1/20 square
+4 1/20 1/10 square
+3 1/8 1/100 flat-triangle-plate-pcc-possible
+3 1/8 3/100 flat-triangle-plate
+3 3/20 1/20 tetrahedron
+3 3/20 1/10 tetrahedron
+3 1/10 3/20 triangle
+3 1/40 1/5 triangle
+6 1/20 1/1000 hexagon
+6 1/40 1/100 hexagon
+6 1/40 1/20 hexagon
+BODIES
+echo "$written certificates in $out"
