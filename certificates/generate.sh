@@ -34,4 +34,8 @@ done <<'BODIES'
 6 1/40 1/100 hexagon
 6 1/40 1/20 hexagon
 BODIES
+# A large certificate (64 generators) for the verification benchmark (benches/verify.rs).
+"$bin" certify --n 3 --kappa 3/20 --gamma 1/20 --claim effectively-invariant --max-vertices 60 \
+  -o "$out/n3-kappa3_20-gamma1_20-64-generators.ron" >/dev/null
+written=$((written + 1))
 echo "$written certificates in $out"
