@@ -184,8 +184,11 @@ pub fn collect_files(paths: &[PathBuf]) -> std::io::Result<Vec<PathBuf>> {
             }
             found.sort();
             out.extend(found);
-        } else {
+        } else if p.exists() {
             out.push(p.clone());
+        } else {
+            let msg = format!("{}: no such file or directory", p.display());
+            return Err(std::io::Error::new(std::io::ErrorKind::NotFound, msg));
         }
     }
     Ok(out)

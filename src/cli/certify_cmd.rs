@@ -28,13 +28,13 @@ Defaults certify the flat homogeneous square plate: n = 4, kappa = 1/6, gamma = 
 Example:\n  chatter certify --n 3 --kappa 3/20 --gamma 0.05 -o triangle.ron")]
 pub struct CertifyArgs {
     /// Number of contacts (regular n-gon; exact models exist for 3, 4, 6).
-    #[arg(long, default_value = "4")]
+    #[arg(long, default_value = "4", allow_hyphen_values = true)]
     pub n: String,
     /// kappa = rho^2 / R^2 (radius of gyration over circumradius, squared), > 0.
-    #[arg(long, default_value = "1/6")]
+    #[arg(long, default_value = "1/6", allow_hyphen_values = true)]
     pub kappa: String,
     /// Coefficient of restitution, in [0, 1].
-    #[arg(long, default_value = "1/100")]
+    #[arg(long, default_value = "1/100", allow_hyphen_values = true)]
     pub gamma: String,
     /// The claim to certify.
     #[arg(long, value_enum, default_value = "strongest")]

@@ -1,1 +1,75 @@
-//! Tests of `certify`.
+//! Tests of the certification pipeline.
+
+use crate::common::q;
+use chatter::certificate::{Claim, write};
+use chatter::certify::{ClaimChoice, Failure, Request, certify};
+use chatter::finder::FinderOutcome;
+
+fn run(n: u64, k: &str, g: &str, claim: ClaimChoice) -> chatter::certify::Report {
+    let mut r = Request::new(n, q(k), q(g));
+    r.claim = claim;
+    certify(&r)
+}
+
+#[test]
+fn the_default_square_plate_gets_the_strongest_claim() {
+    let r = run(4, "1/6", "1/100", ClaimChoice::Strongest);
+    let c = r.result.expect("certified");
+    assert_eq!(c.claim, Claim::CompleteChatterFromAllDown);
+    assert!(r.max_denominator_bits > 0 && r.max_denominator_bits < 64);
+    assert!(r.notes.is_empty(), "{:?}", r.notes);
+}
+
+#[test]
+fn certification_is_deterministic() {
+    for (n, k, g) in [(4, "1/6", "1/100"), (3, "3/20", "1/20"), (6, "1/40", "1/20")] {
+        let a = run(n, k, g, ClaimChoice::Strongest).result.unwrap();
+        let b = run(n, k, g, ClaimChoice::Strongest).result.unwrap();
+        assert_eq!(write(&a), write(&b));
+    }
+}
+
+#[test]
+fn every_claim_can_be_requested() {
+    for claim in Claim::ALL {
+        let c = run(3, "3/20", "1/20", ClaimChoice::Exactly(claim)).result.unwrap();
+        assert_eq!(c.claim, claim);
+    }
+}
+
+#[test]
+fn strongest_falls_back_and_says_why() {
+    // The flat triangle plate at gamma = 1/100: PCC possible, so CC-or-PCC is the strongest claim.
+    let r = run(3, "1/8", "1/100", ClaimChoice::Strongest);
+    assert_eq!(r.result.unwrap().claim, Claim::CcOrPccFromAllDown);
+    assert!(r.notes.iter().any(|n| n.contains("PCC Lemma does not apply")), "{:?}", r.notes);
+    // The square plate at gamma = 1/1000: also PCC, and a note flags the paper's claim.
+    let r = run(4, "1/6", "1/1000", ClaimChoice::Strongest);
+    assert_eq!(r.result.unwrap().claim, Claim::CcOrPccFromAllDown);
+    assert!(r.notes.iter().any(|n| n.contains("contradicts the paper")), "{:?}", r.notes);
+}
+
+#[test]
+fn complete_chatter_is_refused_where_pcc_is_possible() {
+    let r = run(3, "1/8", "1/100", ClaimChoice::Exactly(Claim::CompleteChatterFromAllDown));
+    assert!(matches!(r.result, Err(Failure::PccNotExcluded(_))));
+    assert!(r.finder.is_none(), "no search is wasted on a claim the Lemma cannot give");
+}
+
+#[test]
+fn no_cone_above_the_threshold() {
+    let r = run(4, "1/6", "1/10", ClaimChoice::Strongest);
+    match r.result {
+        Err(Failure::Finder(FinderOutcome::NoCone { .. })) => {}
+        other => panic!("{other:?}"),
+    }
+    assert!(r.notes.iter().any(|n| n.starts_with("CompleteChatterFromAllDown not certified")));
+}
+
+#[test]
+fn invalid_bodies_fail_cleanly() {
+    for (n, k, g) in [(5, "1/6", "1/100"), (4, "0", "1/100"), (4, "1/6", "2")] {
+        let r = run(n, k, g, ClaimChoice::Strongest);
+        assert!(matches!(r.result, Err(Failure::Body(_))), "n={n} kappa={k} gamma={g}");
+    }
+}

@@ -1,1 +1,144 @@
-//! Tests of `cli`.
+//! Tests of the `chatter` binary: arguments, outputs, exit statuses.
+
+use crate::common::{bin, root};
+use std::process::{Command, Output};
+
+fn chatter(args: &[&str], dir: &std::path::Path) -> Output {
+    Command::new(bin()).args(args).current_dir(dir).output().expect("run chatter")
+}
+
+fn text(o: &Output) -> (String, String) {
+    (String::from_utf8_lossy(&o.stdout).into_owned(), String::from_utf8_lossy(&o.stderr).into_owned())
+}
+
+#[test]
+fn help_documents_the_commands() {
+    let d = tempfile::tempdir().unwrap();
+    let (out, _) = text(&chatter(&["--help"], d.path()));
+    assert!(out.contains("certify") && out.contains("verify") && out.contains("Exit status"), "{out}");
+    let (out, _) = text(&chatter(&["certify", "--help"], d.path()));
+    for flag in [
+        "--n",
+        "--kappa",
+        "--gamma",
+        "--claim",
+        "--output",
+        "--json",
+        "complete-chatter-from-all-down",
+        "0.01",
+    ] {
+        assert!(out.contains(flag), "certify --help lacks {flag}");
+    }
+    let (out, _) = text(&chatter(&["verify", "--help"], d.path()));
+    assert!(out.contains("--backend") && out.contains("--max-digits"));
+}
+
+#[test]
+fn certify_then_verify_with_exit_statuses() {
+    let d = tempfile::tempdir().unwrap();
+    let o = chatter(&["certify", "-o", "sq.ron"], d.path());
+    let (out, _) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{out}");
+    assert!(out.starts_with("CERTIFIED n=4 kappa=1/6 gamma=1/100 claim=CompleteChatterFromAllDown"), "{out}");
+    assert!(out.contains("-> sq.ron"));
+    let o = chatter(&["verify", "sq.ron"], d.path());
+    assert_eq!(o.status.code(), Some(0));
+    assert!(text(&o).0.starts_with("sq.ron: OK (CompleteChatterFromAllDown, n = 4"));
+
+    // Not certified: exit 1 and no file.
+    let o = chatter(&["certify", "--gamma", "1/10", "-o", "no.ron"], d.path());
+    assert_eq!(o.status.code(), Some(1));
+    assert!(text(&o).0.starts_with("NOT CERTIFIED"));
+    assert!(!d.path().join("no.ron").exists());
+}
+
+#[test]
+fn decimal_input_is_read_exactly() {
+    let d = tempfile::tempdir().unwrap();
+    assert!(chatter(&["certify", "--gamma", "0.01", "-o", "a.ron"], d.path()).status.success());
+    assert!(chatter(&["certify", "--gamma", "1/100", "-o", "b.ron"], d.path()).status.success());
+    assert!(
+        chatter(&["certify", "--gamma", "1e-2", "--kappa", "2/12", "-o", "c.ron"], d.path()).status.success()
+    );
+    let read = |f: &str| std::fs::read_to_string(d.path().join(f)).unwrap();
+    assert_eq!(read("a.ron"), read("b.ron"));
+    assert_eq!(read("a.ron"), read("c.ron"));
+}
+
+#[test]
+fn usage_errors_exit_2_with_a_message() {
+    let d = tempfile::tempdir().unwrap();
+    for (args, needle) in [
+        (vec!["certify", "--n", "5"], "--n: n = 5 is not supported"),
+        (vec!["certify", "--n", "four"], "--n"),
+        (vec!["certify", "--kappa", "abc"], "--kappa"),
+        (vec!["certify", "--kappa", "-1/6"], "kappa must be > 0"),
+        (vec!["certify", "--gamma", "1/0"], "zero denominator"),
+        (vec!["certify", "--gamma", "3/2"], "gamma must lie in [0, 1]"),
+        (vec!["certify", "--max-vertices", "2"], "--max-vertices"),
+        (vec!["verify", "no-such-dir-or-file.ron"], "cannot"),
+        (vec!["frobnicate"], "unrecognized subcommand"),
+    ] {
+        let o = chatter(&args, d.path());
+        let (out, err) = text(&o);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {out}{err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn certify_json() {
+    let d = tempfile::tempdir().unwrap();
+    let o = chatter(&["certify", "--n", "3", "--kappa", "3/20", "--gamma", "0.05", "--json"], d.path());
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["status"], "certified");
+    assert_eq!(v["claim"], "CompleteChatterFromAllDown");
+    assert_eq!(v["gamma"], "1/20");
+    assert!(v["generators"].as_u64().unwrap() >= 3);
+    assert_eq!(v["finder"]["outcome"], "found");
+    assert!(v["timings_ms"]["kernel"].as_f64().unwrap() > 0.0);
+    let o = chatter(&["certify", "--gamma", "1/2", "--json"], d.path());
+    assert_eq!(o.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["status"], "not-certified");
+    assert_eq!(v["finder"]["outcome"], "no-cone");
+    assert!(v["reason"].as_str().unwrap().contains("no effectively invariant cone"));
+}
+
+#[test]
+fn verify_the_corpus_directories() {
+    let o = chatter(&["verify", "certificates/valid"], &root());
+    let (out, err) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert_eq!(out.lines().count(), std::fs::read_dir(root().join("certificates/valid")).unwrap().count());
+    assert!(out.lines().all(|l| l.contains(": OK (")));
+    assert!(err.contains("OK, 0 rejected, 0 errors"));
+
+    let o = chatter(&["verify", "certificates/invalid", "--json"], &root());
+    assert_eq!(o.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["ok"], 0);
+    let files = v["files"].as_array().unwrap();
+    assert!(files.len() >= 20);
+    assert!(
+        files.iter().all(|f| f["status"] == "REJECTED" && f["code"].is_string() && f["reason"].is_string())
+    );
+}
+
+#[test]
+fn one_bad_file_among_good_ones_fails_the_run() {
+    let o = chatter(
+        &[
+            "verify",
+            "certificates/valid/doc-example-square.ron",
+            "certificates/invalid/shrunk-rectangle.ron",
+            "--backend",
+            "malachite",
+        ],
+        &root(),
+    );
+    assert_eq!(o.status.code(), Some(1));
+    let (out, _) = text(&o);
+    assert!(out.lines().next().unwrap().contains(": OK"));
+    assert!(out.lines().nth(1).unwrap().contains(": REJECTED: "));
+}
