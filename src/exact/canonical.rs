@@ -101,13 +101,14 @@ pub fn parse_canonical_parts<Z: Int>(s: &str, limits: ParseLimits) -> Result<(Z,
         Some((p, q)) => (p, Some(q)),
         None => (body, None),
     };
-    let digits = p.len() + q.map_or(0, str::len);
-    if digits > limits.max_digits {
-        return Err(NumberError::TooLong { digits, max: limits.max_digits });
-    }
+    // Lexical checks are linear; only then the length limit, before any bignum work.
     check_digits(p, true)?;
     if let Some(q) = q {
         check_digits(q, false)?;
+    }
+    let digits = p.len() + q.map_or(0, str::len);
+    if digits > limits.max_digits {
+        return Err(NumberError::TooLong { digits, max: limits.max_digits });
     }
     if negative && p == "0" {
         return Err(NumberError::NegativeZero);

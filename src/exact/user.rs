@@ -49,7 +49,7 @@ pub fn parse_user_number(input: &str) -> Result<Q, String> {
             Some(i) => {
                 let e: i64 =
                     body[i + 1..].parse().map_err(|_| format!("{input:?} has a malformed exponent"))?;
-                if e.abs() > MAX_EXP {
+                if e.unsigned_abs() > MAX_EXP.unsigned_abs() {
                     return Err(format!("{input:?} has an exponent beyond +-{MAX_EXP}"));
                 }
                 (&body[..i], e)
