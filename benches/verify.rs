@@ -8,7 +8,8 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use num_rational::BigRational;
 use std::hint::black_box;
 
-const PATH: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/certificates/valid/n3-kappa3_20-gamma1_20-64-generators.ron");
+const PATH: &str =
+    concat!(env!("CARGO_MANIFEST_DIR"), "/certificates/valid/n3-kappa3_20-gamma1_20-64-generators.ron");
 const SQUARE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/certificates/valid/doc-example-square.ron");
 
 fn bench(c: &mut Criterion) {
@@ -30,7 +31,9 @@ fn bench(c: &mut Criterion) {
     g.finish();
 
     let square = read(&std::fs::read_to_string(SQUARE).unwrap()).unwrap();
-    c.bench_function("verify-square-example-both", |b| b.iter(|| chatter::verify::verify_both(black_box(&square), limits)));
+    c.bench_function("verify-square-example-both", |b| {
+        b.iter(|| chatter::verify::verify_both(black_box(&square), limits))
+    });
 }
 
 criterion_group!(benches, bench);

@@ -33,6 +33,8 @@ done <<'BODIES'
 6 1/20 1/1000 hexagon
 6 1/40 1/100 hexagon
 6 1/40 1/20 hexagon
+4 1/6 0 square-plastic
+3 3/20 0 tetrahedron-plastic
 BODIES
 # A large certificate (64 generators) for the verification benchmark (benches/verify.rs).
 "$bin" certify --n 3 --kappa 3/20 --gamma 1/20 --claim effectively-invariant --max-vertices 60 \

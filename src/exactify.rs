@@ -183,7 +183,7 @@ pub fn exactify(
     seeds: &[Vec3<Q>],
     cfg: &ExactifyConfig,
 ) -> Result<Exactified, ExactifyError> {
-    if float_poly.len() < 3 || float_poly.iter().any(|p| !p.x.is_finite() || !p.y.is_finite()) {
+    if float_poly.len() < 2 || float_poly.iter().any(|p| !p.x.is_finite() || !p.y.is_finite()) {
         return Err(ExactifyError::BadInput(format!("{} vertices", float_poly.len())));
     }
     let normals = normals_of(float_poly, cfg.normal_bits);

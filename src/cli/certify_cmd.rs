@@ -1,6 +1,6 @@
 //! `chatter certify`.
 
-use super::{EXIT_NEGATIVE, EXIT_OK, EXIT_USAGE, usage_error};
+use super::{EXIT_NEGATIVE, EXIT_OK, EXIT_USAGE, emit, usage_error};
 use crate::certificate::{Claim, write};
 use crate::certify::{ClaimChoice, Report, Request, certify};
 use crate::exact::{Q, parse_user_number};
@@ -163,9 +163,9 @@ pub fn run(a: CertifyArgs) -> u8 {
             "timings_ms": {"finder": ms(t.finder), "exactify": ms(t.exactify), "kernel": ms(t.kernel)},
             "notes": report.notes,
         });
-        println!("{obj}");
+        emit(&obj.to_string());
     } else {
-        println!("{}", summary(&v, &report));
+        emit(&summary(&v, &report));
     }
     if report.result.is_ok() { EXIT_OK } else { EXIT_NEGATIVE }
 }

@@ -51,6 +51,23 @@ pub fn main() -> ExitCode {
     ExitCode::from(code)
 }
 
+/// Exit status when stdout is closed early (as if killed by SIGPIPE: 128 + 13).
+pub const EXIT_BROKEN_PIPE: i32 = 141;
+
+/// Prints a line on stdout; if the reader has gone away (`chatter verify ... | head`), exits
+/// quietly instead of panicking.
+pub(crate) fn emit(line: &str) {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    if let Err(e) = writeln!(out, "{line}").and_then(|()| out.flush()) {
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            std::process::exit(EXIT_BROKEN_PIPE);
+        }
+        eprintln!("error: cannot write to stdout: {e}");
+        std::process::exit(i32::from(EXIT_USAGE));
+    }
+}
+
 /// Prints a usage error and returns the usage exit status.
 pub(crate) fn usage_error(msg: impl std::fmt::Display) -> u8 {
     eprintln!("error: {msg}");

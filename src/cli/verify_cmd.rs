@@ -1,6 +1,6 @@
 //! `chatter verify`.
 
-use super::{EXIT_INTERNAL, EXIT_NEGATIVE, EXIT_OK, usage_error};
+use super::{EXIT_INTERNAL, EXIT_NEGATIVE, EXIT_OK, emit, usage_error};
 use crate::exact::ParseLimits;
 use crate::verify::{Backends, collect_files, verify_file};
 use clap::{Args, ValueEnum};
@@ -58,7 +58,7 @@ pub fn run(a: VerifyArgs) -> u8 {
     for f in &files {
         let v = verify_file(f, limits, backends);
         if !a.json {
-            bar.suspend(|| println!("{}", v.line()));
+            bar.suspend(|| emit(&v.line()));
         }
         bar.inc(1);
         verdicts.push(v);
@@ -67,7 +67,7 @@ pub fn run(a: VerifyArgs) -> u8 {
     let count = |s: &str| verdicts.iter().filter(|v| v.status == s).count();
     let (ok, rejected, errors) = (count("OK"), count("REJECTED"), count("ERROR"));
     if a.json {
-        println!("{}", json!({"files": verdicts, "ok": ok, "rejected": rejected, "errors": errors}));
+        emit(&json!({"files": verdicts, "ok": ok, "rejected": rejected, "errors": errors}).to_string());
     } else if files.len() > 1 {
         eprintln!("{} files: {ok} OK, {rejected} rejected, {errors} errors", files.len());
     }

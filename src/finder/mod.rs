@@ -103,7 +103,9 @@ pub fn find_cone(body: &FloatBody, seed: Seed, cfg: &FinderConfig) -> FinderOutc
         }
         let tol = cfg.tolerance * sc;
         let worst = imgs.iter().map(|q| outside_distance(&poly, q)).fold(f64::NEG_INFINITY, f64::max);
-        if poly.len() >= 3 && worst <= tol {
+        // A converged segment is fine too: at gamma = 0 every image has u0 = 0, so the cone is
+        // flat; the exactifier's slack gives it an interior.
+        if poly.len() >= 2 && worst <= tol {
             return FinderOutcome::Found { polygon: poly, iterations: it };
         }
         let mut all = poly;

@@ -142,3 +142,24 @@ fn one_bad_file_among_good_ones_fails_the_run() {
     assert!(out.lines().next().unwrap().contains(": OK"));
     assert!(out.lines().nth(1).unwrap().contains(": REJECTED: "));
 }
+
+/// Regression: `chatter verify DIR | head -1` panicked with "failed printing to stdout".
+#[test]
+fn a_closed_stdout_ends_the_run_quietly() {
+    use std::io::{BufRead, BufReader};
+    use std::process::Stdio;
+    let mut child = Command::new(bin())
+        .args(["verify", "certificates/valid", "certificates/invalid"])
+        .current_dir(root())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = String::new();
+    BufReader::new(child.stdout.take().unwrap()).read_line(&mut first).unwrap(); // then drop the pipe
+    let out = child.wait_with_output().unwrap();
+    assert!(first.contains(": OK ("));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!err.contains("panicked"), "{err}");
+    assert_eq!(out.status.code(), Some(141));
+}

@@ -275,9 +275,9 @@ fn check_query<R: Ring>(poly: &ConvexPolygon<R>, verts: &[Pt], g: &Vec3<R>) -> b
     assert_eq!(in_hull(&p, verts), inside);
     // Each facet value is orient2d of the projected points times w_A w_B w_p (all w > 0).
     let w = |v: &Vec3<R>| -to_q(&v[2]);
-    for i in 0..m {
+    for (i, s) in side.iter().enumerate() {
         let (a, b) = (&poly.vertices[i], &poly.vertices[(i + 1) % m]);
-        assert_eq!(to_q(&dot(&poly.facets[i], g)), &side[i] * &(w(a) * w(b) * w(g)));
+        assert_eq!(to_q(&dot(&poly.facets[i], g)), s * &(w(a) * w(b) * w(g)));
     }
     let want = side.iter().position(|s| *s < zq());
     match poly.first_violated(g) {
