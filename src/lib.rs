@@ -16,4 +16,5 @@ pub mod exactify;
 pub mod finder;
 pub mod kernel;
 pub mod model;
+pub mod simulate;
 pub mod verify;

@@ -5,6 +5,7 @@
 //! 2 bad usage or unreadable input; 3 internal error (the two backends disagree).
 
 mod certify_cmd;
+mod simulate_cmd;
 mod verify_cmd;
 
 use clap::{Parser, Subcommand};
@@ -39,6 +40,8 @@ pub enum Command {
     Certify(certify_cmd::CertifyArgs),
     /// Check certificate files (or directories of *.ron files) with the trusted kernel.
     Verify(verify_cmd::VerifyArgs),
+    /// Simulate drops event by event (f64 or exact) and classify them as CC, PCC or ICC.
+    Simulate(simulate_cmd::SimulateArgs),
 }
 
 /// Parses the process arguments and runs the command.
@@ -47,6 +50,7 @@ pub fn main() -> ExitCode {
     let code = match cli.command {
         Command::Certify(a) => certify_cmd::run(a),
         Command::Verify(a) => verify_cmd::run(a),
+        Command::Simulate(a) => simulate_cmd::run(a),
     };
     ExitCode::from(code)
 }

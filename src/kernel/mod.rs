@@ -11,6 +11,7 @@ pub mod impact;
 pub mod linalg;
 pub mod pcc;
 pub mod polygon;
+pub mod rod;
 
 use crate::certificate::{Body, Certificate, Claim, Code, FORMAT, Rejection, VERSION};
 use crate::exact::{

@@ -11,4 +11,5 @@ mod exactify;
 mod finder;
 mod kernel;
 mod readme;
+mod simulate;
 mod verify;
