@@ -2,7 +2,7 @@
 //! user numbers, kinetic energy, the paper's coordinates, and `f64` copies of the maps for the
 //! numerical search.
 
-use crate::exact::{Field, Q};
+use crate::exact::{OrderedField, Q};
 use crate::kernel::impact::{Body, BodyError};
 use crate::kernel::linalg::{Mat3, Vec3};
 use nalgebra::{Matrix3, Vector3};
@@ -13,13 +13,13 @@ pub fn body(n: u64, kappa: &Q, gamma: &Q) -> Result<Body<Q>, BodyError> {
 }
 
 /// sin^2(2 pi / n) = 1 - c_1^2, rational whenever c_1 is.
-fn sin2<F: Field>(b: &Body<F>) -> F {
+fn sin2<F: OrderedField>(b: &Body<F>) -> F {
     F::one().minus(&b.cos(1).times(b.cos(1)))
 }
 
 /// Kinetic energy T = kappa |omega|^2 / 2 + v^2 / 2 (mass 1, R = 1) of p = (u0, u1, v), exact.
 /// With s = sin(2 pi/n), c = cos(2 pi/n): omega_y = v - u0, omega_x = (u1 - v + c omega_y) / s.
-pub fn kinetic_energy<F: Field>(b: &Body<F>, p: &Vec3<F>) -> F {
+pub fn kinetic_energy<F: OrderedField>(b: &Body<F>, p: &Vec3<F>) -> F {
     let wy = p[2].minus(&p[0]);
     let sx = p[1].minus(&p[2]).plus(&b.cos(1).times(&wy)); // s * omega_x
     let wx2 = sx.times(&sx).over(&sin2(b)).expect("sin(2 pi/n) != 0 for n >= 3");
@@ -29,7 +29,7 @@ pub fn kinetic_energy<F: Field>(b: &Body<F>, p: &Vec3<F>) -> F {
 
 /// For the square (n = 4): the matrix M with p_contact = M p_paper, p_paper = (omega_x, omega_y, v).
 /// Rows are the paper's f_0 = (y_0, -x_0, 1) = (0, -1, 1), f_1 = (1, 0, 1) and (0, 0, 1).
-pub fn square_paper_to_contact<F: Field>() -> Mat3<F> {
+pub fn square_paper_to_contact<F: OrderedField>() -> Mat3<F> {
     let (z, o) = (F::zero(), F::one());
     [[z.clone(), o.negated(), o.clone()], [o.clone(), z.clone(), o.clone()], [z.clone(), z, o]]
 }

@@ -55,13 +55,19 @@ pub trait Int: Ring {
     fn bit_length(&self) -> u64;
 }
 
-/// An exact ordered field (the rationals of a backend).
-pub trait Field: Ring {
+/// An exact ordered field: the rationals, or an exact real number field such as Q(sqrt 5).
+pub trait OrderedField: Ring {
+    /// Quotient; `None` when dividing by zero.
+    fn over(&self, o: &Self) -> Option<Self>;
+    /// The rational n / d (d != 0).
+    fn from_ratio(n: i64, d: i64) -> Self;
+}
+
+/// The rationals of a backend: an ordered field with integer numerators and denominators.
+pub trait Field: OrderedField {
     type Int: Int;
     /// Name of the bignum library behind this field.
     const BACKEND: &'static str;
-    /// Quotient; `None` when dividing by zero.
-    fn over(&self, o: &Self) -> Option<Self>;
     /// `n / d`, reduced; `d` must be non-zero.
     fn from_fraction(n: &Self::Int, d: &Self::Int) -> Self;
     /// Numerator of the reduced form (carries the sign).
@@ -71,9 +77,6 @@ pub trait Field: Ring {
 
     fn from_int(n: &Self::Int) -> Self {
         Self::from_fraction(n, &Self::Int::one())
-    }
-    fn from_ratio(n: i64, d: i64) -> Self {
-        Self::from_fraction(&Self::Int::from_i64(n), &Self::Int::from_i64(d))
     }
 }
 

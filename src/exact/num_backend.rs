@@ -1,7 +1,7 @@
 //! The second, independent backend: num-rational's `BigRational` over num-bigint's `BigInt`.
 //! The kernel runs on both; a disagreement is an internal error.
 
-use super::{Field, Int, Ring};
+use super::{Field, Int, OrderedField, Ring};
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer as _;
 use num_rational::BigRational;
@@ -89,12 +89,18 @@ impl Ring for BigRational {
     }
 }
 
-impl Field for BigRational {
-    type Int = BigInt;
-    const BACKEND: &'static str = "num-rational";
+impl OrderedField for BigRational {
     fn over(&self, o: &Self) -> Option<Self> {
         if Zero::is_zero(o) { None } else { Some(self / o) }
     }
+    fn from_ratio(n: i64, d: i64) -> Self {
+        BigRational::new(BigInt::from(n), BigInt::from(d))
+    }
+}
+
+impl Field for BigRational {
+    type Int = BigInt;
+    const BACKEND: &'static str = "num-rational";
     fn from_fraction(n: &BigInt, d: &BigInt) -> Self {
         BigRational::new(n.clone(), d.clone())
     }

@@ -2,7 +2,7 @@
 //! the canonical `"p/q"` (also in serde), plus the [`Ring`]/[`Int`]/[`Field`] impls for the
 //! malachite backend.
 
-use super::{Field, Int, NumberError, ParseLimits, Ring, parse_canonical, to_canonical};
+use super::{Field, Int, NumberError, OrderedField, ParseLimits, Ring, parse_canonical, to_canonical};
 use malachite::base::num::arithmetic::traits::{DivExact, Gcd, Sign, UnsignedAbs};
 use malachite::base::num::conversion::traits::{RoundingFrom, SciMantissaAndExponent};
 use malachite::base::num::logic::traits::SignificantBits;
@@ -189,12 +189,18 @@ impl Ring for Q {
     }
 }
 
-impl Field for Q {
-    type Int = Integer;
-    const BACKEND: &'static str = "malachite";
+impl OrderedField for Q {
     fn over(&self, o: &Self) -> Option<Self> {
         if o.0 == 0u32 { None } else { Some(Q(&self.0 / &o.0)) }
     }
+    fn from_ratio(n: i64, d: i64) -> Self {
+        Q::new(n, d)
+    }
+}
+
+impl Field for Q {
+    type Int = Integer;
+    const BACKEND: &'static str = "malachite";
     fn from_fraction(n: &Integer, d: &Integer) -> Self {
         Q(Rational::from_integers_ref(n, d))
     }

@@ -3,13 +3,13 @@
 
 use super::impact::Body;
 use super::linalg::{Vec3, cross, neg, sub};
-use crate::exact::Field;
+use crate::exact::OrderedField;
 
 /// The four inequalities of C_j, in the order used in messages.
 pub const C_FACET_NAMES: [&str; 4] =
     ["u0 >= 0", "v <= 0", "det[m_(j,j+1), m_(0,1), p] >= 0", "det[m_(n-1,0), m_(j-1,j), p] >= 0"];
 
-impl<F: Field> Body<F> {
+impl<F: OrderedField> Body<F> {
     /// m_{k,l}: the configuration with h_k = h_l = 0 and h_c = 1 (`None` if k, l are opposite).
     pub fn rest_point(&self, k: i64, l: i64) -> Option<Vec3<F>> {
         let [ak, bk, ek] = self.contact(k);

@@ -2,7 +2,7 @@
 //! p = (u0, u1, v) (MODEL.md §2-3): contact covectors, impact maps, relabelling, step maps.
 
 use super::linalg::{Mat3, Vec3, identity, mat_mul};
-use crate::exact::Field;
+use crate::exact::OrderedField;
 
 /// Why a body cannot be modelled exactly.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -26,7 +26,7 @@ impl std::fmt::Display for BodyError {
 }
 
 /// cos(2*pi/n) for the regular polygons whose cosines are rational (Niven: n = 3, 4, 6).
-pub fn cos_step<F: Field>(n: u64) -> Option<F> {
+pub fn cos_step<F: OrderedField>(n: u64) -> Option<F> {
     match n {
         3 => Some(F::from_ratio(-1, 2)),
         4 => Some(F::zero()),
@@ -47,7 +47,7 @@ pub struct Body<F> {
     contacts: Vec<Vec3<F>>,
 }
 
-impl<F: Field> Body<F> {
+impl<F: OrderedField> Body<F> {
     pub fn new(n: u64, kappa: F, gamma: F) -> Result<Self, BodyError> {
         let c1: F = cos_step(n).ok_or(BodyError::UnsupportedN(n))?;
         if !kappa.is_positive() {

@@ -5,7 +5,7 @@
 
 use super::impact::Body;
 use super::linalg::{char_poly, mat_mul};
-use crate::exact::Field;
+use crate::exact::OrderedField;
 
 /// The quadratic factor t^2 + p t + q of det(t I - S_{n-1} S_1), with its discriminant.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -15,7 +15,7 @@ pub struct PccQuadratic<F> {
     pub discriminant: F,
 }
 
-impl<F: Field> PccQuadratic<F> {
+impl<F: OrderedField> PccQuadratic<F> {
     /// Whether the Lemma excludes PCC: complex roots of modulus < 1.
     pub fn excludes_pcc(&self) -> bool {
         self.discriminant.is_negative() && self.q < F::one()
@@ -24,7 +24,7 @@ impl<F: Field> PccQuadratic<F> {
 
 /// Factors det(t I - S_{n-1} S_1) = (t - 1)(t^2 + p t + q). Returns `Err` with the polynomial's
 /// value at t = 1 if 1 is not a root (impossible for a correct model).
-pub fn pcc_quadratic<F: Field>(body: &Body<F>) -> Result<PccQuadratic<F>, F> {
+pub fn pcc_quadratic<F: OrderedField>(body: &Body<F>) -> Result<PccQuadratic<F>, F> {
     let last = body.n as i64 - 1;
     let (tr, s, det) = char_poly(&mat_mul(&body.step(last), &body.step(1)));
     // t^3 - tr t^2 + s t - det = (t - 1)(t^2 + p t + q) = t^3 + (p - 1) t^2 + (q - p) t - q.

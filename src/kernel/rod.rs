@@ -2,16 +2,16 @@
 //! x = ±1, velocities p = (u0, u1) of the two ends, v = (u0 + u1)/2.
 
 use super::impact::BodyError;
-use crate::exact::Field;
+use crate::exact::OrderedField;
 
 pub type Vec2<F> = [F; 2];
 pub type Mat2<F> = [[F; 2]; 2];
 
-pub fn mat2_vec<F: Field>(m: &Mat2<F>, x: &Vec2<F>) -> Vec2<F> {
+pub fn mat2_vec<F: OrderedField>(m: &Mat2<F>, x: &Vec2<F>) -> Vec2<F> {
     [m[0][0].times(&x[0]).plus(&m[0][1].times(&x[1])), m[1][0].times(&x[0]).plus(&m[1][1].times(&x[1]))]
 }
 
-pub fn mat2_mul<F: Field>(a: &Mat2<F>, b: &Mat2<F>) -> Mat2<F> {
+pub fn mat2_mul<F: OrderedField>(a: &Mat2<F>, b: &Mat2<F>) -> Mat2<F> {
     let e = |i: usize, j: usize| a[i][0].times(&b[0][j]).plus(&a[i][1].times(&b[1][j]));
     [[e(0, 0), e(0, 1)], [e(1, 0), e(1, 1)]]
 }
@@ -23,7 +23,7 @@ pub struct Rod<F> {
     pub gamma: F,
 }
 
-impl<F: Field> Rod<F> {
+impl<F: OrderedField> Rod<F> {
     pub fn new(kappa: F, gamma: F) -> Result<Self, BodyError> {
         if !kappa.is_positive() {
             return Err(BodyError::KappaNotPositive);

@@ -1,7 +1,7 @@
 //! Tests of `exact::backends`: the malachite backend (`Q`, `Integer`) and the num backend
 //! (`BigRational`, `BigInt`) must agree on everything.
 
-use chatter::exact::{Field, Int, Q, Ring, lcm_all, scale_to_ints, to_canonical};
+use chatter::exact::{Field, Int, OrderedField, Q, Ring, lcm_all, scale_to_ints, to_canonical};
 use malachite::Integer;
 use num_bigint::BigInt;
 use num_rational::BigRational;

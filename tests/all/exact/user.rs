@@ -1,7 +1,7 @@
 //! Tests of `exact::user`.
 
 use crate::common::q;
-use chatter::exact::{Field, Q, Ring, parse_user_number, to_canonical};
+use chatter::exact::{OrderedField, Q, Ring, parse_user_number, to_canonical};
 use proptest::prelude::*;
 
 fn pow10(e: u32) -> Q {
