@@ -35,6 +35,9 @@ done <<'BODIES'
 6 1/40 1/20 hexagon
 4 1/6 0 square-plastic
 3 3/20 0 tetrahedron-plastic
+2 1/3 1/20 uniform-rod
+2 1/3 7/100 uniform-rod-just-below-7-4sqrt3
+2 1/10 1/5 light-rod
 BODIES
 # A large certificate (64 generators) for the verification benchmark (benches/verify.rs).
 "$bin" certify --n 3 --kappa 3/20 --gamma 1/20 --claim effectively-invariant --max-vertices 60 \

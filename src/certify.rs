@@ -6,6 +6,7 @@ use crate::exact::{ParseLimits, Q, Ring};
 use crate::exactify::{ExactifyConfig, ExactifyError, exactify};
 use crate::finder::{FinderConfig, FinderOutcome, Seed, find_cone};
 use crate::kernel::impact::Body;
+use crate::kernel::rod::{Rod, mat2_vec};
 use crate::kernel::linalg::mat_vec;
 use crate::kernel::pcc::pcc_quadratic;
 use crate::model::{FloatBody, body, translation_down};
@@ -157,14 +158,133 @@ fn certify_claim(
     }
 }
 
+/// The rod's report: every claim is tried strongest first (with two contacts PCC is CC, so the
+/// all-down claims coincide).
+fn certify_rod_report(req: &Request, mut timings: Timings) -> Report {
+    let claims: Vec<Claim> = match req.claim {
+        ClaimChoice::Exactly(c) => vec![c],
+        ClaimChoice::Strongest => vec![Claim::CompleteChatterFromAllDown, Claim::EffectivelyInvariant],
+    };
+    let mut notes = vec!["rod (n = 2): exact interval iteration, no float search; with two contacts PCC is CC".to_string()];
+    let mut last = None;
+    for claim in claims {
+        let result = certify_rod(req, claim, &mut timings);
+        if let Ok(c) = &result {
+            let start = Instant::now();
+            let verdict = verify_both(c, ParseLimits::default());
+            timings.kernel += start.elapsed();
+            return match verdict {
+                BackendVerdict::Accepted(a) => Report { result, finder: None, timings, max_denominator_bits: a.max_denominator_bits, notes },
+                BackendVerdict::Rejected(r) => {
+                    Report { result: Err(Failure::Kernel(r.to_string())), finder: None, timings, max_denominator_bits: 0, notes }
+                }
+                BackendVerdict::Disagree(s) => Report { result: Err(Failure::Kernel(s)), finder: None, timings, max_denominator_bits: 0, notes },
+            };
+        }
+        if let (Err(e), ClaimChoice::Strongest) = (&result, req.claim) {
+            notes.push(format!("{} not certified: {e}", claim.name()));
+        }
+        last = Some(result);
+    }
+    let result = last.expect("at least one claim");
+    let finder = match &result {
+        Err(Failure::Finder(f)) => Some(f.clone()),
+        _ => None,
+    };
+    Report { result, finder, timings, max_denominator_bits: 0, notes }
+}
+
 fn claims_requested_pcc(req: &Request) -> bool {
     req.claim == ClaimChoice::Exactly(Claim::CompleteChatterFromAllDown)
+}
+
+/// The rod (n = 2): K = [lo, hi] in s = u0 / (-(u0 + u1)) on the line v = -1 is grown exactly
+/// by the images of the ends of K ∩ C_1 until they stay inside. When a cone exists the iterates
+/// converge to the attracting eigenvector of S_1; a small outward slack on every grown end lets
+/// the iteration stop. No float search is needed in one dimension.
+fn certify_rod(req: &Request, claim: Claim, t: &mut Timings) -> Result<Certificate, Failure> {
+    let rod = Rod::new(req.kappa.clone(), req.gamma.clone()).map_err(|e| Failure::Body(e.to_string()))?;
+    let s_of = |p: &[Q; 2]| -> Option<Q> {
+        let w = -(&p[0] + &p[1]);
+        (w > Q::int(0)).then(|| &p[0] / &w)
+    };
+    let point = |s: &Q| -> [Q; 2] { [s.clone(), -(s + &Q::int(1))] }; // u0 + u1 = -1, s = u0
+    let i0 = rod.impact(0);
+    let seeds: Vec<[Q; 2]> = match claim {
+        Claim::EffectivelyInvariant => vec![[Q::int(-1), Q::int(-1)]],
+        _ => vec![[Q::int(0), Q::int(-1)], [Q::int(-1), Q::int(0)]],
+    };
+    let start = Instant::now();
+    let seed_s: Vec<Q> = seeds.iter().map(|g| s_of(&mat2_vec(&i0, g)).expect("post-impact v < 0")).collect();
+    let (mut lo, mut hi) = (seed_s.iter().min().unwrap().clone(), seed_s.iter().max().unwrap().clone());
+    let step = rod.step();
+    let max_iter = req.finder.max_iterations;
+    let mut done = false;
+    for it in 0..max_iter {
+        let mut ends = vec![];
+        if hi >= Q::int(0) {
+            ends.push(if lo < Q::int(0) { Q::int(0) } else { lo.clone() });
+            ends.push(hi.clone());
+        }
+        let mut grew = false;
+        for e in ends {
+            let img = mat2_vec(&step, &point(&e));
+            let Some(s) = s_of(&img) else {
+                t.finder += start.elapsed();
+                return Err(Failure::Finder(FinderOutcome::NoCone { iteration: it, step: 1 }));
+            };
+            // A grown end goes a little beyond the image (the orbit approaches the attracting
+            // eigenvector from inside and would never stop), rounded outwards to a dyadic.
+            let slack = (&hi - &lo + s.abs()) * Q::new(1, 1 << 20);
+            if s < lo {
+                lo = (&s - &slack).floor_dyadic(40);
+                grew = true;
+            } else if s > hi {
+                hi = (&s + &slack).ceil_dyadic(40);
+                grew = true;
+            }
+        }
+        if !grew && lo < hi {
+            done = true;
+            break;
+        }
+        if !grew {
+            // A single ray (a fixed point): widen to a 2-D cone and continue.
+            hi = &hi + &Q::new(1, 1 << 20);
+        }
+    }
+    t.finder += start.elapsed();
+    if !done {
+        let reason = format!("the exact interval iteration did not settle within {max_iter} iterations");
+        return Err(Failure::Finder(FinderOutcome::Inconclusive { iterations: max_iter, reason }));
+    }
+    // Generators on v = -1: (u0, u1) = 2 (s, -1 - s).
+    let cone = [lo, hi].into_iter().map(|s| {
+        let p = point(&s);
+        Generator(vec![(&p[0] * &Q::int(2)).to_string(), (&p[1] * &Q::int(2)).to_string()])
+    });
+    Ok(certificate(req, claim, cone.collect(), "exact interval iteration"))
+}
+
+fn certificate(req: &Request, claim: Claim, cone: Vec<Generator>, how: &str) -> Certificate {
+    Certificate {
+        format: FORMAT.to_string(),
+        version: VERSION,
+        body: CertBody::RegularPolygon { n: req.n, kappa: req.kappa.to_string(), gamma: req.gamma.to_string() },
+        coordinates: Coordinates::ContactVelocities,
+        claim,
+        cone,
+        producer: format!("chatter {} certify ({how})", env!("CARGO_PKG_VERSION")),
+    }
 }
 
 /// Runs the pipeline.
 pub fn certify(req: &Request) -> Report {
     let mut timings = Timings::default();
     let mut notes = Vec::new();
+    if req.n == 2 {
+        return certify_rod_report(req, timings);
+    }
     let b = match body(req.n, &req.kappa, &req.gamma) {
         Ok(b) => b,
         Err(e) => {

@@ -17,4 +17,5 @@ pub mod finder;
 pub mod kernel;
 pub mod model;
 pub mod simulate;
+pub mod spectral;
 pub mod verify;

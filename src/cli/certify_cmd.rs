@@ -27,7 +27,7 @@ pub enum ClaimArg {
 Defaults certify the flat homogeneous square plate: n = 4, kappa = 1/6, gamma = 1/100.\n\n\
 Example:\n  chatter certify --n 3 --kappa 3/20 --gamma 0.05 -o triangle.ron")]
 pub struct CertifyArgs {
-    /// Number of contacts (regular n-gon; exact models exist for 3, 4, 6).
+    /// Number of contacts: a regular n-gon (exact models for 3, 4, 6) or 2 for the rod.
     #[arg(long, default_value = "4", allow_hyphen_values = true)]
     pub n: String,
     /// kappa = rho^2 / R^2 (radius of gyration over circumradius, squared), > 0.
@@ -64,7 +64,12 @@ fn validate(a: CertifyArgs) -> Result<Validated, String> {
     let n: u64 = a.n.trim().parse().map_err(|_| format!("--n: {:?} is not a positive integer", a.n))?;
     let kappa: Q = parse_user_number(&a.kappa).map_err(|e| format!("--kappa: {e}"))?;
     let gamma: Q = parse_user_number(&a.gamma).map_err(|e| format!("--gamma: {e}"))?;
-    if let Err(e) = crate::model::body(n, &kappa, &gamma) {
+    let checked = if n == 2 {
+        crate::kernel::rod::Rod::new(kappa.clone(), gamma.clone()).map(|_| ())
+    } else {
+        crate::model::body(n, &kappa, &gamma).map(|_| ())
+    };
+    if let Err(e) = checked {
         use crate::kernel::impact::BodyError;
         let flag = match e {
             BodyError::UnsupportedN(_) => "--n",

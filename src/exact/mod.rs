@@ -12,7 +12,7 @@ mod q;
 mod user;
 
 pub use canonical::{NumberError, ParseLimits, parse_canonical, parse_canonical_parts, to_canonical};
-pub use q::Q;
+pub use q::{Q, Rounding};
 pub use user::parse_user_number;
 
 use std::cmp::Ordering;
@@ -61,6 +61,10 @@ pub trait OrderedField: Ring {
     fn over(&self, o: &Self) -> Option<Self>;
     /// The rational n / d (d != 0).
     fn from_ratio(n: i64, d: i64) -> Self;
+    /// Any rational, exactly.
+    fn from_q(q: &Q) -> Self;
+    /// Rational bounds lo <= self <= hi with hi - lo <= width (lo = hi = self for a rational).
+    fn enclose(&self, width: &Q) -> (Q, Q);
 }
 
 /// The rationals of a backend: an ordered field with integer numerators and denominators.

@@ -96,6 +96,14 @@ impl OrderedField for BigRational {
     fn from_ratio(n: i64, d: i64) -> Self {
         BigRational::new(BigInt::from(n), BigInt::from(d))
     }
+    fn from_q(q: &super::Q) -> Self {
+        let parse = |z: malachite::Integer| z.to_string().parse::<BigInt>().expect("decimal digits");
+        BigRational::new(parse(super::Field::numer(q)), parse(super::Field::denom(q)))
+    }
+    fn enclose(&self, _width: &super::Q) -> (super::Q, super::Q) {
+        let q: super::Q = self.to_string().parse().expect("num-rational prints canonical p/q");
+        (q.clone(), q)
+    }
 }
 
 impl Field for BigRational {

@@ -15,6 +15,14 @@ use std::fmt;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 use std::str::FromStr;
 
+/// Direction of rounding when printing decimals.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Rounding {
+    Down,
+    Up,
+    Nearest,
+}
+
 /// An exact rational number (malachite backend) with canonical `"p/q"` text.
 #[derive(Clone, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
 pub struct Q(pub Rational);
@@ -55,10 +63,25 @@ impl Q {
         let k = Integer::rounding_from(&scaled, RoundingMode::Floor).0;
         Q(Rational::from(k) >> bits)
     }
+    /// 10^e.
+    pub fn pow10(e: i64) -> Q {
+        let p = Rational::from(Natural::from(10u32).pow_u64(e.unsigned_abs()));
+        Q(if e >= 0 { p } else { Rational::from(1u32) / p })
+    }
     /// A decimal string with `digits` digits after the point, rounded to nearest.
     pub fn to_decimal(&self, digits: usize) -> String {
+        self.decimal(digits, Rounding::Nearest)
+    }
+    /// A decimal string with `digits` digits after the point, rounded as asked (`Down` and `Up`
+    /// give guaranteed lower and upper bounds).
+    pub fn decimal(&self, digits: usize, rounding: Rounding) -> String {
         let scale = Rational::from(Natural::from(10u32).pow_u64(digits as u64));
-        let k = Integer::rounding_from(&(&self.0 * scale), RoundingMode::Nearest).0;
+        let mode = match rounding {
+            Rounding::Down => RoundingMode::Floor,
+            Rounding::Up => RoundingMode::Ceiling,
+            Rounding::Nearest => RoundingMode::Nearest,
+        };
+        let k = Integer::rounding_from(&(&self.0 * scale), mode).0;
         let neg = k < 0u32;
         let s = k.unsigned_abs().to_string();
         let s = if s.len() <= digits { format!("{}{}", "0".repeat(digits + 1 - s.len()), s) } else { s };
@@ -195,6 +218,12 @@ impl OrderedField for Q {
     }
     fn from_ratio(n: i64, d: i64) -> Self {
         Q::new(n, d)
+    }
+    fn from_q(q: &Q) -> Self {
+        q.clone()
+    }
+    fn enclose(&self, _width: &Q) -> (Q, Q) {
+        (self.clone(), self.clone())
     }
 }
 

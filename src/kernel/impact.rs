@@ -17,7 +17,7 @@ impl std::fmt::Display for BodyError {
         match self {
             BodyError::UnsupportedN(n) => write!(
                 f,
-                "n = {n} is not supported: exact models need a rational cos(2*pi/n), i.e. n in {{3, 4, 6}}"
+                "n = {n} is not supported: exact models need a rational cos(2*pi/n), i.e. n in {{3, 4, 6}} (or n = 2, the rod)"
             ),
             BodyError::KappaNotPositive => write!(f, "kappa must be > 0"),
             BodyError::GammaOutOfRange => write!(f, "gamma must lie in [0, 1]"),
@@ -50,6 +50,15 @@ pub struct Body<F> {
 impl<F: OrderedField> Body<F> {
     pub fn new(n: u64, kappa: F, gamma: F) -> Result<Self, BodyError> {
         let c1: F = cos_step(n).ok_or(BodyError::UnsupportedN(n))?;
+        Self::with_cosine(n, c1, kappa, gamma)
+    }
+
+    /// A body whose cos(2*pi/n) = `c1` is given by the caller (exact in any field, e.g. a number
+    /// field for n = 5). The kernel itself only uses [`Body::new`].
+    pub fn with_cosine(n: u64, c1: F, kappa: F, gamma: F) -> Result<Self, BodyError> {
+        if n < 3 {
+            return Err(BodyError::UnsupportedN(n));
+        }
         if !kappa.is_positive() {
             return Err(BodyError::KappaNotPositive);
         }

@@ -114,56 +114,92 @@ fn check_image<F: Field>(
     ))
 }
 
+/// The parsed body: a polygon (n >= 3) or the rod (n = 2).
+enum Parsed<F> {
+    Polygon(impact::Body<F>),
+    Rod(rod::Rod<F>),
+}
+
+fn body_error(e: BodyError) -> Rejection {
+    match e {
+        BodyError::UnsupportedN(_) => Rejection::new(Code::UnsupportedBody, format!("field `body.n`: {e}")),
+        BodyError::KappaNotPositive => Rejection::new(Code::ParameterOutOfRange, format!("field `body.kappa`: {e}")),
+        BodyError::GammaOutOfRange => Rejection::new(Code::ParameterOutOfRange, format!("field `body.gamma`: {e}")),
+    }
+}
+
+/// The generators as integer vectors (positive multiples of the given ones): coordinate i of
+/// (p_0/q_0, ..., p_k/q_k) becomes p_i prod_{j != i} q_j. Also the largest denominator in bits.
+fn parse_generators<F: Field>(cert: &Certificate, names: &[&str], limits: ParseLimits) -> Result<(Vec<Vec<F::Int>>, u64), Rejection> {
+    let mut gens = Vec::with_capacity(cert.cone.len());
+    let mut bits = 0;
+    for (i, g) in cert.cone.iter().enumerate() {
+        if g.0.len() != names.len() {
+            let msg = format!("field `cone[{i}]`: expected {} coordinates ({}), found {}", names.len(), names.join(", "), g.0.len());
+            return Err(Rejection::new(Code::WrongArity, msg));
+        }
+        let mut parts = Vec::with_capacity(names.len());
+        for (c, name) in g.0.iter().zip(names) {
+            let (p, q) = parse_canonical_parts::<F::Int>(c, limits)
+                .map_err(|e| Rejection::new(Code::BadNumber, format!("field `cone[{i}].{name}`: {}: {e}", quote(c))))?;
+            bits = bits.max(q.bit_length());
+            parts.push((p, q));
+        }
+        let scaled = (0..parts.len())
+            .map(|k| parts.iter().enumerate().fold(F::Int::one(), |acc, (j, (p, q))| acc.times(if j == k { p } else { q })))
+            .collect();
+        gens.push(scaled);
+    }
+    Ok((gens, bits))
+}
+
+/// The rejection for a generator with v >= 0.
+fn not_below(cert: &Certificate, i: usize) -> Rejection {
+    let msg = format!("generator cone[{i}] = ({}) has v >= 0", cert.cone[i].0.join(", "));
+    Rejection::new(Code::GeneratorNotBelow, msg)
+}
+
 /// Checks a certificate exactly over the field `F`. The first failing check is reported.
 pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
     if cert.format != FORMAT {
         return Err(Rejection::new(Code::WrongFormat, format!("field `format`: expected {FORMAT:?}")));
     }
     if cert.version != VERSION {
-        return Err(Rejection::new(
-            Code::UnsupportedVersion,
-            format!("field `version`: {} is not {VERSION}", cert.version),
-        ));
+        return Err(Rejection::new(Code::UnsupportedVersion, format!("field `version`: {} is not {VERSION}", cert.version)));
     }
     let Body::RegularPolygon { n, kappa, gamma } = &cert.body;
     let kappa: F = number("body.kappa", kappa, limits)?;
     let gamma: F = number("body.gamma", gamma, limits)?;
-    let body = impact::Body::new(*n, kappa, gamma).map_err(|e| match e {
-        BodyError::UnsupportedN(_) => Rejection::new(Code::UnsupportedBody, format!("field `body.n`: {e}")),
-        BodyError::KappaNotPositive => {
-            Rejection::new(Code::ParameterOutOfRange, format!("field `body.kappa`: {e}"))
+    let parsed = if *n == 2 {
+        Parsed::Rod(rod::Rod::new(kappa, gamma).map_err(body_error)?)
+    } else {
+        Parsed::Polygon(impact::Body::new(*n, kappa, gamma).map_err(body_error)?)
+    };
+    match parsed {
+        Parsed::Rod(r) => {
+            let (gens, bits) = parse_generators::<F>(cert, &["u0", "u1"], limits)?;
+            if let Some(i) = gens.iter().position(|g| !g[0].plus(&g[1]).is_negative()) {
+                return Err(not_below(cert, i));
+            }
+            let gens: Vec<[F::Int; 2]> = gens.into_iter().map(|g| [g[0].clone(), g[1].clone()]).collect();
+            rod::check_rod(&r, &gens, cert.claim, bits)
         }
-        BodyError::GammaOutOfRange => {
-            Rejection::new(Code::ParameterOutOfRange, format!("field `body.gamma`: {e}"))
+        Parsed::Polygon(body) => {
+            let (gens, bits) = parse_generators::<F>(cert, &["u0", "u1", "v"], limits)?;
+            if let Some(i) = gens.iter().position(|g| !g[2].is_negative()) {
+                return Err(not_below(cert, i));
+            }
+            let gens: Vec<Vec3<F::Int>> = gens.into_iter().map(|g| [g[0].clone(), g[1].clone(), g[2].clone()]).collect();
+            check_polygon(&body, &gens, cert.claim, bits)
         }
-    })?;
-
-    // Generators: canonical numbers, v < 0, scaled to integers by the product of denominators.
-    let mut gens: Vec<Vec3<F::Int>> = Vec::with_capacity(cert.cone.len());
-    let mut max_denominator_bits = 0;
-    for (i, g) in cert.cone.iter().enumerate() {
-        if g.0.len() != 3 {
-            let msg = format!("field `cone[{i}]`: expected 3 coordinates (u0, u1, v), found {}", g.0.len());
-            return Err(Rejection::new(Code::WrongArity, msg));
-        }
-        let mut parts = Vec::with_capacity(3);
-        for (c, name) in g.0.iter().zip(["u0", "u1", "v"]) {
-            let (p, q) = parse_canonical_parts::<F::Int>(c, limits).map_err(|e| {
-                Rejection::new(Code::BadNumber, format!("field `cone[{i}].{name}`: {}: {e}", quote(c)))
-            })?;
-            max_denominator_bits = max_denominator_bits.max(q.bit_length());
-            parts.push((p, q));
-        }
-        if !parts[2].0.is_negative() {
-            let msg = format!("generator cone[{i}] = ({}, {}, {}) has v >= 0", g.0[0], g.0[1], g.0[2]);
-            return Err(Rejection::new(Code::GeneratorNotBelow, msg));
-        }
-        let [(p0, q0), (p1, q1), (p2, q2)] = [&parts[0], &parts[1], &parts[2]];
-        gens.push([p0.times(q1).times(q2), q0.times(p1).times(q2), q0.times(q1).times(p2)]);
     }
+}
 
+/// The geometric checks R1 (dimension) to R4 for a regular polygon with n >= 3.
+fn check_polygon<F: Field>(body: &impact::Body<F>, gens: &[Vec3<F::Int>], claim: Claim, max_denominator_bits: u64) -> Result<Accepted, Rejection> {
+    let n = body.n as u64;
     // K: the exact convex hull of the projected generators; it must have an interior.
-    let hull_idx = hull(&gens);
+    let hull_idx = hull(gens);
     if gens.is_empty() {
         return Err(Rejection::new(Code::DegenerateCone, "field `cone` is empty: K must be a 3-D cone"));
     }
@@ -194,7 +230,7 @@ pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accept
     }
 
     // Stronger claims: I_0(D) ⊆ K, checked on the generators -m_{k,k+1} of D.
-    if cert.claim >= Claim::CcOrPccFromAllDown {
+    if claim >= Claim::CcOrPccFromAllDown {
         let i0 = int_mat(&body.impact(0));
         for (m, g) in body.all_down_generators().iter().enumerate() {
             let g = int_vec(g);
@@ -208,7 +244,7 @@ pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accept
 
     // Strongest claim: PCC excluded by the quadratic factor of S_{n-1} S_1.
     let mut pcc = None;
-    if cert.claim >= Claim::CompleteChatterFromAllDown {
+    if claim >= Claim::CompleteChatterFromAllDown {
         let quad = pcc::pcc_quadratic(&body).map_err(|at_one| {
             Rejection::new(
                 Code::Internal,
@@ -235,8 +271,8 @@ pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accept
     let contains_translation = translation[2].is_negative() && k.contains(&translation);
     let generators = gens.len();
     Ok(Accepted {
-        claim: cert.claim,
-        n: *n,
+        claim,
+        n,
         generators,
         redundant,
         pieces,

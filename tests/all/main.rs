@@ -12,4 +12,5 @@ mod finder;
 mod kernel;
 mod readme;
 mod simulate;
+mod spectral;
 mod verify;

@@ -6,3 +6,4 @@ mod cones;
 mod impact;
 mod pcc;
 mod polygon;
+mod rod;

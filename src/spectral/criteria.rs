@@ -1,0 +1,293 @@
+//! The paper's spectral criteria, decided exactly, and their thresholds in gamma.
+//!
+//! - CC criterion (Conjecture 1 (iii), MODEL §6): S_1 has a real, positive dominant eigenvalue
+//!   (Elsner-Vandergraft, with multiplicities).
+//! - PCC criterion (the PCC Lemma and Conjecture 2): all eigenvalues of S_{n-1} S_1 are real.
+//! - The rod (n = 2, the paper's Theorem after Goyal et al.): CC from pure translation iff
+//!   sqrt(kappa) <= 2/(sqrt(gamma) + 1) - 1.
+//!
+//! For fixed n and kappa the maps are affine in gamma, S(gamma) = A + gamma B, so the
+//! coefficients of the characteristic polynomials are polynomials in gamma. A criterion can
+//! only change where a candidate polynomial in gamma vanishes (a discriminant, a modulus tie, a
+//! zero eigenvalue); those roots in (0, 1) are isolated exactly and the criterion is evaluated
+//! exactly at a rational point between each pair of neighbours.
+
+use super::eigen::{Dominant, Spectrum, char_poly2, char_poly3};
+use super::poly::Poly;
+use super::roots::{RealRoot, isolate};
+use crate::exact::{OrderedField, Q};
+use crate::kernel::impact::Body;
+use crate::kernel::linalg::{Mat3, mat_mul};
+use crate::kernel::rod::{Mat2, Rod};
+use std::cmp::Ordering;
+
+/// A regular n-gon body with gamma left free: n, c_1 = cos(2 pi/n) and kappa, exact in `F`.
+#[derive(Clone, Debug)]
+pub struct Family<F> {
+    pub n: u64,
+    pub c1: F,
+    pub kappa: F,
+}
+
+impl<F: OrderedField> Family<F> {
+    /// The body at one value of gamma (0 <= gamma <= 1).
+    pub fn at(&self, gamma: &Q) -> Body<F> {
+        Body::with_cosine(self.n, self.c1.clone(), self.kappa.clone(), F::from_q(gamma)).expect("valid family")
+    }
+}
+
+/// The CC criterion at one body: the spectrum of S_1 and its dominant eigenvalue(s).
+pub fn cc_criterion<F: OrderedField>(b: &Body<F>) -> (bool, Spectrum<F>, Dominant) {
+    let mut s = Spectrum::of3(&b.step(1));
+    let d = s.dominant();
+    (d.real_positive(), s, d)
+}
+
+/// The PCC criterion at one body: whether every eigenvalue of S_{n-1} S_1 is real.
+pub fn pcc_criterion<F: OrderedField>(b: &Body<F>) -> (bool, Spectrum<F>) {
+    let s = Spectrum::of3(&mat_mul(&b.step(b.n as i64 - 1), &b.step(1)));
+    (s.all_real(), s)
+}
+
+/// The CC criterion of the rod: S_1 = U_0 P has a real positive dominant eigenvalue.
+pub fn rod_cc_criterion<F: OrderedField>(r: &Rod<F>) -> (bool, Spectrum<F>, Dominant) {
+    let mut s = Spectrum::of2(&r.step());
+    let d = s.dominant();
+    (d.real_positive(), s, d)
+}
+
+/// Goyal's condition, decided exactly: sqrt(k) <= 2/(sqrt(g) + 1) - 1 iff (sqrt k + 1)(sqrt g + 1)
+/// <= 2 iff k <= 1 and (1 + g)^2 (1 - k)^2 >= 4 g (1 + k)^2 (squaring twice, both sides >= 0).
+pub fn goyal_condition<F: OrderedField>(kappa: &F, gamma: &F) -> bool {
+    let one = F::one();
+    let (a, b) = (one.minus(kappa), one.plus(kappa));
+    let g1 = one.plus(gamma);
+    *kappa <= one && g1.times(&g1).times(&a).times(&a) >= F::from_i64(4).times(gamma).times(&b).times(&b)
+}
+
+/// The gamma where Goyal's condition changes for a given kappa < 1: the root in (0, 1) of
+/// (1 - k)^2 g^2 + (2 (1 - k)^2 - 4 (1 + k)^2) g + (1 - k)^2 (for k = 1/3: 7 - 4 sqrt 3).
+pub fn goyal_threshold<F: OrderedField>(kappa: &F) -> Option<RealRoot<F>> {
+    let one = F::one();
+    if *kappa >= one {
+        return None;
+    }
+    let (a, b) = (one.minus(kappa), one.plus(kappa));
+    let a2 = a.times(&a);
+    let mid = a2.plus(&a2).minus(&F::from_i64(4).times(&b).times(&b));
+    isolate(&Poly::new(vec![a2.clone(), mid, a2])).into_iter().find_map(|mut r| {
+        inside_unit(&mut r).then_some(r)
+    })
+}
+
+/// Refines a root until it is known to lie in (0, 1) or not.
+fn inside_unit<F: OrderedField>(r: &mut RealRoot<F>) -> bool {
+    let (zero, one) = (Q::int(0), Q::int(1));
+    loop {
+        if r.is_exact() {
+            return r.lo > zero && r.lo < one;
+        }
+        if r.lo >= zero && r.hi <= one {
+            return true;
+        }
+        if r.hi <= zero || r.lo >= one {
+            return false;
+        }
+        r.bisect();
+    }
+}
+
+/// Lagrange interpolation through (x_i, y_i) with distinct rational x_i.
+pub fn interpolate<F: OrderedField>(xs: &[Q], ys: &[F]) -> Poly<F> {
+    let mut out = Poly::zero();
+    for (i, (xi, yi)) in xs.iter().zip(ys).enumerate() {
+        let mut term = Poly::constant(yi.clone());
+        for (j, xj) in xs.iter().enumerate() {
+            if i != j {
+                let lin = Poly::new(vec![F::from_q(&-xj), F::one()]);
+                term = term.mul(&lin).scale(&F::from_q(&(Q::int(1) / (xi - xj))));
+            }
+        }
+        out = out.add(&term);
+    }
+    out
+}
+
+/// The coefficients (c2, c1, c0) of det(tI - M(gamma)) = t^3 - c2 t^2 + c1 t - c0 as
+/// polynomials in gamma of degree <= `deg`, from exact values at gamma = 0, 1, ..., deg.
+fn char_coefficients<F: OrderedField>(m: impl Fn(&Q) -> Mat3<F>, deg: usize) -> [Poly<F>; 3] {
+    let xs: Vec<Q> = (0..=deg as i64).map(Q::int).collect();
+    let ps: Vec<Poly<F>> = xs.iter().map(|x| char_poly3(&m(x))).collect();
+    let coef = |k: usize, neg: bool| {
+        let ys: Vec<F> = ps.iter().map(|p| if neg { p.coeff(k).negated() } else { p.coeff(k) }).collect();
+        interpolate(&xs, &ys)
+    };
+    [coef(2, true), coef(1, false), coef(0, true)]
+}
+
+/// S_j at any rational gamma (also outside [0, 1], for interpolation): A + gamma B.
+fn step_at<F: OrderedField>(fam: &Family<F>, j: i64, gamma: &Q) -> Mat3<F> {
+    let (a, b) = (fam.at(&Q::int(0)).step(j), fam.at(&Q::int(1)).step(j));
+    let g = F::from_q(gamma);
+    std::array::from_fn(|r| std::array::from_fn(|c| a[r][c].plus(&g.times(&b[r][c].minus(&a[r][c])))))
+}
+
+/// A change of a criterion at an algebraic gamma.
+#[derive(Clone, Debug)]
+pub struct Threshold<F> {
+    /// The value of gamma, a root of `factor` with an isolating interval.
+    pub gamma: RealRoot<F>,
+    /// The criterion just below and just above.
+    pub below: bool,
+    pub above: bool,
+    /// A square-free polynomial in gamma vanishing here (its defining polynomial).
+    pub factor: Poly<F>,
+    /// Which candidate polynomial it came from.
+    pub source: &'static str,
+}
+
+/// How a criterion behaves for gamma in (0, 1).
+#[derive(Clone, Debug)]
+pub struct Profile<F> {
+    /// The criterion for gamma just above 0.
+    pub near_zero: bool,
+    pub thresholds: Vec<Threshold<F>>,
+    /// The rational sample points used, with the criterion there.
+    pub samples: Vec<(Q, bool)>,
+}
+
+/// The supremum of the gammas in (0, 1) where a criterion holds.
+#[derive(Clone, Copy, Debug)]
+pub enum Sup<'a, F> {
+    Never,
+    /// It holds for gamma up to 1.
+    UpToOne,
+    /// It holds just below this threshold and nowhere above it.
+    At(&'a Threshold<F>),
+}
+
+impl<F: OrderedField> Profile<F> {
+    pub fn sup(&self) -> Sup<'_, F> {
+        if !self.samples.iter().any(|(_, v)| *v) {
+            return Sup::Never;
+        }
+        if self.samples.last().is_some_and(|(_, v)| *v) {
+            return Sup::UpToOne;
+        }
+        Sup::At(self.thresholds.iter().rev().find(|t| t.below && !t.above).expect("a true sample before a false last one"))
+    }
+
+    /// Whether the criterion holds on an initial interval (0, g*) and nowhere else.
+    pub fn is_initial_interval(&self) -> bool {
+        let first_false = self.samples.iter().position(|(_, v)| !*v).unwrap_or(self.samples.len());
+        self.samples[first_false..].iter().all(|(_, v)| !*v)
+    }
+}
+
+/// The profile of a criterion from candidate polynomials in gamma and an exact evaluator.
+pub fn profile<F: OrderedField>(
+    candidates: &[(&'static str, Poly<F>)],
+    eval: impl Fn(&Q) -> bool,
+) -> Profile<F> {
+    let mut roots: Vec<(RealRoot<F>, &'static str, Poly<F>)> = Vec::new();
+    for (name, c) in candidates {
+        if c.degree().unwrap_or(0) == 0 {
+            continue;
+        }
+        let sf = c.square_free();
+        for mut r in isolate(&sf) {
+            if inside_unit(&mut r) && !roots.iter_mut().any(|(o, _, _)| o.clone().compare(&mut r.clone()) == Ordering::Equal) {
+                roots.push((r, name, sf.clone()));
+            }
+        }
+    }
+    roots.sort_by(|a, b| a.0.clone().compare(&mut b.0.clone()));
+    // Make neighbouring intervals disjoint so that rational samples separate them.
+    for i in 1..roots.len() {
+        let (left, right) = roots.split_at_mut(i);
+        let (a, b) = (&mut left[i - 1].0, &mut right[0].0);
+        while a.hi > b.lo {
+            if a.width() >= b.width() { a.bisect() } else { b.bisect() }
+        }
+    }
+    let mut cuts = vec![Q::int(0)];
+    for (r, _, _) in &roots {
+        cuts.push(r.lo.clone());
+        cuts.push(r.hi.clone());
+    }
+    cuts.push(Q::int(1));
+    let samples: Vec<(Q, bool)> = cuts
+        .chunks(2)
+        .map(|w| {
+            let x = (&w[0] + &w[1]) / Q::int(2);
+            let v = eval(&x);
+            (x, v)
+        })
+        .collect();
+    let thresholds = roots
+        .into_iter()
+        .enumerate()
+        .filter(|(i, _)| samples[*i].1 != samples[i + 1].1)
+        .map(|(i, (gamma, source, factor))| Threshold { gamma, below: samples[i].1, above: samples[i + 1].1, factor, source })
+        .collect();
+    Profile { near_zero: samples[0].1, thresholds, samples }
+}
+
+/// The CC profile of a body family: where S_1 has a real positive dominant eigenvalue.
+pub fn cc_profile<F: OrderedField>(fam: &Family<F>) -> Profile<F> {
+    let [c2, c1, c0] = char_coefficients(|g| step_at(fam, 1, g), 3);
+    // p = t^3 + a t^2 + b t + c with a = -c2, b = c1, c = -c0.
+    let (a, b, c) = (c2.neg(), c1.clone(), c0.neg());
+    let k = |x: i64| F::from_i64(x);
+    let disc = a
+        .mul(&b)
+        .mul(&c)
+        .scale(&k(18))
+        .sub(&a.pow(3).mul(&c).scale(&k(4)))
+        .add(&a.pow(2).mul(&b.pow(2)))
+        .sub(&b.pow(3).scale(&k(4)))
+        .sub(&c.pow(2).scale(&k(27)));
+    let modulus_tie = c1.pow(3).sub(&c0.mul(&c2.pow(3)));
+    let sign_tie = c1.mul(&c2).sub(&c0);
+    let cands = [("discriminant", disc), ("real-complex modulus tie", modulus_tie), ("+-rho tie", sign_tie), ("zero eigenvalue", c0)];
+    profile(&cands, |g| cc_criterion(&fam.at(g)).0)
+}
+
+/// The PCC profile: where all eigenvalues of S_{n-1} S_1 are real. The product's coefficients
+/// have degree <= 6 in gamma; its cubic discriminant is the only candidate.
+pub fn pcc_profile<F: OrderedField>(fam: &Family<F>) -> Profile<F> {
+    let last = fam.n as i64 - 1;
+    let [c2, c1, c0] = char_coefficients(|g| mat_mul(&step_at(fam, last, g), &step_at(fam, 1, g)), 6);
+    let (a, b, c) = (c2.neg(), c1, c0.neg());
+    let k = |x: i64| F::from_i64(x);
+    let disc = a
+        .mul(&b)
+        .mul(&c)
+        .scale(&k(18))
+        .sub(&a.pow(3).mul(&c).scale(&k(4)))
+        .add(&a.pow(2).mul(&b.pow(2)))
+        .sub(&b.pow(3).scale(&k(4)))
+        .sub(&c.pow(2).scale(&k(27)));
+    profile(&[("discriminant", disc)], |g| pcc_criterion(&fam.at(g)).0)
+}
+
+/// The rod's CC profile from the 2x2 step map: candidates are its discriminant, trace and
+/// determinant.
+pub fn rod_cc_profile<F: OrderedField>(kappa: &F) -> Profile<F> {
+    let at = |g: &Q| -> Mat2<F> {
+        let (a, b) = (rod(kappa, &Q::int(0)).step(), rod(kappa, &Q::int(1)).step());
+        let g = F::from_q(g);
+        std::array::from_fn(|r| std::array::from_fn(|c| a[r][c].plus(&g.times(&b[r][c].minus(&a[r][c])))))
+    };
+    let xs: Vec<Q> = (0..=2).map(Q::int).collect();
+    let ps: Vec<Poly<F>> = xs.iter().map(|x| char_poly2(&at(x))).collect();
+    let coef = |k: usize| interpolate(&xs, &ps.iter().map(|p| p.coeff(k)).collect::<Vec<_>>());
+    let (b, c) = (coef(1), coef(0)); // t^2 + b t + c
+    let disc = b.pow(2).sub(&c.scale(&F::from_i64(4)));
+    let cands = [("discriminant", disc), ("trace", b), ("determinant", c)];
+    profile(&cands, |g| rod_cc_criterion(&rod(kappa, g)).0)
+}
+
+fn rod<F: OrderedField>(kappa: &F, gamma: &Q) -> Rod<F> {
+    Rod::new(kappa.clone(), F::from_q(gamma)).expect("valid rod")
+}

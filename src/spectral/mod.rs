@@ -1,0 +1,9 @@
+//! Exact spectral criteria (the paper's conjectures and its rod theorem): polynomials, Sturm
+//! sequences and real-root isolation, exact number fields, eigenvalue decisions, and the CC and
+//! PCC criteria with their thresholds in gamma.
+
+pub mod criteria;
+pub mod eigen;
+pub mod number_field;
+pub mod poly;
+pub mod roots;

@@ -1,0 +1,6 @@
+//! Tests of `chatter::spectral`.
+
+mod criteria;
+mod eigen;
+mod number_field;
+mod poly;
