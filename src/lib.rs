@@ -8,6 +8,7 @@
 //! - [`finder`], [`exactify`]: untrusted floating-point search and its exact rounding.
 //! - [`certify`], [`verify`], [`cli`]: the pipeline and the command line.
 
+pub mod bodies;
 pub mod certificate;
 pub mod certify;
 pub mod cli;

@@ -4,7 +4,9 @@
 //! Exit status: 0 success; 1 a negative answer (not certified, a certificate rejected);
 //! 2 bad usage or unreadable input; 3 internal error (the two backends disagree).
 
+mod bodies_cmd;
 mod certify_cmd;
+mod classify_cmd;
 mod simulate_cmd;
 mod verify_cmd;
 
@@ -40,6 +42,10 @@ pub enum Command {
     Certify(certify_cmd::CertifyArgs),
     /// Check certificate files (or directories of *.ron files) with the trusted kernel.
     Verify(verify_cmd::VerifyArgs),
+    /// Decide the paper's spectral criteria exactly at one body, with the evidence.
+    Classify(classify_cmd::ClassifyArgs),
+    /// The catalogue of bodies: kappa from geometry, exact CC and PCC thresholds in gamma.
+    Bodies(bodies_cmd::BodiesArgs),
     /// Simulate drops event by event (f64 or exact) and classify them as CC, PCC or ICC.
     Simulate(simulate_cmd::SimulateArgs),
 }
@@ -51,6 +57,8 @@ pub fn main() -> ExitCode {
         Command::Certify(a) => certify_cmd::run(a),
         Command::Verify(a) => verify_cmd::run(a),
         Command::Simulate(a) => simulate_cmd::run(a),
+        Command::Classify(a) => classify_cmd::run(a),
+        Command::Bodies(a) => bodies_cmd::run(a),
     };
     ExitCode::from(code)
 }

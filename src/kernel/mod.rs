@@ -123,30 +123,52 @@ enum Parsed<F> {
 fn body_error(e: BodyError) -> Rejection {
     match e {
         BodyError::UnsupportedN(_) => Rejection::new(Code::UnsupportedBody, format!("field `body.n`: {e}")),
-        BodyError::KappaNotPositive => Rejection::new(Code::ParameterOutOfRange, format!("field `body.kappa`: {e}")),
-        BodyError::GammaOutOfRange => Rejection::new(Code::ParameterOutOfRange, format!("field `body.gamma`: {e}")),
+        BodyError::KappaNotPositive => {
+            Rejection::new(Code::ParameterOutOfRange, format!("field `body.kappa`: {e}"))
+        }
+        BodyError::GammaOutOfRange => {
+            Rejection::new(Code::ParameterOutOfRange, format!("field `body.gamma`: {e}"))
+        }
     }
 }
 
 /// The generators as integer vectors (positive multiples of the given ones): coordinate i of
 /// (p_0/q_0, ..., p_k/q_k) becomes p_i prod_{j != i} q_j. Also the largest denominator in bits.
-fn parse_generators<F: Field>(cert: &Certificate, names: &[&str], limits: ParseLimits) -> Result<(Vec<Vec<F::Int>>, u64), Rejection> {
+/// Integer generators and the largest denominator in bits.
+type Generators<Z> = (Vec<Vec<Z>>, u64);
+
+fn parse_generators<F: Field>(
+    cert: &Certificate,
+    names: &[&str],
+    limits: ParseLimits,
+) -> Result<Generators<F::Int>, Rejection> {
     let mut gens = Vec::with_capacity(cert.cone.len());
     let mut bits = 0;
     for (i, g) in cert.cone.iter().enumerate() {
         if g.0.len() != names.len() {
-            let msg = format!("field `cone[{i}]`: expected {} coordinates ({}), found {}", names.len(), names.join(", "), g.0.len());
+            let msg = format!(
+                "field `cone[{i}]`: expected {} coordinates ({}), found {}",
+                names.len(),
+                names.join(", "),
+                g.0.len()
+            );
             return Err(Rejection::new(Code::WrongArity, msg));
         }
         let mut parts = Vec::with_capacity(names.len());
         for (c, name) in g.0.iter().zip(names) {
-            let (p, q) = parse_canonical_parts::<F::Int>(c, limits)
-                .map_err(|e| Rejection::new(Code::BadNumber, format!("field `cone[{i}].{name}`: {}: {e}", quote(c))))?;
+            let (p, q) = parse_canonical_parts::<F::Int>(c, limits).map_err(|e| {
+                Rejection::new(Code::BadNumber, format!("field `cone[{i}].{name}`: {}: {e}", quote(c)))
+            })?;
             bits = bits.max(q.bit_length());
             parts.push((p, q));
         }
         let scaled = (0..parts.len())
-            .map(|k| parts.iter().enumerate().fold(F::Int::one(), |acc, (j, (p, q))| acc.times(if j == k { p } else { q })))
+            .map(|k| {
+                parts
+                    .iter()
+                    .enumerate()
+                    .fold(F::Int::one(), |acc, (j, (p, q))| acc.times(if j == k { p } else { q }))
+            })
             .collect();
         gens.push(scaled);
     }
@@ -165,7 +187,10 @@ pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accept
         return Err(Rejection::new(Code::WrongFormat, format!("field `format`: expected {FORMAT:?}")));
     }
     if cert.version != VERSION {
-        return Err(Rejection::new(Code::UnsupportedVersion, format!("field `version`: {} is not {VERSION}", cert.version)));
+        return Err(Rejection::new(
+            Code::UnsupportedVersion,
+            format!("field `version`: {} is not {VERSION}", cert.version),
+        ));
     }
     let Body::RegularPolygon { n, kappa, gamma } = &cert.body;
     let kappa: F = number("body.kappa", kappa, limits)?;
@@ -189,14 +214,20 @@ pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accept
             if let Some(i) = gens.iter().position(|g| !g[2].is_negative()) {
                 return Err(not_below(cert, i));
             }
-            let gens: Vec<Vec3<F::Int>> = gens.into_iter().map(|g| [g[0].clone(), g[1].clone(), g[2].clone()]).collect();
+            let gens: Vec<Vec3<F::Int>> =
+                gens.into_iter().map(|g| [g[0].clone(), g[1].clone(), g[2].clone()]).collect();
             check_polygon(&body, &gens, cert.claim, bits)
         }
     }
 }
 
 /// The geometric checks R1 (dimension) to R4 for a regular polygon with n >= 3.
-fn check_polygon<F: Field>(body: &impact::Body<F>, gens: &[Vec3<F::Int>], claim: Claim, max_denominator_bits: u64) -> Result<Accepted, Rejection> {
+fn check_polygon<F: Field>(
+    body: &impact::Body<F>,
+    gens: &[Vec3<F::Int>],
+    claim: Claim,
+    max_denominator_bits: u64,
+) -> Result<Accepted, Rejection> {
     let n = body.n as u64;
     // K: the exact convex hull of the projected generators; it must have an interior.
     let hull_idx = hull(gens);
@@ -245,7 +276,7 @@ fn check_polygon<F: Field>(body: &impact::Body<F>, gens: &[Vec3<F::Int>], claim:
     // Strongest claim: PCC excluded by the quadratic factor of S_{n-1} S_1.
     let mut pcc = None;
     if claim >= Claim::CompleteChatterFromAllDown {
-        let quad = pcc::pcc_quadratic(&body).map_err(|at_one| {
+        let quad = pcc::pcc_quadratic(body).map_err(|at_one| {
             Rejection::new(
                 Code::Internal,
                 format!("model error: det(I - S_(n-1) S_1) = {} is not 0", to_canonical(&at_one)),
@@ -270,14 +301,5 @@ fn check_polygon<F: Field>(body: &impact::Body<F>, gens: &[Vec3<F::Int>], claim:
     let translation = mat_vec(&int_mat(&body.impact(0)), &down);
     let contains_translation = translation[2].is_negative() && k.contains(&translation);
     let generators = gens.len();
-    Ok(Accepted {
-        claim,
-        n,
-        generators,
-        redundant,
-        pieces,
-        max_denominator_bits,
-        pcc,
-        contains_translation,
-    })
+    Ok(Accepted { claim, n, generators, redundant, pieces, max_denominator_bits, pcc, contains_translation })
 }

@@ -79,7 +79,12 @@ impl<F: OrderedField> Rod<F> {
 /// The checks of docs/certificate-format.md for the rod (n = 2). A generator (u0, u1) with
 /// w = -(u0 + u1) = -2v > 0 projects to s = u0 / w; K is the interval [s_lo, s_hi] of the
 /// extreme generators, C_1 is s >= 0, and R4 holds trivially (with two contacts PCC is CC).
-pub fn check_rod<F: Field>(rod: &Rod<F>, gens: &[[F::Int; 2]], claim: Claim, bits: u64) -> Result<Accepted, Rejection> {
+pub fn check_rod<F: Field>(
+    rod: &Rod<F>,
+    gens: &[[F::Int; 2]],
+    claim: Claim,
+    bits: u64,
+) -> Result<Accepted, Rejection> {
     let w = |g: &[F::Int; 2]| g[0].plus(&g[1]).negated();
     // s(a) < s(b) <=> a0 w(b) < b0 w(a) (both w > 0).
     let cmp = |a: &[F::Int; 2], b: &[F::Int; 2]| a[0].times(&w(b)).cmp(&b[0].times(&w(a)));
@@ -98,22 +103,28 @@ pub fn check_rod<F: Field>(rod: &Rod<F>, gens: &[[F::Int; 2]], claim: Claim, bit
         let c = |x: &F::Int| to_canonical(&F::from_int(x).times(&two_over_w));
         format!("({}, {})", c(&g[0]), c(&g[1]))
     };
-    let check = |img: [F::Int; 2], what: &dyn Fn() -> String, outside: Code, above: Code| -> Result<(), Rejection> {
-        if img.iter().all(Ring::is_zero) {
-            return Ok(());
-        }
-        if !w(&img).is_positive() {
-            return Err(Rejection::new(above, format!("{} to a velocity with v >= 0", what())));
-        }
-        if inside(&img) {
-            return Ok(());
-        }
-        let (edge, end) = if cmp(&img, a) == Ordering::Less { (lo, a) } else { (hi, b) };
-        let s = |g: &[F::Int; 2]| F::from_int(&g[0]).over(&F::from_int(&w(g))).expect("w > 0");
-        let by = s(&img).minus(&s(end));
-        let msg = format!("{} to {} outside K, beyond generator {edge}, by {} in u0/(-2v)", what(), point(&img), to_canonical(&by));
-        Err(Rejection::new(outside, msg))
-    };
+    let check =
+        |img: [F::Int; 2], what: &dyn Fn() -> String, outside: Code, above: Code| -> Result<(), Rejection> {
+            if img.iter().all(Ring::is_zero) {
+                return Ok(());
+            }
+            if !w(&img).is_positive() {
+                return Err(Rejection::new(above, format!("{} to a velocity with v >= 0", what())));
+            }
+            if inside(&img) {
+                return Ok(());
+            }
+            let (edge, end) = if cmp(&img, a) == Ordering::Less { (lo, a) } else { (hi, b) };
+            let s = |g: &[F::Int; 2]| F::from_int(&g[0]).over(&F::from_int(&w(g))).expect("w > 0");
+            let by = s(&img).minus(&s(end));
+            let msg = format!(
+                "{} to {} outside K, beyond generator {edge}, by {} in u0/(-2v)",
+                what(),
+                point(&img),
+                to_canonical(&by)
+            );
+            Err(Rejection::new(outside, msg))
+        };
     // K ∩ C_1: the part with s >= 0; its lower end is the ray u0 = 0, i.e. (0, -1), if s_lo < 0.
     let mut piece = Vec::new();
     if !b[0].is_negative() {
@@ -137,7 +148,16 @@ pub fn check_rod<F: Field>(rod: &Rod<F>, gens: &[[F::Int; 2]], claim: Claim, bit
     let contains_translation = w(&t).is_positive() && inside(&t);
     let redundant = (0..gens.len()).filter(|i| *i != lo && *i != hi).collect();
     let pieces = vec![piece.len()];
-    Ok(Accepted { claim, n: 2, generators: gens.len(), redundant, pieces, max_denominator_bits: bits, pcc: None, contains_translation })
+    Ok(Accepted {
+        claim,
+        n: 2,
+        generators: gens.len(),
+        redundant,
+        pieces,
+        max_denominator_bits: bits,
+        pcc: None,
+        contains_translation,
+    })
 }
 
 /// A positive integer multiple of a rational 2x2 matrix.

@@ -32,7 +32,8 @@ pub struct Family<F> {
 impl<F: OrderedField> Family<F> {
     /// The body at one value of gamma (0 <= gamma <= 1).
     pub fn at(&self, gamma: &Q) -> Body<F> {
-        Body::with_cosine(self.n, self.c1.clone(), self.kappa.clone(), F::from_q(gamma)).expect("valid family")
+        Body::with_cosine(self.n, self.c1.clone(), self.kappa.clone(), F::from_q(gamma))
+            .expect("valid family")
     }
 }
 
@@ -75,9 +76,9 @@ pub fn goyal_threshold<F: OrderedField>(kappa: &F) -> Option<RealRoot<F>> {
     let (a, b) = (one.minus(kappa), one.plus(kappa));
     let a2 = a.times(&a);
     let mid = a2.plus(&a2).minus(&F::from_i64(4).times(&b).times(&b));
-    isolate(&Poly::new(vec![a2.clone(), mid, a2])).into_iter().find_map(|mut r| {
-        inside_unit(&mut r).then_some(r)
-    })
+    isolate(&Poly::new(vec![a2.clone(), mid, a2]))
+        .into_iter()
+        .find_map(|mut r| inside_unit(&mut r).then_some(r))
 }
 
 /// Refines a root until it is known to lie in (0, 1) or not.
@@ -174,7 +175,13 @@ impl<F: OrderedField> Profile<F> {
         if self.samples.last().is_some_and(|(_, v)| *v) {
             return Sup::UpToOne;
         }
-        Sup::At(self.thresholds.iter().rev().find(|t| t.below && !t.above).expect("a true sample before a false last one"))
+        Sup::At(
+            self.thresholds
+                .iter()
+                .rev()
+                .find(|t| t.below && !t.above)
+                .expect("a true sample before a false last one"),
+        )
     }
 
     /// Whether the criterion holds on an initial interval (0, g*) and nowhere else.
@@ -196,7 +203,9 @@ pub fn profile<F: OrderedField>(
         }
         let sf = c.square_free();
         for mut r in isolate(&sf) {
-            if inside_unit(&mut r) && !roots.iter_mut().any(|(o, _, _)| o.clone().compare(&mut r.clone()) == Ordering::Equal) {
+            if inside_unit(&mut r)
+                && !roots.iter_mut().any(|(o, _, _)| o.clone().compare(&mut r.clone()) == Ordering::Equal)
+            {
                 roots.push((r, name, sf.clone()));
             }
         }
@@ -228,7 +237,13 @@ pub fn profile<F: OrderedField>(
         .into_iter()
         .enumerate()
         .filter(|(i, _)| samples[*i].1 != samples[i + 1].1)
-        .map(|(i, (gamma, source, factor))| Threshold { gamma, below: samples[i].1, above: samples[i + 1].1, factor, source })
+        .map(|(i, (gamma, source, factor))| Threshold {
+            gamma,
+            below: samples[i].1,
+            above: samples[i + 1].1,
+            factor,
+            source,
+        })
         .collect();
     Profile { near_zero: samples[0].1, thresholds, samples }
 }
@@ -249,7 +264,12 @@ pub fn cc_profile<F: OrderedField>(fam: &Family<F>) -> Profile<F> {
         .sub(&c.pow(2).scale(&k(27)));
     let modulus_tie = c1.pow(3).sub(&c0.mul(&c2.pow(3)));
     let sign_tie = c1.mul(&c2).sub(&c0);
-    let cands = [("discriminant", disc), ("real-complex modulus tie", modulus_tie), ("+-rho tie", sign_tie), ("zero eigenvalue", c0)];
+    let cands = [
+        ("discriminant", disc),
+        ("real-complex modulus tie", modulus_tie),
+        ("+-rho tie", sign_tie),
+        ("zero eigenvalue", c0),
+    ];
     profile(&cands, |g| cc_criterion(&fam.at(g)).0)
 }
 
@@ -290,4 +310,44 @@ pub fn rod_cc_profile<F: OrderedField>(kappa: &F) -> Profile<F> {
 
 fn rod<F: OrderedField>(kappa: &F, gamma: &Q) -> Rod<F> {
     Rod::new(kappa.clone(), F::from_q(gamma)).expect("valid rod")
+}
+
+/// The paper's Theorem on rotating initial velocities for the rod: CC iff Goyal's condition holds
+/// and the initial velocity p0 = (u0, u1) lies in the cone spanned by the eigenvector e_min of
+/// the smaller eigenvalue of S_1 = U_0 P and its mirror image. Returns `None` when the condition
+/// fails (the rod never chatters completely), else whether p0 is in the cone.
+///
+/// On the line v = -1 a velocity is s = u0 / (-(u0 + u1)); mirroring maps s to -1 - s, so the
+/// cone is the interval between s(e_min) and -1 - s(e_min). With e = (S01, lambda - S00),
+/// s(e) - x = (S01 + x (S01 - S00) + x lambda) / d(lambda), d(lambda) = S00 - S01 - lambda, and
+/// the signs of these linear forms at the algebraic lambda_min are decided exactly.
+pub fn rod_velocity_in_cone<F: OrderedField>(rod: &Rod<F>, p0: &[F; 2]) -> Option<bool> {
+    if !goyal_condition(&rod.kappa, &rod.gamma) {
+        return None;
+    }
+    let w = p0[0].plus(&p0[1]).negated();
+    if !w.is_positive() {
+        return Some(false); // the centre of mass is not moving down
+    }
+    let x = p0[0].over(&w).expect("w > 0");
+    let s = rod.step();
+    let mut lmin = Spectrum::of2(&s).real.first()?.0.clone();
+    let (s00, s01) = (&s[0][0], &s[0][1]);
+    // sign of s(e_min) - y for a rational-in-F point y.
+    let mut side = |y: &F| -> Ordering {
+        let num = Poly::new(vec![s01.plus(&y.times(&s01.minus(s00))), y.clone()]);
+        let den = Poly::new(vec![s00.minus(s01), F::one().negated()]);
+        let (a, b) = (lmin.sign_of(&num), lmin.sign_of(&den));
+        if a == Ordering::Equal {
+            a
+        } else if a == b {
+            Ordering::Greater
+        } else {
+            Ordering::Less
+        }
+    };
+    // The ends are e = s(e_min) and -1 - e; x lies between them iff (e - x)(-1 - e - x) <= 0,
+    // i.e. iff e - x and e - (-1 - x) have the same sign (or one vanishes).
+    let (a, b) = (side(&x), side(&x.negated().minus(&F::one())));
+    Some(a == b || a == Ordering::Equal || b == Ordering::Equal)
 }

@@ -70,8 +70,12 @@ impl Dominant {
             Dominant::Negative => "real and negative",
             Dominant::PlusMinus { .. } => "rho and -rho tie",
             Dominant::NonReal => "a complex-conjugate pair",
-            Dominant::RealAndNonReal { real_positive: true } => "a positive eigenvalue tied with a complex pair",
-            Dominant::RealAndNonReal { real_positive: false } => "a negative eigenvalue tied with a complex pair",
+            Dominant::RealAndNonReal { real_positive: true } => {
+                "a positive eigenvalue tied with a complex pair"
+            }
+            Dominant::RealAndNonReal { real_positive: false } => {
+                "a negative eigenvalue tied with a complex pair"
+            }
             Dominant::Zero => "zero (nilpotent)",
         }
     }
@@ -120,7 +124,13 @@ impl<F: OrderedField> Spectrum<F> {
             }
             let test = Poly::new(vec![c1.negated(), c2]);
             return match r.sign_of(&test) {
-                Ordering::Greater => if rs == Ordering::Greater { Dominant::Positive } else { Dominant::Negative },
+                Ordering::Greater => {
+                    if rs == Ordering::Greater {
+                        Dominant::Positive
+                    } else {
+                        Dominant::Negative
+                    }
+                }
                 Ordering::Less => Dominant::NonReal,
                 Ordering::Equal => Dominant::RealAndNonReal { real_positive: rs == Ordering::Greater },
             };

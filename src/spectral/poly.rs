@@ -90,7 +90,13 @@ impl<F: OrderedField> Poly<F> {
     }
     /// p(-t).
     pub fn reflect(&self) -> Self {
-        Poly::new(self.c.iter().enumerate().map(|(i, a)| if i % 2 == 1 { a.negated() } else { a.clone() }).collect())
+        Poly::new(
+            self.c
+                .iter()
+                .enumerate()
+                .map(|(i, a)| if i % 2 == 1 { a.negated() } else { a.clone() })
+                .collect(),
+        )
     }
     pub fn derivative(&self) -> Self {
         Poly::new(self.c.iter().enumerate().skip(1).map(|(i, a)| a.times(&F::from_i64(i as i64))).collect())
@@ -252,9 +258,21 @@ impl<F: OrderedField + fmt::Display> Poly<F> {
             let text = abs.to_string();
             let complex = text.contains(['+', ' ']) || text.chars().skip(1).any(|c| c == '-');
             let coef = match (i, abs == F::one()) {
-                (0, _) => if complex { format!("({text})") } else { text },
+                (0, _) => {
+                    if complex {
+                        format!("({text})")
+                    } else {
+                        text
+                    }
+                }
                 (_, true) => String::new(),
-                _ => if complex { format!("({text}) ") } else { format!("{text} ") },
+                _ => {
+                    if complex {
+                        format!("({text}) ")
+                    } else {
+                        format!("{text} ")
+                    }
+                }
             };
             let mono = match i {
                 0 => String::new(),

@@ -138,7 +138,9 @@ impl<F: OrderedField> RealRoot<F> {
                 return q.sign_at(&self.lo);
             }
             let s = q.sign_at(&self.lo);
-            if s != Ordering::Equal && count_roots(&seq, &Point::At(self.lo.clone()), &Point::At(self.hi.clone())) == 0 {
+            if s != Ordering::Equal
+                && count_roots(&seq, &Point::At(self.lo.clone()), &Point::At(self.hi.clone())) == 0
+            {
                 return s;
             }
             self.bisect();

@@ -163,3 +163,98 @@ fn a_closed_stdout_ends_the_run_quietly() {
     assert!(!err.contains("panicked"), "{err}");
     assert_eq!(out.status.code(), Some(141));
 }
+
+#[test]
+fn classify_shows_the_evidence() {
+    let d = tempfile::tempdir().unwrap();
+    let o = chatter(&["classify", "--n", "3", "--kappa", "3/20", "--gamma", "0.05"], d.path());
+    let (out, err) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    for needle in [
+        "CC criterion (S_1 has a real, positive dominant eigenvalue): HOLDS",
+        "det(tI - S_1) = t^3 - 147/460 t^2 - 147/460 t + 1/20",
+        "PCC is excluded by the paper's Lemma",
+        "CC threshold for this kappa: holds for gamma below a threshold in [0.115197810299, 0.115197810301]",
+        "float finder, translation seed: found a cone",
+        "certificate: CompleteChatterFromAllDown",
+    ] {
+        assert!(out.contains(needle), "missing {needle:?} in\n{out}");
+    }
+    // An irrational body is decided exactly in its number field; no certificate format exists.
+    let o = chatter(&["classify", "--n", "5", "--kappa", "1/20", "--gamma", "1/100", "--json"], d.path());
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(v["method"].as_str().unwrap().contains("cos(2*pi/5)"));
+    assert!(v["cc"]["holds"].is_boolean() && v["pcc"]["holds"].is_boolean());
+    assert!(v["certificate"].is_null());
+}
+
+#[test]
+fn classify_the_rod_from_a_rotating_start() {
+    let d = tempfile::tempdir().unwrap();
+    let run = |g: &str, vel: &str| {
+        let o = chatter(
+            &["classify", "--n", "2", "--kappa", "1/3", "--gamma", g, "--velocity", vel, "--json"],
+            d.path(),
+        );
+        assert_eq!(o.status.code(), Some(0));
+        serde_json::from_slice::<serde_json::Value>(&o.stdout).unwrap()
+    };
+    let v = run("1/20", "-1,-1");
+    assert_eq!(v["goyal"], true);
+    assert_eq!(v["from_velocity"]["cc"], true, "pure translation chatters below 7 - 4 sqrt 3");
+    assert_eq!(run("1/20", "0.9,-1")["from_velocity"]["cc"], false, "a fast rotation leaves the cone");
+    assert_eq!(run("1/10", "-1,-1")["goyal"], false);
+    let o = chatter(&["classify", "--n", "3", "--velocity", "1,2"], d.path());
+    assert_eq!(o.status.code(), Some(2), "--velocity is for the rod");
+}
+
+#[test]
+fn bodies_json_has_the_documented_keys() {
+    let d = tempfile::tempdir().unwrap();
+    let o = chatter(&["bodies", "--json"], d.path());
+    assert_eq!(o.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let rows = v.as_array().unwrap();
+    assert!(rows.len() >= 12);
+    for r in rows {
+        for k in [
+            "name",
+            "n",
+            "kappa",
+            "kappa_f64",
+            "cc_gamma_max",
+            "pcc_gamma_max",
+            "cc_gamma_interval",
+            "pcc_gamma_interval",
+        ] {
+            assert!(r.get(k).is_some(), "{k} missing in {r}");
+        }
+        if let Some([lo, hi]) =
+            r["cc_gamma_interval"].as_array().map(|a| [a[0].as_str().unwrap(), a[1].as_str().unwrap()])
+        {
+            let (lo, hi): (chatter::exact::Q, chatter::exact::Q) = (lo.parse().unwrap(), hi.parse().unwrap());
+            let m = r["cc_gamma_max"].as_f64().unwrap();
+            assert!(lo.to_f64() <= m && m <= hi.to_f64());
+        }
+    }
+    let cube = rows.iter().find(|r| r["name"].as_str().unwrap().starts_with("cube")).unwrap();
+    assert!(cube["cc_gamma_max"].is_null(), "the cube never meets the CC criterion");
+    assert_eq!(cube["kappa"], "1/3");
+    // User bodies, alone.
+    let o = chatter(
+        &[
+            "bodies", "--only", "--plate", "5", "--prism", "4", "--height", "1/2", "--n", "3", "--kappa",
+            "0.15",
+        ],
+        d.path(),
+    );
+    let (out, err) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(
+        out.contains("flat pentagon plate")
+            && out.contains("square prism, height 1/2")
+            && out.contains("n = 3, kappa = 3/20")
+    );
+    let o = chatter(&["bodies", "--prism", "4"], d.path());
+    assert_eq!(o.status.code(), Some(2));
+}

@@ -2,6 +2,7 @@
 
 mod common;
 
+mod bodies;
 mod certificate;
 mod certify;
 mod cli;

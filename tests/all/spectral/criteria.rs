@@ -37,7 +37,11 @@ fn goyal_condition_agrees_with_the_rod_eigenvalue_criterion() {
         for g in 0..=50 {
             let (kappa, gamma) = (Q::new(k, 40), Q::new(g, 50));
             let rod = chatter::kernel::rod::Rod::new(kappa.clone(), gamma.clone()).unwrap();
-            assert_eq!(goyal_condition(&kappa, &gamma), rod_cc_criterion(&rod).0, "kappa={kappa} gamma={gamma}");
+            assert_eq!(
+                goyal_condition(&kappa, &gamma),
+                rod_cc_criterion(&rod).0,
+                "kappa={kappa} gamma={gamma}"
+            );
         }
     }
     assert!(!goyal_condition(&Q::int(2), &Q::int(0)), "kappa > 1 never chatters");
@@ -101,4 +105,41 @@ fn cube_and_heavy_bodies_never_meet_the_cc_criterion() {
     assert!(matches!(cc_profile(&family(4, "1/3")).sup(), Sup::Never));
     assert!(matches!(cc_profile(&family(3, "1")).sup(), Sup::Never));
     let _ = Ring::is_zero(&Q::int(0));
+}
+
+/// The rod's invariant cone for rotating initial velocities, against a float construction of
+/// the same cone (eigenvector of the smaller eigenvalue and its mirror image).
+#[test]
+fn rod_velocity_cone_matches_a_float_construction() {
+    use chatter::kernel::rod::Rod;
+    use chatter::spectral::criteria::rod_velocity_in_cone;
+    let rod = Rod::new(q("1/3"), q("1/20")).unwrap();
+    let s = chatter::kernel::rod::Rod::step(&rod);
+    let m = nalgebra::Matrix2::from_fn(|r, c| s[r][c].to_f64());
+    let (tr, det) = (m[(0, 0)] + m[(1, 1)], m.determinant());
+    let lmin = (tr - (tr * tr - 4.0 * det).sqrt()) / 2.0;
+    let e = [m[(0, 1)], lmin - m[(0, 0)]];
+    let se = e[0] / -(e[0] + e[1]);
+    let (a, b) = (se.min(-1.0 - se), se.max(-1.0 - se));
+    let mut checked = 0;
+    for u0 in -40..=40 {
+        for u1 in -40..=10 {
+            let p = [Q::new(u0, 10), Q::new(u1, 10)];
+            let w = -(u0 + u1) as f64;
+            if w <= 0.0 {
+                continue;
+            }
+            let x = u0 as f64 / w;
+            if (x - a).abs() < 1e-9 || (x - b).abs() < 1e-9 {
+                continue;
+            }
+            assert_eq!(rod_velocity_in_cone(&rod, &p), Some(a <= x && x <= b), "p = ({u0}, {u1})/10");
+            checked += 1;
+        }
+    }
+    assert!(checked > 1000);
+    // Pure translation is inside (Goyal's theorem); above the threshold nothing chatters.
+    assert_eq!(rod_velocity_in_cone(&rod, &[Q::int(-1), Q::int(-1)]), Some(true));
+    let stiff = Rod::new(q("1/3"), q("1/10")).unwrap();
+    assert_eq!(rod_velocity_in_cone(&stiff, &[Q::int(-1), Q::int(-1)]), None);
 }

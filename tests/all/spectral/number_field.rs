@@ -47,7 +47,13 @@ fn heptagon_field_has_degree_three() {
     let c = k.generator();
     // 8c^3 + 4c^2 - 4c - 1 = 0 for c = cos(2 pi/7).
     let e = |x: i64| -> chatter::spectral::number_field::Nf { Ring::from_i64(x) };
-    let v = e(8).times(&c).times(&c).times(&c).plus(&e(4).times(&c).times(&c)).minus(&e(4).times(&c)).minus(&e(1));
+    let v = e(8)
+        .times(&c)
+        .times(&c)
+        .times(&c)
+        .plus(&e(4).times(&c).times(&c))
+        .minus(&e(4).times(&c))
+        .minus(&e(1));
     assert!(v.is_zero());
     let inv = <Nf as Ring>::one().over(&c).unwrap();
     assert_eq!(inv.times(&c), Ring::one());

@@ -54,13 +54,19 @@ fn isolation_of_rational_and_irrational_roots() {
     assert_eq!(roots.len(), 4);
     // 0 is hit exactly by the first bisection; every root lies in its interval.
     assert!(roots[1].is_exact() && roots[1].lo == Q::int(0));
-    for (r, x) in roots.iter().zip([-1.4142135, 0.0, 0.5, 1.4142135]) {
+    for (r, x) in roots.iter().zip([-std::f64::consts::SQRT_2, 0.0, 0.5, std::f64::consts::SQRT_2]) {
         assert!(r.lo.to_f64() <= x + 1e-6 && x - 1e-6 <= r.hi.to_f64(), "{x} in [{}, {}]", r.lo, r.hi);
     }
     let sqrt2 = &mut roots[3];
     let (lo, hi) = sqrt2.decimal_enclosure(12);
-    let (l, h): (Q, Q) = (lo.replace('.', "").parse::<Q>().unwrap() / Q::pow10(12), hi.replace('.', "").parse::<Q>().unwrap() / Q::pow10(12));
-    assert!(&l * &l <= Q::int(2) && Q::int(2) <= &h * &h, "the printed interval [{lo}, {hi}] contains sqrt 2");
+    let (l, h): (Q, Q) = (
+        lo.replace('.', "").parse::<Q>().unwrap() / Q::pow10(12),
+        hi.replace('.', "").parse::<Q>().unwrap() / Q::pow10(12),
+    );
+    assert!(
+        &l * &l <= Q::int(2) && Q::int(2) <= &h * &h,
+        "the printed interval [{lo}, {hi}] contains sqrt 2"
+    );
     assert!(h - l <= Q::new(2, 1) * Q::pow10(-12));
     assert!(isolate(&p(&[1, 0, 1])).is_empty(), "t^2 + 1 has no real root");
 }
