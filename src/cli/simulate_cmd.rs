@@ -1,11 +1,404 @@
 //! `chatter simulate` (issue 4).
 
+use super::{EXIT_OK, emit, usage_error};
+use crate::exact::{Q, parse_user_number};
+use crate::kernel::impact::BodyError;
+use crate::simulate::classify::DEFAULT_PCC_EPSILON;
+use crate::simulate::pattern::{self, find};
+use crate::simulate::{
+    Arithmetic, Brief, Decision, Initial, Model, Options, Outcome, Run, Shape, counts, given_start, plot,
+    record, simulate, simulate_many,
+};
 use clap::Args;
+use serde_json::{Value, json};
+use std::io::IsTerminal;
+use std::path::PathBuf;
+
+/// Largest impact budget accepted.
+pub const MAX_IMPACTS: usize = 10_000_000;
+/// Largest number of runs accepted.
+pub const MAX_RUNS: u64 = 1_000_000;
+/// Longest impact sequence printed in JSON.
+const JSON_SEQUENCE: usize = 1000;
 
 /// Raw arguments of `chatter simulate`.
 #[derive(Args, Debug)]
-pub struct SimulateArgs {}
+#[command(after_help = "Outcomes: CC (complete chatter: impacts accumulate, the body comes to rest), \
+PCC (two adjacent contacts chatter to rest, then all contacts land at once), ICC (the body leaves: \
+v > 0 or no contact approaches), simultaneous (two contacts land at the same instant: undecidable \
+in this model, never resolved), undecided (the budget cannot tell). The line `decided by` names \
+the test.\n\n\
+Without --position/--velocity the body is dropped as in the paper: velocity (R1, R2, -1) and \
+position (R3, R4, 1 + R5) in the paper's coordinates (omega_x, omega_y, v), (phi_x, phi_y, h), \
+R_i uniform on (0, 0.1) from --seed (SplitMix64: the same on every machine); the rod uses \
+(omega, v) = (R1, -1) and (phi, h) = (R3, 1 + R5). --position and \
+--velocity take our coordinates instead: (h0, h1, hc) and (u0, u1, v), heights and normal \
+velocities of contacts 0 and 1 and of the centre of mass; for the rod (--n 2) two numbers \
+(h0, h1) and (u0, u1).\n\n\
+Numbers are read exactly: 1/6, 0.01 (= 1/100), 1e-2. Exit status 0 when the simulation ran, \
+2 on bad input.\n\n\
+Examples:\n  chatter simulate --n 3 --kappa 3/20 --gamma 1/20 --seed 7\n  \
+chatter simulate --n 4 --runs 1000 --json\n  \
+chatter simulate --n 3 --kappa 1/8 --gamma 1/200 --exact --plot pcc.svg\n  \
+chatter simulate --n 4 --position 1/2,1/2,1 --velocity -1,-1,-1 --exact")]
+pub struct SimulateArgs {
+    /// Number of contacts: 2 (the rod) or a regular n-gon with n in {3, 4, 6}.
+    #[arg(long, default_value = "4", allow_hyphen_values = true)]
+    pub n: String,
+    /// kappa = rho^2 / R^2 (radius of gyration over circumradius, squared), > 0.
+    #[arg(long, default_value = "1/6", allow_hyphen_values = true)]
+    pub kappa: String,
+    /// Coefficient of restitution, in [0, 1].
+    #[arg(long, default_value = "1/100", allow_hyphen_values = true)]
+    pub gamma: String,
+    /// Seed of the random drop (default 0); with --runs, run i uses seed + i.
+    #[arg(long, allow_hyphen_values = true)]
+    pub seed: Option<String>,
+    /// Impact budget.
+    #[arg(long, default_value = "200", allow_hyphen_values = true)]
+    pub impacts: String,
+    /// Exact rational arithmetic instead of f64 (slower; decides ties and symmetric cases exactly).
+    #[arg(long)]
+    pub exact: bool,
+    /// Write one CSV row per impact to this file.
+    #[arg(long, value_name = "CSV")]
+    pub trajectory: Option<PathBuf>,
+    /// Write an SVG plot of the contact heights against time to this file.
+    #[arg(long, value_name = "SVG")]
+    pub plot: Option<PathBuf>,
+    /// Repeat with this many random drops (parallel) and print the outcome counts.
+    #[arg(long, value_name = "M", allow_hyphen_values = true)]
+    pub runs: Option<String>,
+    /// Print one JSON object instead of text.
+    #[arg(long)]
+    pub json: bool,
+    /// Initial velocity in our coordinates: u0,u1,v (rod: u0,u1). Needs --position.
+    #[arg(long, value_name = "U0,U1,V", allow_hyphen_values = true)]
+    pub velocity: Option<String>,
+    /// Initial position in our coordinates: h0,h1,hc (rod: h0,h1). Needs --velocity.
+    #[arg(long, value_name = "H0,H1,HC", allow_hyphen_values = true)]
+    pub position: Option<String>,
+    /// Epsilon of the paper's PCC criterion (state within eps of a multiple of m_(i,i+1)).
+    #[arg(long, default_value_t = DEFAULT_PCC_EPSILON)]
+    pub pcc_epsilon: f64,
+}
 
-pub fn run(_a: SimulateArgs) -> u8 {
-    super::usage_error("chatter simulate is being written (issue 4)")
+/// Validated arguments.
+struct Validated {
+    model: Model,
+    n: u64,
+    kappa: Q,
+    gamma: Q,
+    arithmetic: Arithmetic,
+    initial: Initial,
+    seed: u64,
+    runs: Option<u64>,
+    opts: Options,
+    trajectory: Option<PathBuf>,
+    plot: Option<PathBuf>,
+    json: bool,
+}
+
+fn numbers(flag: &str, s: &str) -> Result<Vec<Q>, String> {
+    s.split(',').map(|x| parse_user_number(x).map_err(|e| format!("{flag}: {e}"))).collect()
+}
+
+fn validate(a: SimulateArgs) -> Result<Validated, String> {
+    let n: u64 = a.n.trim().parse().map_err(|_| format!("--n: {:?} is not a positive integer", a.n))?;
+    if !matches!(n, 2 | 3 | 4 | 6) {
+        return Err(format!("--n: {n} is not supported: use 2 (the rod) or 3, 4, 6 (exact cosines)"));
+    }
+    let kappa = parse_user_number(&a.kappa).map_err(|e| format!("--kappa: {e}"))?;
+    let gamma = parse_user_number(&a.gamma).map_err(|e| format!("--gamma: {e}"))?;
+    let shape = Shape::from_n(n);
+    let model = Model::new(shape, kappa.clone(), gamma.clone()).map_err(|e| match e {
+        BodyError::KappaNotPositive => format!("--kappa: {e}"),
+        BodyError::GammaOutOfRange => format!("--gamma: {e}"),
+        BodyError::UnsupportedN(_) => format!("--n: {e}"),
+    })?;
+    let impacts: usize = a
+        .impacts
+        .trim()
+        .parse()
+        .map_err(|_| format!("--impacts: {:?} is not a non-negative integer", a.impacts))?;
+    if impacts == 0 || impacts > MAX_IMPACTS {
+        return Err(format!("--impacts must be between 1 and {MAX_IMPACTS}"));
+    }
+    let seed = match &a.seed {
+        None => 0,
+        Some(s) => s.trim().parse().map_err(|_| format!("--seed: {s:?} is not an integer in 0..2^64"))?,
+    };
+    let runs = match &a.runs {
+        None => None,
+        Some(s) => match s.trim().parse::<u64>() {
+            Ok(m) if (1..=MAX_RUNS).contains(&m) => Some(m),
+            _ => return Err(format!("--runs: {s:?} is not an integer between 1 and {MAX_RUNS}")),
+        },
+    };
+    if !(a.pcc_epsilon.is_finite() && a.pcc_epsilon > 0.0 && a.pcc_epsilon < 1.0) {
+        return Err(format!("--pcc-epsilon: {} is not in (0, 1)", a.pcc_epsilon));
+    }
+    let initial = match (&a.position, &a.velocity) {
+        (None, None) => Initial::RandomDrop { seed },
+        (Some(pos), Some(vel)) => {
+            if a.seed.is_some() {
+                return Err(
+                    "--seed chooses a random drop: it cannot be combined with --position/--velocity".into()
+                );
+            }
+            if runs.is_some() {
+                return Err(
+                    "--runs repeats random drops: it cannot be combined with --position/--velocity".into()
+                );
+            }
+            let q = numbers("--position", pos)?;
+            let p = numbers("--velocity", vel)?;
+            let names = if n == 2 { "h0,h1 and u0,u1" } else { "h0,h1,hc and u0,u1,v" };
+            let start = given_start(&model.system, &q, &p).map_err(|e| match e {
+                crate::simulate::StartError::WrongLength { .. } => {
+                    format!("--position/--velocity: {e} ({names} for n = {n})")
+                }
+                _ => format!("--position/--velocity: {e}"),
+            })?;
+            Initial::Given(Box::new(start))
+        }
+        _ => return Err("--position and --velocity go together: give both or neither".into()),
+    };
+    if runs.is_some() && (a.trajectory.is_some() || a.plot.is_some()) {
+        return Err("--trajectory and --plot describe a single run: drop --runs".into());
+    }
+    let mut opts = Options::new(impacts);
+    opts.pcc_epsilon = a.pcc_epsilon;
+    opts.record = a.trajectory.is_some() || a.plot.is_some();
+    Ok(Validated {
+        model,
+        n,
+        kappa,
+        gamma,
+        arithmetic: if a.exact { Arithmetic::Exact } else { Arithmetic::Float },
+        initial,
+        seed,
+        runs,
+        opts,
+        trajectory: a.trajectory,
+        plot: a.plot,
+        json: a.json,
+    })
+}
+
+fn arithmetic_text(a: Arithmetic) -> &'static str {
+    match a {
+        Arithmetic::Float => "f64 (renormalised)",
+        Arithmetic::Exact => "exact rationals",
+    }
+}
+
+fn head(v: &Validated) -> String {
+    format!("n={} kappa={} gamma={}", v.n, v.kappa, v.gamma)
+}
+
+fn start_text(v: &Validated) -> String {
+    match &v.initial {
+        Initial::RandomDrop { seed } => format!("random drop, seed {seed}"),
+        Initial::Given(s) => {
+            let d = v.model.system.shape.dim();
+            let list = |x: &[Q]| x[..d].iter().map(ToString::to_string).collect::<Vec<_>>().join(",");
+            format!("position ({}), velocity ({})", list(&s.q), list(&s.p))
+        }
+    }
+}
+
+fn contact_counts(run: &Run, n: usize) -> Vec<usize> {
+    let mut c = vec![0; n];
+    for &k in &run.sequence {
+        c[k as usize] += 1;
+    }
+    c
+}
+
+fn single_text(v: &Validated, run: &Run) -> Vec<String> {
+    let n = v.model.system.n();
+    let counts = contact_counts(run, n);
+    let counts = counts.iter().enumerate().map(|(k, c)| format!("{k}: {c}")).collect::<Vec<_>>().join(", ");
+    let mut lines = vec![
+        format!(
+            "{}, {}, {}, budget {} impacts",
+            head(v),
+            start_text(v),
+            arithmetic_text(v.arithmetic),
+            run.budget
+        ),
+        format!("outcome: {}", run.outcome),
+        format!("decided by: {}", run.decision.describe()),
+        format!("impacts: {} (per contact {counts})", run.impacts),
+        format!("sequence: {}", pattern::summary(&run.sequence, n)),
+    ];
+    let mut time = if run.impacts == 0 {
+        "total time: 0 (no impacts)".to_string()
+    } else {
+        format!("total time: {:.12} (at the last impact)", run.time)
+    };
+    if let (Some(t), Some(l)) = (run.accumulation, run.tail_log2) {
+        let how = if matches!(run.decision, Decision::ExactPair { .. }) { "at most" } else { "about" };
+        time += &format!("; accumulation point {how} {t:.12}, {how} 2^{l:.1} after the last impact");
+    }
+    if let Decision::Tie { .. } = run.decision {
+        time = format!("total time: {:.12} (at the last impact before the tie)", run.time);
+    }
+    lines.push(time);
+    if run.pcc_overruled > 0 {
+        lines.push(format!(
+            "note: in {} pair phase(s) the state came within eps of a multiple of m_(i,i+1) (the paper's \
+             PCC criterion), but the PCC Lemma excludes PCC for this body (the pair's step map has \
+             complex or negative eigenvalues), so those phases end and the run went on",
+            run.pcc_overruled
+        ));
+    }
+    lines
+}
+
+fn single_json(v: &Validated, run: &Run) -> Value {
+    let n = v.model.system.n();
+    let d = v.model.system.shape.dim();
+    let start = match &v.initial {
+        Initial::RandomDrop { seed } => json!({"kind": "random-drop", "seed": seed}),
+        Initial::Given(s) => json!({
+            "kind": "given",
+            "position": s.q[..d].iter().map(ToString::to_string).collect::<Vec<_>>(),
+            "velocity": s.p[..d].iter().map(ToString::to_string).collect::<Vec<_>>(),
+        }),
+    };
+    let pat =
+        find(&run.sequence).map(|p| json!({"transient": p.transient, "cycle": p.cycle, "tail": p.tail}));
+    let tie = match &run.decision {
+        Decision::Tie { contacts, exact, .. } => json!({"contacts": contacts, "exact": exact}),
+        _ => Value::Null,
+    };
+    let seq = &run.sequence[..run.sequence.len().min(JSON_SEQUENCE)];
+    json!({
+        "outcome": run.outcome.name(),
+        "decided_by": run.decision.key(),
+        "decided_by_text": run.decision.describe(),
+        "impacts": run.impacts,
+        "budget": run.budget,
+        "n": v.n,
+        "kappa": v.kappa.to_string(),
+        "gamma": v.gamma.to_string(),
+        "arithmetic": v.arithmetic.name(),
+        "start": start,
+        "sequence_summary": pattern::summary(&run.sequence, n),
+        "pattern": pat,
+        "sequence": seq,
+        "sequence_truncated": run.sequence.len() > JSON_SEQUENCE,
+        "contact_counts": contact_counts(run, n),
+        "total_time": run.time,
+        "accumulation_time": run.accumulation,
+        "log2_time_left_after_last_impact": run.tail_log2,
+        "contraction_bits_per_impact": run.contraction,
+        "simultaneous": tie,
+        "pcc_criterion_overruled": run.pcc_overruled,
+        "trajectory": v.trajectory.as_ref().map(|p| p.display().to_string()),
+        "plot": v.plot.as_ref().map(|p| p.display().to_string()),
+    })
+}
+
+fn write_file(path: &PathBuf, text: &str) -> Result<(), String> {
+    std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))
+}
+
+fn run_single(v: &Validated) -> u8 {
+    let run = simulate(&v.model, &v.initial, v.arithmetic, &v.opts);
+    if let Some(path) = &v.trajectory {
+        if let Err(e) = write_file(path, &record::csv(&run, v.model.system.shape)) {
+            return usage_error(e);
+        }
+    }
+    if let Some(path) = &v.plot {
+        let title =
+            format!("{}: {} after {} impacts ({})", head(v), run.outcome, run.impacts, v.arithmetic.name());
+        let svg = match plot::svg(&run, &v.model.float, &title) {
+            Ok(s) => s,
+            Err(e) => return usage_error(e),
+        };
+        if let Err(e) = write_file(path, &svg) {
+            return usage_error(e);
+        }
+    }
+    if v.json {
+        emit(&single_json(v, &run).to_string());
+    } else {
+        for line in single_text(v, &run) {
+            emit(&line);
+        }
+        if let Some(p) = &v.trajectory {
+            emit(&format!("trajectory: {} ({} rows)", p.display(), run.records.len()));
+        }
+        if let Some(p) = &v.plot {
+            emit(&format!("plot: {}", p.display()));
+        }
+    }
+    EXIT_OK
+}
+
+fn run_many(v: &Validated, runs: u64) -> u8 {
+    let bar = indicatif::ProgressBar::new(runs);
+    if std::io::stderr().is_terminal() && runs > 1 {
+        if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} drops {eta}") {
+            bar.set_style(style);
+        }
+    } else {
+        bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
+    }
+    let tick = || bar.inc(1);
+    let briefs: Vec<Brief> = simulate_many(&v.model, v.seed, runs, v.arithmetic, &v.opts, &tick);
+    bar.finish_and_clear();
+    let c = counts(&briefs);
+    let mut by: std::collections::BTreeMap<&str, usize> = std::collections::BTreeMap::new();
+    for b in &briefs {
+        *by.entry(b.decided_by).or_default() += 1;
+    }
+    let mean = briefs.iter().map(|b| b.impacts as f64).sum::<f64>() / briefs.len() as f64;
+    let last_seed = v.seed.wrapping_add(runs - 1);
+    if v.json {
+        let counts: serde_json::Map<String, Value> =
+            Outcome::ALL.iter().zip(c).map(|(o, k)| (o.name().to_string(), json!(k))).collect();
+        let obj = json!({
+            "runs": runs,
+            "seeds": [v.seed, last_seed],
+            "n": v.n,
+            "kappa": v.kappa.to_string(),
+            "gamma": v.gamma.to_string(),
+            "arithmetic": v.arithmetic.name(),
+            "budget": v.opts.budget,
+            "counts": counts,
+            "decided_by": by,
+            "mean_impacts": mean,
+        });
+        emit(&obj.to_string());
+    } else {
+        emit(&format!(
+            "{}, {runs} random drops (seeds {}..={last_seed}), {}, budget {} impacts",
+            head(v),
+            v.seed,
+            arithmetic_text(v.arithmetic),
+            v.opts.budget
+        ));
+        let list = Outcome::ALL.iter().zip(c).map(|(o, k)| format!("{o} {k}")).collect::<Vec<_>>().join(", ");
+        emit(&format!("outcomes: {list}"));
+        let by = by.iter().map(|(k, c)| format!("{k} {c}")).collect::<Vec<_>>().join(", ");
+        emit(&format!("decided by: {by}"));
+        emit(&format!("mean impacts: {mean:.1}"));
+    }
+    EXIT_OK
+}
+
+pub fn run(a: SimulateArgs) -> u8 {
+    let v = match validate(a) {
+        Ok(v) => v,
+        Err(e) => return usage_error(e),
+    };
+    match v.runs {
+        Some(m) => run_many(&v, m),
+        None => run_single(&v),
+    }
 }

@@ -1,0 +1,188 @@
+//! Two tests of partial complete chatter (PCC): two adjacent contacts chatter to rest while the
+//! body keeps moving.
+//!
+//! 1. The paper's criterion (section "Comparison with direct simulation"): PCC ends in a state
+//!    q = c·m_{i,i+1} (c > 0), p = c'·m_{i,i+1} (c' < 0), so the simulation declares PCC when
+//!    |1 - cos∠(q, m)| < ε and |1 + cos∠(p, m)| < ε, the angles measured in the paper's
+//!    coordinates (φx, φy, h) and (ωx, ωy, v) (MODEL §2 gives the change of coordinates).
+//!
+//! 2. An exact variant, [`prove_pair_chatter`]. While only contacts i and j hit, their heights
+//!    and normal velocities form a closed two-contact system, a rod whose coupling is
+//!    E = f_j·kick_i = (1+γ)(κ + cos 2π/n)/(1+κ) (MODEL §3). Right after an impact at i, with
+//!    a = u_i ≥ 0 and b = u_j < 0, the ratio s = a/(-b) evolves by g(s) = γ/(|E| - s) and the
+//!    pair keeps alternating iff every iterate stays below |E| — by the rod theorem of the paper
+//!    (after Goyal et al.), iff E < 0, D = E² - 4γ > 0 and s < s₊ = (|E| + √D)/2, a rational
+//!    test: 2s - |E| < 0 or (2s - |E|)² < D. The intervals then shrink by s_m/(|E| - s_m), so a
+//!    rational bound T on the time left follows from a few exact steps and a geometric tail.
+//!    The final velocity p* is fixed by momentum alone: p* = p - x·kick_i - y·kick_j with
+//!    u_i(p*) = u_j(p*) = 0 (two linear equations, x, y ≤ 0 the accumulated pre-impact
+//!    velocities). Until then every other contact k has u_k(t) ≥ U_k, the sum of u_k(p),
+//!    min(0, -x f_k·kick_i) and min(0, -y f_k·kick_j), so h_k(q) + T·min(U_k, 0) > 0 proves that no other
+//!    contact lands before the pair comes to rest. With v* < 0 (p* = v*·m_{i,j}) this is PCC,
+//!    followed by all contacts landing at once (undecidable in this model); p* = 0 is complete
+//!    chatter; v* > 0 means ICC and is not reported here.
+
+use super::engine::Snapshot;
+use super::system::{FloatSystem, System};
+use crate::exact::{Q, Ring};
+use crate::kernel::linalg::{Vec3, dot};
+
+/// The paper's criterion evaluated on a state, for the pair {i, i+1}.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PaperPcc {
+    /// The pair (i, i+1 mod n).
+    pub pair: (usize, usize),
+    /// |1 - cos∠(q, m_{i,i+1})|.
+    pub q_defect: f64,
+    /// |1 + cos∠(p, m_{i,i+1})|.
+    pub p_defect: f64,
+}
+
+impl PaperPcc {
+    /// Whether both defects are below `eps`.
+    pub fn holds(&self, eps: f64) -> bool {
+        self.q_defect < eps && self.p_defect < eps
+    }
+}
+
+fn unit(x: [f64; 3]) -> [f64; 3] {
+    let l = (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
+    x.map(|c| c / l)
+}
+
+/// The paper's PCC criterion for the adjacent pair {a, b} on a (normalised) state.
+pub fn paper_criterion(fs: &FloatSystem, s: &Snapshot, a: usize, b: usize) -> PaperPcc {
+    let n = fs.n;
+    let i = if (a + 1) % n == b { a } else { b };
+    let m = &fs.rest_paper[i];
+    let cq = unit(fs.to_paper(&s.q));
+    let cp = unit(fs.to_paper(&s.p));
+    let c = |x: &[f64; 3]| x[0] * m[0] + x[1] * m[1] + x[2] * m[2];
+    PaperPcc { pair: (i, (i + 1) % n), q_defect: (1.0 - c(&cq)).abs(), p_defect: (1.0 + c(&cp)).abs() }
+}
+
+/// What the exact pair-chatter test established.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PairProof {
+    /// The chattering pair (the contact just hit, the other).
+    pub pair: (usize, usize),
+    /// A rational upper bound on the time until the pair's impacts accumulate.
+    pub time_bound: Q,
+    /// The velocity at the accumulation point, p* = v*·m_{i,j}.
+    pub limit_velocity: Vec3<Q>,
+    /// v* (< 0: PCC then a simultaneous landing; 0: the body comes to rest, CC).
+    pub v_limit: Q,
+}
+
+fn min0(x: Q) -> Q {
+    if x.is_negative() { x } else { Q::int(0) }
+}
+
+/// A rational d with 0 < d ≤ √x (x > 0), from the `f64` square root, checked exactly.
+fn sqrt_lower(x: &Q) -> Option<Q> {
+    let f = x.to_f64().sqrt() * (1.0 - 1e-9);
+    let mut d = Q::from_f64_exact(f).filter(|d| d.is_positive())?;
+    for _ in 0..64 {
+        if &d * &d <= *x {
+            return Some(d);
+        }
+        d = d * Q::new(1, 2);
+    }
+    None
+}
+
+/// The exact PCC test, right after an impact at `hit` with `other` its neighbour (module doc).
+pub fn prove_pair_chatter(
+    sys: &System,
+    q: &Vec3<Q>,
+    p: &Vec3<Q>,
+    hit: usize,
+    other: usize,
+) -> Result<PairProof, String> {
+    if !sys.adjacent(hit, other) {
+        return Err(format!("contacts {hit} and {other} are not neighbours"));
+    }
+    let (fh, fo) = (&sys.contacts[hit], &sys.contacts[other]);
+    let (kh, ko) = (&sys.kicks[hit], &sys.kicks[other]);
+    if !dot(fh, q).is_zero() {
+        return Err(format!("contact {hit} is not on the floor"));
+    }
+    let a = dot(fh, p);
+    let b = dot(fo, p);
+    let h = dot(fo, q);
+    if a.is_negative() || !b.is_negative() || h.is_negative() {
+        return Err(format!("contact {other} does not approach after the impact at {hit}"));
+    }
+    let e = dot(fo, kh);
+    if e != dot(fh, ko) {
+        return Err("asymmetric pair coupling (model error)".into());
+    }
+    if !e.is_negative() {
+        return Err(format!("coupling {e} >= 0: an impact at one contact of the pair lifts the other"));
+    }
+    let e_abs = -&e;
+    let gamma = &sys.gamma;
+    let disc = &e * &e - Q::int(4) * gamma;
+    if !disc.is_positive() {
+        return Err(format!("E^2 - 4 gamma = {disc} <= 0: the pair's step map has no real eigenvalues"));
+    }
+    let half_e = &e_abs * &Q::new(1, 2);
+    let s = &a / &(-&b);
+    let w = Q::int(2) * &s - &e_abs;
+    if !(w.is_negative() || &w * &w < disc) {
+        return Err(format!("velocity ratio {} is outside the pair's basin s < s+", s.to_f64()));
+    }
+    let d = sqrt_lower(&disc).ok_or("no rational lower bound of sqrt(D) found")?;
+    let r = (&e_abs - &d) * Q::new(1, 2); // >= s-, < |E|/2
+
+    // Iterate the pair exactly until s_m < |E|/2, then bound the geometric tail.
+    let (mut am, mut bm, mut hm) = (a.clone(), b.clone(), h);
+    let mut t_sum = Q::int(0);
+    let mut bound = None;
+    for _ in 0..64 {
+        let bm_abs = -&bm;
+        let sm = &am / &bm_abs;
+        let tau = &hm / &bm_abs;
+        if sm < half_e {
+            let sigma = if sm > r { sm } else { r.clone() };
+            let rho = &sigma / &(&e_abs - &sigma);
+            bound = Some(&t_sum + &(&tau / &(Q::int(1) - rho)));
+            break;
+        }
+        t_sum = t_sum + &tau;
+        let next_b = &am - &(&bm_abs * &e_abs);
+        hm = &am * &tau;
+        am = gamma * &bm_abs;
+        bm = next_b;
+        if !bm.is_negative() {
+            return Err("the pair stops alternating (model error)".into());
+        }
+    }
+    let time_bound = bound.ok_or("velocity ratio converges too slowly to bound the remaining time")?;
+
+    // Limit velocity from momentum: [[A, E], [E, A]] (x, y) = (a, b), A = f_i·kick_i = 1 + gamma.
+    let big_a = dot(fh, kh);
+    let det = &big_a * &big_a - &e * &e;
+    let x = (&a * &big_a - &e * &b) / det.clone();
+    let y = (&big_a * &b - &e * &a) / det;
+    if x.is_positive() || y.is_positive() {
+        return Err("impulses of the wrong sign (model error)".into());
+    }
+    let limit_velocity: Vec3<Q> = std::array::from_fn(|i| &p[i] - &(&x * &kh[i]) - &y * &ko[i]);
+    if !dot(fh, &limit_velocity).is_zero() || !dot(fo, &limit_velocity).is_zero() {
+        return Err("limit velocity does not rest the pair (model error)".into());
+    }
+    let v_limit = dot(&sys.centre, &limit_velocity);
+    if v_limit.is_positive() {
+        return Err("the limit velocity has v > 0: the chatter of the pair ends in ICC".into());
+    }
+    for k in (0..sys.n()).filter(|&k| k != hit && k != other) {
+        let fk = &sys.contacts[k];
+        let lower_u = dot(fk, p) + min0(-(&x * &dot(fk, kh))) + min0(-(&y * &dot(fk, ko)));
+        let lowest_h = dot(fk, q) + &time_bound * &min0(lower_u);
+        if !lowest_h.is_positive() {
+            return Err(format!("contact {k} may land before the pair comes to rest"));
+        }
+    }
+    Ok(PairProof { pair: (hit, other), time_bound, limit_velocity, v_limit })
+}

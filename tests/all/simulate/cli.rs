@@ -1,0 +1,208 @@
+//! `chatter simulate` on the command line: outputs, files, exit statuses.
+
+use crate::common::bin;
+use serde_json::Value;
+use std::process::{Command, Output};
+
+fn simulate(args: &[&str], dir: &std::path::Path) -> Output {
+    Command::new(bin()).arg("simulate").args(args).current_dir(dir).output().expect("run chatter")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn json(o: &Output) -> Value {
+    serde_json::from_str(stdout(o).trim()).unwrap_or_else(|e| panic!("not JSON ({e}): {}", stdout(o)))
+}
+
+#[test]
+fn default_run_prints_outcome_sequence_and_time() {
+    let d = tempfile::tempdir().unwrap();
+    let o = simulate(&["--n", "3", "--kappa", "3/20", "--gamma", "1/20", "--seed", "7"], d.path());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    for part in [
+        "n=3 kappa=3/20 gamma=1/20",
+        "random drop, seed 7",
+        "outcome: CC",
+        "decided by: ",
+        "impacts: 200",
+        "sequence: ",
+        "total time: ",
+        "accumulation point",
+    ] {
+        assert!(out.contains(part), "missing {part:?} in\n{out}");
+    }
+}
+
+#[test]
+fn json_has_the_documented_keys() {
+    let d = tempfile::tempdir().unwrap();
+    let o = simulate(&["--n", "3", "--kappa", "1/8", "--gamma", "1/200", "--json"], d.path());
+    assert_eq!(o.status.code(), Some(0));
+    let v = json(&o);
+    assert_eq!(v["outcome"], "PCC");
+    assert_eq!(v["decided_by"], "paper-pcc-criterion");
+    assert!(v["impacts"].as_u64().unwrap() > 5);
+    assert!(v["decided_by_text"].as_str().unwrap().contains("m_("));
+    assert_eq!(v["arithmetic"], "f64");
+    assert_eq!(v["start"]["seed"], 0);
+
+    let o = simulate(&["--n", "3", "--kappa", "1/8", "--gamma", "1/200", "--json", "--exact"], d.path());
+    let v = json(&o);
+    assert_eq!(
+        (v["outcome"].as_str(), v["decided_by"].as_str()),
+        (Some("PCC"), Some("exact-pair-chatter-proof"))
+    );
+    assert_eq!(v["arithmetic"], "exact");
+
+    let o = simulate(&["--position", "1/2,1/2,1", "--velocity", "-1,-1,-1", "--exact", "--json"], d.path());
+    let v = json(&o);
+    assert_eq!(v["outcome"], "simultaneous");
+    assert_eq!(v["simultaneous"]["contacts"], serde_json::json!([0, 1]));
+    assert_eq!(v["start"]["position"], serde_json::json!(["1/2", "1/2", "1"]));
+}
+
+#[test]
+fn runs_print_counts_by_outcome() {
+    let d = tempfile::tempdir().unwrap();
+    let o = simulate(
+        &["--n", "3", "--kappa", "3/20", "--gamma", "1/20", "--runs", "12", "--seed", "5", "--json"],
+        d.path(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v = json(&o);
+    let counts = v["counts"].as_object().unwrap();
+    let keys: Vec<&str> = counts.keys().map(String::as_str).collect();
+    for k in ["CC", "PCC", "ICC", "undecided", "simultaneous"] {
+        assert!(keys.contains(&k), "{keys:?}");
+    }
+    assert_eq!(counts.values().map(|c| c.as_u64().unwrap()).sum::<u64>(), 12);
+    assert_eq!(v["seeds"], serde_json::json!([5, 16]));
+    // Deterministic.
+    let again = simulate(
+        &["--n", "3", "--kappa", "3/20", "--gamma", "1/20", "--runs", "12", "--seed", "5", "--json"],
+        d.path(),
+    );
+    assert_eq!(stdout(&o), stdout(&again));
+    let o = simulate(&["--runs", "4"], d.path());
+    assert!(
+        stdout(&o).contains("outcomes: CC 4, PCC 0, ICC 0, undecided 0, simultaneous 0"),
+        "{}",
+        stdout(&o)
+    );
+}
+
+#[test]
+fn trajectory_csv_has_one_row_per_impact_and_the_plot_is_written() {
+    let d = tempfile::tempdir().unwrap();
+    let o = simulate(
+        &["--n", "4", "--impacts", "60", "--trajectory", "t.csv", "--plot", "p.svg", "--json"],
+        d.path(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v = json(&o);
+    let csv = std::fs::read_to_string(d.path().join("t.csv")).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "impact,contact,time,log2_dt,log2_time_to_accumulation,h0,h1,hc,log2_q_scale,u0,u1,v,log2_p_scale,log2_energy"
+    );
+    let rows: Vec<&str> = lines.collect();
+    assert_eq!(rows.len() as u64, v["impacts"].as_u64().unwrap());
+    assert_eq!(rows.len(), 60);
+    assert!(rows.iter().all(|r| r.split(',').count() == 14));
+    assert!(rows[59].starts_with("60,"));
+    let svg = std::fs::read_to_string(d.path().join("p.svg")).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("contact 3") && svg.contains("accumulation point"));
+
+    // The rod has two coordinates; an ICC run has no accumulation point.
+    let o = simulate(
+        &[
+            "--n",
+            "2",
+            "--kappa",
+            "1/3",
+            "--gamma",
+            "0.074",
+            "--position",
+            "0,1/10",
+            "--velocity",
+            "-1,-1",
+            "--trajectory",
+            "rod.csv",
+            "--plot",
+            "rod.svg",
+        ],
+        d.path(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).contains("outcome: ICC"));
+    let csv = std::fs::read_to_string(d.path().join("rod.csv")).unwrap();
+    assert!(csv.starts_with(
+        "impact,contact,time,log2_dt,log2_time_to_accumulation,h0,h1,log2_q_scale,u0,u1,log2_p_scale"
+    ));
+    assert!(std::fs::read_to_string(d.path().join("rod.svg")).unwrap().contains("time since the drop"));
+}
+
+#[test]
+fn bad_input_exits_2_with_a_message() {
+    let d = tempfile::tempdir().unwrap();
+    let cases: [(&[&str], &str); 14] = [
+        (&["--n", "5"], "--n"),
+        (&["--n", "x"], "--n"),
+        (&["--kappa", "0"], "--kappa"),
+        (&["--kappa", "1/0"], "--kappa"),
+        (&["--gamma", "3/2"], "--gamma"),
+        (&["--impacts", "0"], "--impacts"),
+        (&["--impacts", "-3"], "--impacts"),
+        (&["--runs", "0"], "--runs"),
+        (&["--seed", "-1"], "--seed"),
+        (&["--position", "1,1,1"], "together"),
+        (&["--position", "1,1", "--velocity", "-1,-1,-1"], "expected 3 coordinates"),
+        (&["--position", "1,-1,1", "--velocity", "-1,-1,-1"], "below the floor"),
+        (&["--runs", "3", "--plot", "x.svg"], "single run"),
+        (&["--pcc-epsilon", "2"], "--pcc-epsilon"),
+    ];
+    for (args, needle) in cases {
+        let o = simulate(args, d.path());
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stdout(&o));
+        assert!(stderr(&o).contains(needle), "{args:?}: {}", stderr(&o));
+        assert!(!stderr(&o).contains("panicked"));
+    }
+    let o = simulate(&["--trajectory", "no/such/dir/t.csv"], d.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("cannot write"));
+    let o = simulate(&["--position", "0,0,0", "--velocity", "0,0,0"], d.path());
+    assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn help_documents_the_flags() {
+    let d = tempfile::tempdir().unwrap();
+    let out = stdout(&simulate(&["--help"], d.path()));
+    for flag in [
+        "--n",
+        "--kappa",
+        "--gamma",
+        "--seed",
+        "--impacts",
+        "--exact",
+        "--trajectory",
+        "--plot",
+        "--runs",
+        "--json",
+        "--velocity",
+        "--position",
+        "SplitMix64",
+        "undecided",
+        "simultaneous",
+    ] {
+        assert!(out.contains(flag), "simulate --help lacks {flag}");
+    }
+}
