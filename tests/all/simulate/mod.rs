@@ -5,6 +5,7 @@ mod engines;
 mod outcomes;
 mod pattern;
 mod pcc;
+mod criterion;
 
 use crate::common::q;
 use chatter::exact::{Q, Ring};
@@ -37,3 +38,4 @@ pub fn random_rational_start(m: &Model, rng: &mut SplitMix64) -> Start<Q> {
         }
     }
 }
+
