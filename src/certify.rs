@@ -6,9 +6,9 @@ use crate::exact::{ParseLimits, Q, Ring};
 use crate::exactify::{ExactifyConfig, ExactifyError, exactify};
 use crate::finder::{FinderConfig, FinderOutcome, Seed, find_cone};
 use crate::kernel::impact::Body;
-use crate::kernel::rod::{Rod, mat2_vec};
 use crate::kernel::linalg::mat_vec;
 use crate::kernel::pcc::pcc_quadratic;
+use crate::kernel::rod::{Rod, mat2_vec};
 use crate::model::{FloatBody, body, translation_down};
 use crate::verify::{BackendVerdict, verify_both};
 use std::time::{Duration, Instant};
@@ -165,7 +165,9 @@ fn certify_rod_report(req: &Request, mut timings: Timings) -> Report {
         ClaimChoice::Exactly(c) => vec![c],
         ClaimChoice::Strongest => vec![Claim::CompleteChatterFromAllDown, Claim::EffectivelyInvariant],
     };
-    let mut notes = vec!["rod (n = 2): exact interval iteration, no float search; with two contacts PCC is CC".to_string()];
+    let mut notes = vec![
+        "rod (n = 2): exact interval iteration, no float search; with two contacts PCC is CC".to_string(),
+    ];
     let mut last = None;
     for claim in claims {
         let result = certify_rod(req, claim, &mut timings);
@@ -174,11 +176,27 @@ fn certify_rod_report(req: &Request, mut timings: Timings) -> Report {
             let verdict = verify_both(c, ParseLimits::default());
             timings.kernel += start.elapsed();
             return match verdict {
-                BackendVerdict::Accepted(a) => Report { result, finder: None, timings, max_denominator_bits: a.max_denominator_bits, notes },
-                BackendVerdict::Rejected(r) => {
-                    Report { result: Err(Failure::Kernel(r.to_string())), finder: None, timings, max_denominator_bits: 0, notes }
-                }
-                BackendVerdict::Disagree(s) => Report { result: Err(Failure::Kernel(s)), finder: None, timings, max_denominator_bits: 0, notes },
+                BackendVerdict::Accepted(a) => Report {
+                    result,
+                    finder: None,
+                    timings,
+                    max_denominator_bits: a.max_denominator_bits,
+                    notes,
+                },
+                BackendVerdict::Rejected(r) => Report {
+                    result: Err(Failure::Kernel(r.to_string())),
+                    finder: None,
+                    timings,
+                    max_denominator_bits: 0,
+                    notes,
+                },
+                BackendVerdict::Disagree(s) => Report {
+                    result: Err(Failure::Kernel(s)),
+                    finder: None,
+                    timings,
+                    max_denominator_bits: 0,
+                    notes,
+                },
             };
         }
         if let (Err(e), ClaimChoice::Strongest) = (&result, req.claim) {
@@ -270,7 +288,11 @@ fn certificate(req: &Request, claim: Claim, cone: Vec<Generator>, how: &str) -> 
     Certificate {
         format: FORMAT.to_string(),
         version: VERSION,
-        body: CertBody::RegularPolygon { n: req.n, kappa: req.kappa.to_string(), gamma: req.gamma.to_string() },
+        body: CertBody::RegularPolygon {
+            n: req.n,
+            kappa: req.kappa.to_string(),
+            gamma: req.gamma.to_string(),
+        },
         coordinates: Coordinates::ContactVelocities,
         claim,
         cone,

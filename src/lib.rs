@@ -19,4 +19,5 @@ pub mod kernel;
 pub mod model;
 pub mod simulate;
 pub mod spectral;
+pub mod symbolic;
 pub mod verify;

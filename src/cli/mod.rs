@@ -7,6 +7,7 @@
 mod bodies_cmd;
 mod certify_cmd;
 mod classify_cmd;
+mod prove_cmd;
 mod simulate_cmd;
 mod verify_cmd;
 
@@ -46,6 +47,8 @@ pub enum Command {
     Classify(classify_cmd::ClassifyArgs),
     /// The catalogue of bodies: kappa from geometry, exact CC and PCC thresholds in gamma.
     Bodies(bodies_cmd::BodiesArgs),
+    /// Prove the paper's square-case lemmas symbolically; write proofs/square.md and .ron.
+    Prove(prove_cmd::ProveArgs),
     /// Simulate drops event by event (f64 or exact) and classify them as CC, PCC or ICC.
     Simulate(simulate_cmd::SimulateArgs),
 }
@@ -59,6 +62,7 @@ pub fn main() -> ExitCode {
         Command::Simulate(a) => simulate_cmd::run(a),
         Command::Classify(a) => classify_cmd::run(a),
         Command::Bodies(a) => bodies_cmd::run(a),
+        Command::Prove(a) => prove_cmd::run(a),
     };
     ExitCode::from(code)
 }

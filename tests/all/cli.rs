@@ -258,3 +258,25 @@ fn bodies_json_has_the_documented_keys() {
     let o = chatter(&["bodies", "--prism", "4"], d.path());
     assert_eq!(o.status.code(), Some(2));
 }
+
+#[test]
+fn prove_square_writes_and_checks_the_proof_files() {
+    let o = chatter(&["prove", "square", "--check"], &root());
+    let (out, err) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{out}{err}");
+    assert!(
+        out.contains(" checked, 0 failed") && out.contains("inequalities 100, invariance 100, pipeline 100"),
+        "{out}"
+    );
+    let d = tempfile::tempdir().unwrap();
+    let o = chatter(&["prove", "square", "--out", "p", "--points", "5", "--json"], d.path());
+    assert_eq!(o.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["failed"], 0);
+    assert_eq!(v["cross_check"]["points"], 5);
+    assert!(d.path().join("p/square.md").exists() && d.path().join("p/square.ron").exists());
+    // --check against files from another seed reports them stale.
+    let o = chatter(&["prove", "square", "--out", "p", "--check"], d.path());
+    assert_eq!(o.status.code(), Some(1));
+    assert!(text(&o).0.contains("stale: p/square.md"));
+}

@@ -14,4 +14,5 @@ mod kernel;
 mod readme;
 mod simulate;
 mod spectral;
+mod symbolic;
 mod verify;

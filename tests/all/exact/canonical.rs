@@ -1,6 +1,9 @@
 //! Tests of `exact::canonical`.
 
-use chatter::exact::{Field, NumberError, OrderedField, ParseLimits, Q, Ring, parse_canonical, parse_canonical_parts, to_canonical};
+use chatter::exact::{
+    Field, NumberError, OrderedField, ParseLimits, Q, Ring, parse_canonical, parse_canonical_parts,
+    to_canonical,
+};
 use malachite::Integer;
 use num_bigint::BigInt;
 use num_rational::BigRational;

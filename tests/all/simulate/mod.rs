@@ -1,11 +1,11 @@
 //! Tests of `chatter::simulate`: engines, outcomes, PCC tests, patterns and the CLI.
 
 mod cli;
+mod criterion;
 mod engines;
 mod outcomes;
 mod pattern;
 mod pcc;
-mod criterion;
 
 use crate::common::q;
 use chatter::exact::{Q, Ring};
@@ -38,4 +38,3 @@ pub fn random_rational_start(m: &Model, rng: &mut SplitMix64) -> Start<Q> {
         }
     }
 }
-

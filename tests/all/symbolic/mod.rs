@@ -1,0 +1,5 @@
+//! Tests of `chatter::symbolic`.
+
+mod engine;
+mod proof;
+mod square;
