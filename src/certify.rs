@@ -135,26 +135,22 @@ fn certify_claim(
         Ok(ex) => ex,
         Err(e) => return (Err(Failure::Exactify(e)), Some(outcome), 0),
     };
-    let cert = Certificate {
-        format: FORMAT.to_string(),
-        version: VERSION,
-        body: CertBody::RegularPolygon {
-            n: req.n,
-            kappa: req.kappa.to_string(),
-            gamma: req.gamma.to_string(),
-        },
-        coordinates: Coordinates::ContactVelocities,
-        claim,
-        cone: ex.generators.iter().map(|g| Generator(g.iter().map(Q::to_string).collect())).collect(),
-        producer: format!("chatter {} certify (float finder + exactifier)", env!("CARGO_PKG_VERSION")),
-    };
+    let cone = ex.generators.iter().map(|g| Generator(g.iter().map(Q::to_string).collect())).collect();
+    let cert = certificate(req, claim, cone, "float finder + exactifier");
+    let (result, bits) = kernel_check(cert, t);
+    (result, Some(outcome), bits)
+}
+
+/// Runs the kernel on both backends: the certificate and its largest denominator in bits if
+/// accepted, else why not.
+fn kernel_check(cert: Certificate, t: &mut Timings) -> (Result<Certificate, Failure>, u64) {
     let start = Instant::now();
     let verdict = verify_both(&cert, ParseLimits::default());
     t.kernel += start.elapsed();
     match verdict {
-        BackendVerdict::Accepted(a) => (Ok(cert), Some(outcome), a.max_denominator_bits),
-        BackendVerdict::Rejected(r) => (Err(Failure::Kernel(r.to_string())), Some(outcome), 0),
-        BackendVerdict::Disagree(s) => (Err(Failure::Kernel(s)), Some(outcome), 0),
+        BackendVerdict::Accepted(a) => (Ok(cert), a.max_denominator_bits),
+        BackendVerdict::Rejected(r) => (Err(Failure::Kernel(r.to_string())), 0),
+        BackendVerdict::Disagree(s) => (Err(Failure::Kernel(s)), 0),
     }
 }
 
@@ -171,33 +167,9 @@ fn certify_rod_report(req: &Request, mut timings: Timings) -> Report {
     let mut last = None;
     for claim in claims {
         let result = certify_rod(req, claim, &mut timings);
-        if let Ok(c) = &result {
-            let start = Instant::now();
-            let verdict = verify_both(c, ParseLimits::default());
-            timings.kernel += start.elapsed();
-            return match verdict {
-                BackendVerdict::Accepted(a) => Report {
-                    result,
-                    finder: None,
-                    timings,
-                    max_denominator_bits: a.max_denominator_bits,
-                    notes,
-                },
-                BackendVerdict::Rejected(r) => Report {
-                    result: Err(Failure::Kernel(r.to_string())),
-                    finder: None,
-                    timings,
-                    max_denominator_bits: 0,
-                    notes,
-                },
-                BackendVerdict::Disagree(s) => Report {
-                    result: Err(Failure::Kernel(s)),
-                    finder: None,
-                    timings,
-                    max_denominator_bits: 0,
-                    notes,
-                },
-            };
+        if let Ok(c) = result {
+            let (result, max_denominator_bits) = kernel_check(c, &mut timings);
+            return Report { result, finder: None, timings, max_denominator_bits, notes };
         }
         if let (Err(e), ClaimChoice::Strongest) = (&result, req.claim) {
             notes.push(format!("{} not certified: {e}", claim.name()));

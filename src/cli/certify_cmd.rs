@@ -3,7 +3,6 @@
 use super::{EXIT_NEGATIVE, EXIT_OK, EXIT_USAGE, emit, usage_error};
 use crate::certificate::{Claim, write};
 use crate::certify::{ClaimChoice, Report, Request, certify};
-use crate::exact::{Q, parse_user_number};
 use crate::finder::FinderOutcome;
 use clap::{Args, ValueEnum};
 use serde_json::json;
@@ -27,15 +26,8 @@ pub enum ClaimArg {
 Defaults certify the flat homogeneous square plate: n = 4, kappa = 1/6, gamma = 1/100.\n\n\
 Example:\n  chatter certify --n 3 --kappa 3/20 --gamma 0.05 -o triangle.ron")]
 pub struct CertifyArgs {
-    /// Number of contacts: a regular n-gon (exact models for 3, 4, 6) or 2 for the rod.
-    #[arg(long, default_value = "4", allow_hyphen_values = true)]
-    pub n: String,
-    /// kappa = rho^2 / R^2 (radius of gyration over circumradius, squared), > 0.
-    #[arg(long, default_value = "1/6", allow_hyphen_values = true)]
-    pub kappa: String,
-    /// Coefficient of restitution, in [0, 1].
-    #[arg(long, default_value = "1/100", allow_hyphen_values = true)]
-    pub gamma: String,
+    #[command(flatten)]
+    pub body: super::BodyArgs,
     /// The claim to certify.
     #[arg(long, value_enum, default_value = "strongest")]
     pub claim: ClaimArg,
@@ -61,9 +53,7 @@ struct Validated {
 }
 
 fn validate(a: CertifyArgs) -> Result<Validated, String> {
-    let n: u64 = a.n.trim().parse().map_err(|_| format!("--n: {:?} is not a positive integer", a.n))?;
-    let kappa: Q = parse_user_number(&a.kappa).map_err(|e| format!("--kappa: {e}"))?;
-    let gamma: Q = parse_user_number(&a.gamma).map_err(|e| format!("--gamma: {e}"))?;
+    let (n, kappa, gamma) = a.body.parse()?;
     let checked = if n == 2 {
         crate::kernel::rod::Rod::new(kappa.clone(), gamma.clone()).map(|_| ())
     } else {

@@ -28,15 +28,8 @@ n = 5, 7, 8, ...) and shows the evidence, the float finder's verdict and whether
 can be produced.\n\nExamples:\n  chatter classify --n 3 --kappa 3/20 --gamma 1/20\n  chatter classify --n 2 --kappa 1/3 --gamma 0.05 --velocity 0.1,-0.5"
 )]
 pub struct ClassifyArgs {
-    /// Number of contacts (2 = the rod, 3..64 = regular n-gon).
-    #[arg(long, default_value = "4", allow_hyphen_values = true)]
-    pub n: String,
-    /// kappa = rho^2 / R^2, > 0.
-    #[arg(long, default_value = "1/6", allow_hyphen_values = true)]
-    pub kappa: String,
-    /// Coefficient of restitution in [0, 1].
-    #[arg(long, default_value = "1/100", allow_hyphen_values = true)]
-    pub gamma: String,
+    #[command(flatten)]
+    pub body: super::BodyArgs,
     /// Rod only: initial velocity u0,u1 of the two ends, to decide CC from it (the paper's
     /// theorem on rotating initial velocities).
     #[arg(long, allow_hyphen_values = true)]
@@ -59,12 +52,10 @@ struct Validated {
 }
 
 fn validate(a: ClassifyArgs) -> Result<Validated, String> {
-    let n: u64 = a.n.trim().parse().map_err(|_| format!("--n: {:?} is not a positive integer", a.n))?;
+    let (n, kappa, gamma) = a.body.parse()?;
     if !(2..=64).contains(&n) {
         return Err(format!("--n: {n} is outside 2..=64"));
     }
-    let kappa = parse_user_number(&a.kappa).map_err(|e| format!("--kappa: {e}"))?;
-    let gamma = parse_user_number(&a.gamma).map_err(|e| format!("--gamma: {e}"))?;
     if !kappa.is_positive() {
         return Err("--kappa: kappa must be > 0".into());
     }

@@ -11,7 +11,8 @@ mod prove_cmd;
 mod simulate_cmd;
 mod verify_cmd;
 
-use clap::{Parser, Subcommand};
+use crate::exact::{Q, parse_user_number};
+use clap::{Args, Parser, Subcommand};
 use std::process::ExitCode;
 
 pub const EXIT_OK: u8 = 0;
@@ -51,6 +52,32 @@ pub enum Command {
     Prove(prove_cmd::ProveArgs),
     /// Simulate drops event by event (f64 or exact) and classify them as CC, PCC or ICC.
     Simulate(simulate_cmd::SimulateArgs),
+}
+
+/// The body as typed (raw layer), shared by certify, classify and simulate; each command
+/// validates the ranges it supports.
+#[derive(Args, Debug, Clone)]
+pub struct BodyArgs {
+    /// Number of contacts: 2 (the rod) or a regular n-gon (exact models for 3, 4, 6).
+    #[arg(long, default_value = "4", allow_hyphen_values = true)]
+    pub n: String,
+    /// kappa = rho^2 / R^2 (radius of gyration over circumradius, squared), > 0.
+    #[arg(long, default_value = "1/6", allow_hyphen_values = true)]
+    pub kappa: String,
+    /// Coefficient of restitution, in [0, 1].
+    #[arg(long, default_value = "1/100", allow_hyphen_values = true)]
+    pub gamma: String,
+}
+
+impl BodyArgs {
+    /// n, kappa and gamma read exactly (decimals such as 0.01 are 1/100).
+    pub fn parse(&self) -> Result<(u64, Q, Q), String> {
+        let n: u64 =
+            self.n.trim().parse().map_err(|_| format!("--n: {:?} is not a positive integer", self.n))?;
+        let kappa = parse_user_number(&self.kappa).map_err(|e| format!("--kappa: {e}"))?;
+        let gamma = parse_user_number(&self.gamma).map_err(|e| format!("--gamma: {e}"))?;
+        Ok((n, kappa, gamma))
+    }
 }
 
 /// Parses the process arguments and runs the command.

@@ -42,15 +42,8 @@ chatter simulate --n 4 --runs 1000 --json\n  \
 chatter simulate --n 3 --kappa 1/8 --gamma 1/200 --exact --plot pcc.svg\n  \
 chatter simulate --n 4 --position 1/2,1/2,1 --velocity -1,-1,-1 --exact")]
 pub struct SimulateArgs {
-    /// Number of contacts: 2 (the rod) or a regular n-gon with n in {3, 4, 6}.
-    #[arg(long, default_value = "4", allow_hyphen_values = true)]
-    pub n: String,
-    /// kappa = rho^2 / R^2 (radius of gyration over circumradius, squared), > 0.
-    #[arg(long, default_value = "1/6", allow_hyphen_values = true)]
-    pub kappa: String,
-    /// Coefficient of restitution, in [0, 1].
-    #[arg(long, default_value = "1/100", allow_hyphen_values = true)]
-    pub gamma: String,
+    #[command(flatten)]
+    pub body: super::BodyArgs,
     /// Seed of the random drop (default 0); with --runs, run i uses seed + i.
     #[arg(long, allow_hyphen_values = true)]
     pub seed: Option<String>,
@@ -104,12 +97,10 @@ fn numbers(flag: &str, s: &str) -> Result<Vec<Q>, String> {
 }
 
 fn validate(a: SimulateArgs) -> Result<Validated, String> {
-    let n: u64 = a.n.trim().parse().map_err(|_| format!("--n: {:?} is not a positive integer", a.n))?;
+    let (n, kappa, gamma) = a.body.parse()?;
     if !matches!(n, 2 | 3 | 4 | 6) {
         return Err(format!("--n: {n} is not supported: use 2 (the rod) or 3, 4, 6 (exact cosines)"));
     }
-    let kappa = parse_user_number(&a.kappa).map_err(|e| format!("--kappa: {e}"))?;
-    let gamma = parse_user_number(&a.gamma).map_err(|e| format!("--gamma: {e}"))?;
     let shape = Shape::from_n(n);
     let model = Model::new(shape, kappa.clone(), gamma.clone()).map_err(|e| match e {
         BodyError::KappaNotPositive => format!("--kappa: {e}"),

@@ -248,20 +248,24 @@ pub fn profile<F: OrderedField>(
     Profile { near_zero: samples[0].1, thresholds, samples }
 }
 
-/// The CC profile of a body family: where S_1 has a real positive dominant eigenvalue.
-pub fn cc_profile<F: OrderedField>(fam: &Family<F>) -> Profile<F> {
-    let [c2, c1, c0] = char_coefficients(|g| step_at(fam, 1, g), 3);
-    // p = t^3 + a t^2 + b t + c with a = -c2, b = c1, c = -c0.
+/// The discriminant of t^3 - c2 t^2 + c1 t - c0 (coefficients polynomials in gamma): with
+/// a = -c2, b = c1, c = -c0 it is 18abc - 4a^3 c + a^2 b^2 - 4b^3 - 27c^2.
+fn cubic_discriminant<F: OrderedField>(c2: &Poly<F>, c1: &Poly<F>, c0: &Poly<F>) -> Poly<F> {
     let (a, b, c) = (c2.neg(), c1.clone(), c0.neg());
     let k = |x: i64| F::from_i64(x);
-    let disc = a
-        .mul(&b)
+    a.mul(&b)
         .mul(&c)
         .scale(&k(18))
         .sub(&a.pow(3).mul(&c).scale(&k(4)))
         .add(&a.pow(2).mul(&b.pow(2)))
         .sub(&b.pow(3).scale(&k(4)))
-        .sub(&c.pow(2).scale(&k(27)));
+        .sub(&c.pow(2).scale(&k(27)))
+}
+
+/// The CC profile of a body family: where S_1 has a real positive dominant eigenvalue.
+pub fn cc_profile<F: OrderedField>(fam: &Family<F>) -> Profile<F> {
+    let [c2, c1, c0] = char_coefficients(|g| step_at(fam, 1, g), 3);
+    let disc = cubic_discriminant(&c2, &c1, &c0);
     let modulus_tie = c1.pow(3).sub(&c0.mul(&c2.pow(3)));
     let sign_tie = c1.mul(&c2).sub(&c0);
     let cands = [
@@ -278,16 +282,7 @@ pub fn cc_profile<F: OrderedField>(fam: &Family<F>) -> Profile<F> {
 pub fn pcc_profile<F: OrderedField>(fam: &Family<F>) -> Profile<F> {
     let last = fam.n as i64 - 1;
     let [c2, c1, c0] = char_coefficients(|g| mat_mul(&step_at(fam, last, g), &step_at(fam, 1, g)), 6);
-    let (a, b, c) = (c2.neg(), c1, c0.neg());
-    let k = |x: i64| F::from_i64(x);
-    let disc = a
-        .mul(&b)
-        .mul(&c)
-        .scale(&k(18))
-        .sub(&a.pow(3).mul(&c).scale(&k(4)))
-        .add(&a.pow(2).mul(&b.pow(2)))
-        .sub(&b.pow(3).scale(&k(4)))
-        .sub(&c.pow(2).scale(&k(27)));
+    let disc = cubic_discriminant(&c2, &c1, &c0);
     profile(&[("discriminant", disc)], |g| pcc_criterion(&fam.at(g)).0)
 }
 
