@@ -10,11 +10,11 @@ use std::cmp::Ordering;
 pub type Vec2<F> = [F; 2];
 pub type Mat2<F> = [[F; 2]; 2];
 
-pub fn mat2_vec<F: OrderedField>(m: &Mat2<F>, x: &Vec2<F>) -> Vec2<F> {
+pub fn mat2_vec<R: Ring>(m: &Mat2<R>, x: &Vec2<R>) -> Vec2<R> {
     [m[0][0].times(&x[0]).plus(&m[0][1].times(&x[1])), m[1][0].times(&x[0]).plus(&m[1][1].times(&x[1]))]
 }
 
-pub fn mat2_mul<F: OrderedField>(a: &Mat2<F>, b: &Mat2<F>) -> Mat2<F> {
+pub fn mat2_mul<R: Ring>(a: &Mat2<R>, b: &Mat2<R>) -> Mat2<R> {
     let e = |i: usize, j: usize| a[i][0].times(&b[0][j]).plus(&a[i][1].times(&b[1][j]));
     [[e(0, 0), e(0, 1)], [e(1, 0), e(1, 1)]]
 }
@@ -134,17 +134,17 @@ pub fn check_rod<F: Field>(
     let step = int_mat2(&rod.step());
     for (i, p) in piece.iter().enumerate() {
         let what = || format!("vertex {i} of K∩C_1, at {}, maps under S_1", point(p));
-        check(int_mat2_vec(&step, p), &what, Code::ImageOutside, Code::ImageNotBelow)?;
+        check(mat2_vec(&step, p), &what, Code::ImageOutside, Code::ImageNotBelow)?;
     }
     let i0 = int_mat2(&rod.impact(0));
     if claim >= Claim::CcOrPccFromAllDown {
         for (k, g) in [[0, -1], [-1, 0]].iter().enumerate() {
             let g = g.map(F::Int::from_i64);
             let what = || format!("I_0 maps the all-down generator {k} = {}", point(&g));
-            check(int_mat2_vec(&i0, &g), &what, Code::InitialOutside, Code::InitialOutside)?;
+            check(mat2_vec(&i0, &g), &what, Code::InitialOutside, Code::InitialOutside)?;
         }
     }
-    let t = int_mat2_vec(&i0, &[F::Int::from_i64(-1), F::Int::from_i64(-1)]);
+    let t = mat2_vec(&i0, &[F::Int::from_i64(-1), F::Int::from_i64(-1)]);
     let contains_translation = w(&t).is_positive() && inside(&t);
     let redundant = (0..gens.len()).filter(|i| *i != lo && *i != hi).collect();
     let pieces = vec![piece.len()];
@@ -164,8 +164,4 @@ pub fn check_rod<F: Field>(
 fn int_mat2<F: Field>(m: &Mat2<F>) -> [[F::Int; 2]; 2] {
     let z = scale_to_ints(&[m[0][0].clone(), m[0][1].clone(), m[1][0].clone(), m[1][1].clone()]);
     [[z[0].clone(), z[1].clone()], [z[2].clone(), z[3].clone()]]
-}
-
-fn int_mat2_vec<R: Ring>(m: &[[R; 2]; 2], x: &[R; 2]) -> [R; 2] {
-    [m[0][0].times(&x[0]).plus(&m[0][1].times(&x[1])), m[1][0].times(&x[0]).plus(&m[1][1].times(&x[1]))]
 }
