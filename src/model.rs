@@ -4,7 +4,7 @@
 
 use crate::exact::{OrderedField, Q};
 use crate::kernel::impact::{Body, BodyError};
-use crate::kernel::linalg::{Mat3, Vec3};
+use crate::kernel::linalg::{Mat3, Vec3, neg, sub};
 use nalgebra::{Matrix3, Vector3};
 
 /// Builds the exact body of a regular n-gon.
@@ -72,4 +72,12 @@ impl FloatBody {
 /// Pure downward translation (every contact and the centre of mass at velocity -1).
 pub fn translation_down() -> Vec3<Q> {
     [Q::int(-1), Q::int(-1), Q::int(-1)]
+}
+
+/// The four generators of C_j from the paper's Lemma on C_j: m_{j-1,j} - m_{n-1,0}, -m_{n-1,0},
+/// -m_{0,1}, m_{j,j+1} - m_{0,1} (used to test the kernel's inequalities for C_j).
+pub fn next_contact_generators<F: OrderedField>(b: &Body<F>, j: i64) -> [Vec3<F>; 4] {
+    let m = |k: i64| b.rest_point(k, k + 1).expect("adjacent contacts are never opposite");
+    let (m01, m_last) = (m(0), m(-1));
+    [sub(&m(j - 1), &m_last), neg(&m_last), neg(&m01), sub(&m(j), &m01)]
 }

@@ -2,7 +2,7 @@
 //! (the paper's Lemma on C_j, MODEL §4), and the all-down cone D (MODEL §5).
 
 use super::impact::Body;
-use super::linalg::{Vec3, cross, neg, sub};
+use super::linalg::{Vec3, cross, neg};
 use crate::exact::OrderedField;
 
 /// The four inequalities of C_j, in the order used in messages.
@@ -35,19 +35,6 @@ impl<F: OrderedField> Body<F> {
             [z.clone(), z, o.negated()],
             cross(&self.adjacent_rest_point(j), &m01),
             cross(&m_last, &self.adjacent_rest_point(j - 1)),
-        ]
-    }
-
-    /// The four generators of C_j from the paper's Lemma: m_{j-1,j} - m_{n-1,0}, -m_{n-1,0},
-    /// -m_{0,1}, m_{j,j+1} - m_{0,1}.
-    pub fn next_contact_generators(&self, j: i64) -> [Vec3<F>; 4] {
-        let m01 = self.adjacent_rest_point(0);
-        let m_last = self.adjacent_rest_point(-1);
-        [
-            sub(&self.adjacent_rest_point(j - 1), &m_last),
-            neg(&m_last),
-            neg(&m01),
-            sub(&self.adjacent_rest_point(j), &m01),
         ]
     }
 

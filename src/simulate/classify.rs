@@ -336,6 +336,12 @@ pub fn drive<E: Engine>(eng: &mut E, fs: &FloatSystem, opts: &Options) -> Run {
                 pcc_overruled,
             }
         };
+    // Every exit hands the trace (sequence, records, engine, overruled count) to `finish`.
+    macro_rules! done {
+        ($outcome:expr, $decision:expr, $tail:expr, $contraction:expr) => {
+            finish($outcome, $decision, seq, records, eng, $tail, $contraction, overruled)
+        };
+    }
     let pair_tail = |tail_log: &[f64; 3]| -> Option<f64> {
         // log2 of the geometric tail from the last two intervals of one contact (per impact).
         let per = (tail_log[0] - tail_log[2]) / 2.0;
@@ -345,16 +351,7 @@ pub fn drive<E: Engine>(eng: &mut E, fs: &FloatSystem, opts: &Options) -> Run {
     loop {
         let k = seq.len();
         if eng.v_positive() {
-            return finish(
-                Outcome::Icc,
-                Decision::VPositive { after: k },
-                seq,
-                records,
-                eng,
-                None,
-                None,
-                overruled,
-            );
+            return done!(Outcome::Icc, Decision::VPositive { after: k }, None, None);
         }
         if k == budget {
             break;
@@ -363,7 +360,7 @@ pub fn drive<E: Engine>(eng: &mut E, fs: &FloatSystem, opts: &Options) -> Run {
             Step::Impact { contact, dt } => {
                 if dt.m == 0.0 && k > 0 && fs.gamma > 0.0 && !eng.is_exact() {
                     let d = Decision::Breakdown { after: k };
-                    return finish(Outcome::Undecided, d, seq, records, eng, None, None, overruled);
+                    return done!(Outcome::Undecided, d, None, None);
                 }
                 let l = dt.log2_fast();
                 if k > 0 {
@@ -407,7 +404,7 @@ pub fn drive<E: Engine>(eng: &mut E, fs: &FloatSystem, opts: &Options) -> Run {
                                 };
                                 let acc = Some(super::exact::scaled(&pr.time_bound).log2());
                                 let o = if pr.v_limit.is_zero() { Outcome::Cc } else { Outcome::Pcc };
-                                return finish(o, d, seq, records, eng, acc, None, overruled);
+                                return done!(o, d, acc, None);
                             }
                             Err(e) => pair_note = format!("exact proof: {e}"),
                         }
@@ -416,7 +413,7 @@ pub fn drive<E: Engine>(eng: &mut E, fs: &FloatSystem, opts: &Options) -> Run {
                         if test.holds(eps) {
                             let d = Decision::PaperPcc { after: k + 1, test, epsilon: eps };
                             let acc = pair_tail(&tail_log);
-                            return finish(Outcome::Pcc, d, seq, records, eng, acc, None, overruled);
+                            return done!(Outcome::Pcc, d, acc, None);
                         }
                         pair_note = format!(
                             "paper's criterion: 1 - cos = {:.1e}, 1 + cos = {:.1e}, eps = {eps:e}",
@@ -427,7 +424,7 @@ pub fn drive<E: Engine>(eng: &mut E, fs: &FloatSystem, opts: &Options) -> Run {
             }
             Step::Tie { contacts, exact, .. } => {
                 let d = Decision::Tie { after: k, contacts, exact };
-                return finish(Outcome::Simultaneous, d, seq, records, eng, None, None, overruled);
+                return done!(Outcome::Simultaneous, d, None, None);
             }
             Step::NoApproach => {
                 let d = if eng.at_rest() {
@@ -436,19 +433,10 @@ pub fn drive<E: Engine>(eng: &mut E, fs: &FloatSystem, opts: &Options) -> Run {
                     Decision::NoApproach { after: k }
                 };
                 let o = Outcome::Icc;
-                return finish(o, d, seq, records, eng, None, None, overruled);
+                return done!(o, d, None, None);
             }
             Step::Breakdown => {
-                return finish(
-                    Outcome::Undecided,
-                    Decision::Breakdown { after: k },
-                    seq,
-                    records,
-                    eng,
-                    None,
-                    None,
-                    overruled,
-                );
+                return done!(Outcome::Undecided, Decision::Breakdown { after: k }, None, None);
             }
         }
     }
@@ -466,32 +454,23 @@ pub fn drive<E: Engine>(eng: &mut E, fs: &FloatSystem, opts: &Options) -> Run {
             };
             let acc = Some(super::exact::scaled(&pr.time_bound).log2());
             let o = if pr.v_limit.is_zero() { Outcome::Cc } else { Outcome::Pcc };
-            return finish(o, d, seq, records, eng, acc, None, overruled);
+            return done!(o, d, acc, None);
         }
         let test = paper_criterion(fs, &eng.snapshot(), hit, other);
         if test.holds(eps) {
             let acc = pair_tail(&tail_log);
             let d = Decision::PaperPcc { after: k, test, epsilon: eps };
-            return finish(Outcome::Pcc, d, seq, records, eng, acc, None, overruled);
+            return done!(Outcome::Pcc, d, acc, None);
         }
         let reason = format!(
             "{pair_note}; at the end 1 - cos = {:.1e}, 1 + cos = {:.1e}, eps = {eps:e}",
             test.q_defect, test.p_defect
         );
         let d = Decision::PairNotSettled { pair: (hit.min(other), hit.max(other)), run: alt, reason };
-        return finish(Outcome::Undecided, d, seq, records, eng, None, None, overruled);
+        return done!(Outcome::Undecided, d, None, None);
     }
     if budget < MIN_BUDGET_FOR_CC {
-        return finish(
-            Outcome::Undecided,
-            Decision::BudgetTooSmall { budget },
-            seq,
-            records,
-            eng,
-            None,
-            None,
-            overruled,
-        );
+        return done!(Outcome::Undecided, Decision::BudgetTooSmall { budget }, None, None);
     }
     let m = quarters.means();
     let drops = [m[0] - m[1], m[1] - m[2]];
@@ -505,8 +484,8 @@ pub fn drive<E: Engine>(eng: &mut E, fs: &FloatSystem, opts: &Options) -> Run {
         let l_next = m[2] - bits_per_impact * (k as f64 - centre);
         let tail = l_next - (1.0 - (-bits_per_impact).exp2()).log2();
         let d = Decision::Converging { bits_per_impact, drops };
-        return finish(Outcome::Cc, d, seq, records, eng, Some(tail), Some(bits_per_impact), overruled);
+        return done!(Outcome::Cc, d, Some(tail), Some(bits_per_impact));
     }
     let d = Decision::NotConverging { bits_per_impact, drops };
-    finish(Outcome::Undecided, d, seq, records, eng, None, Some(bits_per_impact), overruled)
+    done!(Outcome::Undecided, d, None, Some(bits_per_impact))
 }

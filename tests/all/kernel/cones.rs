@@ -46,7 +46,7 @@ fn the_four_generators_of_every_cj_satisfy_its_inequalities() {
             let b = body(n, k, g);
             for j in 1..n as i64 {
                 let cov = b.next_contact_cone(j);
-                for (gi, gener) in b.next_contact_generators(j).iter().enumerate() {
+                for (gi, gener) in chatter::model::next_contact_generators(&b, j).iter().enumerate() {
                     let mut zeros = 0;
                     for (li, l) in cov.iter().enumerate() {
                         let d = dot(l, gener);
