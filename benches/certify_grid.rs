@@ -5,10 +5,10 @@
 //!
 //! `cargo bench --bench certify_grid` (add `-- all-down` for the I_0(D) seed).
 
-use chatter::certificate::Claim;
 use chatter::certify::{ClaimChoice, Request, certify};
 use chatter::exact::Q;
 use chatter::finder::FinderOutcome;
+use chatter_kernel::certificate::Claim;
 use indicatif::ProgressBar;
 use std::time::Instant;
 

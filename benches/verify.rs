@@ -1,9 +1,9 @@
 //! Verification speed: the trusted kernel on a 64-generator certificate, per backend and both.
 //! Targets (issue 2): <= 1 ms median on malachite, <= 3 ms for both backends together.
 
-use chatter::certificate::read;
 use chatter::exact::{ParseLimits, Q};
-use chatter::kernel::check;
+use chatter_kernel::certificate::read;
+use chatter_kernel::check::check;
 use criterion::{Criterion, criterion_group, criterion_main};
 use num_rational::BigRational;
 use std::hint::black_box;

@@ -1,16 +1,18 @@
 //! The certification pipeline: float finder -> exactifier -> trusted kernel (both backends).
 //! A certificate is returned only if the kernel accepts it on both backends.
 
-use crate::certificate::{Body as CertBody, Certificate, Claim, Coordinates, FORMAT, Generator, VERSION};
-use crate::exact::{ParseLimits, Q, Ring};
+use crate::exact::{ParseLimits, Q, QExt, Ring};
 use crate::exactify::{ExactifyConfig, ExactifyError, exactify};
 use crate::finder::{FinderConfig, FinderOutcome, Seed, find_cone};
-use crate::kernel::impact::Body;
-use crate::kernel::linalg::mat_vec;
-use crate::kernel::pcc::pcc_quadratic;
-use crate::kernel::rod::{Rod, mat2_vec};
 use crate::model::{FloatBody, body, translation_down};
 use crate::verify::{BackendVerdict, verify_both};
+use chatter_kernel::certificate::{
+    Body as CertBody, Certificate, Claim, Coordinates, FORMAT, Generator, VERSION,
+};
+use chatter_kernel::model::Polygon as Body;
+use chatter_kernel::model::linalg::mat_vec;
+use chatter_kernel::model::pcc_quadratic;
+use chatter_kernel::model::{Rod, mat2_vec};
 use std::time::{Duration, Instant};
 
 /// Which claim to certify.
@@ -291,7 +293,7 @@ pub fn certify(req: &Request) -> Report {
     let pcc_excluded = quad.excludes_pcc();
     let pcc_text = format!(
         "det(tI - S_{} S_1) = (t - 1)(t^2 + ({}) t + ({})), discriminant {} ({})",
-        b.n - 1,
+        b.n() - 1,
         quad.p,
         quad.q,
         quad.discriminant,
@@ -303,10 +305,10 @@ pub fn certify(req: &Request) -> Report {
     }
     if !pcc_excluded {
         notes.push(format!("the PCC Lemma does not apply: {pcc_text}"));
-        if b.n >= 4 {
+        if b.n() >= 4 {
             notes.push(format!(
                 "this contradicts the paper, which states that the Lemma's condition (all eigenvalues real) is never met for n >= 4; here n = {}",
-                b.n
+                b.n()
             ));
         }
     }

@@ -9,11 +9,11 @@
 //! raised only as far as exact images demand, so points that the maps send onto each other with
 //! no contraction (two contacts at rest) stay exactly on K with no slack.
 
-use crate::exact::{Field, Int, Q};
+use crate::exact::{Field, Int, Q, QExt};
 use crate::finder::geometry::P2;
-use crate::kernel::impact::Body;
-use crate::kernel::linalg::{Vec3, mat_vec};
-use crate::kernel::polygon::clip;
+use chatter_kernel::geometry::clip;
+use chatter_kernel::model::Polygon as Body;
+use chatter_kernel::model::linalg::{Vec3, mat_vec};
 use malachite::Integer;
 use malachite::base::num::arithmetic::traits::Gcd;
 use std::fmt;
@@ -102,7 +102,7 @@ fn polygon_of(normals: &[(i64, i64)], h: &[Q]) -> HPoly {
 /// The exact images of the vertices of every K ∩ C_j, or the step j of an image with v >= 0.
 pub fn exact_images(body: &Body<Q>, poly: &HPoly) -> Result<Vec<Vec3<Integer>>, usize> {
     let mut out = Vec::new();
-    for j in 1..body.n as i64 {
+    for j in 1..body.n() as i64 {
         let s = int_mat(&body.step(j));
         let mut piece = poly.clone();
         for l in body.next_contact_cone(j) {
@@ -189,11 +189,12 @@ pub fn exactify(
     let normals = normals_of(float_poly, cfg.normal_bits);
     let size = float_poly.iter().map(|p| p.x.abs().max(p.y.abs())).fold(1.0, f64::max);
     let e = size.log2().ceil() as i64;
-    let unit = Q(malachite::rational::Rational::from(1u32) >> (i64::from(cfg.slack_bits) - e));
+    let unit = Q::from_rational(malachite::rational::Rational::from(1u32) >> (i64::from(cfg.slack_bits) - e));
     // Slack and grid in units of |n|, so that every edge moves by about the same distance.
     let nbits: Vec<u32> =
         normals.iter().map(|n| 63 - (n.0.unsigned_abs().max(n.1.unsigned_abs())).leading_zeros()).collect();
-    let slacks: Vec<Q> = nbits.iter().map(|b| Q(unit.0.clone() << i64::from(*b))).collect();
+    let slacks: Vec<Q> =
+        nbits.iter().map(|b| Q::from_rational(unit.as_rational().clone() << i64::from(*b))).collect();
     let grids: Vec<u64> =
         nbits.iter().map(|b| (i64::from(cfg.grid_bits) - e - i64::from(*b)).max(0) as u64).collect();
     let seeds: Vec<Vec3<Integer>> = seeds.iter().map(|s| primitive(int_vec(s))).collect();

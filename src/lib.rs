@@ -1,23 +1,24 @@
 //! `chatter`: exact certificates that a rigid body dropped flat onto a floor comes to rest by
 //! complete chatter (infinitely many impacts in finite time).
 //!
-//! Layers, from trusted to untrusted:
-//! - [`exact`]: exact scalars (malachite main backend, num-rational second backend).
-//! - [`certificate`]: the RON certificate schema, reader and writer.
-//! - [`kernel`]: the trusted checker (exact model, cones, polygon geometry, PCC exclusion).
-//! - [`finder`], [`exactify`]: untrusted floating-point search and its exact rounding.
-//! - [`certify`], [`verify`], [`cli`]: the pipeline and the command line.
+//! The trusted checker is the separate crate [`chatter_kernel`] (exact scalars, the certificate
+//! format, the kernel, the proof checker); this crate is the untrusted tool around it:
+//! - [`finder`], [`exactify`]: floating-point search and its exact rounding;
+//! - [`spectral`], [`bodies`], [`simulate`], [`symbolic`]: criteria, the catalogue, simulation
+//!   and the producer of the square-case proof;
+//! - [`certify`], [`verify`], `cli` (feature `cli`): the pipeline and the command line.
 
 pub mod bodies;
-pub mod certificate;
 pub mod certify;
+#[cfg(feature = "cli")]
 pub mod cli;
 pub mod exact;
 pub mod exactify;
 pub mod finder;
-pub mod kernel;
 pub mod model;
 pub mod simulate;
 pub mod spectral;
 pub mod symbolic;
 pub mod verify;
+
+pub use chatter_kernel::{certificate, check, geometry};

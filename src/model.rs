@@ -1,10 +1,10 @@
-//! Untrusted helpers around the exact model of [`crate::kernel::impact`]: the body built from
+//! Untrusted helpers around the exact model of [`chatter_kernel::model`]: the body built from
 //! user numbers, kinetic energy, the paper's coordinates, and `f64` copies of the maps for the
 //! numerical search.
 
-use crate::exact::{OrderedField, Q};
-use crate::kernel::impact::{Body, BodyError};
-use crate::kernel::linalg::{Mat3, Vec3, neg, sub};
+use crate::exact::{OrderedField, Q, QExt};
+use chatter_kernel::model::linalg::{Mat3, Vec3, neg, sub};
+use chatter_kernel::model::{BodyError, Polygon as Body};
 use nalgebra::{Matrix3, Vector3};
 
 /// Builds the exact body of a regular n-gon.
@@ -24,7 +24,7 @@ pub fn kinetic_energy<F: OrderedField>(b: &Body<F>, p: &Vec3<F>) -> F {
     let sx = p[1].minus(&p[2]).plus(&b.cos(1).times(&wy)); // s * omega_x
     let wx2 = sx.times(&sx).over(&sin2(b)).expect("sin(2 pi/n) != 0 for n >= 3");
     let half = F::from_ratio(1, 2);
-    half.times(&b.kappa.times(&wx2.plus(&wy.times(&wy))).plus(&p[2].times(&p[2])))
+    half.times(&b.kappa().times(&wx2.plus(&wy.times(&wy))).plus(&p[2].times(&p[2])))
 }
 
 /// For the square (n = 4): the matrix M with p_contact = M p_paper, p_paper = (omega_x, omega_y, v).
@@ -58,9 +58,9 @@ pub struct FloatBody {
 
 impl FloatBody {
     pub fn new(b: &Body<Q>) -> Self {
-        let js = 1..b.n as i64;
+        let js = 1..b.n() as i64;
         FloatBody {
-            n: b.n,
+            n: b.n(),
             steps: js.clone().map(|j| mat_f64(&b.step(j))).collect(),
             cones: js.map(|j| b.next_contact_cone(j).map(|l| vec_f64(&l))).collect(),
             impact0: mat_f64(&b.impact(0)),

@@ -1,9 +1,9 @@
 //! Verification of certificate files: read, check with the kernel on one or both backends, and
 //! report one verdict per file. A disagreement between the backends is an internal error.
 
-use crate::certificate::{Code, Rejection, read};
 use crate::exact::{ParseLimits, Q};
-use crate::kernel::{Accepted, check};
+use chatter_kernel::certificate::{Code, Rejection, read};
+use chatter_kernel::check::{Accepted, check};
 use num_rational::BigRational;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -27,13 +27,13 @@ pub enum BackendVerdict {
 }
 
 /// Runs the kernel on both backends and compares the verdicts.
-pub fn verify_both(cert: &crate::certificate::Certificate, limits: ParseLimits) -> BackendVerdict {
+pub fn verify_both(cert: &chatter_kernel::certificate::Certificate, limits: ParseLimits) -> BackendVerdict {
     verify_with(cert, limits, Backends::Both)
 }
 
 /// Runs the kernel on the chosen backends.
 pub fn verify_with(
-    cert: &crate::certificate::Certificate,
+    cert: &chatter_kernel::certificate::Certificate,
     limits: ParseLimits,
     backends: Backends,
 ) -> BackendVerdict {

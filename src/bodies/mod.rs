@@ -4,12 +4,12 @@
 
 pub mod solids;
 
-use crate::exact::{OrderedField, Q, Ring, Rounding};
-use crate::kernel::impact::cos_step;
-use crate::kernel::linalg::Vec3;
+use crate::exact::{OrderedField, Q, QExt, Ring, Rounding};
 use crate::spectral::criteria::{Family, Profile, Sup, cc_profile, goyal_threshold, pcc_profile};
 use crate::spectral::number_field::{Nf, NumberField};
 use crate::spectral::roots::RealRoot;
+use chatter_kernel::model::linalg::Vec3;
+use chatter_kernel::model::rational_cos as cos_step;
 use serde::Serialize;
 use solids::{prism_kappa, solid_kappa};
 

@@ -2,7 +2,7 @@
 //! polygon's second moments, Platonic solids from a decomposition into tetrahedra.
 
 use crate::exact::OrderedField;
-use crate::kernel::linalg::{Vec3, dot, sub};
+use chatter_kernel::model::linalg::{Vec3, dot, sub};
 
 /// Second moments of the unit-circumradius regular n-gon plate per unit area, from the polygon
 /// formula  int x^2 dA = 1/12 sum (x_i y_{i+1} - x_{i+1} y_i)(x_i^2 + x_i x_{i+1} + x_{i+1}^2):
@@ -96,7 +96,7 @@ pub fn solid_kappa<F: OrderedField>(verts: &[Vec3<F>], faces: &[Vec3<F>]) -> Res
                 if norm2(&sub(a, b)) != edge2 {
                     continue;
                 }
-                let det = dot(&crate::kernel::linalg::cross(&c, a), b);
+                let det = dot(&chatter_kernel::model::linalg::cross(&c, a), b);
                 let v = abs(det).over(&F::from_i64(6)).expect("6 != 0");
                 volume = volume.plus(&v);
                 let s: Vec3<F> = std::array::from_fn(|k| c[k].plus(&a[k]).plus(&b[k]));

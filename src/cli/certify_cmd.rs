@@ -1,9 +1,9 @@
 //! `chatter certify`.
 
 use super::{EXIT_NEGATIVE, EXIT_OK, EXIT_USAGE, emit, usage_error};
-use crate::certificate::{Claim, write};
 use crate::certify::{ClaimChoice, Report, Request, certify};
 use crate::finder::FinderOutcome;
+use chatter_kernel::certificate::{Claim, write};
 use clap::{Args, ValueEnum};
 use serde_json::json;
 use std::path::PathBuf;
@@ -55,12 +55,12 @@ struct Validated {
 fn validate(a: CertifyArgs) -> Result<Validated, String> {
     let (n, kappa, gamma) = a.body.parse()?;
     let checked = if n == 2 {
-        crate::kernel::rod::Rod::new(kappa.clone(), gamma.clone()).map(|_| ())
+        chatter_kernel::model::Rod::new(kappa.clone(), gamma.clone()).map(|_| ())
     } else {
         crate::model::body(n, &kappa, &gamma).map(|_| ())
     };
     if let Err(e) = checked {
-        use crate::kernel::impact::BodyError;
+        use chatter_kernel::model::BodyError;
         let flag = match e {
             BodyError::UnsupportedN(_) => "--n",
             BodyError::KappaNotPositive => "--kappa",

@@ -5,7 +5,6 @@ use crate::bodies::{self, Entry, Threshold};
 use crate::certify::{ClaimChoice, Request, certify};
 use crate::exact::{OrderedField, Q, Ring, parse_user_number};
 use crate::finder::{FinderConfig, FinderOutcome, Seed, find_cone};
-use crate::kernel::rod::Rod;
 use crate::model::FloatBody;
 use crate::simulate::{Arithmetic, Model, Options, Outcome, Shape, counts, simulate_many};
 use crate::spectral::criteria::{
@@ -13,6 +12,7 @@ use crate::spectral::criteria::{
 };
 use crate::spectral::eigen::Spectrum;
 use crate::spectral::number_field::Nf;
+use chatter_kernel::model::Rod;
 use clap::Args;
 
 /// Random drops simulated by `classify`, and their impact budget.

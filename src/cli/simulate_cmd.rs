@@ -2,13 +2,13 @@
 
 use super::{EXIT_OK, emit, usage_error};
 use crate::exact::{Q, parse_user_number};
-use crate::kernel::impact::BodyError;
 use crate::simulate::classify::DEFAULT_PCC_EPSILON;
 use crate::simulate::pattern::{self, find};
 use crate::simulate::{
     Arithmetic, Brief, Decision, Initial, Model, Options, Outcome, Run, Shape, counts, given_start, plot,
     record, simulate, simulate_many,
 };
+use chatter_kernel::model::BodyError;
 use clap::Args;
 use serde_json::{Value, json};
 use std::io::IsTerminal;

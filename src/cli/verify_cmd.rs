@@ -71,7 +71,7 @@ pub fn run(a: VerifyArgs) -> u8 {
     } else if files.len() > 1 {
         eprintln!("{} files: {ok} OK, {rejected} rejected, {errors} errors", files.len());
     }
-    let internal = verdicts.iter().any(|v| v.code == Some(crate::certificate::Code::Internal));
+    let internal = verdicts.iter().any(|v| v.code == Some(chatter_kernel::certificate::Code::Internal));
     if internal {
         EXIT_INTERNAL
     } else if ok == files.len() {

@@ -68,5 +68,5 @@ pub fn parse_user_number(input: &str) -> Result<Q, String> {
         let e = exp - fp.len() as i64;
         if e >= 0 { m * pow10(e as u64) } else { m / pow10(e.unsigned_abs()) }
     };
-    Ok(Q(if neg { -value } else { value }))
+    Ok(Q::from_rational(if neg { -value } else { value }))
 }

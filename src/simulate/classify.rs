@@ -30,7 +30,7 @@
 use super::engine::{Engine, Snapshot, Step};
 use super::pcc::{PaperPcc, paper_criterion};
 use super::system::{FloatSystem, MAX_CONTACTS};
-use crate::exact::Ring;
+use crate::exact::{QExt, Ring};
 
 /// Minimal alternation length before the PCC tests run (then after every impact).
 pub const PCC_MIN_RUN: usize = 6;

@@ -2,8 +2,8 @@
 //! (section "Comparison with direct simulation") with a seeded, portable generator.
 
 use super::system::{FloatSystem, Shape, System};
-use crate::exact::{Q, Ring};
-use crate::kernel::linalg::Vec3;
+use crate::exact::{Q, QExt, Ring};
+use chatter_kernel::model::linalg::Vec3;
 
 /// An initial state in our coordinates: q = (h0, h1, hc) and p = (u0, u1, v); for the rod
 /// q = (h0, h1, 0), p = (u0, u1, 0).

@@ -7,7 +7,7 @@ use super::engine::{Engine, Scaled, Snapshot, Step};
 use super::pcc::{PairProof, prove_pair_chatter};
 use super::system::System;
 use crate::exact::{Q, Ring};
-use crate::kernel::linalg::Vec3;
+use chatter_kernel::model::linalg::Vec3;
 use malachite::base::num::conversion::traits::SciMantissaAndExponent;
 
 /// |x| as m · 2^e with m in [1, 2) (m = 0 for x = 0), rounded to nearest.
@@ -15,7 +15,7 @@ pub fn scaled(x: &Q) -> Scaled {
     if x.is_zero() {
         return Scaled { m: 0.0, e: 0 };
     }
-    let (m, e): (f64, i64) = (&x.abs().0).sci_mantissa_and_exponent();
+    let (m, e): (f64, i64) = x.abs().as_rational().sci_mantissa_and_exponent();
     Scaled { m, e }
 }
 

@@ -23,6 +23,7 @@ pub mod exact;
 pub mod float;
 pub mod pattern;
 pub mod pcc;
+#[cfg(feature = "cli")]
 pub mod plot;
 pub mod record;
 pub mod system;
@@ -35,7 +36,7 @@ pub use float::FloatEngine;
 pub use system::{FloatSystem, Shape, System};
 
 use crate::exact::Q;
-use crate::kernel::impact::BodyError;
+use chatter_kernel::model::BodyError;
 
 /// Which arithmetic runs the simulation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

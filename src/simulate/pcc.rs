@@ -24,8 +24,8 @@
 
 use super::engine::Snapshot;
 use super::system::{FloatSystem, System};
-use crate::exact::{Q, Ring};
-use crate::kernel::linalg::{Vec3, dot};
+use crate::exact::{Q, QExt, Ring};
+use chatter_kernel::model::linalg::{Vec3, dot};
 
 /// The paper's criterion evaluated on a state, for the pair {i, i+1}.
 #[derive(Clone, Copy, Debug, PartialEq)]

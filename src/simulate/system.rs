@@ -6,10 +6,10 @@
 //! p = (u0, u1) and q = (h0, h1); its third component is 0 in every covector and kick, so it
 //! stays exactly 0 in both arithmetics and the rod never stores the redundant v = (u0 + u1)/2.
 
-use crate::exact::{Q, Ring};
-use crate::kernel::impact::{Body, BodyError};
-use crate::kernel::linalg::{Vec3, dot};
-use crate::kernel::rod::Rod;
+use crate::exact::{Q, QExt, Ring};
+use chatter_kernel::model::Rod;
+use chatter_kernel::model::linalg::{Vec3, dot};
+use chatter_kernel::model::{BodyError, Polygon as Body};
 
 /// Which body falls.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -362,7 +362,7 @@ fn mat_mul3(a: &[[Q; 3]; 3], b: &[[Q; 3]; 3]) -> [[Q; 3]; 3] {
 
 /// The exact inverse of a 3x3 matrix (adjugate over determinant), `None` if singular.
 fn inverse3(m: &[[Q; 3]; 3]) -> Option<[[Q; 3]; 3]> {
-    let det = crate::kernel::linalg::det3(&m[0], &m[1], &m[2]);
+    let det = chatter_kernel::model::linalg::det3(&m[0], &m[1], &m[2]);
     if det.is_zero() {
         return None;
     }

@@ -16,9 +16,9 @@ use super::eigen::{Dominant, Spectrum, char_poly2, char_poly3};
 use super::poly::Poly;
 use super::roots::{RealRoot, isolate};
 use crate::exact::{OrderedField, Q};
-use crate::kernel::impact::Body;
-use crate::kernel::linalg::{Mat3, mat_mul};
-use crate::kernel::rod::{Mat2, Rod};
+use chatter_kernel::model::Polygon as Body;
+use chatter_kernel::model::linalg::{Mat3, mat_mul};
+use chatter_kernel::model::{Mat2, Rod};
 use std::cmp::Ordering;
 
 /// A regular n-gon body with gamma left free: n, c_1 = cos(2 pi/n) and kappa, exact in `F`.
@@ -46,7 +46,7 @@ pub fn cc_criterion<F: OrderedField>(b: &Body<F>) -> (bool, Spectrum<F>, Dominan
 
 /// The PCC criterion at one body: whether every eigenvalue of S_{n-1} S_1 is real.
 pub fn pcc_criterion<F: OrderedField>(b: &Body<F>) -> (bool, Spectrum<F>) {
-    let s = Spectrum::of3(&mat_mul(&b.step(b.n as i64 - 1), &b.step(1)));
+    let s = Spectrum::of3(&mat_mul(&b.step(b.n() as i64 - 1), &b.step(1)));
     (s.all_real(), s)
 }
 
@@ -317,7 +317,7 @@ fn rod<F: OrderedField>(kappa: &F, gamma: &Q) -> Rod<F> {
 /// s(e) - x = (S01 + x (S01 - S00) + x lambda) / d(lambda), d(lambda) = S00 - S01 - lambda, and
 /// the signs of these linear forms at the algebraic lambda_min are decided exactly.
 pub fn rod_velocity_in_cone<F: OrderedField>(rod: &Rod<F>, p0: &[F; 2]) -> Option<bool> {
-    if !goyal_condition(&rod.kappa, &rod.gamma) {
+    if !goyal_condition(rod.kappa(), rod.gamma()) {
         return None;
     }
     let w = p0[0].plus(&p0[1]).negated();

@@ -6,9 +6,9 @@
 
 use super::poly::Poly;
 use super::roots::{RealRoot, isolate};
-use crate::exact::{OrderedField, Q, Ring};
-use crate::kernel::linalg::{Mat3, char_poly};
-use crate::kernel::rod::Mat2;
+use crate::exact::{OrderedField, Q, QExt, Ring};
+use chatter_kernel::model::Mat2;
+use chatter_kernel::model::linalg::{Mat3, char_poly};
 use std::cmp::Ordering;
 
 /// det(tI - M) for a 3x3 matrix: t^3 - tr t^2 + s t - det.

@@ -2,7 +2,7 @@
 //! algebraic numbers: a square-free polynomial with an isolating interval, refined on demand.
 
 use super::poly::{Point, Poly, count_roots};
-use crate::exact::{OrderedField, Q, Rounding};
+use crate::exact::{OrderedField, Q, QExt, Rounding};
 use std::cmp::Ordering;
 
 /// A real root of `poly` (square-free, monic): the only root in the open interval (lo, hi), or

@@ -9,12 +9,12 @@
 //! rectangle is not effectively invariant: its corner near the attracting eigenvector p1 can map
 //! out through an edge, so the cone cannot simply be rounded outwards.)
 
-use crate::certificate::Claim;
 use crate::certify::{Request, certify};
-use crate::exact::Q;
+use crate::exact::{Q, QExt};
 use crate::simulate::SplitMix64;
 use crate::spectral::poly::Poly;
 use crate::spectral::roots::isolate;
+use chatter_kernel::certificate::Claim;
 use serde::Serialize;
 use std::cmp::Ordering;
 

@@ -11,9 +11,9 @@ use super::mpoly::{E1, E2, G, K, L, MPoly, S};
 use super::proof::{Proof, Term};
 use super::ratfn::RatFn;
 use crate::exact::{Q, Ring};
-use crate::kernel::impact::Body;
-use crate::kernel::linalg::mat_vec;
 use crate::model::square_paper_to_contact;
+use chatter_kernel::model::Polygon as Body;
+use chatter_kernel::model::linalg::mat_vec;
 use std::cmp::Ordering;
 
 type V3 = [RatFn; 3];
@@ -274,7 +274,7 @@ pub fn prove() -> Proof {
         [(Q::new(1, 100), Q::new(1, 6)), (Q::new(3, 10), Q::int(2)), (Q::new(1, 20), Q::new(1, 10))]
     {
         let b = Body::new(4, kk.clone(), gg.clone()).expect("valid body");
-        let (c2, c1, c0) = crate::kernel::linalg::char_poly(&b.step(3));
+        let (c2, c1, c0) = chatter_kernel::model::linalg::char_poly(&b.step(3));
         let at = |lam: &Q| (lam * lam * lam) - &(&c2 * &(lam * lam)) + &(&c1 * lam) - &c0;
         for lam in [Q::int(0), Q::int(1), Q::int(-2), Q::new(1, 3)] {
             let mine = chi.eval(&[gg.clone(), kk.clone(), lam.clone(), Q::int(0), Q::int(0), Q::int(0)]);

@@ -95,6 +95,6 @@ fn the_triangle_plate_is_certified_where_the_paper_says_it_does_not_chatter() {
         let r =
             chatter::certify::certify(&chatter::certify::Request::new(3, Q::new(1, 8), g.parse().unwrap()));
         let c = r.result.unwrap_or_else(|e| panic!("gamma = {g}: {e}"));
-        assert_eq!(c.claim, chatter::certificate::Claim::CompleteChatterFromAllDown);
+        assert_eq!(c.claim, chatter_kernel::certificate::Claim::CompleteChatterFromAllDown);
     }
 }

@@ -1,6 +1,6 @@
 //! Tests of `certificate`: the two-stage reader, the writer, the schema's error codes.
 
-use chatter::certificate::{
+use chatter_kernel::certificate::{
     Body, Certificate, Claim, Code, Coordinates, FORMAT, Generator, VERSION, read, write,
 };
 

@@ -1,9 +1,9 @@
 //! Tests of the certification pipeline.
 
 use crate::common::q;
-use chatter::certificate::{Claim, write};
 use chatter::certify::{ClaimChoice, Failure, Request, certify};
 use chatter::finder::FinderOutcome;
+use chatter_kernel::certificate::{Claim, write};
 
 fn run(n: u64, k: &str, g: &str, claim: ClaimChoice) -> chatter::certify::Report {
     let mut r = Request::new(n, q(k), q(g));

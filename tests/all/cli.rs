@@ -1,6 +1,7 @@
 //! Tests of the `chatter` binary: arguments, outputs, exit statuses.
 
 use crate::common::{bin, root};
+use chatter::exact::QExt;
 use std::process::{Command, Output};
 
 fn chatter(args: &[&str], dir: &std::path::Path) -> Output {

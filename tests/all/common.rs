@@ -2,7 +2,7 @@
 #![allow(dead_code)]
 
 use chatter::exact::Q;
-use chatter::kernel::impact::Body;
+use chatter_kernel::model::Polygon as Body;
 use std::path::PathBuf;
 
 /// A rational from canonical text (panics on bad input: test data only).

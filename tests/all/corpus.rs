@@ -3,9 +3,9 @@
 //! certificates/invalid/expected.json.
 
 use crate::common::root;
-use chatter::certificate::{Claim, read};
 use chatter::exact::ParseLimits;
 use chatter::verify::{BackendVerdict, Backends, verify_text};
+use chatter_kernel::certificate::{Claim, read};
 use serde::Deserialize;
 use std::collections::BTreeSet;
 use std::path::PathBuf;
@@ -100,7 +100,7 @@ fn corpus_certificates_round_trip_through_the_writer() {
         let text = std::fs::read_to_string(&f).unwrap();
         let cert = read(&text).unwrap();
         assert_eq!(
-            chatter::certificate::write(&cert),
+            chatter_kernel::certificate::write(&cert),
             text,
             "{}: the writer's layout is canonical",
             f.display()

@@ -1,14 +1,14 @@
 //! Tests of the exactifier: its cones pass the kernel, and its failures carry reasons.
 
 use crate::common::body;
-use chatter::certificate::{Body, Certificate, Claim, Coordinates, FORMAT, Generator, VERSION};
 use chatter::exact::{ParseLimits, Q};
 use chatter::exactify::{ExactifyConfig, ExactifyError, exactify};
 use chatter::finder::geometry::P2;
 use chatter::finder::{FinderConfig, FinderOutcome, Seed, find_cone};
-use chatter::kernel::linalg::mat_vec;
 use chatter::model::{FloatBody, translation_down};
 use chatter::verify::{BackendVerdict, verify_both};
+use chatter_kernel::certificate::{Body, Certificate, Claim, Coordinates, FORMAT, Generator, VERSION};
+use chatter_kernel::model::linalg::mat_vec;
 
 fn cert(n: u64, k: &str, g: &str, gens: &[[Q; 3]]) -> Certificate {
     Certificate {

@@ -1,7 +1,7 @@
 //! Tests of `exact::q`.
 
 use crate::common::q;
-use chatter::exact::{Field, Int, NumberError, OrderedField, Q, Ring, parse_user_number, to_canonical};
+use chatter::exact::{Field, Int, NumberError, OrderedField, Q, QExt, Ring, parse_user_number, to_canonical};
 use malachite::Integer;
 use proptest::prelude::*;
 

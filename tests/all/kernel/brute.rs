@@ -13,9 +13,9 @@
 #![allow(dead_code)]
 
 use crate::common::{GAMMAS, KAPPAS, NS, body, q};
-use chatter::certificate::{Body as CertBody, Certificate, Claim, Code};
 use chatter::exact::Q;
-use chatter::kernel::impact::Body;
+use chatter_kernel::certificate::{Body as CertBody, Certificate, Claim, Code};
+use chatter_kernel::model::Polygon as Body;
 
 /// A point of the projection plane: (u0, u1) / (-v).
 pub type Pt = (Q, Q);
@@ -269,7 +269,7 @@ impl Quadratic {
 }
 
 pub fn pcc_quadratic(b: &Body<Q>) -> Quadratic {
-    let m = mat_mul(&b.step(b.n as i64 - 1), &b.step(1));
+    let m = mat_mul(&b.step(b.n() as i64 - 1), &b.step(1));
     let tr = &m[0][0] + &m[1][1] + &m[2][2];
     let minors = &m[0][0] * &m[1][1] - &m[0][1] * &m[1][0] + &m[0][0] * &m[2][2] - &m[0][2] * &m[2][0]
         + &m[1][1] * &m[2][2]
@@ -385,7 +385,7 @@ pub fn evaluate_parts(b: &Body<Q>, claim: Claim, gens: &[[Q; 3]]) -> Verdict {
     let down = mat_vec(&b.impact(0), &[Q::int(-1), Q::int(-1), Q::int(-1)]);
     v.contains_translation = project(&down).is_some_and(|p| k.iter().all(|h| h.contains(&p)));
 
-    for j in 1..b.n as i64 {
+    for j in 1..b.n() as i64 {
         let s = b.step(j);
         let mut cons = k.clone();
         // The four covectors of C_j; "v <= 0" becomes the constant constraint 1 >= 0.
@@ -488,7 +488,7 @@ fn pcc_quadratic_matches_the_kernel_and_fixes_one() {
             for gamma in GAMMAS {
                 let b = body(n, kappa, gamma);
                 let mine = pcc_quadratic(&b);
-                let theirs = chatter::kernel::pcc::pcc_quadratic(&b).expect("1 is an eigenvalue");
+                let theirs = chatter_kernel::model::pcc_quadratic(&b).expect("1 is an eigenvalue");
                 assert_eq!(
                     (&mine.p, &mine.q, &mine.discriminant),
                     (&theirs.p, &theirs.q, &theirs.discriminant)

@@ -3,10 +3,10 @@
 
 use super::brute::{self, HalfPlane, Pt, Verdict, lift, orient2, project};
 use crate::common::{GAMMAS, KAPPAS, NS, body, q};
-use chatter::certificate::{Body, Certificate, Claim, Code, Generator, Rejection, write};
 use chatter::certify::{Request, certify};
 use chatter::exact::{ParseLimits, Q};
-use chatter::kernel::{Accepted, check};
+use chatter_kernel::certificate::{Body, Certificate, Claim, Code, Generator, Rejection, write};
+use chatter_kernel::check::{Accepted, check};
 use num_rational::BigRational;
 use proptest::prelude::*;
 use proptest::sample::Index;
@@ -169,7 +169,7 @@ fn certified_cones_are_accepted_by_both_backends_and_the_brute_force() {
 #[test]
 fn certified_cones_survive_writing_and_reading() {
     for cert in certified() {
-        let back = chatter::certificate::read(&write(cert)).expect("readable");
+        let back = chatter_kernel::certificate::read(&write(cert)).expect("readable");
         assert_eq!(&back, cert);
         assert_eq!(run(&back), run(cert));
     }
@@ -705,7 +705,7 @@ fn restitution_zero_is_accepted_and_zero_images_are_allowed() {
 
 /// The ray p* of K ∩ C_j that S_j sends to zero when gamma = 0: R_j p* = -d_0 spans the
 /// kernel of I_0.
-fn zero_ray(b: &chatter::kernel::impact::Body<Q>, j: i64) -> Pt {
+fn zero_ray(b: &chatter_kernel::model::Polygon<Q>, j: i64) -> Pt {
     let d0 = b.impact_direction(0);
     let p = solve(&b.relabel(j), &[-d0[0].clone(), -d0[1].clone(), -d0[2].clone()]);
     assert!(brute::mat_vec(&b.step(j), &p).iter().all(|c| *c == Q::int(0)), "S_{j} p* = 0");
@@ -760,11 +760,12 @@ fn corpus_agrees_with_brute_force() {
             std::fs::read_dir(&dir).expect("corpus").map(|e| e.expect("entry").path()).collect();
         files.sort();
         for f in files.into_iter().filter(|f| f.extension().is_some_and(|x| x == "ron")) {
-            let Ok(cert) = chatter::certificate::read(&std::fs::read_to_string(&f).expect("readable")) else {
+            let Ok(cert) = chatter_kernel::certificate::read(&std::fs::read_to_string(&f).expect("readable"))
+            else {
                 continue;
             };
             // The brute force is for n >= 3; the rod (n = 2) is tested in kernel::rod.
-            if matches!(cert.body, chatter::certificate::Body::RegularPolygon { n: 2, .. }) {
+            if matches!(cert.body, chatter_kernel::certificate::Body::RegularPolygon { n: 2, .. }) {
                 continue;
             }
             match run(&cert) {

@@ -2,8 +2,8 @@
 
 use crate::common::{NS, body, q};
 use chatter::exact::Q;
-use chatter::kernel::linalg::{Vec3, dot, mat_vec};
 use chatter::model::square_paper_to_contact;
+use chatter_kernel::model::linalg::{Vec3, dot, mat_vec};
 use proptest::prelude::*;
 
 #[test]
@@ -76,10 +76,10 @@ fn square_c1_is_contact_one_moving_down() {
 }
 
 /// Which contact reaches the floor first from heights h (contact 0 at 0) moving with velocity p.
-fn first_hit(b: &chatter::kernel::impact::Body<Q>, h: &Vec3<Q>, p: &Vec3<Q>) -> Option<(i64, bool)> {
+fn first_hit(b: &chatter_kernel::model::Polygon<Q>, h: &Vec3<Q>, p: &Vec3<Q>) -> Option<(i64, bool)> {
     let mut best: Option<(Q, i64)> = None;
     let mut tie = false;
-    for k in 1..b.n as i64 {
+    for k in 1..b.n() as i64 {
         let (hk, uk) = (dot(b.contact(k), h), dot(b.contact(k), p));
         if uk < Q::int(0) {
             let t = -hk / uk;

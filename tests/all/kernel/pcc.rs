@@ -1,10 +1,10 @@
 //! Tests of `kernel::pcc`: the factor (t - 1)(t^2 + p t + q) of S_{n-1} S_1.
 
 use crate::common::{GAMMAS, KAPPAS, NS, body};
-use chatter::exact::{Q, Ring};
-use chatter::kernel::linalg::{mat_mul, mat_vec};
-use chatter::kernel::pcc::pcc_quadratic;
+use chatter::exact::{Q, QExt, Ring};
 use chatter::model::mat_f64;
+use chatter_kernel::model::linalg::{mat_mul, mat_vec};
+use chatter_kernel::model::pcc_quadratic;
 use num_rational::BigRational;
 
 #[test]
@@ -15,7 +15,7 @@ fn one_is_always_an_eigenvalue_with_eigenvector_m01() {
                 let b = body(n, k, g);
                 let quad = pcc_quadratic(&b).expect("t = 1 is a root");
                 // The constant term is det(S_{n-1} S_1) = det(S_1)^2 = gamma^2.
-                assert_eq!(quad.q, &b.gamma * &b.gamma, "n={n} kappa={k} gamma={g}");
+                assert_eq!(quad.q, b.gamma() * b.gamma(), "n={n} kappa={k} gamma={g}");
                 let m01 = b.rest_point(0, 1).unwrap();
                 let last = n as i64 - 1;
                 assert_eq!(mat_vec(&mat_mul(&b.step(last), &b.step(1)), &m01), m01);
@@ -51,7 +51,7 @@ fn the_discriminant_sign_matches_float_eigenvalues() {
 fn both_backends_factor_identically() {
     for n in NS {
         let a = pcc_quadratic(&body(n, "3/20", "1/20")).unwrap();
-        let nb = chatter::kernel::impact::Body::<BigRational>::new(
+        let nb = chatter_kernel::model::Polygon::<BigRational>::new(
             n,
             "3/20".parse().unwrap(),
             "1/20".parse().unwrap(),
@@ -67,7 +67,7 @@ fn both_backends_factor_identically() {
 fn square_pcc_is_excluded_at_moderate_gamma() {
     // Where the paper's claim holds for the square plate: kappa = 1/6, 1/100 <= gamma < 1.
     for g in 1..=99 {
-        let b = chatter::kernel::impact::Body::new(4, Q::new(1, 6), Q::new(g, 100)).unwrap();
+        let b = chatter_kernel::model::Polygon::<Q>::new(4, Q::new(1, 6), Q::new(g, 100)).unwrap();
         assert!(pcc_quadratic(&b).unwrap().excludes_pcc(), "gamma={g}/100");
     }
 }

@@ -4,8 +4,8 @@
 use super::brute::{HalfPlane, Pt, ccw_hull, extreme_points, full_dimensional, in_hull, orient2, twice_area};
 use crate::common::q;
 use chatter::exact::{Q, Ring};
-use chatter::kernel::linalg::{Vec3, dot};
-use chatter::kernel::polygon::{ConvexPolygon, clip, hull, orient};
+use chatter_kernel::geometry::{ConvexPolygon, clip, hull, orient};
+use chatter_kernel::model::linalg::{Vec3, dot};
 use malachite::Integer;
 use num_bigint::BigInt;
 use proptest::prelude::*;
@@ -451,7 +451,7 @@ fn line() -> impl Strategy<Value = Line> {
 
 fn covector<R: Ring>(poly: &[Vec3<R>], l: &Line) -> Vec3<R> {
     let i = |x: i64| R::from_i64(x);
-    let cross = chatter::kernel::linalg::cross::<R>;
+    let cross = chatter_kernel::model::linalg::cross::<R>;
     let flip = |v: Vec3<R>, s: bool| if s { v } else { v.map(|c| c.negated()) };
     match l {
         Line::Random(a, b, c) => [i(*a), i(*b), i(*c)],

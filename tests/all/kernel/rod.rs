@@ -1,11 +1,11 @@
 //! Tests of `kernel::rod`: the planar rod model and its certificate checks (n = 2).
 
 use crate::common::q;
-use chatter::certificate::{Body, Certificate, Claim, Code, Coordinates, FORMAT, Generator, VERSION};
 use chatter::certify::{ClaimChoice, Request, certify};
 use chatter::exact::{ParseLimits, Q};
-use chatter::kernel::check;
-use chatter::kernel::rod::{Rod, mat2_vec};
+use chatter_kernel::certificate::{Body, Certificate, Claim, Code, Coordinates, FORMAT, Generator, VERSION};
+use chatter_kernel::check::check;
+use chatter_kernel::model::{Rod, mat2_vec};
 use num_rational::BigRational;
 
 fn rod_cert(kappa: &str, gamma: &str, claim: Claim, gens: &[(&str, &str)]) -> Certificate {
@@ -20,7 +20,7 @@ fn rod_cert(kappa: &str, gamma: &str, claim: Claim, gens: &[(&str, &str)]) -> Ce
     }
 }
 
-fn both(c: &Certificate) -> Result<chatter::kernel::Accepted, chatter::certificate::Rejection> {
+fn both(c: &Certificate) -> Result<chatter_kernel::check::Accepted, chatter_kernel::certificate::Rejection> {
     let a = check::<Q>(c, ParseLimits::default());
     assert_eq!(a, check::<BigRational>(c, ParseLimits::default()), "backends agree");
     a
@@ -35,7 +35,7 @@ fn rod_impacts_follow_the_model() {
     assert_eq!(after[0], q("3/20"), "u0 -> -gamma u0");
     // u1 -> u1 - (1 + gamma) coupling u0 = 1 - (21/20)(-1/2)(-3) = 1 - 63/40.
     assert_eq!(after[1], q("-23/40"));
-    assert_eq!(r.step(), chatter::kernel::rod::mat2_mul(&r.impact(0), &r.relabel()));
+    assert_eq!(r.step(), chatter_kernel::model::mat2_mul(&r.impact(0), &r.relabel()));
     assert!(Rod::new(q("0"), q("1/2")).is_err() && Rod::new(q("1"), q("3/2")).is_err());
 }
 

@@ -7,10 +7,10 @@
 //! against the paper's Conjecture 1, recorded here so that any change shows.
 
 use chatter::exact::Q;
-use chatter::kernel::impact::cos_step;
 use chatter::simulate::{Arithmetic, Model, Options, Shape, counts, simulate_many};
 use chatter::spectral::criteria::{Family, cc_criterion};
 use chatter::spectral::eigen::Dominant;
+use chatter_kernel::model::rational_cos as cos_step;
 
 #[test]
 fn simulated_outcomes_agree_with_the_exact_cc_criterion() {

@@ -1,7 +1,7 @@
 //! The two engines: energy, agreement of the arithmetics, renormalisation, determinism.
 
 use super::{model, random_rational_start};
-use chatter::exact::Q;
+use chatter::exact::{Q, QExt};
 use chatter::simulate::{
     Arithmetic, Engine, ExactEngine, FloatEngine, Model, Options, Outcome, Scaled, SplitMix64, Start, Step,
     drive, exact_drop, random_drop, simulate_float, simulate_many,

@@ -2,13 +2,13 @@
 
 use super::model;
 use crate::common::{GAMMAS, KAPPAS, q};
-use chatter::exact::Ring;
-use chatter::kernel::linalg::dot;
+use chatter::exact::{QExt, Ring};
 use chatter::simulate::pcc::prove_pair_chatter;
 use chatter::simulate::{
     Decision, Engine, ExactEngine, Options, Outcome, Step, exact_drop, random_drop, simulate_exact,
     simulate_float,
 };
+use chatter_kernel::model::linalg::dot;
 
 #[test]
 fn the_flat_triangle_plate_shows_pcc_at_small_gamma() {
@@ -52,7 +52,7 @@ fn pcc_lemma_guard_agrees_with_the_kernel_quadratic() {
             for gamma in GAMMAS {
                 let m = model(n, kappa, gamma);
                 let body = chatter::model::body(n, &q(kappa), &q(gamma)).unwrap();
-                let quad = chatter::kernel::pcc::pcc_quadratic(&body).expect("1 is an eigenvalue");
+                let quad = chatter_kernel::model::pcc_quadratic(&body).expect("1 is an eigenvalue");
                 let e = &m.system.pair_coupling;
                 let expected = e.is_negative() && !quad.discriminant.is_negative();
                 assert_eq!(m.system.pcc_possible(), expected, "n={n} kappa={kappa} gamma={gamma}");

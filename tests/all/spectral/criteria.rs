@@ -1,7 +1,7 @@
 //! Tests of `spectral::criteria`: the rod theorem, the CC and PCC criteria and their thresholds.
 
 use crate::common::q;
-use chatter::exact::{Q, Ring};
+use chatter::exact::{Q, QExt, Ring};
 use chatter::spectral::criteria::{
     Family, Sup, cc_criterion, cc_profile, goyal_condition, goyal_threshold, pcc_criterion, pcc_profile,
     rod_cc_criterion, rod_cc_profile,
@@ -11,7 +11,7 @@ use chatter::spectral::roots::isolate;
 use std::cmp::Ordering;
 
 fn family(n: u64, kappa: &str) -> Family<Q> {
-    Family { n, c1: chatter::kernel::impact::cos_step(n).unwrap(), kappa: q(kappa) }
+    Family { n, c1: chatter_kernel::model::rational_cos(n).unwrap(), kappa: q(kappa) }
 }
 
 /// 7 - 4 sqrt 3 as the root of g^2 - 14 g + 1 in (0, 1).
@@ -36,7 +36,7 @@ fn goyal_condition_agrees_with_the_rod_eigenvalue_criterion() {
     for k in 1..40 {
         for g in 0..=50 {
             let (kappa, gamma) = (Q::new(k, 40), Q::new(g, 50));
-            let rod = chatter::kernel::rod::Rod::new(kappa.clone(), gamma.clone()).unwrap();
+            let rod = chatter_kernel::model::Rod::new(kappa.clone(), gamma.clone()).unwrap();
             assert_eq!(
                 goyal_condition(&kappa, &gamma),
                 rod_cc_criterion(&rod).0,
@@ -111,10 +111,10 @@ fn cube_and_heavy_bodies_never_meet_the_cc_criterion() {
 /// the same cone (eigenvector of the smaller eigenvalue and its mirror image).
 #[test]
 fn rod_velocity_cone_matches_a_float_construction() {
-    use chatter::kernel::rod::Rod;
     use chatter::spectral::criteria::rod_velocity_in_cone;
+    use chatter_kernel::model::Rod;
     let rod = Rod::new(q("1/3"), q("1/20")).unwrap();
-    let s = chatter::kernel::rod::Rod::step(&rod);
+    let s = chatter_kernel::model::Rod::step(&rod);
     let m = nalgebra::Matrix2::from_fn(|r, c| s[r][c].to_f64());
     let (tr, det) = (m[(0, 0)] + m[(1, 1)], m.determinant());
     let lmin = (tr - (tr * tr - 4.0 * det).sqrt()) / 2.0;

@@ -2,8 +2,8 @@
 
 use crate::common::{NS, body};
 use chatter::exact::Q;
-use chatter::kernel::linalg::Mat3;
 use chatter::spectral::eigen::{Dominant, Spectrum};
+use chatter_kernel::model::linalg::Mat3;
 use proptest::prelude::*;
 
 fn m(rows: [[i64; 3]; 3]) -> Mat3<Q> {
@@ -50,7 +50,7 @@ proptest! {
     /// The exact decisions agree with floating-point eigenvalues away from the boundaries.
     #[test]
     fn exact_decisions_agree_with_floats(n in prop::sample::select(NS.to_vec()), k in 1i64..60, g in 1i64..99) {
-        let b = chatter::kernel::impact::Body::new(n, Q::new(k, 40), Q::new(g, 100)).unwrap();
+        let b = chatter_kernel::model::Polygon::<Q>::new(n, Q::new(k, 40), Q::new(g, 100)).unwrap();
         let mut s = Spectrum::of3(&b.step(1));
         let ev = chatter::model::mat_f64(&b.step(1)).complex_eigenvalues();
         let reals: Vec<f64> = ev.iter().filter(|z| z.im.abs() < 1e-9).map(|z| z.re).collect();

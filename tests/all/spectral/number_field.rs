@@ -1,6 +1,6 @@
 //! Tests of `spectral::number_field`: minimal polynomials of cos(2 pi/n) and exact arithmetic.
 
-use chatter::exact::{OrderedField, Q, Ring};
+use chatter::exact::{OrderedField, Q, QExt, Ring};
 use chatter::spectral::number_field::{Nf, NumberField, cos_minimal_polynomial};
 use std::cmp::Ordering;
 

@@ -2,7 +2,7 @@
 //! counts against brute force, root isolation, algebraic-number comparisons.
 
 use crate::common::q;
-use chatter::exact::Q;
+use chatter::exact::{Q, QExt};
 use chatter::spectral::poly::{Point, Poly, count_roots};
 use chatter::spectral::roots::{RealRoot, isolate};
 use proptest::prelude::*;

@@ -9,11 +9,17 @@ use std::fmt;
 pub enum Code {
     /// Not RON, or a value of the wrong type.
     Syntax,
+    /// A field the format does not have.
     UnknownField,
+    /// A required field is absent.
     MissingField,
+    /// A field given twice.
     DuplicateField,
+    /// An enum value the format does not have.
     UnknownVariant,
+    /// `format` is not "chatter-certificate".
     WrongFormat,
+    /// A version this build does not read.
     UnsupportedVersion,
     /// A number that is not canonical `p/q` text, or too long.
     BadNumber,
@@ -40,6 +46,7 @@ pub enum Code {
 }
 
 impl Code {
+    /// The stable kebab-case name.
     pub fn as_str(self) -> &'static str {
         match self {
             Code::Syntax => "syntax",
@@ -67,11 +74,14 @@ impl Code {
 /// A rejected certificate: the first failing check, exactly.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct Rejection {
+    /// The stable code.
     pub code: Code,
+    /// What failed, exactly.
     pub message: String,
 }
 
 impl Rejection {
+    /// A rejection with a code and a message.
     pub fn new(code: Code, message: impl Into<String>) -> Self {
         Rejection { code, message: message.into() }
     }

@@ -1,5 +1,5 @@
 //! The exact impact model of a regular n-gon body in contact-velocity coordinates
-//! p = (u0, u1, v) (MODEL.md §2-3): contact covectors, impact maps, relabelling, step maps.
+//! p = (u0, u1, v) (docs/model.md §2-3): contact covectors, impact maps, relabelling, step maps.
 
 use super::linalg::{Mat3, Vec3, identity, mat_mul};
 use crate::exact::OrderedField;
@@ -7,8 +7,11 @@ use crate::exact::OrderedField;
 /// Why a body cannot be modelled exactly.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum BodyError {
+    /// No exact model for this number of contacts.
     UnsupportedN(u64),
+    /// kappa <= 0.
     KappaNotPositive,
+    /// gamma outside [0, 1].
     GammaOutOfRange,
 }
 
@@ -26,7 +29,7 @@ impl std::fmt::Display for BodyError {
 }
 
 /// cos(2*pi/n) for the regular polygons whose cosines are rational (Niven: n = 3, 4, 6).
-pub fn cos_step<F: OrderedField>(n: u64) -> Option<F> {
+pub fn rational_cos<F: OrderedField>(n: u64) -> Option<F> {
     match n {
         3 => Some(F::from_ratio(-1, 2)),
         4 => Some(F::zero()),
@@ -37,24 +40,25 @@ pub fn cos_step<F: OrderedField>(n: u64) -> Option<F> {
 
 /// A flat regular n-gon body: contacts at angles 2*pi*k/n, kappa = rho^2/R^2, restitution gamma.
 #[derive(Clone, Debug)]
-pub struct Body<F> {
-    pub n: usize,
-    pub kappa: F,
-    pub gamma: F,
+pub struct Polygon<F> {
+    n: usize,
+    kappa: F,
+    gamma: F,
     /// c_m = cos(2*pi*m/n), m = 0..n-1.
     cos: Vec<F>,
     /// Contact covectors f_k with u_k = f_k . p, k = 0..n-1.
     contacts: Vec<Vec3<F>>,
 }
 
-impl<F: OrderedField> Body<F> {
+impl<F: OrderedField> Polygon<F> {
+    /// The body with n in {3, 4, 6} (rational cos(2 pi/n)); kappa > 0 and gamma in [0, 1].
     pub fn new(n: u64, kappa: F, gamma: F) -> Result<Self, BodyError> {
-        let c1: F = cos_step(n).ok_or(BodyError::UnsupportedN(n))?;
+        let c1: F = rational_cos(n).ok_or(BodyError::UnsupportedN(n))?;
         Self::with_cosine(n, c1, kappa, gamma)
     }
 
     /// A body whose cos(2*pi/n) = `c1` is given by the caller (exact in any field, e.g. a number
-    /// field for n = 5). The kernel itself only uses [`Body::new`].
+    /// field for n = 5). The kernel itself only uses [`Polygon::new`].
     pub fn with_cosine(n: u64, c1: F, kappa: F, gamma: F) -> Result<Self, BodyError> {
         if n < 3 {
             return Err(BodyError::UnsupportedN(n));
@@ -86,7 +90,22 @@ impl<F: OrderedField> Body<F> {
                 [a, b, rest]
             })
             .collect();
-        Ok(Body { n, kappa, gamma, cos, contacts })
+        Ok(Polygon { n, kappa, gamma, cos, contacts })
+    }
+
+    /// Number of contacts.
+    pub fn n(&self) -> usize {
+        self.n
+    }
+
+    /// kappa = rho^2 / R^2.
+    pub fn kappa(&self) -> &F {
+        &self.kappa
+    }
+
+    /// The coefficient of restitution.
+    pub fn gamma(&self) -> &F {
+        &self.gamma
     }
 
     /// c_m = cos(2*pi*m/n) for any integer m.

@@ -6,26 +6,24 @@
 //! run on integer-scaled homogeneous vectors: effective invariance is a property of cones, so
 //! scaling a generator, a covector or a map by a positive number changes nothing.
 
-pub mod cones;
-pub mod impact;
-pub mod linalg;
-pub mod pcc;
-pub mod polygon;
-pub mod rod;
+mod rod;
 
 use crate::certificate::{Body, Certificate, Claim, Code, FORMAT, Rejection, VERSION};
 use crate::exact::{
     Field, Int, ParseLimits, Ring, parse_canonical, parse_canonical_parts, scale_to_ints, to_canonical,
 };
-use impact::BodyError;
-use linalg::{Mat3, Vec3, is_zero, mat_vec};
-use polygon::{ConvexPolygon, clip, hull};
+use crate::geometry::{ConvexPolygon, clip, hull};
+use crate::model::linalg::{Mat3, Vec3, is_zero, mat_vec};
+use crate::model::{self, BodyError};
 
 /// What an accepted certificate established.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Accepted {
+    /// The claim established.
     pub claim: Claim,
+    /// Number of contacts.
     pub n: u64,
+    /// Number of generators in the file.
     pub generators: usize,
     /// Indices of generators that are not extreme rays of K (allowed, reported).
     pub redundant: Vec<usize>,
@@ -116,8 +114,8 @@ fn check_image<F: Field>(
 
 /// The parsed body: a polygon (n >= 3) or the rod (n = 2).
 enum Parsed<F> {
-    Polygon(impact::Body<F>),
-    Rod(rod::Rod<F>),
+    Polygon(model::Polygon<F>),
+    Rod(model::Rod<F>),
 }
 
 fn body_error(e: BodyError) -> Rejection {
@@ -196,9 +194,9 @@ pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accept
     let kappa: F = number("body.kappa", kappa, limits)?;
     let gamma: F = number("body.gamma", gamma, limits)?;
     let parsed = if *n == 2 {
-        Parsed::Rod(rod::Rod::new(kappa, gamma).map_err(body_error)?)
+        Parsed::Rod(model::Rod::new(kappa, gamma).map_err(body_error)?)
     } else {
-        Parsed::Polygon(impact::Body::new(*n, kappa, gamma).map_err(body_error)?)
+        Parsed::Polygon(model::Polygon::new(*n, kappa, gamma).map_err(body_error)?)
     };
     match parsed {
         Parsed::Rod(r) => {
@@ -223,12 +221,12 @@ pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accept
 
 /// The geometric checks R1 (dimension) to R4 for a regular polygon with n >= 3.
 fn check_polygon<F: Field>(
-    body: &impact::Body<F>,
+    body: &model::Polygon<F>,
     gens: &[Vec3<F::Int>],
     claim: Claim,
     max_denominator_bits: u64,
 ) -> Result<Accepted, Rejection> {
-    let n = body.n as u64;
+    let n = body.n() as u64;
     // K: the exact convex hull of the projected generators; it must have an interior.
     let hull_idx = hull(gens);
     if gens.is_empty() {
@@ -246,8 +244,8 @@ fn check_polygon<F: Field>(
     let k = ConvexPolygon::new(hull_idx.iter().map(|&i| gens[i].clone()).collect());
 
     // Condition 2: S_j(K ∩ C_j) ⊆ K, checked on the vertices of each clipped piece.
-    let mut pieces = Vec::with_capacity(body.n - 1);
-    for j in 1..body.n as i64 {
+    let mut pieces = Vec::with_capacity(body.n() - 1);
+    for j in 1..body.n() as i64 {
         let s = int_mat(&body.step(j));
         let mut piece = k.vertices.clone();
         for l in body.next_contact_cone(j) {
@@ -266,7 +264,7 @@ fn check_polygon<F: Field>(
         for (m, g) in body.all_down_generators().iter().enumerate() {
             let g = int_vec(g);
             let what = || {
-                format!("I_0 maps the all-down generator -m_({m},{}) = {}", (m + 1) % body.n, show::<F>(&g))
+                format!("I_0 maps the all-down generator -m_({m},{}) = {}", (m + 1) % body.n(), show::<F>(&g))
             };
             let img = mat_vec(&i0, &g);
             check_image::<F>(&k, &hull_idx, &img, &what, Code::InitialOutside, Code::InitialOutside)?;
@@ -276,7 +274,7 @@ fn check_polygon<F: Field>(
     // Strongest claim: PCC excluded by the quadratic factor of S_{n-1} S_1.
     let mut pcc = None;
     if claim >= Claim::CompleteChatterFromAllDown {
-        let quad = pcc::pcc_quadratic(body).map_err(|at_one| {
+        let quad = model::pcc_quadratic(body).map_err(|at_one| {
             Rejection::new(
                 Code::Internal,
                 format!("model error: det(I - S_(n-1) S_1) = {} is not 0", to_canonical(&at_one)),
@@ -286,7 +284,7 @@ fn check_polygon<F: Field>(
         if !quad.excludes_pcc() {
             let msg = format!(
                 "PCC is not excluded: det(tI - S_{} S_1) = (t - 1)(t^2 + ({}) t + ({})) with discriminant {} (needs < 0) and constant term {} (needs < 1)",
-                body.n - 1,
+                body.n() - 1,
                 text[0],
                 text[1],
                 text[2],

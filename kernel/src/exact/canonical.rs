@@ -21,17 +21,39 @@ impl Default for ParseLimits {
 /// Why a string is not a canonical rational.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum NumberError {
+    /// The empty string.
     Empty,
+    /// Whitespace anywhere.
     Whitespace,
+    /// A leading `+`.
     PlusSign,
+    /// A character other than digits, `-` and `/`.
     InvalidCharacter(char),
+    /// A numerator or denominator without digits.
     MissingDigits,
+    /// Leading zeros.
     LeadingZero,
+    /// `-0`.
     NegativeZero,
+    /// Denominator 0.
     ZeroDenominator,
-    UnitDenominator { canonical: String },
-    NotReduced { canonical: String },
-    TooLong { digits: usize, max: usize },
+    /// Denominator 1 (the canonical text has none).
+    UnitDenominator {
+        /// The canonical text of the same number.
+        canonical: String,
+    },
+    /// Not in lowest terms.
+    NotReduced {
+        /// The canonical text of the same number.
+        canonical: String,
+    },
+    /// More digits than the limit.
+    TooLong {
+        /// Digits found.
+        digits: usize,
+        /// The limit.
+        max: usize,
+    },
 }
 
 impl fmt::Display for NumberError {

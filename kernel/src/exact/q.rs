@@ -1,47 +1,39 @@
 //! `Q`: the project's exact rational, a newtype over malachite's `Rational` whose text form is
 //! the canonical `"p/q"` (also in serde), plus the [`Ring`]/[`Int`]/[`Field`] impls for the
-//! malachite backend.
+//! malachite backend. Conversions to and from floats live in the untrusted tool.
 
 use super::{Field, Int, NumberError, OrderedField, ParseLimits, Ring, parse_canonical, to_canonical};
-use malachite::base::num::arithmetic::traits::{DivExact, Gcd, Sign, UnsignedAbs};
-use malachite::base::num::conversion::traits::{RoundingFrom, SciMantissaAndExponent};
+use malachite::Integer;
+use malachite::base::num::arithmetic::traits::{DivExact, Gcd, Sign};
 use malachite::base::num::logic::traits::SignificantBits;
-use malachite::base::rounding_modes::RoundingMode;
 use malachite::rational::Rational;
-use malachite::{Integer, Natural};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use std::cmp::Ordering;
 use std::fmt;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 use std::str::FromStr;
 
-/// Direction of rounding when printing decimals.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Rounding {
-    Down,
-    Up,
-    Nearest,
-}
-
 /// An exact rational number (malachite backend) with canonical `"p/q"` text.
 #[derive(Clone, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
-pub struct Q(pub Rational);
+pub struct Q(Rational);
 
 impl Q {
+    /// The rational n / d; panics if d = 0 (a programming error, never input).
     pub fn new(n: i64, d: i64) -> Q {
         assert!(d != 0, "Q::new: zero denominator");
         Q(Rational::from_signeds(n, d))
     }
+    /// The integer n.
     pub fn int(n: i64) -> Q {
         Q(Rational::from(n))
     }
-    /// Nearest `f64` (for untrusted numerical code and display only).
-    pub fn to_f64(&self) -> f64 {
-        f64::rounding_from(&self.0, RoundingMode::Nearest).0
+    /// Wraps a malachite rational.
+    pub fn from_rational(r: Rational) -> Q {
+        Q(r)
     }
-    /// The exact value of a finite `f64` (every float is a dyadic rational).
-    pub fn from_f64_exact(x: f64) -> Option<Q> {
-        Rational::try_from(x).ok().map(Q)
+    /// The malachite rational inside.
+    pub fn as_rational(&self) -> &Rational {
+        &self.0
     }
     /// Absolute value.
     pub fn abs(&self) -> Q {
@@ -50,62 +42,6 @@ impl Q {
     /// Bits of the denominator of the reduced form.
     pub fn denominator_bits(&self) -> u64 {
         self.0.to_denominator().significant_bits()
-    }
-    /// Smallest dyadic `k / 2^bits` that is `>= self`.
-    pub fn ceil_dyadic(&self, bits: u64) -> Q {
-        let scaled = &self.0 << bits;
-        let k = Integer::rounding_from(&scaled, RoundingMode::Ceiling).0;
-        Q(Rational::from(k) >> bits)
-    }
-    /// Largest dyadic `k / 2^bits` that is `<= self`.
-    pub fn floor_dyadic(&self, bits: u64) -> Q {
-        let scaled = &self.0 << bits;
-        let k = Integer::rounding_from(&scaled, RoundingMode::Floor).0;
-        Q(Rational::from(k) >> bits)
-    }
-    /// 10^e.
-    pub fn pow10(e: i64) -> Q {
-        let p = Rational::from(Natural::from(10u32).pow_u64(e.unsigned_abs()));
-        Q(if e >= 0 { p } else { Rational::from(1u32) / p })
-    }
-    /// A decimal string with `digits` digits after the point, rounded to nearest.
-    pub fn to_decimal(&self, digits: usize) -> String {
-        self.decimal(digits, Rounding::Nearest)
-    }
-    /// A decimal string with `digits` digits after the point, rounded as asked (`Down` and `Up`
-    /// give guaranteed lower and upper bounds).
-    pub fn decimal(&self, digits: usize, rounding: Rounding) -> String {
-        let scale = Rational::from(Natural::from(10u32).pow_u64(digits as u64));
-        let mode = match rounding {
-            Rounding::Down => RoundingMode::Floor,
-            Rounding::Up => RoundingMode::Ceiling,
-            Rounding::Nearest => RoundingMode::Nearest,
-        };
-        let k = Integer::rounding_from(&(&self.0 * scale), mode).0;
-        let neg = k < 0u32;
-        let s = k.unsigned_abs().to_string();
-        let s = if s.len() <= digits { format!("{}{}", "0".repeat(digits + 1 - s.len()), s) } else { s };
-        let (ip, fp) = s.split_at(s.len() - digits);
-        let sign = if neg { "-" } else { "" };
-        if digits == 0 { format!("{sign}{ip}") } else { format!("{sign}{ip}.{fp}") }
-    }
-    /// Rough decimal exponent for display (`log10 |x|`), `None` for zero.
-    pub fn log10_abs(&self) -> Option<f64> {
-        if self.0 == 0u32 {
-            return None;
-        }
-        let (m, e): (f64, i64) = self.abs().0.sci_mantissa_and_exponent();
-        Some(m.log10() + e as f64 * std::f64::consts::LOG10_2)
-    }
-}
-
-trait PowU64 {
-    fn pow_u64(self, e: u64) -> Self;
-}
-impl PowU64 for Natural {
-    fn pow_u64(self, e: u64) -> Natural {
-        use malachite::base::num::arithmetic::traits::Pow;
-        self.pow(e)
     }
 }
 

@@ -2,8 +2,8 @@
 //! integer 3-vector g with g_v < 0 (it stands for (g_u0, g_u1) / (-g_v)), a line is a covector.
 //! Every test is the sign of a polynomial in the integers, so nothing is ever divided.
 
-use super::linalg::{Vec3, cross, det3, dot};
 use crate::exact::Ring;
+use crate::model::linalg::{Vec3, cross, det3, dot};
 use std::cmp::Ordering;
 
 /// Orientation of the projected points a, b, c: `Greater` when counter-clockwise. With
@@ -47,6 +47,7 @@ pub fn hull<R: Ring>(pts: &[Vec3<R>]) -> Vec<usize> {
 
 /// A convex polygon with non-empty interior, vertices counter-clockwise.
 pub struct ConvexPolygon<R> {
+    /// The vertices, counter-clockwise.
     pub vertices: Vec<Vec3<R>>,
     /// facets[i] . p >= 0 is the inner side of the edge from vertex i to vertex i+1.
     pub facets: Vec<Vec3<R>>,

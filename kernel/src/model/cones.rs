@@ -1,15 +1,11 @@
 //! The points m_{k,l}, the cones C_j of velocities from which contact j hits next
 //! (the paper's Lemma on C_j, MODEL §4), and the all-down cone D (MODEL §5).
 
-use super::impact::Body;
 use super::linalg::{Vec3, cross, neg};
+use super::polygon::Polygon;
 use crate::exact::OrderedField;
 
-/// The four inequalities of C_j, in the order used in messages.
-pub const C_FACET_NAMES: [&str; 4] =
-    ["u0 >= 0", "v <= 0", "det[m_(j,j+1), m_(0,1), p] >= 0", "det[m_(n-1,0), m_(j-1,j), p] >= 0"];
-
-impl<F: OrderedField> Body<F> {
+impl<F: OrderedField> Polygon<F> {
     /// m_{k,l}: the configuration with h_k = h_l = 0 and h_c = 1 (`None` if k, l are opposite).
     pub fn rest_point(&self, k: i64, l: i64) -> Option<Vec3<F>> {
         let [ak, bk, ek] = self.contact(k);
@@ -40,6 +36,6 @@ impl<F: OrderedField> Body<F> {
 
     /// Generators -m_{k,k+1} (k = 0..n-1) of D = { p : u_k <= 0 for all k } (MODEL §5).
     pub fn all_down_generators(&self) -> Vec<Vec3<F>> {
-        (0..self.n as i64).map(|k| neg(&self.adjacent_rest_point(k))).collect()
+        (0..self.n() as i64).map(|k| neg(&self.adjacent_rest_point(k))).collect()
     }
 }

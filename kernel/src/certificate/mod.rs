@@ -20,11 +20,17 @@ pub const VERSION: u64 = 1;
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename = "Certificate", deny_unknown_fields)]
 pub struct Certificate {
+    /// Always [`FORMAT`].
     pub format: String,
+    /// Always [`VERSION`].
     pub version: u64,
+    /// The falling body.
     pub body: Body,
+    /// The coordinates of the generators.
     pub coordinates: Coordinates,
+    /// What the certificate proves.
     pub claim: Claim,
+    /// Generators of the cone K.
     pub cone: Vec<Generator>,
     /// Informational only, never trusted.
     #[serde(default)]
@@ -36,7 +42,14 @@ pub struct Certificate {
 #[serde(deny_unknown_fields)]
 pub enum Body {
     /// Regular n-gon of contacts (circumradius 1), kappa = rho^2/R^2, restitution gamma.
-    RegularPolygon { n: u64, kappa: String, gamma: String },
+    RegularPolygon {
+        /// Number of contacts (2 for the rod).
+        n: u64,
+        /// kappa, canonical rational text.
+        kappa: String,
+        /// gamma, canonical rational text.
+        gamma: String,
+    },
 }
 
 /// The coordinates of the generators.
@@ -58,9 +71,11 @@ pub enum Claim {
 }
 
 impl Claim {
+    /// The three claims, weakest first.
     pub const ALL: [Claim; 3] =
         [Claim::EffectivelyInvariant, Claim::CcOrPccFromAllDown, Claim::CompleteChatterFromAllDown];
 
+    /// The name used in certificates and output.
     pub fn name(self) -> &'static str {
         match self {
             Claim::EffectivelyInvariant => "EffectivelyInvariant",

@@ -1,0 +1,69 @@
+//! The kernel on both bignum backends. The two runs share no arithmetic code: malachite and
+//! num-bigint/num-rational are independent libraries, so a disagreement between their verdicts
+//! (messages included) reveals a bug in one of them or in the kernel, and is reported as such.
+
+use crate::certificate::{Certificate, read};
+use crate::check::{Accepted, check};
+use crate::exact::{ParseLimits, Q};
+use num_rational::BigRational;
+
+/// A kernel run on one backend: `check::<F>` for some backend `F`.
+pub type Checker = fn(&Certificate, ParseLimits) -> Result<Accepted, crate::certificate::Rejection>;
+
+/// A named backend.
+#[derive(Clone, Copy)]
+pub struct Backend {
+    /// The bignum library's name.
+    pub name: &'static str,
+    /// The kernel on it.
+    pub check: Checker,
+}
+
+/// malachite, the main backend.
+pub const MALACHITE: Backend = Backend { name: "malachite", check: check::<Q> };
+/// num-bigint/num-rational, the independent second backend.
+pub const NUM: Backend = Backend { name: "num-rational", check: check::<BigRational> };
+
+/// The kernel's verdict, possibly over two backends.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// Every backend accepts, with identical reports.
+    Accepted(Accepted),
+    /// Every backend rejects, with identical reasons.
+    Rejected(crate::certificate::Rejection),
+    /// The backends disagree: a bug in chatter or in a bignum library.
+    Disagree(String),
+}
+
+/// Runs the kernel on each backend and compares the verdicts.
+pub fn verify_on(cert: &Certificate, limits: ParseLimits, backends: &[Backend]) -> Verdict {
+    let mut first: Option<(&str, Result<Accepted, crate::certificate::Rejection>)> = None;
+    for b in backends {
+        let r = (b.check)(cert, limits);
+        match &first {
+            None => first = Some((b.name, r)),
+            Some((name, f)) if *f != r => {
+                return Verdict::Disagree(format!("{name} says {f:?}, {} says {r:?}", b.name));
+            }
+            Some(_) => {}
+        }
+    }
+    match first {
+        Some((_, Ok(a))) => Verdict::Accepted(a),
+        Some((_, Err(r))) => Verdict::Rejected(r),
+        None => Verdict::Disagree("no backend was run".into()),
+    }
+}
+
+/// Runs the kernel on both backends (malachite and num-rational).
+pub fn verify(cert: &Certificate, limits: ParseLimits) -> Verdict {
+    verify_on(cert, limits, &[MALACHITE, NUM])
+}
+
+/// Reads certificate text and verifies it on the given backends.
+pub fn verify_text(text: &str, limits: ParseLimits, backends: &[Backend]) -> Verdict {
+    match read(text) {
+        Ok(cert) => verify_on(&cert, limits, backends),
+        Err(r) => Verdict::Rejected(r),
+    }
+}
