@@ -7,7 +7,7 @@
 
 use chatter::certify::{ClaimChoice, Request, certify};
 use chatter::exact::Q;
-use chatter::finder::FinderOutcome;
+use chatter::finder::Search;
 use chatter_kernel::certificate::Claim;
 use indicatif::ProgressBar;
 use std::time::Instant;
@@ -40,7 +40,7 @@ fn main() {
         let ms = start.elapsed().as_secs_f64() * 1e3;
         all_ms.push(ms);
         match &report.finder {
-            Some(FinderOutcome::Found { .. }) => {
+            Some(Search::Found { .. }) => {
                 found += 1;
                 found_ms.push(ms);
                 match &report.result {
@@ -48,7 +48,7 @@ fn main() {
                     Err(e) => failures.push(format!("n={n} kappa={kappa} gamma={gamma}: {e}")),
                 }
             }
-            Some(FinderOutcome::NoCone { .. }) => no_cone += 1,
+            Some(Search::NoCone { .. }) => no_cone += 1,
             _ => inconclusive += 1,
         }
         bar.inc(1);

@@ -3,7 +3,7 @@
 
 use chatter::exact::Q;
 use chatter::simulate::{
-    Engine, FloatEngine, Model, Options, Shape, Step, random_drop, simulate_exact, simulate_float,
+    Engine, FloatEngine, Model, Options, Step, random_drop, simulate_exact, simulate_float,
 };
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
@@ -11,7 +11,10 @@ use std::hint::black_box;
 const IMPACTS: usize = 10_000;
 
 fn model(n: u64, kappa: (i64, i64), gamma: (i64, i64)) -> Model {
-    Model::new(Shape::from_n(n), Q::new(kappa.0, kappa.1), Q::new(gamma.0, gamma.1)).expect("valid body")
+    Model::from_body(
+        &chatter_kernel::model::Shape::new(n, Q::new(kappa.0, kappa.1), Q::new(gamma.0, gamma.1))
+            .expect("valid body"),
+    )
 }
 
 fn bench(c: &mut Criterion) {

@@ -23,16 +23,22 @@ fn bench(c: &mut Criterion) {
     g.bench_function("malachite", |b| b.iter(|| check::<Q>(black_box(&cert), limits).is_ok()));
     g.bench_function("num-rational", |b| b.iter(|| check::<BigRational>(black_box(&cert), limits).is_ok()));
     g.bench_function("both", |b| {
-        b.iter(|| chatter::verify::verify_both(black_box(&cert), limits));
+        b.iter(|| chatter_kernel::verify::verify(black_box(&cert), limits));
     });
     g.bench_function("read+both", |b| {
-        b.iter(|| chatter::verify::verify_text(black_box(&text), limits, chatter::verify::Backends::Both));
+        b.iter(|| {
+            chatter_kernel::verify::verify_text(
+                black_box(&text),
+                limits,
+                &[chatter_kernel::verify::MALACHITE, chatter_kernel::verify::NUM],
+            )
+        });
     });
     g.finish();
 
     let square = read(&std::fs::read_to_string(SQUARE).unwrap()).unwrap();
     c.bench_function("verify-square-example-both", |b| {
-        b.iter(|| chatter::verify::verify_both(black_box(&square), limits))
+        b.iter(|| chatter_kernel::verify::verify(black_box(&square), limits))
     });
 }
 

@@ -1,18 +1,20 @@
-//! The certification pipeline: float finder -> exactifier -> trusted kernel (both backends).
+//! The certification pipeline: search -> exact cone -> trusted kernel (both backends).
 //! A certificate is returned only if the kernel accepts it on both backends.
+//!
+//! Regular polygons: float finder, then exactifier. The rod: an exact search
+//! ([`crate::finder::rod`]). Claims are tried strongest first unless one is asked for.
 
-use crate::exact::{ParseLimits, Q, QExt, Ring};
+use crate::exact::{ParseLimits, Q};
 use crate::exactify::{ExactifyConfig, ExactifyError, exactify};
-use crate::finder::{FinderConfig, FinderOutcome, Seed, find_cone};
-use crate::model::{FloatBody, body, translation_down};
-use crate::verify::{BackendVerdict, verify_both};
+use crate::finder::rod::{RodCone, find_rod_cone, s_of};
+use crate::finder::{FinderConfig, Search, Seed, find_cone};
+use crate::model::{FloatBody, translation_down};
 use chatter_kernel::certificate::{
-    Body as CertBody, Certificate, Claim, Coordinates, FORMAT, Generator, VERSION,
+    Body as CertBody, Certificate, Claim, Coordinates, FORMAT, Generator, Rejection, VERSION,
 };
-use chatter_kernel::model::Polygon as Body;
-use chatter_kernel::model::linalg::mat_vec;
-use chatter_kernel::model::pcc_quadratic;
-use chatter_kernel::model::{Rod, mat2_vec};
+use chatter_kernel::model::linalg::{Vec3, mat_vec};
+use chatter_kernel::model::{PccExclusion, PccQuadratic, Polygon, Rod, Shape, Vec2, mat2_vec, pcc_quadratic};
+use chatter_kernel::verify::{Backend, MALACHITE, NUM, Verdict, verify_on};
 use std::time::{Duration, Instant};
 
 /// Which claim to certify.
@@ -24,7 +26,7 @@ pub enum ClaimChoice {
 }
 
 /// A certification request.
-#[derive(Clone, Debug)]
+#[derive(Clone)]
 pub struct Request {
     pub n: u64,
     pub kappa: Q,
@@ -32,6 +34,8 @@ pub struct Request {
     pub claim: ClaimChoice,
     pub finder: FinderConfig,
     pub exactify: ExactifyConfig,
+    /// The two backends the kernel runs on (a disagreement is an internal error).
+    pub backends: [Backend; 2],
 }
 
 impl Request {
@@ -43,6 +47,7 @@ impl Request {
             claim: ClaimChoice::Strongest,
             finder: FinderConfig::default(),
             exactify: ExactifyConfig::default(),
+            backends: [MALACHITE, NUM],
         }
     }
 }
@@ -62,11 +67,19 @@ pub enum Failure {
     Body(String),
     /// `CompleteChatterFromAllDown` was requested but the PCC Lemma does not apply.
     PccNotExcluded(String),
-    /// The float finder found no cone or ran out of budget.
-    Finder(FinderOutcome),
+    /// A drop the claim covers leaves with v >= 0 after its first impact (the body separates),
+    /// so no cone in v < 0 can contain it and the claim cannot hold.
+    SeedNotBelow {
+        seed: String,
+        velocity: String,
+    },
+    /// The search found no cone or ran out of budget (Found carries the number of rays).
+    Finder(Search<usize>),
     Exactify(ExactifyError),
-    /// The kernel rejected the exactified cone (a bug in the untrusted side).
-    Kernel(String),
+    /// The kernel rejected the exact cone (a bug in the untrusted side).
+    Kernel(Rejection),
+    /// The backends disagree: a bug in chatter or a bignum library.
+    Internal(String),
 }
 
 impl std::fmt::Display for Failure {
@@ -76,16 +89,21 @@ impl std::fmt::Display for Failure {
             Failure::PccNotExcluded(s) => {
                 write!(f, "PCC is not excluded, so complete chatter cannot be certified: {s}")
             }
-            Failure::Finder(FinderOutcome::NoCone { iteration, step }) => write!(
+            Failure::SeedNotBelow { seed, velocity } => write!(
+                f,
+                "the drop with velocity {seed} has velocity {velocity} after its first impact, with v >= 0: the centre of mass no longer moves down, the body separates (ICC), so no cone can contain it"
+            ),
+            Failure::Finder(Search::NoCone { iteration, step }) => write!(
                 f,
                 "no effectively invariant cone contains the seed (an image under S_{step} has v >= 0 at iteration {iteration})"
             ),
-            Failure::Finder(FinderOutcome::Inconclusive { iterations, reason }) => {
-                write!(f, "finder inconclusive after {iterations} iterations: {reason}")
+            Failure::Finder(Search::Inconclusive { iterations, reason }) => {
+                write!(f, "search inconclusive after {iterations} iterations: {reason}")
             }
-            Failure::Finder(FinderOutcome::Found { .. }) => write!(f, "finder succeeded"),
+            Failure::Finder(Search::Found { .. }) => write!(f, "search succeeded"),
             Failure::Exactify(e) => write!(f, "exactifier failed: {e}"),
-            Failure::Kernel(s) => write!(f, "kernel rejected the exactified cone: {s}"),
+            Failure::Kernel(r) => write!(f, "kernel rejected the exact cone: {r}"),
+            Failure::Internal(s) => write!(f, "internal error: {s}"),
         }
     }
 }
@@ -94,168 +112,28 @@ impl std::fmt::Display for Failure {
 #[derive(Clone, Debug)]
 pub struct Report {
     pub result: Result<Certificate, Failure>,
-    /// The finder's verdict for the seed that was finally used.
-    pub finder: Option<FinderOutcome>,
+    /// The search's verdict for the claim finally tried (Found carries the number of rays).
+    pub finder: Option<Search<usize>>,
+    /// How the cone was found.
+    pub method: Option<&'static str>,
     pub timings: Timings,
     pub max_denominator_bits: u64,
     /// Facts worth telling the user (e.g. why a weaker claim was certified).
     pub notes: Vec<String>,
 }
 
-fn seed_of(claim: Claim) -> Seed {
-    if claim == Claim::EffectivelyInvariant { Seed::Translation } else { Seed::AllDown }
+/// One claim's attempt.
+struct Attempt {
+    result: Result<Certificate, Failure>,
+    finder: Option<Search<usize>>,
+    method: Option<&'static str>,
+    bits: u64,
 }
 
-/// The exact points the cone must contain for a claim.
-fn exact_seeds(b: &Body<Q>, seed: Seed) -> Vec<[Q; 3]> {
-    let i0 = b.impact(0);
-    match seed {
-        Seed::Translation => vec![mat_vec(&i0, &translation_down())],
-        Seed::AllDown => b.all_down_generators().iter().map(|g| mat_vec(&i0, g)).collect(),
+impl Attempt {
+    fn failed(f: Failure, finder: Option<Search<usize>>) -> Self {
+        Attempt { result: Err(f), finder, method: None, bits: 0 }
     }
-}
-
-/// Certifies one claim (no fallback).
-fn certify_claim(
-    req: &Request,
-    b: &Body<Q>,
-    fb: &FloatBody,
-    claim: Claim,
-    t: &mut Timings,
-) -> (Result<Certificate, Failure>, Option<FinderOutcome>, u64) {
-    let seed = seed_of(claim);
-    let start = Instant::now();
-    let outcome = find_cone(fb, seed, &req.finder);
-    t.finder += start.elapsed();
-    let FinderOutcome::Found { polygon, .. } = &outcome else {
-        return (Err(Failure::Finder(outcome.clone())), Some(outcome), 0);
-    };
-    let start = Instant::now();
-    let ex = exactify(b, polygon, &exact_seeds(b, seed), &req.exactify);
-    t.exactify += start.elapsed();
-    let ex = match ex {
-        Ok(ex) => ex,
-        Err(e) => return (Err(Failure::Exactify(e)), Some(outcome), 0),
-    };
-    let cone = ex.generators.iter().map(|g| Generator(g.iter().map(Q::to_string).collect())).collect();
-    let cert = certificate(req, claim, cone, "float finder + exactifier");
-    let (result, bits) = kernel_check(cert, t);
-    (result, Some(outcome), bits)
-}
-
-/// Runs the kernel on both backends: the certificate and its largest denominator in bits if
-/// accepted, else why not.
-fn kernel_check(cert: Certificate, t: &mut Timings) -> (Result<Certificate, Failure>, u64) {
-    let start = Instant::now();
-    let verdict = verify_both(&cert, ParseLimits::default());
-    t.kernel += start.elapsed();
-    match verdict {
-        BackendVerdict::Accepted(a) => (Ok(cert), a.max_denominator_bits),
-        BackendVerdict::Rejected(r) => (Err(Failure::Kernel(r.to_string())), 0),
-        BackendVerdict::Disagree(s) => (Err(Failure::Kernel(s)), 0),
-    }
-}
-
-/// The rod's report: every claim is tried strongest first (with two contacts PCC is CC, so the
-/// all-down claims coincide).
-fn certify_rod_report(req: &Request, mut timings: Timings) -> Report {
-    let claims: Vec<Claim> = match req.claim {
-        ClaimChoice::Exactly(c) => vec![c],
-        ClaimChoice::Strongest => vec![Claim::CompleteChatterFromAllDown, Claim::EffectivelyInvariant],
-    };
-    let mut notes = vec![
-        "rod (n = 2): exact interval iteration, no float search; with two contacts PCC is CC".to_string(),
-    ];
-    let mut last = None;
-    for claim in claims {
-        let result = certify_rod(req, claim, &mut timings);
-        if let Ok(c) = result {
-            let (result, max_denominator_bits) = kernel_check(c, &mut timings);
-            return Report { result, finder: None, timings, max_denominator_bits, notes };
-        }
-        if let (Err(e), ClaimChoice::Strongest) = (&result, req.claim) {
-            notes.push(format!("{} not certified: {e}", claim.name()));
-        }
-        last = Some(result);
-    }
-    let result = last.expect("at least one claim");
-    let finder = match &result {
-        Err(Failure::Finder(f)) => Some(f.clone()),
-        _ => None,
-    };
-    Report { result, finder, timings, max_denominator_bits: 0, notes }
-}
-
-fn claims_requested_pcc(req: &Request) -> bool {
-    req.claim == ClaimChoice::Exactly(Claim::CompleteChatterFromAllDown)
-}
-
-/// The rod (n = 2): K = [lo, hi] in s = u0 / (-(u0 + u1)) on the line v = -1 is grown exactly
-/// by the images of the ends of K ∩ C_1 until they stay inside. When a cone exists the iterates
-/// converge to the attracting eigenvector of S_1; a small outward slack on every grown end lets
-/// the iteration stop. No float search is needed in one dimension.
-fn certify_rod(req: &Request, claim: Claim, t: &mut Timings) -> Result<Certificate, Failure> {
-    let rod = Rod::new(req.kappa.clone(), req.gamma.clone()).map_err(|e| Failure::Body(e.to_string()))?;
-    let s_of = |p: &[Q; 2]| -> Option<Q> {
-        let w = -(&p[0] + &p[1]);
-        (w > Q::int(0)).then(|| &p[0] / &w)
-    };
-    let point = |s: &Q| -> [Q; 2] { [s.clone(), -(s + &Q::int(1))] }; // u0 + u1 = -1, s = u0
-    let i0 = rod.impact(0);
-    let seeds: Vec<[Q; 2]> = match claim {
-        Claim::EffectivelyInvariant => vec![[Q::int(-1), Q::int(-1)]],
-        _ => vec![[Q::int(0), Q::int(-1)], [Q::int(-1), Q::int(0)]],
-    };
-    let start = Instant::now();
-    let seed_s: Vec<Q> = seeds.iter().map(|g| s_of(&mat2_vec(&i0, g)).expect("post-impact v < 0")).collect();
-    let (mut lo, mut hi) = (seed_s.iter().min().unwrap().clone(), seed_s.iter().max().unwrap().clone());
-    let step = rod.step();
-    let max_iter = req.finder.max_iterations;
-    let mut done = false;
-    for it in 0..max_iter {
-        let mut ends = vec![];
-        if hi >= Q::int(0) {
-            ends.push(if lo < Q::int(0) { Q::int(0) } else { lo.clone() });
-            ends.push(hi.clone());
-        }
-        let mut grew = false;
-        for e in ends {
-            let img = mat2_vec(&step, &point(&e));
-            let Some(s) = s_of(&img) else {
-                t.finder += start.elapsed();
-                return Err(Failure::Finder(FinderOutcome::NoCone { iteration: it, step: 1 }));
-            };
-            // A grown end goes a little beyond the image (the orbit approaches the attracting
-            // eigenvector from inside and would never stop), rounded outwards to a dyadic.
-            let slack = (&hi - &lo + s.abs()) * Q::new(1, 1 << 20);
-            if s < lo {
-                lo = (&s - &slack).floor_dyadic(40);
-                grew = true;
-            } else if s > hi {
-                hi = (&s + &slack).ceil_dyadic(40);
-                grew = true;
-            }
-        }
-        if !grew && lo < hi {
-            done = true;
-            break;
-        }
-        if !grew {
-            // A single ray (a fixed point): widen to a 2-D cone and continue.
-            hi = &hi + &Q::new(1, 1 << 20);
-        }
-    }
-    t.finder += start.elapsed();
-    if !done {
-        let reason = format!("the exact interval iteration did not settle within {max_iter} iterations");
-        return Err(Failure::Finder(FinderOutcome::Inconclusive { iterations: max_iter, reason }));
-    }
-    // Generators on v = -1: (u0, u1) = 2 (s, -1 - s).
-    let cone = [lo, hi].into_iter().map(|s| {
-        let p = point(&s);
-        Generator(vec![(&p[0] * &Q::int(2)).to_string(), (&p[1] * &Q::int(2)).to_string()])
-    });
-    Ok(certificate(req, claim, cone.collect(), "exact interval iteration"))
 }
 
 fn certificate(req: &Request, claim: Claim, cone: Vec<Generator>, how: &str) -> Certificate {
@@ -274,62 +152,184 @@ fn certificate(req: &Request, claim: Claim, cone: Vec<Generator>, how: &str) -> 
     }
 }
 
+fn generator(coords: &[Q]) -> Generator {
+    Generator(coords.iter().map(Q::to_string).collect())
+}
+
+/// Runs the kernel on the request's backends; the attempt records the verdict.
+fn kernel_check(req: &Request, cert: Certificate, method: &'static str, t: &mut Timings) -> Attempt {
+    let start = Instant::now();
+    let verdict = verify_on(&cert, ParseLimits::default(), &req.backends);
+    t.kernel += start.elapsed();
+    let finder = Some(Search::Found { cone: cert.cone.len(), iterations: 0 });
+    match verdict {
+        Verdict::Accepted(a) => {
+            Attempt { result: Ok(cert), finder, method: Some(method), bits: a.max_denominator_bits }
+        }
+        Verdict::Rejected(r) => Attempt::failed(Failure::Kernel(r), finder),
+        Verdict::Disagree(s) => {
+            Attempt::failed(Failure::Internal(format!("the backends disagree: {s}")), finder)
+        }
+    }
+}
+
+/// The seed velocities a claim must contain: the drops it covers, before their first impact.
+fn drops_of<const D: usize>(claim: Claim, translation: [Q; D], all_down: Vec<[Q; D]>) -> Vec<[Q; D]> {
+    if claim == Claim::EffectivelyInvariant { vec![translation] } else { all_down }
+}
+
+fn show<const D: usize>(p: &[Q; D]) -> String {
+    format!("({})", p.iter().map(ToString::to_string).collect::<Vec<_>>().join(", "))
+}
+
+/// The rod: the exact search, then the kernel.
+fn attempt_rod(req: &Request, rod: &Rod<Q>, claim: Claim, t: &mut Timings) -> Attempt {
+    let i0 = rod.impact(0);
+    let down = [Q::int(-1), Q::int(-1)];
+    let mut seeds = Vec::new();
+    for d in drops_of(claim, down, rod.all_down_generators().to_vec()) {
+        let after: Vec2<Q> = mat2_vec(&i0, &d);
+        if after.iter().all(|x| *x == Q::int(0)) {
+            continue; // at rest after one impact: inside every cone
+        }
+        match s_of(&after) {
+            Some(s) => seeds.push(s),
+            None => {
+                return Attempt::failed(
+                    Failure::SeedNotBelow { seed: show(&d), velocity: show(&after) },
+                    None,
+                );
+            }
+        }
+    }
+    if seeds.is_empty() {
+        seeds.push(Q::new(-1, 2));
+    }
+    let start = Instant::now();
+    let search = find_rod_cone(rod, &seeds, &req.finder);
+    t.finder += start.elapsed();
+    let Search::Found { cone, .. } = &search else {
+        return Attempt::failed(Failure::Finder(search.map(|_| 2)), Some(search.map(|_| 2)));
+    };
+    let gens = RodCone::generators(cone).iter().map(|g| generator(g)).collect();
+    kernel_check(req, certificate(req, claim, gens, cone.method), cone.method, t)
+}
+
+/// A regular polygon: float finder, exactifier, kernel.
+fn attempt_polygon(req: &Request, b: &Polygon<Q>, claim: Claim, t: &mut Timings) -> Attempt {
+    let seed = if claim == Claim::EffectivelyInvariant { Seed::Translation } else { Seed::AllDown };
+    let i0 = b.impact(0);
+    let exact_seeds: Vec<Vec3<Q>> = drops_of(claim, translation_down(), b.all_down_generators())
+        .iter()
+        .map(|g| mat_vec(&i0, g))
+        .collect();
+    let fb = FloatBody::new(b);
+    let start = Instant::now();
+    let outcome = find_cone(&fb, seed, &req.finder);
+    t.finder += start.elapsed();
+    let summary = Some(outcome.map(Vec::len));
+    let Search::Found { cone: polygon, .. } = &outcome else {
+        return Attempt::failed(Failure::Finder(outcome.map(Vec::len)), summary);
+    };
+    let start = Instant::now();
+    let ex = exactify(b, polygon, &exact_seeds, &req.exactify);
+    t.exactify += start.elapsed();
+    let ex = match ex {
+        Ok(ex) => ex,
+        Err(e) => return Attempt::failed(Failure::Exactify(e), summary),
+    };
+    let cone = ex.generators.iter().map(|g| generator(g)).collect();
+    let how = "float finder + exactifier";
+    let mut attempt = kernel_check(req, certificate(req, claim, cone, how), how, t);
+    attempt.finder = summary;
+    attempt
+}
+
+/// The PCC quadratic as text, e.g. for notes.
+fn pcc_text(b: &Polygon<Q>, quad: &PccQuadratic<Q>) -> String {
+    let kind = match quad.exclusion() {
+        PccExclusion::Excluded => "complex roots of modulus below 1".to_string(),
+        PccExclusion::RealRoots => "real roots".to_string(),
+        PccExclusion::ModulusNotBelowOne => format!("complex roots of modulus sqrt({}) >= 1", quad.q),
+    };
+    format!(
+        "det(tI - S_{} S_1) = (t - 1)(t^2 + ({}) t + ({})), discriminant {} ({kind})",
+        b.n() - 1,
+        quad.p,
+        quad.q,
+        quad.discriminant
+    )
+}
+
+/// The claims to try, strongest first, with notes; `Err` if the requested claim is impossible.
+fn claims_for(req: &Request, shape: &Shape<Q>, notes: &mut Vec<String>) -> Result<Vec<Claim>, Failure> {
+    let strongest = match shape {
+        Shape::Rod(_) => {
+            notes.push("rod (n = 2): exact search, no float search; with two contacts PCC is CC".into());
+            Claim::CompleteChatterFromAllDown
+        }
+        Shape::Polygon(b) => {
+            let quad = pcc_quadratic(b)
+                .map_err(|v| Failure::Internal(format!("model error: det(I - S_(n-1) S_1) = {v}")))?;
+            let text = pcc_text(b, &quad);
+            match quad.exclusion() {
+                PccExclusion::Excluded => Claim::CompleteChatterFromAllDown,
+                _ if req.claim == ClaimChoice::Exactly(Claim::CompleteChatterFromAllDown) => {
+                    return Err(Failure::PccNotExcluded(text));
+                }
+                exclusion => {
+                    notes.push(format!("the PCC Lemma does not apply: {text}"));
+                    if exclusion == PccExclusion::RealRoots && b.n() >= 4 {
+                        notes.push(format!("this contradicts the paper, which states that the Lemma's condition (all eigenvalues real) is never met for n >= 4; here n = {}", b.n()));
+                    }
+                    Claim::CcOrPccFromAllDown
+                }
+            }
+        }
+    };
+    Ok(match req.claim {
+        ClaimChoice::Exactly(c) => vec![c],
+        ClaimChoice::Strongest => vec![strongest, Claim::EffectivelyInvariant],
+    })
+}
+
 /// Runs the pipeline.
 pub fn certify(req: &Request) -> Report {
     let mut timings = Timings::default();
     let mut notes = Vec::new();
-    if req.n == 2 {
-        return certify_rod_report(req, timings);
-    }
-    let b = match body(req.n, &req.kappa, &req.gamma) {
-        Ok(b) => b,
-        Err(e) => {
-            let result = Err(Failure::Body(e.to_string()));
-            return Report { result, finder: None, timings, max_denominator_bits: 0, notes };
-        }
+    let report = |result, finder, method, timings, bits, notes| Report {
+        result,
+        finder,
+        method,
+        timings,
+        max_denominator_bits: bits,
+        notes,
     };
-    let fb = FloatBody::new(&b);
-    let quad = pcc_quadratic(&b).expect("S_(n-1) S_1 always fixes m_(0,1)");
-    let pcc_excluded = quad.excludes_pcc();
-    let pcc_text = format!(
-        "det(tI - S_{} S_1) = (t - 1)(t^2 + ({}) t + ({})), discriminant {} ({})",
-        b.n() - 1,
-        quad.p,
-        quad.q,
-        quad.discriminant,
-        if quad.discriminant.is_negative() { "complex roots" } else { "real roots" }
-    );
-    if claims_requested_pcc(req) && !pcc_excluded {
-        let result = Err(Failure::PccNotExcluded(pcc_text));
-        return Report { result, finder: None, timings, max_denominator_bits: 0, notes };
-    }
-    if !pcc_excluded {
-        notes.push(format!("the PCC Lemma does not apply: {pcc_text}"));
-        if b.n() >= 4 {
-            notes.push(format!(
-                "this contradicts the paper, which states that the Lemma's condition (all eigenvalues real) is never met for n >= 4; here n = {}",
-                b.n()
-            ));
-        }
-    }
-    let claims: Vec<Claim> = match req.claim {
-        ClaimChoice::Exactly(c) => vec![c],
-        ClaimChoice::Strongest if pcc_excluded => {
-            vec![Claim::CompleteChatterFromAllDown, Claim::EffectivelyInvariant]
-        }
-        ClaimChoice::Strongest => vec![Claim::CcOrPccFromAllDown, Claim::EffectivelyInvariant],
+    let shape = match Shape::new(req.n, req.kappa.clone(), req.gamma.clone()) {
+        Ok(s) => s,
+        Err(e) => return report(Err(Failure::Body(e.to_string())), None, None, timings, 0, notes),
+    };
+    let claims = match claims_for(req, &shape, &mut notes) {
+        Ok(c) => c,
+        Err(f) => return report(Err(f), None, None, timings, 0, notes),
     };
     let mut last = None;
     for claim in claims {
-        let (result, finder, bits) = certify_claim(req, &b, &fb, claim, &mut timings);
-        if result.is_ok() {
-            return Report { result, finder, timings, max_denominator_bits: bits, notes };
+        let a = match &shape {
+            Shape::Rod(r) => attempt_rod(req, r, claim, &mut timings),
+            Shape::Polygon(b) => attempt_polygon(req, b, claim, &mut timings),
+        };
+        let stop = a.result.is_ok() || matches!(a.result, Err(Failure::Internal(_)));
+        if !stop {
+            if let (Err(e), ClaimChoice::Strongest) = (&a.result, req.claim) {
+                notes.push(format!("{} not certified: {e}", claim.name()));
+            }
         }
-        if let (Err(e), ClaimChoice::Strongest) = (&result, req.claim) {
-            notes.push(format!("{} not certified: {e}", claim.name()));
+        last = Some(a);
+        if stop {
+            break;
         }
-        last = Some((result, finder));
     }
-    let (result, finder) = last.expect("at least one claim");
-    Report { result, finder, timings, max_denominator_bits: 0, notes }
+    let a = last.expect("at least one claim");
+    report(a.result, a.finder, a.method, timings, a.bits, notes)
 }

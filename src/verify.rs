@@ -1,65 +1,34 @@
-//! Verification of certificate files: read, check with the kernel on one or both backends, and
-//! report one verdict per file. A disagreement between the backends is an internal error.
+//! Verification of certificate files: read each file, run the kernel on the chosen backends
+//! ([`chatter_kernel::verify`]), and report one verdict per file.
 
-use crate::exact::{ParseLimits, Q};
-use chatter_kernel::certificate::{Code, Rejection, read};
-use chatter_kernel::check::{Accepted, check};
-use num_rational::BigRational;
+use chatter_kernel::certificate::{Code, Locus};
+use chatter_kernel::exact::ParseLimits;
+use chatter_kernel::verify::{Backend, Verdict, verify_text};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
-/// Which bignum libraries to run the kernel on.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum Backends {
-    #[default]
-    Both,
-    Malachite,
-    Num,
+/// The verdict on one file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum Status {
+    /// Every backend accepts.
+    #[serde(rename = "OK")]
+    Ok,
+    /// Every backend rejects, for the same reason.
+    #[serde(rename = "REJECTED")]
+    Rejected,
+    /// The file cannot be read, or the backends disagree.
+    #[serde(rename = "ERROR")]
+    Error,
 }
 
-/// The kernel's verdict, possibly over two backends.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum BackendVerdict {
-    Accepted(Accepted),
-    Rejected(Rejection),
-    /// The backends disagree: a bug in chatter or in a bignum library.
-    Disagree(String),
-}
-
-/// Runs the kernel on both backends and compares the verdicts.
-pub fn verify_both(cert: &chatter_kernel::certificate::Certificate, limits: ParseLimits) -> BackendVerdict {
-    verify_with(cert, limits, Backends::Both)
-}
-
-/// Runs the kernel on the chosen backends.
-pub fn verify_with(
-    cert: &chatter_kernel::certificate::Certificate,
-    limits: ParseLimits,
-    backends: Backends,
-) -> BackendVerdict {
-    let one = |r: Result<Accepted, Rejection>| match r {
-        Ok(a) => BackendVerdict::Accepted(a),
-        Err(r) => BackendVerdict::Rejected(r),
-    };
-    match backends {
-        Backends::Malachite => one(check::<Q>(cert, limits)),
-        Backends::Num => one(check::<BigRational>(cert, limits)),
-        Backends::Both => {
-            let (a, b) = (check::<Q>(cert, limits), check::<BigRational>(cert, limits));
-            if a == b {
-                one(a)
-            } else {
-                BackendVerdict::Disagree(format!("malachite says {a:?}, num-rational says {b:?}"))
-            }
+impl Status {
+    /// The word printed in verdict lines.
+    pub fn word(self) -> &'static str {
+        match self {
+            Status::Ok => "OK",
+            Status::Rejected => "REJECTED",
+            Status::Error => "ERROR",
         }
-    }
-}
-
-/// Verifies certificate text.
-pub fn verify_text(text: &str, limits: ParseLimits, backends: Backends) -> BackendVerdict {
-    match read(text) {
-        Ok(cert) => verify_with(&cert, limits, backends),
-        Err(r) => BackendVerdict::Rejected(r),
     }
 }
 
@@ -67,8 +36,7 @@ pub fn verify_text(text: &str, limits: ParseLimits, backends: Backends) -> Backe
 #[derive(Clone, Debug, Serialize)]
 pub struct FileVerdict {
     pub path: String,
-    /// "OK", "REJECTED" or "ERROR" (unreadable file, or backends disagree).
-    pub status: &'static str,
+    pub status: Status,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub claim: Option<&'static str>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -85,11 +53,13 @@ pub struct FileVerdict {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub code: Option<Code>,
     #[serde(skip_serializing_if = "Option::is_none")]
+    pub locus: Option<Locus>,
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub reason: Option<String>,
 }
 
 impl FileVerdict {
-    fn new(path: &Path, status: &'static str) -> Self {
+    fn new(path: &Path, status: Status) -> Self {
         FileVerdict {
             path: path.display().to_string(),
             status,
@@ -100,48 +70,49 @@ impl FileVerdict {
             max_denominator_bits: None,
             contains_translation: None,
             code: None,
+            locus: None,
             reason: None,
         }
     }
 
+    /// Whether the backends disagreed (an internal error).
+    pub fn is_internal(&self) -> bool {
+        self.code == Some(Code::Internal)
+    }
+
     /// The human-readable line.
     pub fn line(&self) -> String {
-        match self.status {
-            "OK" => {
-                let red = self.redundant.as_ref().map_or(0, Vec::len);
-                let red = if red > 0 { format!(", {red} redundant") } else { String::new() };
-                let vacuous = if self.contains_translation == Some(false) {
-                    "; warning: K does not contain the post-impact velocity of a pure translation"
-                } else {
-                    ""
-                };
-                format!(
-                    "{}: OK ({}, n = {}, {} generators{red}, denominators <= {} bits{vacuous})",
-                    self.path,
-                    self.claim.unwrap_or("?"),
-                    self.n.unwrap_or(0),
-                    self.generators.unwrap_or(0),
-                    self.max_denominator_bits.unwrap_or(0)
-                )
-            }
-            status => format!("{}: {status}: {}", self.path, self.reason.as_deref().unwrap_or("")),
+        if self.status != Status::Ok {
+            return format!(
+                "{}: {}: {}",
+                self.path,
+                self.status.word(),
+                self.reason.as_deref().unwrap_or("")
+            );
         }
+        let red = self.redundant.as_ref().map_or(0, Vec::len);
+        let red = if red > 0 { format!(", {red} redundant") } else { String::new() };
+        let vacuous = if self.contains_translation == Some(false) {
+            "; warning: K does not contain the post-impact velocity of a pure translation"
+        } else {
+            ""
+        };
+        format!(
+            "{}: OK ({}, n = {}, {} generators{red}, denominators <= {} bits{vacuous})",
+            self.path,
+            self.claim.unwrap_or("?"),
+            self.n.unwrap_or(0),
+            self.generators.unwrap_or(0),
+            self.max_denominator_bits.unwrap_or(0)
+        )
     }
 }
 
-/// Verifies one file.
-pub fn verify_file(path: &Path, limits: ParseLimits, backends: Backends) -> FileVerdict {
-    let text = match std::fs::read_to_string(path) {
-        Ok(t) => t,
-        Err(e) => {
-            let mut v = FileVerdict::new(path, "ERROR");
-            v.reason = Some(format!("cannot read: {e}"));
-            return v;
-        }
-    };
-    match verify_text(&text, limits, backends) {
-        BackendVerdict::Accepted(a) => {
-            let mut v = FileVerdict::new(path, "OK");
+/// The verdict on certificate text, reported for `path`.
+pub fn verdict_of(path: &Path, verdict: Verdict) -> FileVerdict {
+    match verdict {
+        Verdict::Accepted(a) => {
+            let mut v = FileVerdict::new(path, Status::Ok);
             v.claim = Some(a.claim.name());
             v.n = Some(a.n);
             v.generators = Some(a.generators);
@@ -150,16 +121,29 @@ pub fn verify_file(path: &Path, limits: ParseLimits, backends: Backends) -> File
             v.contains_translation = Some(a.contains_translation);
             v
         }
-        BackendVerdict::Rejected(r) => {
-            let mut v = FileVerdict::new(path, "REJECTED");
+        Verdict::Rejected(r) => {
+            let mut v = FileVerdict::new(path, Status::Rejected);
             v.code = Some(r.code);
+            v.locus = Some(r.locus);
             v.reason = Some(r.message);
             v
         }
-        BackendVerdict::Disagree(s) => {
-            let mut v = FileVerdict::new(path, "ERROR");
+        Verdict::Disagree(s) => {
+            let mut v = FileVerdict::new(path, Status::Error);
             v.code = Some(Code::Internal);
             v.reason = Some(format!("internal error, backends disagree: {s}"));
+            v
+        }
+    }
+}
+
+/// Verifies one file on the given backends.
+pub fn verify_file(path: &Path, limits: ParseLimits, backends: &[Backend]) -> FileVerdict {
+    match std::fs::read_to_string(path) {
+        Ok(text) => verdict_of(path, verify_text(&text, limits, backends)),
+        Err(e) => {
+            let mut v = FileVerdict::new(path, Status::Error);
+            v.reason = Some(format!("cannot read: {e}"));
             v
         }
     }

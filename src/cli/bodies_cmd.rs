@@ -1,6 +1,6 @@
 //! `chatter bodies`: the catalogue of bodies with exact thresholds in gamma.
 
-use super::{EXIT_OK, emit, usage_error};
+use super::{Outcome, emit};
 use crate::bodies::{self, Entry, PaperValue, Threshold, compare, kappa_decimal, kappa_f64};
 use crate::exact::{Q, Ring, parse_user_number};
 use clap::Args;
@@ -150,10 +150,10 @@ fn row(e: &Entry, digits: usize) -> (Value, Vec<String>) {
     (obj, lines)
 }
 
-pub fn run(a: BodiesArgs) -> u8 {
+pub fn run(a: BodiesArgs) -> Outcome {
     let entries = match validate(&a) {
         Ok(e) => e,
-        Err(e) => return usage_error(e),
+        Err(e) => return Outcome::Usage(e.to_string()),
     };
     let bar = ProgressBar::new(entries.len() as u64);
     bar.set_style(ProgressStyle::with_template("{bar:30} {pos}/{len} bodies").expect("valid template"));
@@ -175,5 +175,5 @@ pub fn run(a: BodiesArgs) -> u8 {
             }
         }
     }
-    EXIT_OK
+    Outcome::Success
 }

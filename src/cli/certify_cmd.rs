@@ -1,9 +1,10 @@
 //! `chatter certify`.
 
-use super::{EXIT_NEGATIVE, EXIT_OK, EXIT_USAGE, emit, usage_error};
-use crate::certify::{ClaimChoice, Report, Request, certify};
-use crate::finder::FinderOutcome;
+use super::{Env, Outcome, emit};
+use crate::certify::{ClaimChoice, Failure, Report, Request, certify};
+use crate::finder::Search;
 use chatter_kernel::certificate::{Claim, write};
+use chatter_kernel::model::{BodyError, Shape};
 use clap::{Args, ValueEnum};
 use serde_json::json;
 use std::path::PathBuf;
@@ -52,15 +53,9 @@ struct Validated {
     json: bool,
 }
 
-fn validate(a: CertifyArgs) -> Result<Validated, String> {
+fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
     let (n, kappa, gamma) = a.body.parse()?;
-    let checked = if n == 2 {
-        chatter_kernel::model::Rod::new(kappa.clone(), gamma.clone()).map(|_| ())
-    } else {
-        crate::model::body(n, &kappa, &gamma).map(|_| ())
-    };
-    if let Err(e) = checked {
-        use chatter_kernel::model::BodyError;
+    if let Err(e) = Shape::new(n, kappa.clone(), gamma.clone()) {
         let flag = match e {
             BodyError::UnsupportedN(_) => "--n",
             BodyError::KappaNotPositive => "--kappa",
@@ -80,6 +75,7 @@ fn validate(a: CertifyArgs) -> Result<Validated, String> {
     };
     req.finder.max_iterations = a.max_iterations;
     req.finder.max_vertices = a.max_vertices;
+    req.backends = env.backends;
     Ok(Validated { req, output: a.output, json: a.json })
 }
 
@@ -87,16 +83,16 @@ fn ms(d: std::time::Duration) -> f64 {
     d.as_secs_f64() * 1e3
 }
 
-fn finder_json(f: &Option<FinderOutcome>) -> serde_json::Value {
+fn finder_json(f: &Option<Search<usize>>) -> serde_json::Value {
     match f {
         None => serde_json::Value::Null,
-        Some(FinderOutcome::Found { polygon, iterations }) => {
-            json!({"outcome": "found", "iterations": iterations, "vertices": polygon.len()})
+        Some(Search::Found { cone, iterations }) => {
+            json!({"outcome": "found", "iterations": iterations, "vertices": cone})
         }
-        Some(FinderOutcome::NoCone { iteration, step }) => {
+        Some(Search::NoCone { iteration, step }) => {
             json!({"outcome": "no-cone", "iteration": iteration, "step": step})
         }
-        Some(FinderOutcome::Inconclusive { iterations, reason }) => {
+        Some(Search::Inconclusive { iterations, reason }) => {
             json!({"outcome": "inconclusive", "iterations": iterations, "reason": reason})
         }
     }
@@ -107,10 +103,12 @@ fn summary(v: &Validated, r: &Report) -> String {
     let head = format!("n={} kappa={} gamma={}", req.n, req.kappa, req.gamma);
     let t = &r.timings;
     let times = format!(
-        "finder {:.2} ms, exactifier {:.2} ms, kernel {:.2} ms (malachite + num-rational)",
+        "finder {:.2} ms, exactifier {:.2} ms, kernel {:.2} ms ({} + {})",
         ms(t.finder),
         ms(t.exactify),
-        ms(t.kernel)
+        ms(t.kernel),
+        req.backends[0].name,
+        req.backends[1].name
     );
     let notes: String = r.notes.iter().map(|n| format!("\nnote: {n}")).collect();
     match &r.result {
@@ -120,26 +118,26 @@ fn summary(v: &Validated, r: &Report) -> String {
                 .as_ref()
                 .map_or(String::from(" (no -o: not written)"), |p| format!(" -> {}", p.display()));
             format!(
-                "CERTIFIED {head} claim={}: {} generators, largest denominator {} bits; {times}{out}{notes}",
+                "CERTIFIED {head} claim={}: {} generators, largest denominator {} bits, cone from {}; {times}{out}{notes}",
                 c.claim.name(),
                 c.cone.len(),
-                r.max_denominator_bits
+                r.max_denominator_bits,
+                r.method.unwrap_or("?")
             )
         }
         Err(e) => format!("NOT CERTIFIED {head}: {e}; {times}{notes}"),
     }
 }
 
-pub fn run(a: CertifyArgs) -> u8 {
-    let v = match validate(a) {
+pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
+    let v = match validate(a, env) {
         Ok(v) => v,
-        Err(e) => return usage_error(e),
+        Err(e) => return Outcome::Usage(e),
     };
     let report = certify(&v.req);
     if let (Ok(cert), Some(path)) = (&report.result, &v.output) {
         if let Err(e) = std::fs::write(path, write(cert)) {
-            eprintln!("error: cannot write {}: {e}", path.display());
-            return EXIT_USAGE;
+            return Outcome::Usage(format!("cannot write {}: {e}", path.display()));
         }
     }
     if v.json {
@@ -154,6 +152,7 @@ pub fn run(a: CertifyArgs) -> u8 {
             "max_denominator_bits": report.result.as_ref().ok().map(|_| report.max_denominator_bits),
             "output": v.output.as_ref().filter(|_| report.result.is_ok()).map(|p| p.display().to_string()),
             "reason": report.result.as_ref().err().map(ToString::to_string),
+            "method": report.method,
             "finder": finder_json(&report.finder),
             "timings_ms": {"finder": ms(t.finder), "exactify": ms(t.exactify), "kernel": ms(t.kernel)},
             "notes": report.notes,
@@ -162,5 +161,9 @@ pub fn run(a: CertifyArgs) -> u8 {
     } else {
         emit(&summary(&v, &report));
     }
-    if report.result.is_ok() { EXIT_OK } else { EXIT_NEGATIVE }
+    match &report.result {
+        Ok(_) => Outcome::Success,
+        Err(Failure::Internal(s)) => Outcome::Internal(s.clone()),
+        Err(_) => Outcome::Negative,
+    }
 }

@@ -1,18 +1,18 @@
 //! `chatter classify`: every exact criterion at one body, with its evidence.
 
-use super::{EXIT_OK, emit, usage_error};
+use super::{self as cli, emit};
 use crate::bodies::{self, Entry, Threshold};
-use crate::certify::{ClaimChoice, Request, certify};
+use crate::certify::{Request, certify};
 use crate::exact::{OrderedField, Q, Ring, parse_user_number};
-use crate::finder::{FinderConfig, FinderOutcome, Seed, find_cone};
+use crate::finder::{FinderConfig, Seed, find_cone};
 use crate::model::FloatBody;
-use crate::simulate::{Arithmetic, Model, Options, Outcome, Shape, counts, simulate_many};
+use crate::simulate::{Arithmetic, Model, Options, Outcome, counts, simulate_many};
 use crate::spectral::criteria::{
     Family, cc_criterion, goyal_condition, pcc_criterion, rod_cc_criterion, rod_velocity_in_cone,
 };
 use crate::spectral::eigen::Spectrum;
 use crate::spectral::number_field::Nf;
-use chatter_kernel::model::Rod;
+use chatter_kernel::model::{Polygon, Rod, Shape as ExactShape};
 use clap::Args;
 
 /// Random drops simulated by `classify`, and their impact budget.
@@ -128,14 +128,86 @@ fn polygon_report<F: OrderedField + std::fmt::Display>(
     out["pcc"] = json!({"holds": pcc, "evidence": evidence(&mut s2, v.digits)});
 }
 
-pub fn run(a: ClassifyArgs) -> u8 {
+/// Goyal's condition, the rod's CC criterion, and CC from a given velocity.
+fn rod_report(v: &Validated, rod: &Rod<Q>, out: &mut Value, lines: &mut Vec<String>) {
+    let goyal = goyal_condition(&v.kappa, &v.gamma);
+    let (cc, mut s, dom) = rod_cc_criterion(rod);
+    lines.push(format!(
+        "Goyal's condition sqrt(kappa) <= 2/(sqrt(gamma) + 1) - 1 (decided exactly): {}",
+        verdict(goyal)
+    ));
+    lines.push(format!("CC criterion (U_0 P has a real, positive dominant eigenvalue): {}", verdict(cc)));
+    lines.push(format!("  det(tI - U_0 P) = {}", s.char_poly));
+    lines.push(format!("  eigenvalues: {}; dominant: {}", s.describe(v.digits).join("; "), dom.describe()));
+    out["goyal"] = json!(goyal);
+    out["cc"] = json!({"holds": cc, "dominant": dom.describe(), "evidence": evidence(&mut s, v.digits)});
+    let Some(p0) = &v.velocity else { return };
+    let inside = rod_velocity_in_cone(rod, p0);
+    let text = match inside {
+        None => "ICC from every initial velocity (the condition fails)".to_string(),
+        Some(true) => format!("CC: the initial velocity ({}, {}) lies in the invariant cone", p0[0], p0[1]),
+        Some(false) => {
+            format!("ICC: the initial velocity ({}, {}) lies outside the invariant cone", p0[0], p0[1])
+        }
+    };
+    lines.push(format!("from the given velocity: {text}"));
+    out["from_velocity"] =
+        json!({"velocity": [p0[0].to_string(), p0[1].to_string()], "cc": inside == Some(true)});
+}
+
+/// The float finder's verdict from both seeds (regular polygons with an exact model).
+fn finder_report(b: &Polygon<Q>, out: &mut Value, lines: &mut Vec<String>) {
+    let fb = FloatBody::new(b);
+    for (seed, name, key) in
+        [(Seed::Translation, "translation seed", "translation"), (Seed::AllDown, "all-down seed", "all_down")]
+    {
+        let o = find_cone(&fb, seed, &FinderConfig::default());
+        lines.push(format!("float finder, {name}: {}", o.map(Vec::len)));
+        out[format!("finder_{key}")] = json!(o.label());
+    }
+}
+
+/// A batch of the paper's random drops (f64 with renormalisation), compared with the criterion.
+fn simulation_report(shape: &ExactShape<Q>, out: &mut Value, lines: &mut Vec<String>) {
+    let model = Model::from_body(shape);
+    let briefs = simulate_many(&model, 0, SIM_RUNS, Arithmetic::Float, &Options::new(SIM_BUDGET), &|| {});
+    let c = counts(&briefs);
+    let names = Outcome::ALL.map(Outcome::name);
+    let text: Vec<String> = names.iter().zip(c).map(|(n, k)| format!("{n} {k}")).collect();
+    lines.push(format!(
+        "simulation ({SIM_RUNS} random drops, budget {SIM_BUDGET} impacts, f64): {}",
+        text.join(", ")
+    ));
+    out["simulation"] = Value::Object(names.iter().zip(c).map(|(n, k)| (n.to_string(), json!(k))).collect());
+    let cc_holds = out["cc"]["holds"].as_bool().unwrap_or(false);
+    let chatter = c[0] + c[1];
+    if !cc_holds && chatter > 0 {
+        lines.push(format!("note: {chatter} of {SIM_RUNS} drops chatter although the CC criterion fails: evidence against the paper's Conjecture 1 ((i) <=> (iii))"));
+    }
+    if cc_holds && c[2] > 0 {
+        lines.push(format!("note: {} of {SIM_RUNS} drops end in ICC although the CC criterion holds (the criterion concerns suitable initial conditions)", c[2]));
+    }
+}
+
+/// Whether the pipeline certifies, and which claim.
+fn certificate_report(v: &Validated, out: &mut Value, lines: &mut Vec<String>) {
+    let rep = certify(&Request::new(v.n, v.kappa.clone(), v.gamma.clone()));
+    let text = match &rep.result {
+        Ok(c) => format!("{} ({} generators; `chatter certify` writes it)", c.claim.name(), c.cone.len()),
+        Err(e) => format!("none: {e}"),
+    };
+    lines.push(format!("certificate: {text}"));
+    out["certificate"] = json!(rep.result.as_ref().ok().map(|c| c.claim.name()));
+}
+
+pub fn run(a: ClassifyArgs) -> cli::Outcome {
     let v = match validate(a) {
         Ok(v) => v,
-        Err(e) => return usage_error(e),
+        Err(e) => return cli::Outcome::Usage(e.to_string()),
     };
     let entry: Entry = match bodies::user(v.n, &v.kappa) {
         Ok(e) => e,
-        Err(e) => return usage_error(e),
+        Err(e) => return cli::Outcome::Usage(e.to_string()),
     };
     let mut out = json!({"n": v.n, "kappa": v.kappa.to_string(), "gamma": v.gamma.to_string()});
     let mut lines = Vec::new();
@@ -146,106 +218,32 @@ pub fn run(a: ClassifyArgs) -> u8 {
     };
     lines.push(format!("body: n = {}, kappa = {}, gamma = {} ({method})", v.n, v.kappa, v.gamma));
     out["method"] = json!(method);
-    let (cc_t, pcc_t) = bodies::thresholds(&entry, v.digits);
-    if v.n == 2 {
-        let rod = Rod::new(v.kappa.clone(), v.gamma.clone()).expect("validated");
-        let goyal = goyal_condition(&v.kappa, &v.gamma);
-        let (cc, mut s, dom) = rod_cc_criterion(&rod);
-        lines.push(format!(
-            "Goyal's condition sqrt(kappa) <= 2/(sqrt(gamma) + 1) - 1 (decided exactly): {}",
-            verdict(goyal)
-        ));
-        lines.push(format!("CC criterion (U_0 P has a real, positive dominant eigenvalue): {}", verdict(cc)));
-        lines.push(format!("  det(tI - U_0 P) = {}", s.char_poly));
-        lines.push(format!(
-            "  eigenvalues: {}; dominant: {}",
-            s.describe(v.digits).join("; "),
-            dom.describe()
-        ));
-        out["goyal"] = json!(goyal);
-        out["cc"] = json!({"holds": cc, "dominant": dom.describe(), "evidence": evidence(&mut s, v.digits)});
-        if let Some(p0) = &v.velocity {
-            let inside = rod_velocity_in_cone(&rod, p0);
-            let text = match inside {
-                None => "ICC from every initial velocity (the condition fails)".to_string(),
-                Some(true) => {
-                    format!("CC: the initial velocity ({}, {}) lies in the invariant cone", p0[0], p0[1])
-                }
-                Some(false) => format!(
-                    "ICC: the initial velocity ({}, {}) lies outside the invariant cone",
-                    p0[0], p0[1]
-                ),
-            };
-            lines.push(format!("from the given velocity: {text}"));
-            out["from_velocity"] =
-                json!({"velocity": [p0[0].to_string(), p0[1].to_string()], "cc": inside == Some(true)});
+    // The exact model (rod, or a polygon with rational cosines); None for n = 5, 7, 8, ...
+    let exact = ExactShape::new(v.n, v.kappa.clone(), v.gamma.clone()).ok();
+    match &exact {
+        Some(ExactShape::Rod(rod)) => rod_report(&v, rod, &mut out, &mut lines),
+        Some(ExactShape::Polygon(_)) => {
+            let c1 = entry.c1.as_rational().expect("an exact polygon has a rational cosine");
+            polygon_report(&v, &Family { n: v.n, c1, kappa: v.kappa.clone() }, &mut out, &mut lines);
         }
-    } else if let (Some(c1), Some(_)) = (entry.c1.as_rational(), entry.kappa.as_rational()) {
-        let fam = Family { n: v.n, c1, kappa: v.kappa.clone() };
-        polygon_report(&v, &fam, &mut out, &mut lines);
-    } else {
-        let fam = Family { n: v.n, c1: entry.c1.clone(), kappa: Nf::from_q(&v.kappa) };
-        polygon_report(&v, &fam, &mut out, &mut lines);
+        None => {
+            let fam = Family { n: v.n, c1: entry.c1.clone(), kappa: Nf::from_q(&v.kappa) };
+            polygon_report(&v, &fam, &mut out, &mut lines);
+        }
     }
+    let (cc_t, pcc_t) = bodies::thresholds(&entry, v.digits);
     lines.push(format!("CC threshold for this kappa: {}", threshold_line(&cc_t)));
     out["cc_threshold"] = json!(cc_t);
     if let Some(p) = &pcc_t {
         lines.push(format!("PCC threshold for this kappa: {}", threshold_line(p)));
         out["pcc_threshold"] = json!(p);
     }
-    // The float finder and the certificate pipeline (rational models only).
-    if matches!(v.n, 3 | 4 | 6) {
-        let b = crate::model::body(v.n, &v.kappa, &v.gamma).expect("validated");
-        let fb = FloatBody::new(&b);
-        for (seed, name) in [(Seed::Translation, "translation seed"), (Seed::AllDown, "all-down seed")] {
-            let o = find_cone(&fb, seed, &FinderConfig::default());
-            let text = match &o {
-                FinderOutcome::Found { iterations, polygon } => {
-                    format!("found a cone ({} vertices, {iterations} iterations)", polygon.len())
-                }
-                FinderOutcome::NoCone { iteration, step } => {
-                    format!("no cone (an image under S_{step} has v >= 0 at iteration {iteration})")
-                }
-                FinderOutcome::Inconclusive { reason, .. } => format!("inconclusive: {reason}"),
-            };
-            lines.push(format!("float finder, {name}: {text}"));
-            out[format!("finder_{}", if seed == Seed::Translation { "translation" } else { "all_down" })] =
-                json!(o.label());
+    if let Some(shape) = &exact {
+        if let ExactShape::Polygon(b) = shape {
+            finder_report(b, &mut out, &mut lines);
         }
-    }
-    // Direct simulation: the paper's random drops, f64 with renormalisation.
-    if matches!(v.n, 2 | 3 | 4 | 6) {
-        let shape = if v.n == 2 { Shape::Rod } else { Shape::Polygon(v.n) };
-        let model = Model::new(shape, v.kappa.clone(), v.gamma.clone()).expect("validated");
-        let briefs = simulate_many(&model, 0, SIM_RUNS, Arithmetic::Float, &Options::new(SIM_BUDGET), &|| {});
-        let c = counts(&briefs);
-        let names = Outcome::ALL.map(Outcome::name);
-        let text: Vec<String> = names.iter().zip(c).map(|(n, k)| format!("{n} {k}")).collect();
-        lines.push(format!(
-            "simulation ({SIM_RUNS} random drops, budget {SIM_BUDGET} impacts, f64): {}",
-            text.join(", ")
-        ));
-        out["simulation"] =
-            Value::Object(names.iter().zip(c).map(|(n, k)| (n.to_string(), json!(k))).collect());
-        let cc_holds = out["cc"]["holds"].as_bool().unwrap_or(false);
-        let chatter = c[0] + c[1];
-        if !cc_holds && chatter > 0 {
-            lines.push(format!("note: {chatter} of {SIM_RUNS} drops chatter although the CC criterion fails: evidence against the paper's Conjecture 1 ((i) <=> (iii))"));
-        }
-        if cc_holds && c[2] > 0 {
-            lines.push(format!("note: {} of {SIM_RUNS} drops end in ICC although the CC criterion holds (the criterion concerns suitable initial conditions)", c[2]));
-        }
-    }
-    if matches!(v.n, 2 | 3 | 4 | 6) {
-        let mut r = Request::new(v.n, v.kappa.clone(), v.gamma.clone());
-        r.claim = ClaimChoice::Strongest;
-        let rep = certify(&r);
-        let text = match &rep.result {
-            Ok(c) => format!("{} ({} generators; `chatter certify` writes it)", c.claim.name(), c.cone.len()),
-            Err(e) => format!("none: {e}"),
-        };
-        lines.push(format!("certificate: {text}"));
-        out["certificate"] = json!(rep.result.as_ref().ok().map(|c| c.claim.name()));
+        simulation_report(shape, &mut out, &mut lines);
+        certificate_report(&v, &mut out, &mut lines);
     } else {
         lines.push("certificate: none (certificates need n in {2, 3, 4, 6}: rational cosines)".into());
         out["certificate"] = Value::Null;
@@ -257,5 +255,5 @@ pub fn run(a: ClassifyArgs) -> u8 {
             emit(&l);
         }
     }
-    EXIT_OK
+    cli::Outcome::Success
 }

@@ -1,7 +1,7 @@
 //! The command line: raw arguments (clap) are validated into library requests (ripgrep style:
-//! two layers), then a thin driver calls the library and prints.
-//!
-//! Exit status: 0 success; 1 a negative answer (not certified, a certificate rejected);
+//! two layers), then a thin driver calls the library and prints. Every command returns a typed
+//! [`Outcome`]; [`Outcome::exit_code`] is the one place that maps outcomes to exit statuses:
+//! 0 success; 1 a negative answer (not certified, a certificate rejected, a proof step failed);
 //! 2 bad usage or unreadable input; 3 internal error (the two backends disagree).
 
 mod bodies_cmd;
@@ -12,13 +12,53 @@ mod simulate_cmd;
 mod verify_cmd;
 
 use crate::exact::{Q, parse_user_number};
+use chatter_kernel::verify::{Backend, MALACHITE, NUM};
 use clap::{Args, Parser, Subcommand};
 use std::process::ExitCode;
 
-pub const EXIT_OK: u8 = 0;
-pub const EXIT_NEGATIVE: u8 = 1;
-pub const EXIT_USAGE: u8 = 2;
-pub const EXIT_INTERNAL: u8 = 3;
+/// What a command concluded.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Outcome {
+    /// The command did what was asked and the answer is positive.
+    Success,
+    /// A negative answer: not certified, a certificate rejected, a proof step failed.
+    Negative,
+    /// Bad usage or unreadable input; the message is printed on stderr.
+    Usage(String),
+    /// A bug in chatter or a bignum library (the backends disagree); printed on stderr.
+    Internal(String),
+}
+
+impl Outcome {
+    /// The documented exit status (README, `chatter --help`).
+    pub fn exit_code(&self) -> u8 {
+        match self {
+            Outcome::Success => 0,
+            Outcome::Negative => 1,
+            Outcome::Usage(_) => 2,
+            Outcome::Internal(_) => 3,
+        }
+    }
+
+    /// `Success` or `Negative`.
+    pub fn from_answer(positive: bool) -> Outcome {
+        if positive { Outcome::Success } else { Outcome::Negative }
+    }
+}
+
+/// What the commands run on: the two independent bignum backends of the kernel (a test can
+/// plug in a deliberately wrong one).
+#[derive(Clone, Copy)]
+pub struct Env {
+    /// The backends the kernel runs on (`verify --backend both`, `certify`).
+    pub backends: [Backend; 2],
+}
+
+impl Default for Env {
+    fn default() -> Self {
+        Env { backends: [MALACHITE, NUM] }
+    }
+}
 
 #[derive(Parser, Debug)]
 #[command(
@@ -80,18 +120,28 @@ impl BodyArgs {
     }
 }
 
-/// Parses the process arguments and runs the command.
-pub fn main() -> ExitCode {
-    let cli = Cli::parse();
-    let code = match cli.command {
-        Command::Certify(a) => certify_cmd::run(a),
-        Command::Verify(a) => verify_cmd::run(a),
+/// Runs a parsed command line in an environment.
+pub fn run(cli: Cli, env: &Env) -> Outcome {
+    match cli.command {
+        Command::Certify(a) => certify_cmd::run(a, env),
+        Command::Verify(a) => verify_cmd::run(a, env),
         Command::Simulate(a) => simulate_cmd::run(a),
         Command::Classify(a) => classify_cmd::run(a),
         Command::Bodies(a) => bodies_cmd::run(a),
         Command::Prove(a) => prove_cmd::run(a),
-    };
-    ExitCode::from(code)
+    }
+}
+
+/// Parses the process arguments, runs the command, reports errors and maps the outcome to the
+/// exit status.
+pub fn main() -> ExitCode {
+    let outcome = run(Cli::parse(), &Env::default());
+    match &outcome {
+        Outcome::Usage(m) => eprintln!("error: {m}"),
+        Outcome::Internal(m) => eprintln!("internal error (a bug in chatter, please report it): {m}"),
+        Outcome::Success | Outcome::Negative => {}
+    }
+    ExitCode::from(outcome.exit_code())
 }
 
 /// Exit status when stdout is closed early (as if killed by SIGPIPE: 128 + 13).
@@ -107,12 +157,6 @@ pub(crate) fn emit(line: &str) {
             std::process::exit(EXIT_BROKEN_PIPE);
         }
         eprintln!("error: cannot write to stdout: {e}");
-        std::process::exit(i32::from(EXIT_USAGE));
+        std::process::exit(i32::from(Outcome::Usage(String::new()).exit_code()));
     }
-}
-
-/// Prints a usage error and returns the usage exit status.
-pub(crate) fn usage_error(msg: impl std::fmt::Display) -> u8 {
-    eprintln!("error: {msg}");
-    EXIT_USAGE
 }

@@ -1,6 +1,6 @@
 //! `chatter prove square`: the square-case lemmas, proved symbolically and written to proofs/.
 
-use super::{EXIT_NEGATIVE, EXIT_OK, EXIT_USAGE, emit, usage_error};
+use super::{Outcome, emit};
 use crate::symbolic::crosscheck::cross_check;
 use crate::symbolic::report::{markdown, ron, summary};
 use crate::symbolic::square::prove;
@@ -42,9 +42,9 @@ pub struct ProveArgs {
     pub json: bool,
 }
 
-pub fn run(a: ProveArgs) -> u8 {
+pub fn run(a: ProveArgs) -> Outcome {
     if a.points == 0 || a.points > 10_000 {
-        return usage_error("--points must be in 1..=10000");
+        return Outcome::Usage("--points must be in 1..=10000".to_string());
     }
     let Theorem::Square = a.theorem;
     let proof = prove();
@@ -60,13 +60,11 @@ pub fn run(a: ProveArgs) -> u8 {
         }
     } else {
         if let Err(e) = std::fs::create_dir_all(&a.out) {
-            eprintln!("error: cannot create {}: {e}", a.out.display());
-            return EXIT_USAGE;
+            return Outcome::Usage(format!("cannot create {}: {e}", a.out.display()));
         }
         for (path, text) in [(&md_path, &md), (&ron_path, &rn)] {
             if let Err(e) = std::fs::write(path, text) {
-                eprintln!("error: cannot write {}: {e}", path.display());
-                return EXIT_USAGE;
+                return Outcome::Usage(format!("cannot write {}: {e}", path.display()));
             }
         }
     }
@@ -95,5 +93,5 @@ pub fn run(a: ProveArgs) -> u8 {
             emit(&format!("stale: {f} differs from the regenerated proof"));
         }
     }
-    if s.failed == 0 && cross_ok && stale.is_empty() { EXIT_OK } else { EXIT_NEGATIVE }
+    Outcome::from_answer(s.failed == 0 && cross_ok && stale.is_empty())
 }

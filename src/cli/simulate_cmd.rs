@@ -1,14 +1,14 @@
 //! `chatter simulate` (issue 4).
 
-use super::{EXIT_OK, emit, usage_error};
+use super::{self as cli, emit};
 use crate::exact::{Q, parse_user_number};
 use crate::simulate::classify::DEFAULT_PCC_EPSILON;
 use crate::simulate::pattern::{self, find};
 use crate::simulate::{
-    Arithmetic, Brief, Decision, Initial, Model, Options, Outcome, Run, Shape, counts, given_start, plot,
-    record, simulate, simulate_many,
+    Arithmetic, Brief, Decision, Initial, Model, Options, Outcome, Run, counts, given_start, plot, record,
+    simulate, simulate_many,
 };
-use chatter_kernel::model::BodyError;
+use chatter_kernel::model::{BodyError, Shape as ExactShape};
 use clap::Args;
 use serde_json::{Value, json};
 use std::io::IsTerminal;
@@ -98,15 +98,14 @@ fn numbers(flag: &str, s: &str) -> Result<Vec<Q>, String> {
 
 fn validate(a: SimulateArgs) -> Result<Validated, String> {
     let (n, kappa, gamma) = a.body.parse()?;
-    if !matches!(n, 2 | 3 | 4 | 6) {
-        return Err(format!("--n: {n} is not supported: use 2 (the rod) or 3, 4, 6 (exact cosines)"));
-    }
-    let shape = Shape::from_n(n);
-    let model = Model::new(shape, kappa.clone(), gamma.clone()).map_err(|e| match e {
+    let body = ExactShape::new(n, kappa.clone(), gamma.clone()).map_err(|e| match e {
         BodyError::KappaNotPositive => format!("--kappa: {e}"),
         BodyError::GammaOutOfRange => format!("--gamma: {e}"),
-        BodyError::UnsupportedN(_) => format!("--n: {e}"),
+        BodyError::UnsupportedN(_) => {
+            format!("--n: {n} is not supported: use 2 (the rod) or 3, 4, 6 (exact cosines)")
+        }
     })?;
+    let model = Model::from_body(&body);
     let impacts: usize = a
         .impacts
         .trim()
@@ -144,7 +143,10 @@ fn validate(a: SimulateArgs) -> Result<Validated, String> {
             }
             let q = numbers("--position", pos)?;
             let p = numbers("--velocity", vel)?;
-            let names = if n == 2 { "h0,h1 and u0,u1" } else { "h0,h1,hc and u0,u1,v" };
+            let names = match body {
+                ExactShape::Rod(_) => "h0,h1 and u0,u1",
+                ExactShape::Polygon(_) => "h0,h1,hc and u0,u1,v",
+            };
             let start = given_start(&model.system, &q, &p).map_err(|e| match e {
                 crate::simulate::StartError::WrongLength { .. } => {
                     format!("--position/--velocity: {e} ({names} for n = {n})")
@@ -222,7 +224,7 @@ fn single_text(v: &Validated, run: &Run) -> Vec<String> {
         format!("outcome: {}", run.outcome),
         format!("decided by: {}", run.decision.describe()),
         format!("impacts: {} (per contact {counts})", run.impacts),
-        format!("sequence: {}", pattern::summary(&run.sequence, n)),
+        format!("sequence: {}", pattern::summary_for(&run.sequence, v.model.system.shape)),
     ];
     let mut time = if run.impacts == 0 {
         "total time: 0 (no impacts)".to_string()
@@ -277,7 +279,7 @@ fn single_json(v: &Validated, run: &Run) -> Value {
         "gamma": v.gamma.to_string(),
         "arithmetic": v.arithmetic.name(),
         "start": start,
-        "sequence_summary": pattern::summary(&run.sequence, n),
+        "sequence_summary": pattern::summary_for(&run.sequence, v.model.system.shape),
         "pattern": pat,
         "sequence": seq,
         "sequence_truncated": run.sequence.len() > JSON_SEQUENCE,
@@ -297,11 +299,11 @@ fn write_file(path: &PathBuf, text: &str) -> Result<(), String> {
     std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))
 }
 
-fn run_single(v: &Validated) -> u8 {
+fn run_single(v: &Validated) -> cli::Outcome {
     let run = simulate(&v.model, &v.initial, v.arithmetic, &v.opts);
     if let Some(path) = &v.trajectory {
         if let Err(e) = write_file(path, &record::csv(&run, v.model.system.shape)) {
-            return usage_error(e);
+            return cli::Outcome::Usage(e.to_string());
         }
     }
     if let Some(path) = &v.plot {
@@ -309,10 +311,10 @@ fn run_single(v: &Validated) -> u8 {
             format!("{}: {} after {} impacts ({})", head(v), run.outcome, run.impacts, v.arithmetic.name());
         let svg = match plot::svg(&run, &v.model.float, &title) {
             Ok(s) => s,
-            Err(e) => return usage_error(e),
+            Err(e) => return cli::Outcome::Usage(e.to_string()),
         };
         if let Err(e) = write_file(path, &svg) {
-            return usage_error(e);
+            return cli::Outcome::Usage(e.to_string());
         }
     }
     if v.json {
@@ -328,10 +330,10 @@ fn run_single(v: &Validated) -> u8 {
             emit(&format!("plot: {}", p.display()));
         }
     }
-    EXIT_OK
+    cli::Outcome::Success
 }
 
-fn run_many(v: &Validated, runs: u64) -> u8 {
+fn run_many(v: &Validated, runs: u64) -> cli::Outcome {
     let bar = indicatif::ProgressBar::new(runs);
     if std::io::stderr().is_terminal() && runs > 1 {
         if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} drops {eta}") {
@@ -380,13 +382,13 @@ fn run_many(v: &Validated, runs: u64) -> u8 {
         emit(&format!("decided by: {by}"));
         emit(&format!("mean impacts: {mean:.1}"));
     }
-    EXIT_OK
+    cli::Outcome::Success
 }
 
-pub fn run(a: SimulateArgs) -> u8 {
+pub fn run(a: SimulateArgs) -> cli::Outcome {
     let v = match validate(a) {
         Ok(v) => v,
-        Err(e) => return usage_error(e),
+        Err(e) => return cli::Outcome::Usage(e.to_string()),
     };
     match v.runs {
         Some(m) => run_many(&v, m),

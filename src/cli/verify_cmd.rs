@@ -1,8 +1,9 @@
 //! `chatter verify`.
 
-use super::{EXIT_INTERNAL, EXIT_NEGATIVE, EXIT_OK, emit, usage_error};
-use crate::exact::ParseLimits;
-use crate::verify::{Backends, collect_files, verify_file};
+use super::{Env, Outcome, emit};
+use crate::verify::{Status, collect_files, verify_file};
+use chatter_kernel::exact::ParseLimits;
+use chatter_kernel::verify::Backend;
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
@@ -19,7 +20,8 @@ pub enum BackendArg {
 /// Raw arguments of `chatter verify`.
 #[derive(Args, Debug)]
 #[command(after_help = "Prints one line per file: `PATH: OK (...)` or `PATH: REJECTED: reason`.\n\
-Exit status 0 only if every file verifies.")]
+Exit status 0 only if every file verifies; 1 if one is rejected; 2 if one cannot be read;\n\
+3 if the backends disagree (a bug).")]
 pub struct VerifyArgs {
     /// Certificate files, or directories searched recursively for *.ron files.
     #[arg(required = true)]
@@ -35,19 +37,23 @@ pub struct VerifyArgs {
     pub max_digits: usize,
 }
 
-pub fn run(a: VerifyArgs) -> u8 {
+fn backends(a: BackendArg, env: &Env) -> Vec<Backend> {
+    match a {
+        BackendArg::Both => env.backends.to_vec(),
+        BackendArg::Malachite => vec![env.backends[0]],
+        BackendArg::Num => vec![env.backends[1]],
+    }
+}
+
+pub fn run(a: VerifyArgs, env: &Env) -> Outcome {
     let files = match collect_files(&a.paths) {
         Ok(f) => f,
-        Err(e) => return usage_error(format!("cannot list certificates: {e}")),
+        Err(e) => return Outcome::Usage(format!("cannot list certificates: {e}")),
     };
     if files.is_empty() {
-        return usage_error("no certificate files (*.ron) found");
+        return Outcome::Usage("no certificate files (*.ron) found".into());
     }
-    let backends = match a.backend {
-        BackendArg::Both => Backends::Both,
-        BackendArg::Malachite => Backends::Malachite,
-        BackendArg::Num => Backends::Num,
-    };
+    let backends = backends(a.backend, env);
     let limits = ParseLimits { max_digits: a.max_digits };
     let bar = ProgressBar::new(files.len() as u64);
     bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}").expect("valid template"));
@@ -56,7 +62,7 @@ pub fn run(a: VerifyArgs) -> u8 {
     }
     let mut verdicts = Vec::with_capacity(files.len());
     for f in &files {
-        let v = verify_file(f, limits, backends);
+        let v = verify_file(f, limits, &backends);
         if !a.json {
             bar.suspend(|| emit(&v.line()));
         }
@@ -64,19 +70,18 @@ pub fn run(a: VerifyArgs) -> u8 {
         verdicts.push(v);
     }
     bar.finish_and_clear();
-    let count = |s: &str| verdicts.iter().filter(|v| v.status == s).count();
-    let (ok, rejected, errors) = (count("OK"), count("REJECTED"), count("ERROR"));
+    let count = |s: Status| verdicts.iter().filter(|v| v.status == s).count();
+    let (ok, rejected, errors) = (count(Status::Ok), count(Status::Rejected), count(Status::Error));
     if a.json {
         emit(&json!({"files": verdicts, "ok": ok, "rejected": rejected, "errors": errors}).to_string());
     } else if files.len() > 1 {
         eprintln!("{} files: {ok} OK, {rejected} rejected, {errors} errors", files.len());
     }
-    let internal = verdicts.iter().any(|v| v.code == Some(chatter_kernel::certificate::Code::Internal));
-    if internal {
-        EXIT_INTERNAL
-    } else if ok == files.len() {
-        EXIT_OK
+    if let Some(v) = verdicts.iter().find(|v| v.is_internal()) {
+        Outcome::Internal(format!("{}: the backends disagree", v.path))
+    } else if errors > 0 {
+        Outcome::Usage(format!("{errors} of {} files could not be read", files.len()))
     } else {
-        EXIT_NEGATIVE
+        Outcome::from_answer(ok == files.len())
     }
 }

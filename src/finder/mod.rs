@@ -5,6 +5,7 @@
 //! outer approximation, so a curved limit cone does not drown the search in vertices.
 
 pub mod geometry;
+pub mod rod;
 
 use crate::model::FloatBody;
 use geometry::{P2, clip, hull, outside_distance, project, scale, simplify};
@@ -36,23 +37,53 @@ impl Default for FinderConfig {
     }
 }
 
-/// The verdict of the search.
-#[derive(Clone, Debug)]
-pub enum FinderOutcome {
-    /// No image leaves the polygon (within the tolerance).
-    Found { polygon: Vec<P2>, iterations: usize },
-    /// An image has v >= 0: no effectively invariant cone contains the seed.
+/// The verdict of a search for a cone of type `T`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Search<T> {
+    /// No image leaves the cone (within the tolerance, for the float search).
+    Found { cone: T, iterations: usize },
+    /// An image under S_step has v >= 0: no effectively invariant cone contains the seed.
     NoCone { iteration: usize, step: usize },
     /// The budget ran out (or the numbers broke down) before a conclusion.
     Inconclusive { iterations: usize, reason: String },
 }
 
-impl FinderOutcome {
+/// The float search's verdict: a polygon on the plane v = -1.
+pub type FinderOutcome = Search<Vec<P2>>;
+
+impl<T> Search<T> {
+    /// "found", "no-cone" or "inconclusive".
     pub fn label(&self) -> &'static str {
         match self {
-            FinderOutcome::Found { .. } => "found",
-            FinderOutcome::NoCone { .. } => "no-cone",
-            FinderOutcome::Inconclusive { .. } => "inconclusive",
+            Search::Found { .. } => "found",
+            Search::NoCone { .. } => "no-cone",
+            Search::Inconclusive { .. } => "inconclusive",
+        }
+    }
+
+    /// The same verdict with the cone replaced by `f(cone)` (e.g. its number of vertices).
+    pub fn map<U>(&self, f: impl FnOnce(&T) -> U) -> Search<U> {
+        match self {
+            Search::Found { cone, iterations } => Search::Found { cone: f(cone), iterations: *iterations },
+            Search::NoCone { iteration, step } => Search::NoCone { iteration: *iteration, step: *step },
+            Search::Inconclusive { iterations, reason } => {
+                Search::Inconclusive { iterations: *iterations, reason: reason.clone() }
+            }
+        }
+    }
+}
+
+impl std::fmt::Display for Search<usize> {
+    /// One line, e.g. "found a cone (5 vertices, 12 iterations)".
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Search::Found { cone, iterations } => {
+                write!(f, "found a cone ({cone} vertices, {iterations} iterations)")
+            }
+            Search::NoCone { iteration, step } => {
+                write!(f, "no cone (an image under S_{step} has v >= 0 at iteration {iteration})")
+            }
+            Search::Inconclusive { reason, .. } => write!(f, "inconclusive: {reason}"),
         }
     }
 }
@@ -92,27 +123,24 @@ pub fn find_cone(body: &FloatBody, seed: Seed, cfg: &FinderConfig) -> FinderOutc
     for it in 0..cfg.max_iterations {
         let imgs = match images(body, &poly) {
             Ok(imgs) => imgs,
-            Err(step) => return FinderOutcome::NoCone { iteration: it, step },
+            Err(step) => return Search::NoCone { iteration: it, step },
         };
         let sc = scale(&poly);
         if !sc.is_finite() || sc > 1e12 {
-            return FinderOutcome::Inconclusive {
-                iterations: it,
-                reason: format!("polygon grew to size {sc:e}"),
-            };
+            return Search::Inconclusive { iterations: it, reason: format!("polygon grew to size {sc:e}") };
         }
         let tol = cfg.tolerance * sc;
         let worst = imgs.iter().map(|q| outside_distance(&poly, q)).fold(f64::NEG_INFINITY, f64::max);
         // A converged segment is fine too: at gamma = 0 every image has u0 = 0, so the cone is
         // flat; the exactifier's slack gives it an interior.
         if poly.len() >= 2 && worst <= tol {
-            return FinderOutcome::Found { polygon: poly, iterations: it };
+            return Search::Found { cone: poly, iterations: it };
         }
         let mut all = poly;
         all.extend(imgs);
         poly = simplify(&hull(&all, 1e-14 * sc), cfg.max_vertices);
     }
-    FinderOutcome::Inconclusive {
+    Search::Inconclusive {
         iterations: cfg.max_iterations,
         reason: format!("no convergence within {} iterations", cfg.max_iterations),
     }

@@ -27,9 +27,12 @@
 //!      and again from the 3rd to the 4th; "undecided" when it does not (contraction per impact
 //!      too close to 1 to tell within the budget) or when N < [`MIN_BUDGET_FOR_CC`].
 
-use super::engine::{Engine, Snapshot, Step};
-use super::pcc::{PaperPcc, paper_criterion};
-use super::system::{FloatSystem, MAX_CONTACTS};
+use super::engine::{Engine, Step};
+use super::pcc::{PairProof, PaperPcc, paper_criterion};
+use super::snapshot::{Scaled, Snapshot, scaled};
+use super::system::{FloatSystem, MAX_CONTACTS, Shape};
+// Formerly defined here; its old path keeps working.
+pub use super::text::singular;
 use crate::exact::{QExt, Ring};
 
 /// Minimal alternation length before the PCC tests run (then after every impact).
@@ -71,11 +74,6 @@ impl std::fmt::Display for Outcome {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(self.name())
     }
-}
-
-/// Singular for one impact in generated text.
-pub fn singular(s: String) -> String {
-    s.replace(" 1 impacts", " 1 impact").replace("(1 impacts", "(1 impact")
 }
 
 /// Which test decided, with its evidence. `after` counts the impacts done at that point.
@@ -272,10 +270,12 @@ struct Quarters {
 }
 
 impl Quarters {
+    /// Empty sums for a budget of `n` impacts.
     fn new(n: usize) -> Quarters {
         Quarters { bounds: [n / 4, n / 2, 3 * n / 4, n], sums: [0.0; 3] }
     }
 
+    /// Adds the log2 interval `l` of impact i (counted from 0) to its quarter, if any.
     #[inline]
     fn add(&mut self, i: usize, l: f64) {
         let b = &self.bounds;
@@ -285,6 +285,7 @@ impl Quarters {
         }
     }
 
+    /// The mean log2 interval of the 2nd, 3rd and 4th quarters.
     fn means(&self) -> [f64; 3] {
         let b = &self.bounds;
         [
@@ -293,199 +294,347 @@ impl Quarters {
             self.sums[2] / (b[3] - b[2]) as f64,
         ]
     }
+
+    /// Rule 6, converging intervals: CC when the mean log2 interval drops by at least
+    /// [`CC_MIN_BITS`] from the 2nd to the 3rd and from the 3rd to the 4th quarter, after `k` impacts.
+    fn converging_intervals(&self, k: usize) -> Verdict {
+        let m = self.means();
+        let drops = [m[0] - m[1], m[1] - m[2]];
+        let b = self.bounds;
+        // Distance between the centres of the 2nd and 4th quarters.
+        let span = (b[2] + b[3] - b[0] - b[1]) as f64 / 2.0;
+        let bits_per_impact = (m[0] - m[2]) / span;
+        if drops[0] >= CC_MIN_BITS && drops[1] >= CC_MIN_BITS {
+            // Geometric tail from the mean of the last quarter, centred in it.
+            let centre = (b[2] + b[3]) as f64 / 2.0;
+            let l_next = m[2] - bits_per_impact * (k as f64 - centre);
+            let tail = l_next - (1.0 - (-bits_per_impact).exp2()).log2();
+            let decision = Decision::Converging { bits_per_impact, drops };
+            return Verdict::cc(decision).with_tail(Some(tail)).with_contraction(bits_per_impact);
+        }
+        let decision = Decision::NotConverging { bits_per_impact, drops };
+        Verdict::undecided(decision).with_contraction(bits_per_impact)
+    }
 }
 
-/// Runs `eng` until a rule of the module doc decides.
-pub fn drive<E: Engine>(eng: &mut E, fs: &FloatSystem, opts: &Options) -> Run {
-    let n = fs.n;
-    let budget = opts.budget;
+/// A rule's verdict: the outcome, the test with its evidence, and the estimates kept in [`Run`].
+struct Verdict {
+    outcome: Outcome,
+    decision: Decision,
+    /// log2 of the estimated time from the last impact to the accumulation point.
+    tail_log2: Option<f64>,
+    /// Mean contraction of the intervals, bits per impact.
+    contraction: Option<f64>,
+}
+
+impl Verdict {
+    /// A verdict without estimates.
+    fn new(outcome: Outcome, decision: Decision) -> Verdict {
+        Verdict { outcome, decision, tail_log2: None, contraction: None }
+    }
+
+    /// Complete chatter.
+    fn cc(decision: Decision) -> Verdict {
+        Verdict::new(Outcome::Cc, decision)
+    }
+
+    /// The body leaves after finitely many impacts.
+    fn icc(decision: Decision) -> Verdict {
+        Verdict::new(Outcome::Icc, decision)
+    }
+
+    /// No rule could tell.
+    fn undecided(decision: Decision) -> Verdict {
+        Verdict::new(Outcome::Undecided, decision)
+    }
+
+    /// The same verdict with log2 of the time from the last impact to the accumulation point.
+    fn with_tail(self, tail_log2: Option<f64>) -> Verdict {
+        Verdict { tail_log2, ..self }
+    }
+
+    /// The same verdict with the mean contraction of the intervals, bits per impact.
+    fn with_contraction(self, bits_per_impact: f64) -> Verdict {
+        Verdict { contraction: Some(bits_per_impact), ..self }
+    }
+
+    /// Rule 1: v > 0, the body leaves (ICC).
+    fn v_positive(after: usize) -> Verdict {
+        Verdict::icc(Decision::VPositive { after })
+    }
+
+    /// Rule 3: contacts land at the same instant ("simultaneous", never resolved).
+    fn tie(after: usize, contacts: Vec<usize>, exact: bool) -> Verdict {
+        Verdict::new(Outcome::Simultaneous, Decision::Tie { after, contacts, exact })
+    }
+
+    /// Rule 5 (and a non-finite state): `f64` precision is exhausted, "undecided".
+    fn breakdown(after: usize) -> Verdict {
+        Verdict::undecided(Decision::Breakdown { after })
+    }
+
+    /// Rule 4, exact: the pair-chatter proof holds; CC when the limit velocity is 0, else PCC.
+    fn exact_pair(after: usize, pr: &PairProof) -> Verdict {
+        let decision = Decision::ExactPair {
+            after,
+            pair: pr.pair,
+            time_bound: pr.time_bound.to_f64(),
+            v_limit: pr.v_limit.to_f64(),
+        };
+        let outcome = if pr.v_limit.is_zero() { Outcome::Cc } else { Outcome::Pcc };
+        Verdict::new(outcome, decision).with_tail(Some(scaled(&pr.time_bound).log2()))
+    }
+}
+
+/// Which pairs of contacts are neighbours (none for the rod), as a table for the hot loop.
+fn adjacency(fs: &FloatSystem) -> [[bool; MAX_CONTACTS]; MAX_CONTACTS] {
     let mut adjacent = [[false; MAX_CONTACTS]; MAX_CONTACTS];
-    if n >= 3 {
+    if let Shape::Polygon(_) = fs.shape {
+        let n = fs.n;
         for a in 0..n {
             adjacent[a][(a + 1) % n] = true;
             adjacent[(a + 1) % n][a] = true;
         }
     }
-    let initial = eng.snapshot();
-    let mut seq: Vec<u8> = Vec::with_capacity(budget);
-    let mut records = Vec::new();
-    let mut quarters = Quarters::new(budget);
-    let mut tail_log = [0.0f64; 3]; // log2 of the last three intervals, newest first
-    let mut alt = 0usize; // length of the alternating adjacent-pair tail
-    let mut pair_note = String::from("not tested");
-    let eps = opts.pcc_epsilon;
+    adjacent
+}
 
-    let mut overruled = 0usize;
-    let mut overruled_here = false;
-    let finish =
-        |outcome, decision, seq: Vec<u8>, records, eng: &E, tail: Option<f64>, contraction, pcc_overruled| {
-            Run {
-                outcome,
-                decision,
-                impacts: seq.len(),
-                budget,
-                sequence: seq,
-                time: eng.time(),
-                accumulation: tail.map(|l: f64| eng.time() + l.exp2()),
-                tail_log2: tail,
-                contraction,
-                initial: initial.clone(),
-                last: eng.snapshot(),
-                exact: eng.is_exact(),
-                records,
-                pcc_overruled,
-            }
-        };
-    // Every exit hands the trace (sequence, records, engine, overruled count) to `finish`.
-    macro_rules! done {
-        ($outcome:expr, $decision:expr, $tail:expr, $contraction:expr) => {
-            finish($outcome, $decision, seq, records, eng, $tail, $contraction, overruled)
-        };
+/// log2 of the geometric tail from the last two intervals of one contact (`tail_log`: log2 of the
+/// last three intervals, newest first), when they shrink.
+fn pair_tail(tail_log: &[f64; 3]) -> Option<f64> {
+    let per = (tail_log[0] - tail_log[2]) / 2.0;
+    (per < 0.0).then(|| tail_log[0] + per - (1.0 - per.exp2()).log2())
+}
+
+/// The driver's state: the engine, the trace so far and the running evidence of the rules.
+struct Driver<'a, E: Engine> {
+    eng: &'a mut E,
+    fs: &'a FloatSystem,
+    opts: Options,
+    adjacent: [[bool; MAX_CONTACTS]; MAX_CONTACTS],
+    initial: Snapshot,
+    seq: Vec<u8>,
+    records: Vec<Record>,
+    quarters: Quarters,
+    /// log2 of the last three intervals, newest first.
+    tail_log: [f64; 3],
+    /// Length of the alternating adjacent-pair tail.
+    alt: usize,
+    /// Why the PCC tests have not held so far (for [`Decision::PairNotSettled`]).
+    pair_note: String,
+    /// Pair phases in which the paper's criterion was overruled, and whether the current one is.
+    overruled: usize,
+    overruled_here: bool,
+}
+
+/// Runs `eng` until a rule of the module doc decides.
+pub fn drive<E: Engine>(eng: &mut E, fs: &FloatSystem, opts: &Options) -> Run {
+    let mut driver = Driver::new(eng, fs, opts);
+    let verdict = driver.run();
+    driver.finish(verdict)
+}
+
+impl<'a, E: Engine> Driver<'a, E> {
+    /// Before the first impact: the initial state and empty evidence.
+    fn new(eng: &'a mut E, fs: &'a FloatSystem, opts: &Options) -> Self {
+        Driver {
+            initial: eng.snapshot(),
+            eng,
+            fs,
+            opts: *opts,
+            adjacent: adjacency(fs),
+            seq: Vec::with_capacity(opts.budget),
+            records: Vec::new(),
+            quarters: Quarters::new(opts.budget),
+            tail_log: [0.0; 3],
+            alt: 0,
+            pair_note: String::from("not tested"),
+            overruled: 0,
+            overruled_here: false,
+        }
     }
-    let pair_tail = |tail_log: &[f64; 3]| -> Option<f64> {
-        // log2 of the geometric tail from the last two intervals of one contact (per impact).
-        let per = (tail_log[0] - tail_log[2]) / 2.0;
-        (per < 0.0).then(|| tail_log[0] + per - (1.0 - per.exp2()).log2())
-    };
 
-    loop {
-        let k = seq.len();
-        if eng.v_positive() {
-            return done!(Outcome::Icc, Decision::VPositive { after: k }, None, None);
-        }
-        if k == budget {
-            break;
-        }
-        match eng.step() {
-            Step::Impact { contact, dt } => {
-                if dt.m == 0.0 && k > 0 && fs.gamma > 0.0 && !eng.is_exact() {
-                    let d = Decision::Breakdown { after: k };
-                    return done!(Outcome::Undecided, d, None, None);
-                }
-                let l = dt.log2_fast();
-                if k > 0 {
-                    quarters.add(k, l);
-                }
-                tail_log = [l, tail_log[0], tail_log[1]];
-                alt = if k >= 1 && adjacent[contact][seq[k - 1] as usize] {
-                    if k >= 2 && seq[k - 2] as usize == contact { alt + 1 } else { 2 }
-                } else {
-                    1
-                };
-                if alt < PCC_MIN_RUN {
-                    overruled_here = false;
-                }
-                seq.push(contact as u8);
-                if opts.record {
-                    records.push(Record {
-                        impact: k + 1,
-                        contact,
-                        time: eng.time(),
-                        log2_dt: dt.log2(),
-                        state: eng.snapshot(),
-                    });
-                }
-                if alt >= PCC_MIN_RUN {
-                    let other = seq[k - 1] as usize;
-                    if !fs.pcc_possible {
-                        if !overruled_here && paper_criterion(fs, &eng.snapshot(), contact, other).holds(eps)
-                        {
-                            overruled += 1;
-                            overruled_here = true;
-                        }
-                    } else if let Some(proof) = eng.prove_pair(contact, other) {
-                        match proof {
-                            Ok(pr) => {
-                                let d = Decision::ExactPair {
-                                    after: k + 1,
-                                    pair: pr.pair,
-                                    time_bound: pr.time_bound.to_f64(),
-                                    v_limit: pr.v_limit.to_f64(),
-                                };
-                                let acc = Some(super::exact::scaled(&pr.time_bound).log2());
-                                let o = if pr.v_limit.is_zero() { Outcome::Cc } else { Outcome::Pcc };
-                                return done!(o, d, acc, None);
-                            }
-                            Err(e) => pair_note = format!("exact proof: {e}"),
-                        }
-                    } else {
-                        let test = paper_criterion(fs, &eng.snapshot(), contact, other);
-                        if test.holds(eps) {
-                            let d = Decision::PaperPcc { after: k + 1, test, epsilon: eps };
-                            let acc = pair_tail(&tail_log);
-                            return done!(Outcome::Pcc, d, acc, None);
-                        }
-                        pair_note = format!(
-                            "paper's criterion: 1 - cos = {:.1e}, 1 + cos = {:.1e}, eps = {eps:e}",
-                            test.q_defect, test.p_defect
-                        );
-                    }
-                }
+    /// The loop: rule 1 before every event, then the event's rules, until one decides or the
+    /// budget is used up (rule 6).
+    fn run(&mut self) -> Verdict {
+        loop {
+            let k = self.seq.len();
+            if self.eng.v_positive() {
+                return Verdict::v_positive(k);
             }
-            Step::Tie { contacts, exact, .. } => {
-                let d = Decision::Tie { after: k, contacts, exact };
-                return done!(Outcome::Simultaneous, d, None, None);
+            if k == self.opts.budget {
+                return self.budget_exhausted();
             }
-            Step::NoApproach => {
-                let d = if eng.at_rest() {
-                    Decision::AtRest { after: k }
-                } else {
-                    Decision::NoApproach { after: k }
-                };
-                let o = Outcome::Icc;
-                return done!(o, d, None, None);
-            }
-            Step::Breakdown => {
-                return done!(Outcome::Undecided, Decision::Breakdown { after: k }, None, None);
+            if let Some(verdict) = self.event(k) {
+                return verdict;
             }
         }
     }
 
-    // Budget exhausted.
-    let k = seq.len();
-    if fs.pcc_possible && alt >= PCC_MIN_RUN {
-        let (hit, other) = (seq[k - 1] as usize, seq[k - 2] as usize);
-        if let Some(Ok(pr)) = eng.prove_pair(hit, other) {
-            let d = Decision::ExactPair {
-                after: k,
-                pair: pr.pair,
-                time_bound: pr.time_bound.to_f64(),
-                v_limit: pr.v_limit.to_f64(),
-            };
-            let acc = Some(super::exact::scaled(&pr.time_bound).log2());
-            let o = if pr.v_limit.is_zero() { Outcome::Cc } else { Outcome::Pcc };
-            return done!(o, d, acc, None);
+    /// One event after `k` impacts: an impact (rules 4 and 5), or the end of the run (rules 2, 3).
+    #[inline]
+    fn event(&mut self, k: usize) -> Option<Verdict> {
+        match self.eng.step() {
+            Step::Impact { contact, dt } => self.impact(k, contact, dt),
+            Step::Tie { contacts, exact, .. } => Some(Verdict::tie(k, contacts, exact)),
+            Step::NoApproach => Some(self.no_approach(k)),
+            Step::Breakdown => Some(Verdict::breakdown(k)),
         }
-        let test = paper_criterion(fs, &eng.snapshot(), hit, other);
+    }
+
+    /// Rule 2: no contact approaches, ICC; at rest when p = 0 exactly.
+    fn no_approach(&self, after: usize) -> Verdict {
+        if self.eng.at_rest() {
+            Verdict::icc(Decision::AtRest { after })
+        } else {
+            Verdict::icc(Decision::NoApproach { after })
+        }
+    }
+
+    /// The (k+1)-th impact: rule 5 (an `f64` interval of exactly 0 with gamma > 0 after the first
+    /// impact is a breakdown), then the bookkeeping, then the PCC tests of rule 4.
+    #[inline]
+    fn impact(&mut self, k: usize, contact: usize, dt: Scaled) -> Option<Verdict> {
+        if dt.m == 0.0 && k > 0 && self.fs.gamma > 0.0 && !self.eng.is_exact() {
+            return Some(Verdict::breakdown(k));
+        }
+        self.book(k, contact, dt);
+        if self.alt >= PCC_MIN_RUN { self.pcc_tests(k + 1, contact) } else { None }
+    }
+
+    /// Records the (k+1)-th impact: its interval, the alternation length, the sequence, the record.
+    #[inline]
+    fn book(&mut self, k: usize, contact: usize, dt: Scaled) {
+        let l = dt.log2_fast();
+        if k > 0 {
+            self.quarters.add(k, l);
+        }
+        self.tail_log = [l, self.tail_log[0], self.tail_log[1]];
+        self.alt = self.alternation(k, contact);
+        if self.alt < PCC_MIN_RUN {
+            self.overruled_here = false;
+        }
+        self.seq.push(contact as u8);
+        if self.opts.record {
+            let (time, state) = (self.eng.time(), self.eng.snapshot());
+            self.records.push(Record { impact: k + 1, contact, time, log2_dt: dt.log2(), state });
+        }
+    }
+
+    /// The length of the alternating adjacent-pair tail once `contact` lands after `k` impacts.
+    #[inline]
+    fn alternation(&self, k: usize, contact: usize) -> usize {
+        let seq = &self.seq;
+        if k >= 1 && self.adjacent[contact][seq[k - 1] as usize] {
+            if k >= 2 && seq[k - 2] as usize == contact { self.alt + 1 } else { 2 }
+        } else {
+            1
+        }
+    }
+
+    /// Rule 4 after `after` impacts, the last at `hit`: where the PCC Lemma excludes PCC the
+    /// paper's criterion is only counted when overruled; otherwise the exact proof (exact
+    /// engines) or the paper's criterion (`f64`) decides PCC.
+    fn pcc_tests(&mut self, after: usize, hit: usize) -> Option<Verdict> {
+        let other = self.seq[after - 2] as usize;
+        if !self.fs.pcc_possible {
+            self.count_overruled(hit, other);
+            return None;
+        }
+        match self.eng.prove_pair(hit, other) {
+            Some(Ok(pr)) => Some(Verdict::exact_pair(after, &pr)),
+            Some(Err(e)) => {
+                self.pair_note = format!("exact proof: {e}");
+                None
+            }
+            None => self.paper_pcc(after, hit, other),
+        }
+    }
+
+    /// Rule 4 where the Lemma excludes PCC: counts a pair phase in which the criterion holds anyway.
+    fn count_overruled(&mut self, hit: usize, other: usize) {
+        if !self.overruled_here && self.paper_test(hit, other).holds(self.opts.pcc_epsilon) {
+            self.overruled += 1;
+            self.overruled_here = true;
+        }
+    }
+
+    /// Rule 4 in `f64`: PCC when the paper's criterion holds, else a note of its defects.
+    fn paper_pcc(&mut self, after: usize, hit: usize, other: usize) -> Option<Verdict> {
+        let (test, eps) = (self.paper_test(hit, other), self.opts.pcc_epsilon);
         if test.holds(eps) {
-            let acc = pair_tail(&tail_log);
-            let d = Decision::PaperPcc { after: k, test, epsilon: eps };
-            return done!(Outcome::Pcc, d, acc, None);
+            return Some(self.paper_verdict(after, test));
         }
-        let reason = format!(
-            "{pair_note}; at the end 1 - cos = {:.1e}, 1 + cos = {:.1e}, eps = {eps:e}",
+        self.pair_note = format!(
+            "paper's criterion: 1 - cos = {:.1e}, 1 + cos = {:.1e}, eps = {eps:e}",
             test.q_defect, test.p_defect
         );
-        let d = Decision::PairNotSettled { pair: (hit.min(other), hit.max(other)), run: alt, reason };
-        return done!(Outcome::Undecided, d, None, None);
+        None
     }
-    if budget < MIN_BUDGET_FOR_CC {
-        return done!(Outcome::Undecided, Decision::BudgetTooSmall { budget }, None, None);
+
+    /// The paper's criterion for the pair {hit, other} on the current state.
+    fn paper_test(&self, hit: usize, other: usize) -> PaperPcc {
+        paper_criterion(self.fs, &self.eng.snapshot(), hit, other)
     }
-    let m = quarters.means();
-    let drops = [m[0] - m[1], m[1] - m[2]];
-    let b = quarters.bounds;
-    // Distance between the centres of the 2nd and 4th quarters.
-    let span = (b[2] + b[3] - b[0] - b[1]) as f64 / 2.0;
-    let bits_per_impact = (m[0] - m[2]) / span;
-    if drops[0] >= CC_MIN_BITS && drops[1] >= CC_MIN_BITS {
-        // Geometric tail from the mean of the last quarter, centred in it.
-        let centre = (quarters.bounds[2] + quarters.bounds[3]) as f64 / 2.0;
-        let l_next = m[2] - bits_per_impact * (k as f64 - centre);
-        let tail = l_next - (1.0 - (-bits_per_impact).exp2()).log2();
-        let d = Decision::Converging { bits_per_impact, drops };
-        return done!(Outcome::Cc, d, Some(tail), Some(bits_per_impact));
+
+    /// PCC by the paper's criterion, with the tail estimated from the pair's last intervals.
+    fn paper_verdict(&self, after: usize, test: PaperPcc) -> Verdict {
+        let decision = Decision::PaperPcc { after, test, epsilon: self.opts.pcc_epsilon };
+        Verdict::new(Outcome::Pcc, decision).with_tail(pair_tail(&self.tail_log))
     }
-    let d = Decision::NotConverging { bits_per_impact, drops };
-    done!(Outcome::Undecided, d, None, Some(bits_per_impact))
+
+    /// Rule 6: the budget is used up. A pair still alternating where the Lemma allows PCC is
+    /// judged by the PCC tests; otherwise the intervals must converge (and the budget suffice).
+    fn budget_exhausted(&self) -> Verdict {
+        let budget = self.opts.budget;
+        if self.fs.pcc_possible && self.alt >= PCC_MIN_RUN {
+            return self.pair_at_budget();
+        }
+        if budget < MIN_BUDGET_FOR_CC {
+            return Verdict::undecided(Decision::BudgetTooSmall { budget });
+        }
+        self.quarters.converging_intervals(self.seq.len())
+    }
+
+    /// Rule 6 on an alternating adjacent pair: PCC if the exact proof or the paper's criterion
+    /// holds now, otherwise "undecided" (CC is impossible on an adjacent pair).
+    fn pair_at_budget(&self) -> Verdict {
+        let k = self.seq.len();
+        let (hit, other) = (self.seq[k - 1] as usize, self.seq[k - 2] as usize);
+        if let Some(Ok(pr)) = self.eng.prove_pair(hit, other) {
+            return Verdict::exact_pair(k, &pr);
+        }
+        let (test, eps) = (self.paper_test(hit, other), self.opts.pcc_epsilon);
+        if test.holds(eps) {
+            return self.paper_verdict(k, test);
+        }
+        let reason = format!(
+            "{}; at the end 1 - cos = {:.1e}, 1 + cos = {:.1e}, eps = {eps:e}",
+            self.pair_note, test.q_defect, test.p_defect
+        );
+        let pair = (hit.min(other), hit.max(other));
+        Verdict::undecided(Decision::PairNotSettled { pair, run: self.alt, reason })
+    }
+
+    /// The run, with its trace, once a rule has decided.
+    fn finish(self, verdict: Verdict) -> Run {
+        let Verdict { outcome, decision, tail_log2, contraction } = verdict;
+        let time = self.eng.time();
+        Run {
+            outcome,
+            decision,
+            impacts: self.seq.len(),
+            budget: self.opts.budget,
+            sequence: self.seq,
+            time,
+            accumulation: tail_log2.map(|l| time + l.exp2()),
+            tail_log2,
+            contraction,
+            initial: self.initial,
+            last: self.eng.snapshot(),
+            exact: self.eng.is_exact(),
+            records: self.records,
+            pcc_overruled: self.overruled,
+        }
+    }
 }

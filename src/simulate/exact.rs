@@ -3,21 +3,13 @@
 //! their symmetry (MODEL §10).
 
 use super::drop::Start;
-use super::engine::{Engine, Scaled, Snapshot, Step};
+use super::engine::{Engine, Step};
 use super::pcc::{PairProof, prove_pair_chatter};
+pub use super::snapshot::scaled; // formerly defined here
+use super::snapshot::{Scaled, Snapshot};
 use super::system::System;
 use crate::exact::{Q, Ring};
 use chatter_kernel::model::linalg::Vec3;
-use malachite::base::num::conversion::traits::SciMantissaAndExponent;
-
-/// |x| as m · 2^e with m in [1, 2) (m = 0 for x = 0), rounded to nearest.
-pub fn scaled(x: &Q) -> Scaled {
-    if x.is_zero() {
-        return Scaled { m: 0.0, e: 0 };
-    }
-    let (m, e): (f64, i64) = x.abs().as_rational().sci_mantissa_and_exponent();
-    Scaled { m, e }
-}
 
 /// A rational vector as (v_m, e) with v = v_m · 2^e and the largest |component| of v_m in [1, 2).
 pub fn normalised(v: &Vec3<Q>) -> ([f64; 3], i64) {

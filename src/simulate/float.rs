@@ -13,7 +13,8 @@
 //! contacts keep full relative precision next to the rest of the state (see [`Frame`]).
 
 use super::drop::Start;
-use super::engine::{Engine, Scaled, Snapshot, Step, pow2};
+use super::engine::{Engine, Step};
+use super::snapshot::{Scaled, Snapshot, pow2};
 use super::system::{FloatSystem, Frame, Shape, frame_index};
 
 /// Relative difference below which two `f64` impact times count as a tie.

@@ -3,10 +3,17 @@
 //! CC / PCC / ICC classification of [`classify`].
 //!
 //! - [`system`]: the body as covectors and impact kicks (polygons n = 3, 4, 6 and the rod).
-//! - [`drop`]: initial states, the paper's random-drop protocol, the seeded generator.
-//! - [`engine`], [`float`], [`exact`]: one interface, two arithmetics.
+//! - [`drop`](mod@drop): initial states, the paper's random-drop protocol, the seeded generator.
+//! - [`engine`], [`float`], [`exact`]: one interface, two arithmetics; [`snapshot`]: the
+//!   read-outs of a state they share.
 //! - [`classify`]: the driver loop and the outcome rules; [`pcc`]: the two PCC tests.
-//! - [`pattern`]: the impact sequence in words; [`record`]: CSV; [`plot`]: SVG.
+//! - [`pattern`]: the impact sequence in words; [`record`]: CSV; [`plot`]: SVG; [`text`]: wording.
+//!
+//! Module dependencies (acyclic): `system`, `snapshot` and `text` depend on no other module here;
+//! `drop` on `system`; `pcc` on `snapshot`, `system`; `engine` on `pcc`, `snapshot`; `float` and
+//! `exact` on `drop`, `engine`, `snapshot`, `system` (`exact` also on `pcc`); `classify` on
+//! `engine`, `pcc`, `snapshot`, `system`, `text`; `pattern` on `system`, `text`; `record` on
+//! `classify`, `snapshot`, `system`; `plot` on `classify`, `record`, `snapshot`, `system`.
 //!
 //! ```
 //! use chatter::exact::Q;
@@ -26,13 +33,16 @@ pub mod pcc;
 #[cfg(feature = "cli")]
 pub mod plot;
 pub mod record;
+pub mod snapshot;
 pub mod system;
+pub mod text;
 
 pub use classify::{Decision, Options, Outcome, Record, Run, drive};
 pub use drop::{SplitMix64, Start, StartError, exact_drop, given_start, random_drop};
-pub use engine::{Engine, Scaled, Snapshot, Step};
+pub use engine::{Engine, Step};
 pub use exact::ExactEngine;
 pub use float::FloatEngine;
+pub use snapshot::{Scaled, Snapshot};
 pub use system::{FloatSystem, Shape, System};
 
 use crate::exact::Q;
@@ -73,10 +83,21 @@ pub struct Model {
 }
 
 impl Model {
+    /// The model of `shape` with the given kappa and gamma (validated by the kernel).
     pub fn new(shape: Shape, kappa: Q, gamma: Q) -> Result<Model, BodyError> {
-        let system = System::new(shape, kappa, gamma)?;
+        Ok(Model::of_system(System::new(shape, kappa, gamma)?))
+    }
+
+    /// The model of a kernel body (`chatter_kernel::model::Shape::new(n, kappa, gamma)` decides
+    /// between the rod and a polygon).
+    pub fn from_body(body: &chatter_kernel::model::Shape<Q>) -> Model {
+        Model::of_system(System::from_body(body))
+    }
+
+    /// The model of an exact system, with its `f64` copy.
+    fn of_system(system: System) -> Model {
         let float = FloatSystem::new(&system);
-        Ok(Model { system, float })
+        Model { system, float }
     }
 
     /// The exact start of `initial`.

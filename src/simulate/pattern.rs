@@ -2,6 +2,9 @@
 //! named by the step maps S_j of MODEL §3 (S_1 repeated is the paper's regular pattern
 //! "an impact at a vertex is followed by an impact at its immediate neighbour").
 
+use super::system::Shape;
+use super::text::singular;
+
 /// Longest period looked for.
 pub const MAX_PERIOD: usize = 12;
 
@@ -51,17 +54,15 @@ pub fn find(seq: &[u8]) -> Option<Pattern> {
 }
 
 impl Pattern {
-    /// What kind of motion the cycle is.
-    pub fn kind(&self, n: usize) -> Kind {
-        let c = &self.cycle;
+    /// What kind of motion the cycle is on a body of this shape.
+    pub fn kind(&self, shape: Shape) -> Kind {
+        let (c, n) = (&self.cycle, shape.n());
         if c.len() == 2 {
             let (a, b) = (c[0] as usize, c[1] as usize);
-            return if n == 2 {
-                Kind::RodEnds
-            } else if (a + 1) % n == b || (b + 1) % n == a {
-                Kind::AdjacentPair
-            } else {
-                Kind::DistantPair
+            return match shape {
+                Shape::Rod => Kind::RodEnds,
+                Shape::Polygon(_) if (a + 1) % n == b || (b + 1) % n == a => Kind::AdjacentPair,
+                Shape::Polygon(_) => Kind::DistantPair,
             };
         }
         let s = steps(c, n);
@@ -75,11 +76,11 @@ fn list(xs: &[u8]) -> String {
 
 /// A one-line summary: transient, then the settled pattern, e.g. "2,0 (2 impacts), then cycles
 /// 1→2→0 (S_1 repeated: ...)" or "..., then 0,1,0,1 (adjacent pair: PCC-like)".
-pub fn summary(seq: &[u8], n: usize) -> String {
-    super::classify::singular(summary_raw(seq, n))
+pub fn summary_for(seq: &[u8], shape: Shape) -> String {
+    singular(summary_raw(seq, shape))
 }
 
-fn summary_raw(seq: &[u8], n: usize) -> String {
+fn summary_raw(seq: &[u8], shape: Shape) -> String {
     const SHOW: usize = 12;
     if seq.is_empty() {
         return "no impacts".into();
@@ -92,7 +93,8 @@ fn summary_raw(seq: &[u8], n: usize) -> String {
         };
         return format!("{head} ({} impacts, no settled pattern)", seq.len());
     };
-    let settled = match pat.kind(n) {
+    let n = shape.n();
+    let settled = match pat.kind(shape) {
         Kind::RodEnds => format!("{0},{1},{0},{1} (the two ends alternate)", pat.cycle[0], pat.cycle[1]),
         Kind::AdjacentPair => {
             format!("{0},{1},{0},{1} (adjacent pair: PCC-like)", pat.cycle[0], pat.cycle[1])

@@ -22,7 +22,7 @@
 //!    followed by all contacts landing at once (undecidable in this model); p* = 0 is complete
 //!    chatter; v* > 0 means ICC and is not reported here.
 
-use super::engine::Snapshot;
+use super::snapshot::Snapshot;
 use super::system::{FloatSystem, System};
 use crate::exact::{Q, QExt, Ring};
 use chatter_kernel::model::linalg::{Vec3, dot};
@@ -99,90 +99,145 @@ pub fn prove_pair_chatter(
     hit: usize,
     other: usize,
 ) -> Result<PairProof, String> {
-    if !sys.adjacent(hit, other) {
-        return Err(format!("contacts {hit} and {other} are not neighbours"));
-    }
-    let (fh, fo) = (&sys.contacts[hit], &sys.contacts[other]);
-    let (kh, ko) = (&sys.kicks[hit], &sys.kicks[other]);
-    if !dot(fh, q).is_zero() {
-        return Err(format!("contact {hit} is not on the floor"));
-    }
-    let a = dot(fh, p);
-    let b = dot(fo, p);
-    let h = dot(fo, q);
-    if a.is_negative() || !b.is_negative() || h.is_negative() {
-        return Err(format!("contact {other} does not approach after the impact at {hit}"));
-    }
-    let e = dot(fo, kh);
-    if e != dot(fh, ko) {
-        return Err("asymmetric pair coupling (model error)".into());
-    }
-    if !e.is_negative() {
-        return Err(format!("coupling {e} >= 0: an impact at one contact of the pair lifts the other"));
-    }
-    let e_abs = -&e;
-    let gamma = &sys.gamma;
-    let disc = &e * &e - Q::int(4) * gamma;
-    if !disc.is_positive() {
-        return Err(format!("E^2 - 4 gamma = {disc} <= 0: the pair's step map has no real eigenvalues"));
-    }
-    let half_e = &e_abs * &Q::new(1, 2);
-    let s = &a / &(-&b);
-    let w = Q::int(2) * &s - &e_abs;
-    if !(w.is_negative() || &w * &w < disc) {
-        return Err(format!("velocity ratio {} is outside the pair's basin s < s+", s.to_f64()));
-    }
-    let d = sqrt_lower(&disc).ok_or("no rational lower bound of sqrt(D) found")?;
-    let r = (&e_abs - &d) * Q::new(1, 2); // >= s-, < |E|/2
-
-    // Iterate the pair exactly until s_m < |E|/2, then bound the geometric tail.
-    let (mut am, mut bm, mut hm) = (a.clone(), b.clone(), h);
-    let mut t_sum = Q::int(0);
-    let mut bound = None;
-    for _ in 0..64 {
-        let bm_abs = -&bm;
-        let sm = &am / &bm_abs;
-        let tau = &hm / &bm_abs;
-        if sm < half_e {
-            let sigma = if sm > r { sm } else { r.clone() };
-            let rho = &sigma / &(&e_abs - &sigma);
-            bound = Some(&t_sum + &(&tau / &(Q::int(1) - rho)));
-            break;
-        }
-        t_sum = t_sum + &tau;
-        let next_b = &am - &(&bm_abs * &e_abs);
-        hm = &am * &tau;
-        am = gamma * &bm_abs;
-        bm = next_b;
-        if !bm.is_negative() {
-            return Err("the pair stops alternating (model error)".into());
-        }
-    }
-    let time_bound = bound.ok_or("velocity ratio converges too slowly to bound the remaining time")?;
-
-    // Limit velocity from momentum: [[A, E], [E, A]] (x, y) = (a, b), A = f_i·kick_i = 1 + gamma.
-    let big_a = dot(fh, kh);
-    let det = &big_a * &big_a - &e * &e;
-    let x = (&a * &big_a - &e * &b) / det.clone();
-    let y = (&big_a * &b - &e * &a) / det;
-    if x.is_positive() || y.is_positive() {
-        return Err("impulses of the wrong sign (model error)".into());
-    }
-    let limit_velocity: Vec3<Q> = std::array::from_fn(|i| &p[i] - &(&x * &kh[i]) - &y * &ko[i]);
-    if !dot(fh, &limit_velocity).is_zero() || !dot(fo, &limit_velocity).is_zero() {
-        return Err("limit velocity does not rest the pair (model error)".into());
-    }
+    let pair = Pair::after_impact(sys, q, p, hit, other)?;
+    let disc = pair.basin(&sys.gamma)?;
+    let time_bound = pair.time_bound(&sys.gamma, &disc)?;
+    let (x, y, limit_velocity) = pair.limit(sys, p)?;
     let v_limit = dot(&sys.centre, &limit_velocity);
     if v_limit.is_positive() {
         return Err("the limit velocity has v > 0: the chatter of the pair ends in ICC".into());
     }
-    for k in (0..sys.n()).filter(|&k| k != hit && k != other) {
-        let fk = &sys.contacts[k];
-        let lower_u = dot(fk, p) + min0(-(&x * &dot(fk, kh))) + min0(-(&y * &dot(fk, ko)));
-        let lowest_h = dot(fk, q) + &time_bound * &min0(lower_u);
-        if !lowest_h.is_positive() {
-            return Err(format!("contact {k} may land before the pair comes to rest"));
-        }
-    }
+    pair.others_stay_up(sys, (q, p), (&x, &y), &time_bound)?;
     Ok(PairProof { pair: (hit, other), time_bound, limit_velocity, v_limit })
+}
+
+/// The closed two-contact system right after an impact at `hit`: a = u_hit ≥ 0, b = u_other < 0,
+/// h = h_other ≥ 0, and the coupling E = f_other·kick_hit = f_hit·kick_other < 0.
+struct Pair<'a> {
+    hit: usize,
+    other: usize,
+    kicks: (&'a Vec3<Q>, &'a Vec3<Q>),
+    a: Q,
+    b: Q,
+    h: Q,
+    e: Q,
+}
+
+impl<'a> Pair<'a> {
+    /// The pair if its preconditions hold: neighbours, `hit` on the floor, `other` approaching,
+    /// a symmetric and negative coupling.
+    fn after_impact(
+        sys: &'a System,
+        q: &Vec3<Q>,
+        p: &Vec3<Q>,
+        hit: usize,
+        other: usize,
+    ) -> Result<Pair<'a>, String> {
+        if !sys.adjacent(hit, other) {
+            return Err(format!("contacts {hit} and {other} are not neighbours"));
+        }
+        let (fh, fo) = (&sys.contacts[hit], &sys.contacts[other]);
+        let (kh, ko) = (&sys.kicks[hit], &sys.kicks[other]);
+        if !dot(fh, q).is_zero() {
+            return Err(format!("contact {hit} is not on the floor"));
+        }
+        let (a, b, h) = (dot(fh, p), dot(fo, p), dot(fo, q));
+        if a.is_negative() || !b.is_negative() || h.is_negative() {
+            return Err(format!("contact {other} does not approach after the impact at {hit}"));
+        }
+        let e = dot(fo, kh);
+        if e != dot(fh, ko) {
+            return Err("asymmetric pair coupling (model error)".into());
+        }
+        if !e.is_negative() {
+            return Err(format!("coupling {e} >= 0: an impact at one contact of the pair lifts the other"));
+        }
+        Ok(Pair { hit, other, kicks: (kh, ko), a, b, h, e })
+    }
+
+    /// The rod theorem's basin: D = E² - 4γ > 0 and s = a/(-b) < s₊ (2s - |E| < 0 or
+    /// (2s - |E|)² < D); returns D.
+    fn basin(&self, gamma: &Q) -> Result<Q, String> {
+        let disc = &self.e * &self.e - Q::int(4) * gamma;
+        if !disc.is_positive() {
+            return Err(format!("E^2 - 4 gamma = {disc} <= 0: the pair's step map has no real eigenvalues"));
+        }
+        let s = &self.a / &(-&self.b);
+        let w = Q::int(2) * &s - &(-&self.e);
+        if !(w.is_negative() || &w * &w < disc) {
+            return Err(format!("velocity ratio {} is outside the pair's basin s < s+", s.to_f64()));
+        }
+        Ok(disc)
+    }
+
+    /// A rational bound on the time until the pair's impacts accumulate: exact steps until
+    /// s_m < |E|/2, then a geometric tail with ratio s_m/(|E| - s_m) (s_m at least r ≥ s₋).
+    fn time_bound(&self, gamma: &Q, disc: &Q) -> Result<Q, String> {
+        let e_abs = -&self.e;
+        let half_e = &e_abs * &Q::new(1, 2);
+        let d = sqrt_lower(disc).ok_or("no rational lower bound of sqrt(D) found")?;
+        let r = (&e_abs - &d) * Q::new(1, 2); // >= s-, < |E|/2
+        let (mut am, mut bm, mut hm) = (self.a.clone(), self.b.clone(), self.h.clone());
+        let mut t_sum = Q::int(0);
+        for _ in 0..64 {
+            let bm_abs = -&bm;
+            let sm = &am / &bm_abs;
+            let tau = &hm / &bm_abs;
+            if sm < half_e {
+                let sigma = if sm > r { sm } else { r.clone() };
+                let rho = &sigma / &(&e_abs - &sigma);
+                return Ok(&t_sum + &(&tau / &(Q::int(1) - rho)));
+            }
+            t_sum = t_sum + &tau;
+            let next_b = &am - &(&bm_abs * &e_abs);
+            hm = &am * &tau;
+            am = gamma * &bm_abs;
+            bm = next_b;
+            if !bm.is_negative() {
+                return Err("the pair stops alternating (model error)".into());
+            }
+        }
+        Err("velocity ratio converges too slowly to bound the remaining time".into())
+    }
+
+    /// The limit velocity from momentum, p* = p - x·kick_i - y·kick_j with u_i(p*) = u_j(p*) = 0:
+    /// [[A, E], [E, A]] (x, y) = (a, b), A = f_i·kick_i = 1 + γ; returns (x, y, p*).
+    fn limit(&self, sys: &System, p: &Vec3<Q>) -> Result<(Q, Q, Vec3<Q>), String> {
+        let (fh, fo) = (&sys.contacts[self.hit], &sys.contacts[self.other]);
+        let (kh, ko) = self.kicks;
+        let (a, b, e) = (&self.a, &self.b, &self.e);
+        let big_a = dot(fh, kh);
+        let det = &big_a * &big_a - e * e;
+        let x = (a * &big_a - e * b) / det.clone();
+        let y = (&big_a * b - e * a) / det;
+        if x.is_positive() || y.is_positive() {
+            return Err("impulses of the wrong sign (model error)".into());
+        }
+        let limit_velocity: Vec3<Q> = std::array::from_fn(|i| &p[i] - &(&x * &kh[i]) - &y * &ko[i]);
+        if !dot(fh, &limit_velocity).is_zero() || !dot(fo, &limit_velocity).is_zero() {
+            return Err("limit velocity does not rest the pair (model error)".into());
+        }
+        Ok((x, y, limit_velocity))
+    }
+
+    /// Every other contact k stays up until the time bound T: h_k(q) + T·min(U_k, 0) > 0 with
+    /// U_k = u_k(p) + min(0, -x f_k·kick_i) + min(0, -y f_k·kick_j).
+    fn others_stay_up(
+        &self,
+        sys: &System,
+        (q, p): (&Vec3<Q>, &Vec3<Q>),
+        (x, y): (&Q, &Q),
+        time_bound: &Q,
+    ) -> Result<(), String> {
+        let (kh, ko) = self.kicks;
+        for k in (0..sys.n()).filter(|&k| k != self.hit && k != self.other) {
+            let fk = &sys.contacts[k];
+            let lower_u = dot(fk, p) + min0(-(x * &dot(fk, kh))) + min0(-(y * &dot(fk, ko)));
+            let lowest_h = dot(fk, q) + time_bound * &min0(lower_u);
+            if !lowest_h.is_positive() {
+                return Err(format!("contact {k} may land before the pair comes to rest"));
+            }
+        }
+        Ok(())
+    }
 }

@@ -2,7 +2,7 @@
 //! (one row per impact).
 
 use super::classify::Run;
-use super::engine::LOG2_ZERO;
+use super::snapshot::LOG2_ZERO;
 use super::system::Shape;
 use std::fmt::Write;
 

@@ -7,11 +7,12 @@
 //! stays exactly 0 in both arithmetics and the rod never stores the redundant v = (u0 + u1)/2.
 
 use crate::exact::{Q, QExt, Ring};
-use chatter_kernel::model::Rod;
+use chatter_kernel::exact::OrderedField;
 use chatter_kernel::model::linalg::{Vec3, dot};
-use chatter_kernel::model::{BodyError, Polygon as Body};
+use chatter_kernel::model::{BodyError, Polygon, Rod, Shape as Body};
 
-/// Which body falls.
+/// Which body falls: a tag of the kernel's [`Body`] (`chatter_kernel::model::Shape`), which is
+/// the one place where the number of contacts decides between the rod and a polygon.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Shape {
     /// The planar rod of MODEL §7: two contacts, coordinates (u0, u1).
@@ -20,12 +21,16 @@ pub enum Shape {
     Polygon(u64),
 }
 
-impl Shape {
-    /// The shape with `n` contacts (2 is the rod).
-    pub fn from_n(n: u64) -> Shape {
-        if n == 2 { Shape::Rod } else { Shape::Polygon(n) }
+impl<F: OrderedField> From<&Body<F>> for Shape {
+    fn from(body: &Body<F>) -> Shape {
+        match body {
+            Body::Rod(_) => Shape::Rod,
+            Body::Polygon(polygon) => Shape::Polygon(polygon.n() as u64),
+        }
     }
+}
 
+impl Shape {
     /// Number of contacts.
     pub fn n(self) -> usize {
         match self {
@@ -80,44 +85,60 @@ fn z() -> Q {
 }
 
 impl System {
-    /// Builds the model of `shape` with the given kappa and gamma (validated like the kernel).
+    /// Builds the model of `shape` with the given kappa and gamma (validated by the kernel).
     pub fn new(shape: Shape, kappa: Q, gamma: Q) -> Result<System, BodyError> {
-        match shape {
-            Shape::Rod => {
-                let rod = Rod::new(kappa.clone(), gamma.clone())?;
-                let one = Q::int(1);
-                let g1 = &one + &gamma;
-                let cross = &g1 * &rod.coupling();
-                let contacts = vec![[one.clone(), z(), z()], [z(), one.clone(), z()]];
-                let kicks = vec![[g1.clone(), cross.clone(), z()], [cross, g1, z()]];
-                let half = Q::new(1, 2);
-                let centre = [half.clone(), half, z()];
-                let energy = |p: &Vec3<Q>| {
-                    // T = (v^2 + kappa omega^2)/2, v = (u0 + u1)/2, omega = (u1 - u0)/2 (R = 1).
-                    let v = (&p[0] + &p[1]) * Q::new(1, 2);
-                    let w = (&p[1] - &p[0]) * Q::new(1, 2);
-                    (&v * &v + &kappa * &(&w * &w)) * Q::new(1, 2)
-                };
-                let gram = gram_of(&energy);
-                let rest_points = vec![];
-                let pair_coupling = z();
-                Ok(System { shape, kappa, gamma, contacts, kicks, centre, gram, rest_points, pair_coupling })
-            }
-            Shape::Polygon(n) => {
-                let body: Body<Q> = Body::new(n, kappa.clone(), gamma.clone())?;
-                let beta = body.beta();
-                let contacts: Vec<Vec3<Q>> = (0..n as i64).map(|k| body.contact(k).clone()).collect();
-                let kicks: Vec<Vec3<Q>> =
-                    (0..n as i64).map(|k| body.impact_direction(k).map(|d| beta.times(&d))).collect();
-                let centre = [z(), z(), Q::int(1)];
-                let gram = gram_of(&|p: &Vec3<Q>| crate::model::kinetic_energy(&body, p));
-                let rest_points = (0..n as i64)
-                    .map(|i| body.rest_point(i, i + 1).expect("adjacent contacts are never opposite"))
-                    .collect();
-                let pair_coupling = dot(&contacts[1], &kicks[0]);
-                Ok(System { shape, kappa, gamma, contacts, kicks, centre, gram, rest_points, pair_coupling })
-            }
+        let body = match shape {
+            Shape::Rod => Body::Rod(Rod::new(kappa, gamma)?),
+            Shape::Polygon(n) => Body::Polygon(Polygon::new(n, kappa, gamma)?),
+        };
+        Ok(System::from_body(&body))
+    }
+
+    /// The model of a kernel body; its [`Shape`] is the body's tag.
+    pub fn from_body(body: &Body<Q>) -> System {
+        match body {
+            Body::Rod(rod) => System::rod(rod),
+            Body::Polygon(polygon) => System::polygon(polygon),
         }
+    }
+
+    /// The rod (MODEL §7) in the first two coordinates.
+    fn rod(rod: &Rod<Q>) -> System {
+        let (kappa, gamma) = (rod.kappa().clone(), rod.gamma().clone());
+        let one = Q::int(1);
+        let g1 = &one + &gamma;
+        let cross = &g1 * &rod.coupling();
+        let contacts = vec![[one.clone(), z(), z()], [z(), one.clone(), z()]];
+        let kicks = vec![[g1.clone(), cross.clone(), z()], [cross, g1, z()]];
+        let half = Q::new(1, 2);
+        let centre = [half.clone(), half, z()];
+        let energy = |p: &Vec3<Q>| {
+            // T = (v^2 + kappa omega^2)/2, v = (u0 + u1)/2, omega = (u1 - u0)/2 (R = 1).
+            let v = (&p[0] + &p[1]) * Q::new(1, 2);
+            let w = (&p[1] - &p[0]) * Q::new(1, 2);
+            (&v * &v + &kappa * &(&w * &w)) * Q::new(1, 2)
+        };
+        let gram = gram_of(&energy);
+        let (rest_points, pair_coupling) = (vec![], z());
+        let shape = Shape::Rod;
+        System { shape, kappa, gamma, contacts, kicks, centre, gram, rest_points, pair_coupling }
+    }
+
+    /// A regular polygon (MODEL §2-4) from the kernel's covectors, impact directions and rest points.
+    fn polygon(body: &Polygon<Q>) -> System {
+        let n = body.n() as i64;
+        let beta = body.beta();
+        let contacts: Vec<Vec3<Q>> = (0..n).map(|k| body.contact(k).clone()).collect();
+        let kicks: Vec<Vec3<Q>> = (0..n).map(|k| body.impact_direction(k).map(|d| beta.times(&d))).collect();
+        let centre = [z(), z(), Q::int(1)];
+        let gram = gram_of(&|p: &Vec3<Q>| crate::model::kinetic_energy(body, p));
+        let rest_points = (0..n)
+            .map(|i| body.rest_point(i, i + 1).expect("adjacent contacts are never opposite"))
+            .collect();
+        let pair_coupling = dot(&contacts[1], &kicks[0]);
+        let (kappa, gamma) = (body.kappa().clone(), body.gamma().clone());
+        let shape = Shape::Polygon(n as u64);
+        System { shape, kappa, gamma, contacts, kicks, centre, gram, rest_points, pair_coupling }
     }
 
     /// Number of contacts.
@@ -150,7 +171,7 @@ impl System {
     /// the rod.
     pub fn pcc_possible(&self) -> bool {
         let e = &self.pair_coupling;
-        self.n() >= 3 && e.is_negative() && !(e * e - Q::int(4) * &self.gamma).is_negative()
+        self.is_polygon() && e.is_negative() && !(e * e - Q::int(4) * &self.gamma).is_negative()
     }
 
     /// The frame with the contacts `slots`: the matrix A = [f_s0; f_s1; f_s2] taking our
@@ -166,7 +187,12 @@ impl System {
     /// Whether contacts a and b are neighbours on the polygon (never for the rod).
     pub fn adjacent(&self, a: usize, b: usize) -> bool {
         let n = self.n();
-        n >= 3 && a != b && ((a + 1) % n == b || (b + 1) % n == a)
+        self.is_polygon() && a != b && ((a + 1) % n == b || (b + 1) % n == a)
+    }
+
+    /// Whether the body is a polygon (contacts have neighbours), not the rod.
+    pub fn is_polygon(&self) -> bool {
+        matches!(self.shape, Shape::Polygon(_))
     }
 }
 
@@ -301,7 +327,7 @@ pub fn frame_index(slots: [usize; 3]) -> usize {
 pub struct Frame {
     /// The contacts whose heights are the coordinates (slot 2 unused for the rod).
     pub slots: [usize; 3],
-    /// Contact covectors: u_k = f[k]·p, h_k = f[k]·q in this frame.
+    /// Contact covectors: u_k = `f[k]`·p, h_k = `f[k]`·q in this frame.
     pub f: [[f64; 3]; MAX_CONTACTS],
     /// Impact kicks in this frame.
     pub kick: [[f64; 3]; MAX_CONTACTS],

@@ -2,7 +2,7 @@
 
 use crate::common::q;
 use chatter::certify::{ClaimChoice, Failure, Request, certify};
-use chatter::finder::FinderOutcome;
+use chatter::finder::Search;
 use chatter_kernel::certificate::{Claim, write};
 
 fn run(n: u64, k: &str, g: &str, claim: ClaimChoice) -> chatter::certify::Report {
@@ -60,7 +60,7 @@ fn complete_chatter_is_refused_where_pcc_is_possible() {
 fn no_cone_above_the_threshold() {
     let r = run(4, "1/6", "1/10", ClaimChoice::Strongest);
     match r.result {
-        Err(Failure::Finder(FinderOutcome::NoCone { .. })) => {}
+        Err(Failure::Finder(Search::NoCone { .. })) => {}
         other => panic!("{other:?}"),
     }
     assert!(r.notes.iter().any(|n| n.starts_with("CompleteChatterFromAllDown not certified")));

@@ -6,9 +6,9 @@ use chatter::exactify::{ExactifyConfig, ExactifyError, exactify};
 use chatter::finder::geometry::P2;
 use chatter::finder::{FinderConfig, FinderOutcome, Seed, find_cone};
 use chatter::model::{FloatBody, translation_down};
-use chatter::verify::{BackendVerdict, verify_both};
 use chatter_kernel::certificate::{Body, Certificate, Claim, Coordinates, FORMAT, Generator, VERSION};
 use chatter_kernel::model::linalg::mat_vec;
+use chatter_kernel::verify::{Verdict, verify};
 
 fn cert(n: u64, k: &str, g: &str, gens: &[[Q; 3]]) -> Certificate {
     Certificate {
@@ -32,7 +32,7 @@ fn exactified_cones_pass_the_kernel_and_contain_the_seed() {
         (6, "1/40", "1/20"),
     ] {
         let b = body(n, k, g);
-        let FinderOutcome::Found { polygon, .. } =
+        let FinderOutcome::Found { cone: polygon, .. } =
             find_cone(&FloatBody::new(&b), Seed::Translation, &FinderConfig::default())
         else {
             panic!("n={n} kappa={k} gamma={g}: finder");
@@ -42,7 +42,7 @@ fn exactified_cones_pass_the_kernel_and_contain_the_seed() {
             .unwrap_or_else(|e| panic!("n={n} kappa={k} gamma={g}: {e}"));
         assert!(ex.generators.iter().all(|p| p[2] == Q::int(-1)), "generators are normalised to v = -1");
         let c = cert(n, k, g, &ex.generators);
-        let BackendVerdict::Accepted(a) = verify_both(&c, ParseLimits::default()) else {
+        let Verdict::Accepted(a) = verify(&c, ParseLimits::default()) else {
             panic!("n={n} kappa={k} gamma={g}: kernel rejects the exactified cone");
         };
         assert!(a.contains_translation);
@@ -56,7 +56,7 @@ fn exactified_cones_pass_the_kernel_and_contain_the_seed() {
 fn slowly_contracting_points_converge() {
     for (k, g) in [("1/20", "8/25"), ("3/40", "6/25")] {
         let b = body(3, k, g);
-        let FinderOutcome::Found { polygon, .. } =
+        let FinderOutcome::Found { cone: polygon, .. } =
             find_cone(&FloatBody::new(&b), Seed::Translation, &FinderConfig::default())
         else {
             panic!("finder");
@@ -81,7 +81,8 @@ fn failures_carry_reasons() {
     assert!(e.to_string().contains("v >= 0"));
     // A round budget of one cannot absorb the float polygon's rounding.
     let fb = FloatBody::new(&body(3, "3/20", "1/20"));
-    let FinderOutcome::Found { polygon, .. } = find_cone(&fb, Seed::Translation, &FinderConfig::default())
+    let FinderOutcome::Found { cone: polygon, .. } =
+        find_cone(&fb, Seed::Translation, &FinderConfig::default())
     else {
         panic!()
     };

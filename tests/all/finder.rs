@@ -80,7 +80,8 @@ proptest! {
 fn square_plate_cone_is_found_and_matches_the_papers_rectangle() {
     let b = body(4, "1/6", "1/100");
     let fb = FloatBody::new(&b);
-    let FinderOutcome::Found { polygon, .. } = find_cone(&fb, Seed::AllDown, &FinderConfig::default()) else {
+    let FinderOutcome::Found { cone: polygon, .. } = find_cone(&fb, Seed::AllDown, &FinderConfig::default())
+    else {
         panic!("the square plate at gamma = 1/100 has a cone");
     };
     // The paper's cone spanned by p1, p3, s1, s3 projects to 0 <= u0 <= e2 - 1, -e1-1 <= u1 <= e1-1

@@ -12,6 +12,7 @@ mod exactify;
 mod finder;
 mod kernel;
 mod readme;
+mod regression;
 mod simulate;
 mod spectral;
 mod symbolic;

@@ -2,7 +2,8 @@
 
 use crate::common::root;
 use chatter::exact::ParseLimits;
-use chatter::verify::{Backends, collect_files, verify_file};
+use chatter::verify::{Status, collect_files, verify_file};
+use chatter_kernel::verify::{MALACHITE, NUM};
 
 #[test]
 fn directories_are_searched_recursively_for_ron_files_in_order() {
@@ -22,21 +23,22 @@ fn verdict_lines() {
     let ok = verify_file(
         &root().join("certificates/valid/doc-example-square.ron"),
         ParseLimits::default(),
-        Backends::Both,
+        &[MALACHITE, NUM],
     );
-    assert_eq!(ok.status, "OK");
+    assert_eq!(ok.status, Status::Ok);
     assert!(ok.line().ends_with(
         "doc-example-square.ron: OK (CompleteChatterFromAllDown, n = 4, 4 generators, denominators <= 5 bits)"
     ));
     let bad = verify_file(
         &root().join("certificates/invalid/shrunk-rectangle.ron"),
         ParseLimits::default(),
-        Backends::Num,
+        &[NUM],
     );
-    assert_eq!(bad.status, "REJECTED");
+    assert_eq!(bad.status, Status::Rejected);
     assert!(bad.line().contains(": REJECTED: vertex 0 of K∩C_1"));
-    let missing = verify_file(&root().join("certificates/nope.ron"), ParseLimits::default(), Backends::Both);
-    assert_eq!(missing.status, "ERROR");
+    let missing =
+        verify_file(&root().join("certificates/nope.ron"), ParseLimits::default(), &[MALACHITE, NUM]);
+    assert_eq!(missing.status, Status::Error);
     assert!(missing.line().contains("cannot read"));
 }
 
@@ -44,9 +46,9 @@ fn verdict_lines() {
 fn the_digit_limit_is_configurable() {
     let p = root().join("certificates/valid/doc-example-square.ron");
     // Its longest number, gamma = "1/100", has four digits.
-    assert_eq!(verify_file(&p, ParseLimits { max_digits: 4 }, Backends::Both).status, "OK");
-    let v = verify_file(&p, ParseLimits { max_digits: 3 }, Backends::Both);
-    assert_eq!(v.status, "REJECTED");
+    assert_eq!(verify_file(&p, ParseLimits { max_digits: 4 }, &[MALACHITE, NUM]).status, Status::Ok);
+    let v = verify_file(&p, ParseLimits { max_digits: 3 }, &[MALACHITE, NUM]);
+    assert_eq!(v.status, Status::Rejected);
     assert!(
         v.reason
             .unwrap()

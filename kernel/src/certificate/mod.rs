@@ -3,9 +3,13 @@
 //! type shared with the kernel. The numbers stay text here; the kernel parses them with the
 //! canonical rules on each backend. See docs/certificate-format.md.
 
+mod read;
 mod rejection;
+mod write;
 
-pub use rejection::{Code, Rejection};
+pub use read::read;
+pub use rejection::{Boundary, Code, Locus, Rejection};
+pub use write::write;
 
 use serde::de::{SeqAccess, Visitor};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
@@ -118,73 +122,4 @@ impl<'de> Deserialize<'de> for Generator {
         }
         d.deserialize_tuple(3, V)
     }
-}
-
-#[derive(Deserialize)]
-#[serde(rename = "Certificate")]
-struct Header {
-    format: Option<String>,
-    version: Option<u64>,
-}
-
-fn syntax(e: ron::error::SpannedError) -> Rejection {
-    use ron::Error as E;
-    let code = match &e.code {
-        E::NoSuchStructField { .. } => Code::UnknownField,
-        E::MissingStructField { .. } => Code::MissingField,
-        E::NoSuchEnumVariant { .. } => Code::UnknownVariant,
-        E::DuplicateStructField { .. } => Code::DuplicateField,
-        _ => Code::Syntax,
-    };
-    Rejection::new(code, format!("line {}, column {}: {}", e.span.start.line, e.span.start.col, e.code))
-}
-
-/// Reads a certificate: first the header (`format`, `version`), then the full schema of that
-/// version. Every error names the field or the position.
-pub fn read(text: &str) -> Result<Certificate, Rejection> {
-    let lenient = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
-    let header: Header = lenient.from_str(text).map_err(syntax)?;
-    match header.format.as_deref() {
-        Some(FORMAT) => {}
-        Some(other) => {
-            return Err(Rejection::new(
-                Code::WrongFormat,
-                format!("field `format`: expected {FORMAT:?}, found {other:?}"),
-            ));
-        }
-        None => return Err(Rejection::new(Code::MissingField, "missing field `format`")),
-    }
-    match header.version {
-        Some(VERSION) => {}
-        Some(v) => {
-            return Err(Rejection::new(
-                Code::UnsupportedVersion,
-                format!("field `version`: version {v} is not supported (this build reads version {VERSION})"),
-            ));
-        }
-        None => return Err(Rejection::new(Code::MissingField, "missing field `version`")),
-    }
-    ron::Options::default().from_str(text).map_err(syntax)
-}
-
-/// Writes a certificate as RON, one generator per line (deterministic).
-pub fn write(c: &Certificate) -> String {
-    let q = |s: &str| ron::to_string(s).expect("strings always serialise");
-    let Body::RegularPolygon { n, kappa, gamma } = &c.body;
-    let mut out = String::new();
-    out.push_str("Certificate(\n");
-    out.push_str(&format!("    format: {},\n", q(&c.format)));
-    out.push_str(&format!("    version: {},\n", c.version));
-    out.push_str(&format!("    body: RegularPolygon(n: {n}, kappa: {}, gamma: {}),\n", q(kappa), q(gamma)));
-    out.push_str("    coordinates: ContactVelocities,\n");
-    out.push_str(&format!("    claim: {},\n", c.claim.name()));
-    out.push_str("    cone: [\n");
-    for g in &c.cone {
-        let coords: Vec<String> = g.0.iter().map(|s| q(s)).collect();
-        out.push_str(&format!("        ({}),\n", coords.join(", ")));
-    }
-    out.push_str("    ],\n");
-    out.push_str(&format!("    producer: {},\n", q(&c.producer)));
-    out.push_str(")\n");
-    out
 }

@@ -41,6 +41,8 @@ pub enum Code {
     InitialOutside,
     /// The PCC Lemma does not apply (the quadratic factor has real roots, or roots of modulus >= 1).
     PccNotExcluded,
+    /// A step of a proof does not check.
+    StepFailed,
     /// The model contradicts itself or the two backends disagree: a bug in chatter.
     Internal,
 }
@@ -66,9 +68,84 @@ impl Code {
             Code::ImageOutside => "image-outside",
             Code::InitialOutside => "initial-outside",
             Code::PccNotExcluded => "pcc-not-excluded",
+            Code::StepFailed => "step-failed",
             Code::Internal => "internal",
         }
     }
+}
+
+/// Where in a certificate (or proof) a check failed: structured, so that programs and tests
+/// can act on it without parsing the message.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case", tag = "kind")]
+pub enum Locus {
+    /// A position in the text (1-based line and column): syntax and schema errors.
+    Text {
+        /// Line, from 1.
+        line: usize,
+        /// Column, from 1.
+        column: usize,
+    },
+    /// A field, by its path, e.g. `body.kappa` or `cone[3].u1`.
+    Field {
+        /// The path.
+        path: String,
+    },
+    /// Generator `index` of the cone (an index into `cone`).
+    Generator {
+        /// The index.
+        index: usize,
+    },
+    /// The cone as a whole (e.g. it has no interior).
+    Cone,
+    /// The image under S_piece of vertex `vertex` of the piece K ∩ C_piece (rule R2).
+    Piece {
+        /// j of C_j and S_j.
+        piece: usize,
+        /// The vertex of K ∩ C_j, in the order the clipping produces them.
+        vertex: usize,
+        /// The part of K's boundary the image violates (`None` when its v is >= 0).
+        outside: Option<Boundary>,
+    },
+    /// The image under I_0 of generator `generator` of the all-down cone D (rule R3).
+    AllDown {
+        /// The index of the generator of D.
+        generator: usize,
+        /// The part of K's boundary the image violates (`None` when its v is >= 0).
+        outside: Option<Boundary>,
+    },
+    /// The PCC quadratic (rule R4).
+    Pcc,
+    /// Step `index` (from 0) of a proof, with its id.
+    Step {
+        /// Position in the list of steps.
+        index: usize,
+        /// The step's id.
+        id: String,
+    },
+    /// Nowhere in particular (internal errors).
+    Nowhere,
+}
+
+/// A part of the boundary of K.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case", tag = "kind")]
+pub enum Boundary {
+    /// Edge `index` of the polygon K (counter-clockwise from its first vertex), between the
+    /// extreme generators `from` and `to` (indices into `cone`).
+    Edge {
+        /// The edge's number.
+        index: usize,
+        /// The generator at its start.
+        from: usize,
+        /// The generator at its end.
+        to: usize,
+    },
+    /// The rod's interval K ends at generator `generator` (an index into `cone`).
+    End {
+        /// The generator.
+        generator: usize,
+    },
 }
 
 /// A rejected certificate: the first failing check, exactly.
@@ -76,14 +153,23 @@ impl Code {
 pub struct Rejection {
     /// The stable code.
     pub code: Code,
-    /// What failed, exactly.
+    /// Where the check failed.
+    pub locus: Locus,
+    /// What failed, in words and exact numbers (long numbers abbreviated).
     pub message: String,
 }
 
 impl Rejection {
-    /// A rejection with a code and a message.
-    pub fn new(code: Code, message: impl Into<String>) -> Self {
-        Rejection { code, message: message.into() }
+    /// A rejection with a code, a locus and a message.
+    pub fn new(code: Code, locus: Locus, message: impl Into<String>) -> Self {
+        Rejection { code, locus, message: message.into() }
+    }
+
+    /// A rejection at a field.
+    pub fn at_field(code: Code, path: impl Into<String>, message: impl std::fmt::Display) -> Self {
+        let path = path.into();
+        let message = format!("field `{path}`: {message}");
+        Rejection { code, locus: Locus::Field { path }, message }
     }
 }
 

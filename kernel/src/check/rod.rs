@@ -1,97 +1,168 @@
-//! The rod's acceptance rules (docs/certificate-format.md §8).
+//! The rod's acceptance rules (docs/certificate-format.md §8). A generator (u0, u1) with
+//! w = -(u0 + u1) = -2v > 0 projects to s = u0 / w on the line v = -1/2; K is the interval
+//! between the extreme generators. C_1 and D come from the rod's model; R4 holds trivially (with
+//! two contacts PCC is CC).
 
-use super::Accepted;
-use crate::certificate::{Claim, Code, Rejection};
-use crate::exact::{Field, Ring, scale_to_ints, to_canonical};
-use crate::model::{Mat2, Rod, mat2_vec};
+use super::show;
+use super::{Accepted, Generators};
+use crate::certificate::{Boundary, Claim, Code, Locus, Rejection};
+use crate::exact::{Field, Ring, scale_to_ints};
+use crate::model::{Mat2, Rod, Vec2, mat2_vec};
 use std::cmp::Ordering;
 
-/// The checks of docs/certificate-format.md for the rod (n = 2). A generator (u0, u1) with
-/// w = -(u0 + u1) = -2v > 0 projects to s = u0 / w; K is the interval [s_lo, s_hi] of the
-/// extreme generators, C_1 is s >= 0, and R4 holds trivially (with two contacts PCC is CC).
-pub(super) fn check_rod<F: Field>(
-    rod: &Rod<F>,
-    gens: &[[F::Int; 2]],
-    claim: Claim,
-    bits: u64,
-) -> Result<Accepted, Rejection> {
-    let w = |g: &[F::Int; 2]| g[0].plus(&g[1]).negated();
-    // s(a) < s(b) <=> a0 w(b) < b0 w(a) (both w > 0).
-    let cmp = |a: &[F::Int; 2], b: &[F::Int; 2]| a[0].times(&w(b)).cmp(&b[0].times(&w(a)));
-    let Some(lo) = (0..gens.len()).min_by(|&i, &j| cmp(&gens[i], &gens[j]).then(i.cmp(&j))) else {
-        return Err(Rejection::new(Code::DegenerateCone, "field `cone` is empty: K must be a 2-D cone"));
+/// w = -(u0 + u1) = -2v, positive below the floor's plane.
+fn w<Z: Ring>(g: &Vec2<Z>) -> Z {
+    g[0].plus(&g[1]).negated()
+}
+
+/// Compares s = u0 / w of two points with w > 0: a0 w(b) against b0 w(a).
+fn cmp<Z: Ring>(a: &Vec2<Z>, b: &Vec2<Z>) -> Ordering {
+    a[0].times(&w(b)).cmp(&b[0].times(&w(a)))
+}
+
+/// A positive integer multiple of a rational 2-vector or 2x2 matrix (flattened).
+fn ints<F: Field>(xs: &[F]) -> Vec<F::Int> {
+    scale_to_ints(xs)
+}
+
+fn int_vec<F: Field>(v: &Vec2<F>) -> Vec2<F::Int> {
+    let z = ints(v);
+    [z[0].clone(), z[1].clone()]
+}
+
+fn int_mat<F: Field>(m: &Mat2<F>) -> Mat2<F::Int> {
+    let z = ints(&[m[0][0].clone(), m[0][1].clone(), m[1][0].clone(), m[1][1].clone()]);
+    [[z[0].clone(), z[1].clone()], [z[2].clone(), z[3].clone()]]
+}
+
+/// The point (u0, u1)/(-v) of a generator, as text.
+fn shown<F: Field>(g: &Vec2<F::Int>) -> String {
+    let half_w = F::from_int(&w(g)).over(&F::from_i64(2)).expect("2 != 0");
+    let c: Vec<String> =
+        g.iter().map(|x| show::number(&F::from_int(x).over(&half_w).expect("w > 0"))).collect();
+    format!("({}, {})", c[0], c[1])
+}
+
+/// Clips the cone spanned by the points of `seg` (at most two, in order of s) by l . p >= 0:
+/// the kept ends and, where l changes sign, the crossing (l.a) b - (l.b) a (times the sign of
+/// l.a), a positive combination of a and b.
+fn clip<Z: Ring>(seg: &[Vec2<Z>], l: &Vec2<Z>) -> Vec<Vec2<Z>> {
+    let d: Vec<Z> = seg.iter().map(|p| l[0].times(&p[0]).plus(&l[1].times(&p[1]))).collect();
+    let mut out = Vec::new();
+    for (i, p) in seg.iter().enumerate() {
+        if !d[i].is_negative() {
+            out.push(p.clone());
+        }
+        if i + 1 < seg.len()
+            && d[i].sign() != Ordering::Equal
+            && d[i + 1].sign() != Ordering::Equal
+            && d[i].sign() != d[i + 1].sign()
+        {
+            let (a, b) = (p, &seg[i + 1]);
+            let x: Vec2<Z> = std::array::from_fn(|k| d[i].times(&b[k]).minus(&d[i + 1].times(&a[k])));
+            out.push(if d[i].is_negative() { x.map(|c| c.negated()) } else { x });
+        }
+    }
+    out
+}
+
+/// K = [a, b] in s, with the indices of its end generators.
+struct Interval<Z> {
+    ends: [Vec2<Z>; 2],
+    index: [usize; 2],
+}
+
+impl<Z: Ring> Interval<Z> {
+    fn contains(&self, q: &Vec2<Z>) -> bool {
+        cmp(&self.ends[0], q) != Ordering::Greater && cmp(q, &self.ends[1]) != Ordering::Greater
+    }
+}
+
+/// R1: generators below, and two distinct rays.
+fn interval<F: Field>(gens: &Generators<'_, F::Int>) -> Result<Interval<F::Int>, Rejection> {
+    let v: Vec<Vec2<F::Int>> = gens.vectors.iter().map(|g| [g[0].clone(), g[1].clone()]).collect();
+    if let Some(i) = v.iter().position(|g| !w(g).is_positive()) {
+        return Err(gens.not_below(i));
+    }
+    let Some(lo) = (0..v.len()).min_by(|&i, &j| cmp(&v[i], &v[j]).then(i.cmp(&j))) else {
+        let msg = "field `cone` is empty: K must be a 2-D cone";
+        return Err(Rejection::new(Code::DegenerateCone, Locus::Cone, msg));
     };
-    let hi = (0..gens.len()).max_by(|&i, &j| cmp(&gens[i], &gens[j]).then(j.cmp(&i))).expect("non-empty");
-    if cmp(&gens[lo], &gens[hi]) == Ordering::Equal {
+    let hi = (0..v.len()).max_by(|&i, &j| cmp(&v[i], &v[j]).then(j.cmp(&i))).expect("non-empty");
+    if cmp(&v[lo], &v[hi]) == Ordering::Equal {
         let msg = "the generators span a single ray: K must be a 2-D cone (two distinct rays)";
-        return Err(Rejection::new(Code::DegenerateCone, msg));
+        return Err(Rejection::new(Code::DegenerateCone, Locus::Cone, msg));
     }
-    let (a, b) = (&gens[lo], &gens[hi]);
-    let inside = |q: &[F::Int; 2]| cmp(a, q) != Ordering::Greater && cmp(q, b) != Ordering::Greater;
-    let point = |g: &[F::Int; 2]| {
-        let two_over_w = F::from_int(&F::Int::from_i64(2)).over(&F::from_int(&w(g))).expect("w > 0");
-        let c = |x: &F::Int| to_canonical(&F::from_int(x).times(&two_over_w));
-        format!("({}, {})", c(&g[0]), c(&g[1]))
-    };
-    let check =
-        |img: [F::Int; 2], what: &dyn Fn() -> String, outside: Code, above: Code| -> Result<(), Rejection> {
-            if img.iter().all(Ring::is_zero) {
-                return Ok(());
-            }
-            if !w(&img).is_positive() {
-                return Err(Rejection::new(above, format!("{} to a velocity with v >= 0", what())));
-            }
-            if inside(&img) {
-                return Ok(());
-            }
-            let (edge, end) = if cmp(&img, a) == Ordering::Less { (lo, a) } else { (hi, b) };
-            let s = |g: &[F::Int; 2]| F::from_int(&g[0]).over(&F::from_int(&w(g))).expect("w > 0");
-            let by = s(&img).minus(&s(end));
-            let msg = format!(
-                "{} to {} outside K, beyond generator {edge}, by {} in u0/(-2v)",
-                what(),
-                point(&img),
-                to_canonical(&by)
-            );
-            Err(Rejection::new(outside, msg))
-        };
-    // K ∩ C_1: the part with s >= 0; its lower end is the ray u0 = 0, i.e. (0, -1), if s_lo < 0.
-    let mut piece = Vec::new();
-    if !b[0].is_negative() {
-        piece.push(if a[0].is_negative() { [F::Int::zero(), F::Int::from_i64(-1)] } else { a.clone() });
-        piece.push(b.clone());
+    Ok(Interval { ends: [v[lo].clone(), v[hi].clone()], index: [lo, hi] })
+}
+
+/// Checks that `img` lies in K (or is 0); `locus` builds the locus from the violated end.
+fn check_image<F: Field>(
+    k: &Interval<F::Int>,
+    img: &Vec2<F::Int>,
+    what: &dyn Fn() -> String,
+    locus: &dyn Fn(Option<Boundary>) -> Locus,
+    codes: (Code, Code),
+) -> Result<(), Rejection> {
+    if img.iter().all(Ring::is_zero) || (w(img).is_positive() && k.contains(img)) {
+        return Ok(());
     }
-    let step = int_mat2(&rod.step());
+    if !w(img).is_positive() {
+        return Err(Rejection::new(codes.1, locus(None), format!("{} to a velocity with v >= 0", what())));
+    }
+    let end = if cmp(img, &k.ends[0]) == Ordering::Less { 0 } else { 1 };
+    let s = |g: &Vec2<F::Int>| F::from_int(&g[0]).over(&F::from_int(&w(g))).expect("w > 0");
+    let by = s(img).minus(&s(&k.ends[end]));
+    let generator = k.index[end];
+    let msg = format!(
+        "{} to {} outside K, beyond generator {generator}, by {} in u0/(-2v)",
+        what(),
+        shown::<F>(img),
+        show::number(&by)
+    );
+    Err(Rejection::new(codes.0, locus(Some(Boundary::End { generator })), msg))
+}
+
+/// Rules R1 to R3 for the rod (R4 holds trivially).
+pub(super) fn check<F: Field>(
+    rod: &Rod<F>,
+    gens: &Generators<'_, F::Int>,
+    claim: Claim,
+) -> Result<Accepted, Rejection> {
+    let k = interval::<F>(gens)?;
+    // R2: S_1(K ∩ C_1) ⊆ K on the ends of the piece K ∩ C_1.
+    let piece = rod.next_contact_cone().iter().fold(k.ends.to_vec(), |p, l| clip(&p, &int_vec(l)));
+    let step = int_mat(&rod.step());
     for (i, p) in piece.iter().enumerate() {
-        let what = || format!("vertex {i} of K∩C_1, at {}, maps under S_1", point(p));
-        check(mat2_vec(&step, p), &what, Code::ImageOutside, Code::ImageNotBelow)?;
+        let what = || format!("vertex {i} of K∩C_1, at {}, maps under S_1", shown::<F>(p));
+        let locus = |outside| Locus::Piece { piece: 1, vertex: i, outside };
+        check_image::<F>(&k, &mat2_vec(&step, p), &what, &locus, (Code::ImageOutside, Code::ImageNotBelow))?;
     }
-    let i0 = int_mat2(&rod.impact(0));
+    // R3: I_0(D) ⊆ K on the generators of D.
+    let i0 = int_mat(&rod.impact(0));
     if claim >= Claim::CcOrPccFromAllDown {
-        for (k, g) in [[0, -1], [-1, 0]].iter().enumerate() {
-            let g = g.map(F::Int::from_i64);
-            let what = || format!("I_0 maps the all-down generator {k} = {}", point(&g));
-            check(mat2_vec(&i0, &g), &what, Code::InitialOutside, Code::InitialOutside)?;
+        for (m, g) in rod.all_down_generators().iter().enumerate() {
+            let g = int_vec(g);
+            let what = || format!("I_0 maps the all-down generator {m} = {}", shown::<F>(&g));
+            let locus = |outside| Locus::AllDown { generator: m, outside };
+            check_image::<F>(
+                &k,
+                &mat2_vec(&i0, &g),
+                &what,
+                &locus,
+                (Code::InitialOutside, Code::InitialOutside),
+            )?;
         }
     }
     let t = mat2_vec(&i0, &[F::Int::from_i64(-1), F::Int::from_i64(-1)]);
-    let contains_translation = w(&t).is_positive() && inside(&t);
-    let redundant = (0..gens.len()).filter(|i| *i != lo && *i != hi).collect();
-    let pieces = vec![piece.len()];
     Ok(Accepted {
         claim,
         n: 2,
-        generators: gens.len(),
-        redundant,
-        pieces,
-        max_denominator_bits: bits,
+        generators: gens.vectors.len(),
+        redundant: (0..gens.vectors.len()).filter(|i| !k.index.contains(i)).collect(),
+        pieces: vec![piece.len()],
+        max_denominator_bits: gens.max_denominator_bits,
         pcc: None,
-        contains_translation,
+        contains_translation: w(&t).is_positive() && k.contains(&t),
     })
-}
-
-/// A positive integer multiple of a rational 2x2 matrix.
-fn int_mat2<F: Field>(m: &Mat2<F>) -> [[F::Int; 2]; 2] {
-    let z = scale_to_ints(&[m[0][0].clone(), m[0][1].clone(), m[1][0].clone(), m[1][1].clone()]);
-    [[z[0].clone(), z[1].clone()], [z[2].clone(), z[3].clone()]]
 }

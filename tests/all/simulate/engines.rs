@@ -3,9 +3,10 @@
 use super::{model, random_rational_start};
 use chatter::exact::{Q, QExt};
 use chatter::simulate::{
-    Arithmetic, Engine, ExactEngine, FloatEngine, Model, Options, Outcome, Scaled, SplitMix64, Start, Step,
-    drive, exact_drop, random_drop, simulate_float, simulate_many,
+    Arithmetic, Engine, ExactEngine, FloatEngine, Model, Options, Outcome, Scaled, Shape, SplitMix64, Start,
+    Step, System, drive, exact_drop, random_drop, simulate_float, simulate_many,
 };
+use chatter_kernel::model::{BodyError, Shape as Body};
 
 /// Bodies and parameters spanning CC, PCC and ICC regimes.
 const CASES: [(u64, &str, &str); 8] = [
@@ -245,4 +246,23 @@ fn drive_reports_the_same_outcome_as_the_exact_engine_step_by_step() {
         run.sequence.iter().map(|&c| c as usize).collect::<Vec<_>>(),
         float_sequence(&m, &start.to_f64(), 40)
     );
+}
+
+#[test]
+fn shapes_are_the_tags_of_the_kernel_bodies() {
+    let (kappa, gamma) = (Q::new(1, 6), Q::new(1, 100));
+    for (n, tag) in [(2, Shape::Rod), (3, Shape::Polygon(3)), (4, Shape::Polygon(4)), (6, Shape::Polygon(6))]
+    {
+        let body = Body::new(n, kappa.clone(), gamma.clone()).expect("supported body");
+        assert_eq!(Shape::from(&body), tag);
+        assert_eq!(System::from_body(&body).shape, tag);
+        let m = Model::new(tag, kappa.clone(), gamma.clone()).expect("supported body");
+        assert_eq!((m.system.shape, m.float.shape, m.system.n()), (tag, tag, n as usize));
+        assert_eq!(m.system.contacts, Model::from_body(&body).system.contacts);
+    }
+    // No exact model: building a polygon tag without one fails.
+    for tag in [Shape::Polygon(5), Shape::Polygon(2)] {
+        let n = tag.n() as u64;
+        assert_eq!(System::new(tag, kappa.clone(), gamma.clone()).err(), Some(BodyError::UnsupportedN(n)));
+    }
 }

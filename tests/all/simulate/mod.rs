@@ -9,11 +9,12 @@ mod pcc;
 
 use crate::common::q;
 use chatter::exact::{Q, Ring};
-use chatter::simulate::{Model, Shape, SplitMix64, Start, drop::check_start};
+use chatter::simulate::{Model, SplitMix64, Start, drop::check_start};
+use chatter_kernel::model::Shape as Body;
 
-/// The model of the body with n contacts (2 is the rod).
+/// The model of the body with n contacts (2 is the rod, as the kernel decides).
 pub fn model(n: u64, kappa: &str, gamma: &str) -> Model {
-    Model::new(Shape::from_n(n), q(kappa), q(gamma)).expect("valid test body")
+    Model::from_body(&Body::new(n, q(kappa), q(gamma)).expect("valid test body"))
 }
 
 /// A random rational in [lo, hi] with denominator `den`.

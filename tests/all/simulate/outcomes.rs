@@ -147,7 +147,7 @@ fn exact_arithmetic_keeps_the_square_bouncing_on_a_diagonal_and_f64_does_not() {
     let [f, e] = both(&m, &s, 120);
     assert_eq!(e.outcome, Outcome::Cc, "{}", e.decision.describe());
     assert!(e.sequence.iter().enumerate().all(|(i, &c)| c as usize == 2 * (i % 2)), "{:?}", e.sequence);
-    let summary = chatter::simulate::pattern::summary(&e.sequence, 4);
+    let summary = chatter::simulate::pattern::summary_for(&e.sequence, chatter::simulate::Shape::Polygon(4));
     assert!(summary.contains("non-adjacent pair: rod-like"), "{summary}");
     let first_odd = f.sequence.iter().position(|&c| c % 2 == 1).expect("f64 leaves the diagonal mode");
     assert!(first_odd > 2, "the sub-mode holds for a few impacts in f64 too");
@@ -162,7 +162,8 @@ fn the_flat_square_plate_chatters_in_the_paper_regime() {
     for seed in 0..10 {
         let r = simulate_float(&m.float, &random_drop(&m.float, seed), &Options::new(200));
         assert_eq!(r.outcome, Outcome::Cc, "seed {seed}: {}", r.decision.describe());
-        let summary = chatter::simulate::pattern::summary(&r.sequence, 4);
+        let summary =
+            chatter::simulate::pattern::summary_for(&r.sequence, chatter::simulate::Shape::Polygon(4));
         assert!(summary.contains("cycles") && summary.contains("repeated"), "{summary}");
         let acc = r.accumulation.unwrap();
         assert!(acc >= r.time && acc - r.time < 1e-9);

@@ -21,7 +21,8 @@ fn the_flat_triangle_plate_shows_pcc_at_small_gamma() {
         let Decision::PaperPcc { test, epsilon, .. } = r.decision else { panic!("{:?}", r.decision) };
         assert!(test.holds(epsilon));
         assert!(r.impacts < 30, "PCC is recognised early, before rounding: {}", r.impacts);
-        let summary = chatter::simulate::pattern::summary(&r.sequence, 3);
+        let summary =
+            chatter::simulate::pattern::summary_for(&r.sequence, chatter::simulate::Shape::Polygon(3));
         assert!(summary.contains("adjacent pair: PCC-like"), "{summary}");
     }
     for seed in 0..3 {

@@ -1,0 +1,25 @@
+//! The deterministic writer: one generator per line.
+
+use super::{Body, Certificate};
+
+/// Writes a certificate as RON, one generator per line (deterministic).
+pub fn write(c: &Certificate) -> String {
+    let q = |s: &str| ron::to_string(s).expect("strings always serialise");
+    let Body::RegularPolygon { n, kappa, gamma } = &c.body;
+    let mut out = String::new();
+    out.push_str("Certificate(\n");
+    out.push_str(&format!("    format: {},\n", q(&c.format)));
+    out.push_str(&format!("    version: {},\n", c.version));
+    out.push_str(&format!("    body: RegularPolygon(n: {n}, kappa: {}, gamma: {}),\n", q(kappa), q(gamma)));
+    out.push_str("    coordinates: ContactVelocities,\n");
+    out.push_str(&format!("    claim: {},\n", c.claim.name()));
+    out.push_str("    cone: [\n");
+    for g in &c.cone {
+        let coords: Vec<String> = g.0.iter().map(|s| q(s)).collect();
+        out.push_str(&format!("        ({}),\n", coords.join(", ")));
+    }
+    out.push_str("    ],\n");
+    out.push_str(&format!("    producer: {},\n", q(&c.producer)));
+    out.push_str(")\n");
+    out
+}

@@ -1,0 +1,177 @@
+//! One regression test per reported bug (ripgrep style), named after the issue.
+
+use crate::common::{bin, q};
+use chatter::certify::{ClaimChoice, Failure, Request, certify};
+use chatter::cli::{Cli, Env, Outcome, run};
+use chatter_kernel::certificate::{Claim, Code, Locus};
+use chatter_kernel::check::check;
+use chatter_kernel::exact::{Field, OrderedField, Q, Ring};
+use chatter_kernel::model::{Rod, Shape};
+use chatter_kernel::verify::{Backend, MALACHITE, Verdict, verify};
+use clap::Parser;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use std::cmp::Ordering;
+use std::fmt;
+use std::process::Command;
+
+/// A deliberately wrong backend: num-rational with every sign reversed.
+#[derive(Clone, PartialEq, Eq, PartialOrd, Ord, Debug)]
+struct Liar(BigRational);
+
+impl fmt::Display for Liar {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        self.0.fmt(f)
+    }
+}
+
+impl Ring for Liar {
+    fn zero() -> Self {
+        Liar(BigRational::zero())
+    }
+    fn from_i64(v: i64) -> Self {
+        Liar(BigRational::from_i64(v))
+    }
+    fn plus(&self, o: &Self) -> Self {
+        Liar(self.0.plus(&o.0))
+    }
+    fn minus(&self, o: &Self) -> Self {
+        Liar(self.0.minus(&o.0))
+    }
+    fn times(&self, o: &Self) -> Self {
+        Liar(self.0.times(&o.0))
+    }
+    fn negated(&self) -> Self {
+        Liar(self.0.negated())
+    }
+    fn sign(&self) -> Ordering {
+        self.0.sign().reverse()
+    }
+}
+
+impl OrderedField for Liar {
+    fn over(&self, o: &Self) -> Option<Self> {
+        self.0.over(&o.0).map(Liar)
+    }
+    fn from_ratio(n: i64, d: i64) -> Self {
+        Liar(BigRational::from_ratio(n, d))
+    }
+    fn from_q(x: &Q) -> Self {
+        Liar(BigRational::from_q(x))
+    }
+    fn enclose(&self, width: &Q) -> (Q, Q) {
+        self.0.enclose(width)
+    }
+}
+
+impl Field for Liar {
+    type Int = BigInt;
+    const BACKEND: &'static str = "liar";
+    fn from_fraction(n: &BigInt, d: &BigInt) -> Self {
+        Liar(BigRational::from_fraction(n, d))
+    }
+    fn numer(&self) -> BigInt {
+        Field::numer(&self.0)
+    }
+    fn denom(&self) -> BigInt {
+        Field::denom(&self.0)
+    }
+}
+
+const LIAR: Backend = Backend { name: "liar", check: check::<Liar> };
+
+fn outcome(args: &[&str], env: &Env) -> Outcome {
+    let mut argv = vec!["chatter"];
+    argv.extend_from_slice(args);
+    run(Cli::try_parse_from(argv).expect("valid arguments"), env)
+}
+
+#[test]
+fn issue8_a_wrong_backend_is_an_internal_error_in_verify_and_certify() {
+    let liar = Env { backends: [MALACHITE, LIAR] };
+    let d = tempfile::tempdir().unwrap();
+    let path = d.path().join("sq.ron");
+    let path = path.to_str().unwrap();
+    assert_eq!(outcome(&["certify", "-o", path], &Env::default()), Outcome::Success);
+    let o = outcome(&["verify", path], &liar);
+    assert!(matches!(o, Outcome::Internal(_)), "{o:?}");
+    assert_eq!(o.exit_code(), 3);
+    let o = outcome(&["certify", "-o", &format!("{path}.2")], &liar);
+    assert!(matches!(o, Outcome::Internal(_)), "{o:?}");
+    assert_eq!(o.exit_code(), 3);
+    // Each backend alone gives a verdict; only their disagreement is an internal error.
+    assert_eq!(outcome(&["verify", "--backend", "malachite", path], &liar), Outcome::Success);
+}
+
+/// `chatter certify ARGS` as a process: (exit status, stdout).
+fn certify_cli(args: &[&str]) -> (Option<i32>, String) {
+    let o = Command::new(bin()).arg("certify").args(args).output().expect("run chatter");
+    (o.status.code(), String::from_utf8_lossy(&o.stdout).into_owned())
+}
+
+#[test]
+fn issue8_rod_above_the_all_down_limit_is_not_certified_without_a_panic() {
+    // kappa (1 + 2 gamma) >= 1: the all-down drop (-1, 0) leaves with v >= 0.
+    for (k, g) in [("1", "1/10"), ("1/2", "1/2"), ("3", "0"), ("1", "1")] {
+        let (code, out) = certify_cli(&["--n", "2", "--kappa", k, "--gamma", g]);
+        assert_eq!(code, Some(1), "kappa={k} gamma={g}: {out}");
+        assert!(out.starts_with("NOT CERTIFIED"), "{out}");
+        let r = certify(&Request { claim: ClaimChoice::Exactly(Claim::CcOrPccFromAllDown), ..req(2, k, g) });
+        assert!(matches!(r.result, Err(Failure::SeedNotBelow { .. })), "kappa={k} gamma={g}: {:?}", r.result);
+    }
+    let o = Command::new(bin())
+        .args(["classify", "--n", "2", "--kappa", "1", "--gamma", "1/10"])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+fn req(n: u64, kappa: &str, gamma: &str) -> Request {
+    Request::new(n, q(kappa), q(gamma))
+}
+
+#[test]
+fn issue8_rod_on_goyals_boundary_is_certified_with_the_papers_cone() {
+    // sqrt(kappa) = 2/(sqrt(gamma) + 1) - 1 exactly: kappa = 1/4, gamma = 1/9 and
+    // kappa = 1/9, gamma = 1/4 (sqrt: 1/3 = 2/(3/2) - 1).
+    for (k, g) in [("1/4", "1/9"), ("1/9", "1/4")] {
+        let Shape::Rod(rod) = Shape::new(2, q(k), q(g)).unwrap() else { unreachable!() };
+        let s = rod.step();
+        let (tr, det) = (&s[0][0] + &s[1][1], &(&s[0][0] * &s[1][1]) - &(&s[0][1] * &s[1][0]));
+        assert_eq!(&tr * &tr, &Q::int(4) * &det, "a double eigenvalue: Goyal's boundary");
+        let r = certify(&req(2, k, g));
+        let cert = r.result.unwrap_or_else(|e| panic!("kappa={k} gamma={g}: {e}"));
+        assert_eq!(cert.claim, Claim::CompleteChatterFromAllDown);
+        assert_eq!(r.method, Some("the paper's cone {p_min, R p_min}"));
+        assert!(matches!(verify(&cert, Default::default()), Verdict::Accepted(_)));
+    }
+    // Just beyond the boundary there is no cone.
+    let r = certify(&req(2, "1/4", "1001/9000"));
+    assert!(matches!(r.result, Err(Failure::Finder(_))), "{:?}", r.result);
+    let _ = Rod::new(q("1/4"), q("1/9")).unwrap();
+}
+
+#[test]
+fn issue8_gamma_one_does_not_claim_all_eigenvalues_real() {
+    let (code, out) = certify_cli(&["--gamma", "1"]);
+    assert_eq!(code, Some(1), "{out}");
+    assert!(out.contains("modulus"), "the Lemma fails by the modulus: {out}");
+    assert!(!out.contains("contradicts the paper"), "{out}");
+    assert!(!out.contains("real roots"), "{out}");
+    // Where the roots are real for n >= 4, the contradiction with the paper is reported.
+    let (_, out) = certify_cli(&["--gamma", "1/1000"]);
+    assert!(out.contains("real roots") && out.contains("contradicts the paper"), "{out}");
+}
+
+#[test]
+fn issue8_rejections_carry_a_structured_locus() {
+    let text =
+        std::fs::read_to_string(crate::common::root().join("certificates/invalid/shrunk-rectangle.ron"))
+            .unwrap();
+    let Verdict::Rejected(r) = chatter_kernel::verify::verify_text(&text, Default::default(), &[MALACHITE])
+    else {
+        panic!("rejected")
+    };
+    assert_eq!(r.code, Code::ImageOutside);
+    assert!(matches!(r.locus, Locus::Piece { piece: 1, vertex: 0, outside: Some(_) }), "{:?}", r.locus);
+}
