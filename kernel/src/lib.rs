@@ -24,4 +24,5 @@ pub mod check;
 pub mod exact;
 pub mod geometry;
 pub mod model;
+pub mod proof;
 pub mod verify;

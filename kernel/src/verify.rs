@@ -24,26 +24,29 @@ pub const MALACHITE: Backend = Backend { name: "malachite", check: check::<Q> };
 /// num-bigint/num-rational, the independent second backend.
 pub const NUM: Backend = Backend { name: "num-rational", check: check::<BigRational> };
 
-/// The kernel's verdict, possibly over two backends.
+/// The kernel's verdict, possibly over two backends (on a certificate, `T` = [`Accepted`]; on a
+/// proof, `T` = [`crate::proof::Checked`]).
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Verdict {
+pub enum Verdict<T = Accepted> {
     /// Every backend accepts, with identical reports.
-    Accepted(Accepted),
+    Accepted(T),
     /// Every backend rejects, with identical reasons.
     Rejected(crate::certificate::Rejection),
     /// The backends disagree: a bug in chatter or in a bignum library.
     Disagree(String),
 }
 
-/// Runs the kernel on each backend and compares the verdicts.
-pub fn verify_on(cert: &Certificate, limits: ParseLimits, backends: &[Backend]) -> Verdict {
-    let mut first: Option<(&str, Result<Accepted, crate::certificate::Rejection>)> = None;
-    for b in backends {
-        let r = (b.check)(cert, limits);
+/// Compares the verdicts of several runs: identical verdicts (messages included), or a
+/// disagreement naming the first two that differ.
+pub fn agree<T: PartialEq + std::fmt::Debug>(
+    runs: impl IntoIterator<Item = (&'static str, Result<T, crate::certificate::Rejection>)>,
+) -> Verdict<T> {
+    let mut first: Option<(&str, Result<T, crate::certificate::Rejection>)> = None;
+    for (name, r) in runs {
         match &first {
-            None => first = Some((b.name, r)),
-            Some((name, f)) if *f != r => {
-                return Verdict::Disagree(format!("{name} says {f:?}, {} says {r:?}", b.name));
+            None => first = Some((name, r)),
+            Some((n0, f)) if *f != r => {
+                return Verdict::Disagree(format!("{n0} says {f:?}, {name} says {r:?}"));
             }
             Some(_) => {}
         }
@@ -55,6 +58,11 @@ pub fn verify_on(cert: &Certificate, limits: ParseLimits, backends: &[Backend]) 
     }
 }
 
+/// Runs the kernel on each backend and compares the verdicts.
+pub fn verify_on(cert: &Certificate, limits: ParseLimits, backends: &[Backend]) -> Verdict {
+    agree(backends.iter().map(|b| (b.name, (b.check)(cert, limits))))
+}
+
 /// Runs the kernel on both backends (malachite and num-rational).
 pub fn verify(cert: &Certificate, limits: ParseLimits) -> Verdict {
     verify_on(cert, limits, &[MALACHITE, NUM])
@@ -64,6 +72,22 @@ pub fn verify(cert: &Certificate, limits: ParseLimits) -> Verdict {
 pub fn verify_text(text: &str, limits: ParseLimits, backends: &[Backend]) -> Verdict {
     match read(text) {
         Ok(cert) => verify_on(&cert, limits, backends),
+        Err(r) => Verdict::Rejected(r),
+    }
+}
+
+/// Checks a proof on both backends (malachite and num-rational).
+pub fn verify_proof(file: &crate::proof::ProofFile, limits: ParseLimits) -> Verdict<crate::proof::Checked> {
+    agree([
+        ("malachite", crate::proof::check::<Q>(file, limits)),
+        ("num-rational", crate::proof::check::<BigRational>(file, limits)),
+    ])
+}
+
+/// Reads proof text and checks it on both backends.
+pub fn verify_proof_text(text: &str, limits: ParseLimits) -> Verdict<crate::proof::Checked> {
+    match crate::proof::read(text) {
+        Ok(file) => verify_proof(&file, limits),
         Err(r) => Verdict::Rejected(r),
     }
 }

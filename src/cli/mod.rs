@@ -6,6 +6,7 @@
 
 mod bodies_cmd;
 mod certify_cmd;
+mod check_proof_cmd;
 mod classify_cmd;
 mod prove_cmd;
 mod simulate_cmd;
@@ -88,8 +89,10 @@ pub enum Command {
     Classify(classify_cmd::ClassifyArgs),
     /// The catalogue of bodies: kappa from geometry, exact CC and PCC thresholds in gamma.
     Bodies(bodies_cmd::BodiesArgs),
-    /// Prove the paper's square-case lemmas symbolically; write proofs/square.md and .ron.
+    /// Prove the paper's square-case lemmas; write proofs/square.ron (re-checked) and .md.
     Prove(prove_cmd::ProveArgs),
+    /// Re-check proof files (e.g. proofs/square.ron) with the trusted kernel.
+    CheckProof(check_proof_cmd::CheckProofArgs),
     /// Simulate drops event by event (f64 or exact) and classify them as CC, PCC or ICC.
     Simulate(simulate_cmd::SimulateArgs),
 }
@@ -129,6 +132,7 @@ pub fn run(cli: Cli, env: &Env) -> Outcome {
         Command::Classify(a) => classify_cmd::run(a),
         Command::Bodies(a) => bodies_cmd::run(a),
         Command::Prove(a) => prove_cmd::run(a),
+        Command::CheckProof(a) => check_proof_cmd::run(a),
     }
 }
 

@@ -1,9 +1,12 @@
-//! `chatter prove square`: the square-case lemmas, proved symbolically and written to proofs/.
+//! `chatter prove square`: the square-case lemmas written as a proof object, re-checked by the
+//! kernel before the files are written to proofs/.
 
 use super::{Outcome, emit};
 use crate::symbolic::crosscheck::cross_check;
-use crate::symbolic::report::{markdown, ron, summary};
+use crate::symbolic::report::{markdown, ron};
 use crate::symbolic::square::prove;
+use chatter_kernel::exact::ParseLimits;
+use chatter_kernel::verify::{Verdict, verify_proof};
 use clap::{Args, ValueEnum};
 use serde_json::json;
 use std::path::PathBuf;
@@ -17,9 +20,9 @@ pub enum Theorem {
 /// Raw arguments of `chatter prove`.
 #[derive(Args, Debug)]
 #[command(
-    after_help = "Writes OUT/square.md (readable) and OUT/square.ron (every step, machine-readable); exits\n\
-non-zero if a step fails or the cross-check disagrees. With --check nothing is written: the files\n\
-are compared with the ones on disk."
+    after_help = "Writes OUT/square.ron (the proof object; `chatter check-proof` re-checks it) and OUT/square.md\n\
+(a readable account). The kernel checks the proof on both backends before anything is written; exit 1\n\
+if a step fails. With --check nothing is written: the files are compared with the ones on disk."
 )]
 pub struct ProveArgs {
     /// What to prove.
@@ -31,7 +34,7 @@ pub struct ProveArgs {
     /// Compare with the existing files instead of writing them.
     #[arg(long)]
     pub check: bool,
-    /// Random parameter points of the cross-check.
+    /// Random parameter points of the numerical cross-check (evidence, not proof).
     #[arg(long, default_value_t = 100)]
     pub points: usize,
     /// Seed of the cross-check's points.
@@ -42,56 +45,73 @@ pub struct ProveArgs {
     pub json: bool,
 }
 
-pub fn run(a: ProveArgs) -> Outcome {
-    if a.points == 0 || a.points > 10_000 {
-        return Outcome::Usage("--points must be in 1..=10000".to_string());
-    }
-    let Theorem::Square = a.theorem;
-    let proof = prove();
-    let cross = cross_check(a.points, a.seed);
-    let (md, rn) = (markdown(&proof, &cross), ron(&proof, &cross));
-    let (md_path, ron_path) = (a.out.join("square.md"), a.out.join("square.ron"));
+/// Writes the files, or lists those that differ from the regenerated ones (`check`).
+fn write_or_compare(a: &ProveArgs, files: [(PathBuf, &str); 2]) -> Result<Vec<String>, String> {
     let mut stale = Vec::new();
-    if a.check {
-        for (path, text) in [(&md_path, &md), (&ron_path, &rn)] {
-            if std::fs::read_to_string(path).ok().as_ref() != Some(text) {
+    if !a.check {
+        std::fs::create_dir_all(&a.out).map_err(|e| format!("cannot create {}: {e}", a.out.display()))?;
+    }
+    for (path, text) in files {
+        if a.check {
+            if std::fs::read_to_string(&path).ok().as_deref() != Some(text) {
                 stale.push(path.display().to_string());
             }
-        }
-    } else {
-        if let Err(e) = std::fs::create_dir_all(&a.out) {
-            return Outcome::Usage(format!("cannot create {}: {e}", a.out.display()));
-        }
-        for (path, text) in [(&md_path, &md), (&ron_path, &rn)] {
-            if let Err(e) = std::fs::write(path, text) {
-                return Outcome::Usage(format!("cannot write {}: {e}", path.display()));
-            }
+        } else {
+            std::fs::write(&path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
         }
     }
-    let s = summary(&proof);
-    let cross_ok = cross.disagreements.is_empty();
+    Ok(stale)
+}
+
+pub fn run(a: ProveArgs) -> Outcome {
+    if a.points == 0 || a.points > 10_000 {
+        return Outcome::Usage("--points must be in 1..=10000".into());
+    }
+    let Theorem::Square = a.theorem;
+    let builder = prove();
+    let file = builder.finish();
+    let verdict = verify_proof(&file, ParseLimits::default());
+    let checked = match &verdict {
+        Verdict::Accepted(c) => Ok(c.clone()),
+        Verdict::Rejected(r) => Err(r.message.clone()),
+        Verdict::Disagree(s) => return Outcome::Internal(format!("the backends disagree on the proof: {s}")),
+    };
+    let cross = cross_check(a.points, a.seed);
+    let (md, rn) = (markdown(&builder, &checked, &cross), ron(&file));
+    let (md_path, ron_path) = (a.out.join("square.md"), a.out.join("square.ron"));
+    let stale = match write_or_compare(&a, [(ron_path.clone(), &rn), (md_path.clone(), &md)]) {
+        Ok(s) => s,
+        Err(e) => return Outcome::Usage(e),
+    };
+    let conclusions = checked.as_ref().map(|c| c.conclusions.len()).unwrap_or(0);
     if a.json {
-        emit(&json!({"steps": s.steps, "checked": s.checked, "failed": s.failed, "cross_check": cross, "stale": stale}).to_string());
+        let obj = json!({"steps": file.steps.len(), "checked": checked.is_ok(), "failure": checked.as_ref().err(),
+            "producer_problems": builder.problems, "conclusions": conclusions, "cross_check": cross, "stale": stale});
+        emit(&obj.to_string());
     } else {
-        for st in proof.steps.iter().filter(|st| !st.ok) {
-            emit(&format!("FAILED {} ({}): {} [{}]", st.id, st.lemma, st.statement, st.detail));
+        for (id, why) in &builder.problems {
+            emit(&format!("producer problem at `{id}`: {why}"));
         }
-        let written = if a.check { "checked against" } else { "written to" };
+        if let Err(e) = &checked {
+            emit(&format!("FAILED: {e}"));
+        }
+        let verb = if a.check { "checked against" } else { "written to" };
         emit(&format!(
-            "square: {} steps, {} checked, {} failed; cross-check at {} points: inequalities {}, invariance {}, pipeline {}; {written} {} and {}",
-            s.steps,
-            s.checked,
-            s.failed,
+            "square: {} steps, kernel check {} (malachite + num-rational), {conclusions} conclusions; cross-check at {} points: inequalities {}, invariance {}, pipeline {}; {verb} {} and {}",
+            file.steps.len(),
+            if checked.is_ok() { "OK" } else { "FAILED" },
             cross.points,
             cross.inequalities,
             cross.invariance,
             cross.pipeline,
-            md_path.display(),
-            ron_path.display()
+            ron_path.display(),
+            md_path.display()
         ));
         for f in &stale {
             emit(&format!("stale: {f} differs from the regenerated proof"));
         }
     }
-    Outcome::from_answer(s.failed == 0 && cross_ok && stale.is_empty())
+    Outcome::from_answer(
+        checked.is_ok() && builder.problems.is_empty() && cross.disagreements.is_empty() && stale.is_empty(),
+    )
 }

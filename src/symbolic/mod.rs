@@ -1,11 +1,10 @@
-//! Symbolic proofs of the square-case lemmas (the paper's section "A semi-analytic construction
-//! for squares"): a small engine for polynomials and rational functions over Q with normal forms
-//! modulo the characteristic polynomial chi(lambda), a step checker with positivity
-//! certificates, and the lemmas themselves.
+//! The producer of the square-case proof (the paper's section "A semi-analytic construction for
+//! squares"): a builder that writes steps for the kernel's proof checker, positivity
+//! certificates, the lemmas themselves, the proof files, and an untrusted numerical cross-check.
 
+pub mod builder;
+pub mod cert;
 pub mod crosscheck;
-pub mod mpoly;
-pub mod proof;
-pub mod ratfn;
 pub mod report;
 pub mod square;
+pub mod terms;

@@ -1,837 +1,612 @@
 //! The square-case lemmas of the paper (section "A semi-analytic construction for squares"),
-//! proved symbolically for all parameters at once. Coordinates are the paper's (omega_x,
-//! omega_y, v); points of the projection plane S (v = -1) are written (x, y).
+//! written as a proof that the kernel's proof checker re-checks from the file alone
+//! (`chatter_kernel::proof`). Coordinates are the paper's (omega_x, omega_y, v), related to the
+//! model's by p_model = M p_paper with M's rows f_0 = (0, -1, 1), f_1 = (1, 0, 1), (0, 0, 1);
+//! points of the plane v = -1 are written (x, y). The paper's U_0 P_{pi/2} is the model's S_3.
 //!
-//! Hypotheses: 0 < gamma < 1, kappa > 0, and lambda a positive real root of the characteristic
-//! polynomial chi of U_0 P_{pi/2} (for instance its dominant eigenvalue when that is real and
-//! positive, as the paper assumes). Dominance is never used, so the results hold for every
-//! positive eigenvalue.
+//! Hypotheses: 0 < gamma < 1, kappa > 0, lambda > 0 a root of chi (an eigenvalue of S_3, e.g. its
+//! dominant one when that is real and positive, as the paper assumes). Dominance is never used.
 
-use super::mpoly::{E1, E2, G, K, L, MPoly, S};
-use super::proof::{Proof, Term};
-use super::ratfn::RatFn;
+use super::builder::{Builder, Header};
+use super::cert::Cert;
+use super::terms::lenient;
 use crate::exact::{Q, Ring};
-use crate::model::square_paper_to_contact;
-use chatter_kernel::model::Polygon as Body;
-use chatter_kernel::model::linalg::mat_vec;
-use std::cmp::Ordering;
+use chatter_kernel::proof::{Coeffs, Frac, PMat, Poly, Step, derivative, det, mat_mul, rem};
 
-type V3 = [RatFn; 3];
-type M3 = [[RatFn; 3]; 3];
+const VARS: [&str; 6] = ["g", "k", "l", "s", "e1", "e2"];
 
-fn c(i: i64) -> RatFn {
-    RatFn::int(i)
-}
-fn var(i: usize) -> RatFn {
-    RatFn::var(i)
-}
-fn q_of(x: &Q) -> RatFn {
-    RatFn::q(x.clone())
-}
-fn pt(x: RatFn, y: RatFn) -> V3 {
-    [x, y, c(-1)]
-}
-fn mat_vec3(m: &M3, x: &V3) -> V3 {
-    std::array::from_fn(|r| m[r][0].mul(&x[0]).add(&m[r][1].mul(&x[1])).add(&m[r][2].mul(&x[2])))
-}
-fn mat_mul3(a: &M3, b: &M3) -> M3 {
-    std::array::from_fn(|r| {
-        std::array::from_fn(|col| (0..3).fold(c(0), |acc, i| acc.add(&a[r][i].mul(&b[i][col]))))
-    })
-}
-fn det3(m: &M3) -> RatFn {
-    let t = |a: usize, b: usize, cc: usize| m[0][a].mul(&m[1][b]).mul(&m[2][cc]);
-    t(0, 1, 2).add(&t(1, 2, 0)).add(&t(2, 0, 1)).sub(&t(2, 1, 0)).sub(&t(0, 2, 1)).sub(&t(1, 0, 2))
-}
-fn rot(quarter: i64) -> M3 {
-    let (co, si) = match quarter.rem_euclid(4) {
-        0 => (1, 0),
-        1 => (0, 1),
-        2 => (-1, 0),
-        _ => (0, -1),
-    };
-    [[c(co), c(-si), c(0)], [c(si), c(co), c(0)], [c(0), c(0), c(1)]]
-}
-fn t_mat() -> M3 {
-    [[c(-1), c(0), c(0)], [c(0), c(1), c(0)], [c(0), c(0), c(1)]]
-}
+/// The facets of K = [-e1, e1] x [-e2, -1], covectors (a, b, c) with a x + b y - c >= 0 on v = -1.
+const FACETS: [(&str, [&str; 3]); 4] = [
+    ("left", ["1", "0", "-e1"]),
+    ("bottom", ["0", "1", "-e2"]),
+    ("right", ["-1", "0", "-e1"]),
+    ("top", ["0", "-1", "1"]),
+];
 
-/// The named points of the construction (formal e1, e2).
-struct Points {
-    named: Vec<(&'static str, V3)>,
-}
+/// K's vertices, counter-clockwise: facet i joins vertices i and i + 1.
+const VERTICES: [&str; 4] = ["s3", "p3", "p1", "s1"];
 
-impl Points {
-    fn new() -> Self {
-        let (e1, e2) = (var(E1), var(E2));
-        let inv_l = c(1).div(&var(L));
-        let named = vec![
-            ("s1", pt(e1.clone(), c(-1))),
-            ("s3", pt(e1.neg(), c(-1))),
-            ("p1", pt(e1.clone(), e2.neg())),
-            ("p3", pt(e1.neg(), e2.neg())),
-            ("s01", pt(c(1), c(-1))),
-            ("s12", pt(c(1), c(1))),
-            ("s23", pt(c(-1), c(1))),
-            ("s30", pt(c(-1), c(-1))),
-            ("q1", pt(c(-1), e2.neg())),
-            ("q3", pt(c(1), e2.neg())),
-            ("k1", pt(e2.clone(), c(-1))),
-            ("k3", pt(e2.neg(), c(-1))),
-            ("r+", pt(e2.clone(), e2.neg())),
-            ("r-", pt(e2.neg(), e2.neg())),
-            ("w1", pt(inv_l.clone(), e2.neg())),
-            ("w3", pt(inv_l.neg(), e2.neg())),
-        ];
-        Points { named }
-    }
-    fn get(&self, n: &str) -> V3 {
-        self.named.iter().find(|(m, _)| *m == n).map(|(_, v)| v.clone()).expect("named point")
-    }
-    /// The name of a projected point equal to (x, y), if any.
-    fn name_of(&self, x: &RatFn, y: &RatFn) -> Option<&'static str> {
-        self.named.iter().find(|(_, v)| v[0].equals(x) && v[1].equals(y)).map(|(n, _)| *n)
+fn header() -> Header {
+    Header {
+        name: "square".into(),
+        statement: "For the square (n = 4), every kappa > 0, 0 < gamma < 1 and every positive eigenvalue lambda of S_3 = U_0 P_{pi/2}: K = cone(p1, p3, s1, s3) satisfies conditions 1 and 2 of the paper's Theorem on effectively invariant cones and contains I_0(D), so every drop with all vertices moving down ends in CC or PCC; where moreover p^2 - 4q < 0 (the quadratic factor of det(tI - S_3 S_1)) PCC is excluded and the drop ends in CC. At gamma = 1/1000, kappa = 1/6 the discriminant is positive although S_3 has a positive eigenvalue, so the paper's claim that PCC is never possible for n >= 4 fails.".into(),
+        n: 4,
+        variables: VARS.to_vec(),
+        gamma: "g",
+        kappa: "k",
+        lambda: "l",
+        map: 3,
+        coordinates: [[0, -1, 1], [1, 0, 1], [0, 0, 1]],
+        hypotheses: vec![("g", "g"), ("1-g", "-g + 1"), ("k", "k"), ("l", "l")],
     }
 }
 
-/// Decides the sign of an expression linear in e1, e2 from e1 > e2 > 1: writes
-/// a + b e1 + c e2 = b (e1 - e2) + (b + c)(e2 - 1) + (a + b + c) and checks the certificate.
-fn linear_sign(p: &mut Proof, id: &str, statement: &str, e: &RatFn, uses: &[&str]) -> Option<Ordering> {
-    let num = &e.num;
-    let den = e.den.as_constant()?;
-    let coef = |v: Option<usize>| -> Q {
-        let mut m = num.clone();
-        for x in [G, K, L, S] {
-            if m.degree_in(x) > 0 {
-                return Q::int(i64::MAX);
-            }
-            m = m.coeff_in(x, 0);
-        }
-        let m = match v {
-            Some(v) => m.coeff_in(v, 1).coeff_in(if v == E1 { E2 } else { E1 }, 0),
-            None => m.coeff_in(E1, 0).coeff_in(E2, 0),
-        };
-        m.as_constant().map_or(Q::int(i64::MAX), |x| x / den.clone())
-    };
-    let (a, b, cc) = (coef(None), coef(Some(E1)), coef(Some(E2)));
-    if [&a, &b, &cc].iter().any(|x| **x == Q::int(i64::MAX)) || num.degree_in(E1) > 1 || num.degree_in(E2) > 1
-    {
-        p.fact(id, statement, "linear sign in e1, e2", false, format!("{e} is not linear in e1, e2"), uses);
-        return None;
+/// `p / d` in variable `v` when `d` is monic in `v` (up to a constant) and divides `p`.
+pub fn div_exact(p: &Poly<Q>, v: usize, d: &Poly<Q>) -> Option<Poly<Q>> {
+    let (n, nv) = (d.degree_in(v), p.nvars());
+    let lc = d.coeff_in(v, n).as_constant().filter(|c| !c.is_zero())?;
+    let (mut quot, mut r) = (Poly::zero(nv), p.clone());
+    while !r.is_zero() && r.degree_in(v) >= n {
+        let deg = r.degree_in(v);
+        let t = r.coeff_in(v, deg).scale(&(Q::int(1) / lc.clone())).mul(&Poly::var(nv, v).pow(deg - n));
+        quot = quot.add(&t);
+        r = r.sub(&t.mul(d));
     }
-    let (alpha, beta, delta) = (b.clone(), &b + &cc, &(&a + &b) + &cc);
-    let zero = Q::int(0);
-    if alpha == zero && beta == zero && delta == zero {
-        p.identity(id, statement, e, &c(0), false, uses);
-        return Some(Ordering::Equal);
-    }
-    let (sign, e_pos, (al, be, de)) = if alpha >= zero && beta >= zero && delta >= zero {
-        (Ordering::Greater, e.clone(), (alpha, beta, delta))
-    } else if alpha <= zero && beta <= zero && delta <= zero {
-        (Ordering::Less, e.neg(), (-alpha, -beta, -delta))
-    } else {
-        p.fact(
-            id,
-            statement,
-            "linear sign in e1, e2",
-            false,
-            format!("the sign of {e} is not determined by e1 > e2 > 1"),
-            uses,
-        );
-        return None;
-    };
-    let owned: Vec<(Q, Vec<&str>)> = [(al, vec!["e1-e2"]), (be, vec!["e2-1"]), (de, vec![])]
-        .into_iter()
-        .filter(|(x, _)| *x > zero)
-        .collect();
-    let terms: Vec<Term<'_>> = owned.iter().map(|(x, v)| (x.clone(), v.as_slice())).collect();
-    p.positive(id, statement, &e_pos, &terms, &[], uses).then_some(sign)
+    r.is_zero().then_some(quot)
 }
 
-/// Clips a polygon (named vertices) by the half-plane a x + b y + c >= 0, deciding every sign
-/// with a certificate and naming every crossing point.
-fn clip(
-    p: &mut Proof,
-    pts: &Points,
-    poly: &[&'static str],
-    hp: &[Q; 3],
-    label: &str,
-) -> Option<Vec<&'static str>> {
-    let val = |v: &V3| q_of(&hp[0]).mul(&v[0]).add(&q_of(&hp[1]).mul(&v[1])).add(&q_of(&hp[2]));
-    let mut signs = Vec::new();
-    for n in poly {
-        let id = format!("{label}.sign.{n}");
-        let st = format!("sign of {}*x + {}*y + {} at {n}", hp[0], hp[1], hp[2]);
-        signs.push(linear_sign(p, &id, &st, &val(&pts.get(n)), &["e1-e2", "e2-1"])?);
-    }
-    let mut out = Vec::new();
-    let m = poly.len();
-    for i in 0..m {
-        let (a, b) = (poly[i], poly[(i + 1) % m]);
-        let (sa, sb) = (signs[i], signs[(i + 1) % m]);
-        if sa != Ordering::Less {
-            out.push(a);
-        }
-        if sa != Ordering::Equal && sb != Ordering::Equal && sa != sb {
-            let (va, vb) = (pts.get(a), pts.get(b));
-            let (da, db) = (val(&va), val(&vb));
-            let t = da.div(&da.sub(&db));
-            let x = va[0].add(&t.mul(&vb[0].sub(&va[0])));
-            let y = va[1].add(&t.mul(&vb[1].sub(&va[1])));
-            let name = pts.name_of(&x, &y);
-            let id = format!("{label}.cross.{a}-{b}");
-            let st = format!("the edge {a}-{b} crosses the line at {}", name.unwrap_or("an unnamed point"));
-            p.fact(
-                id.as_str(),
-                &st,
-                "exact intersection, matched to a named point",
-                name.is_some(),
-                format!("({x}, {y})"),
-                &[],
-            );
-            out.push(name?);
-        }
-    }
-    Some(out)
+/// det(t (1 + kappa)^e I - m) for a matrix scaled by (1 + kappa)^e.
+fn char_det(m: &PMat<Q>, t: &Poly<Q>, scale: &Poly<Q>) -> Poly<Q> {
+    let nv = t.nvars();
+    det(&std::array::from_fn(|r| {
+        std::array::from_fn(|c| {
+            let diag = if r == c { scale.mul(t) } else { Poly::zero(nv) };
+            diag.sub(&m[r][c])
+        })
+    }))
 }
 
-/// Whether the projected point lies in K = [-e1, e1] x [-e2, -1] (four certified signs).
-fn in_k(p: &mut Proof, pts: &Points, name: &str, uses: &[&str]) -> bool {
-    let v = pts.get(name);
-    let (x, y) = (v[0].clone(), v[1].clone());
-    let checks = [
-        ("x>=-e1", x.add(&var(E1))),
-        ("x<=e1", var(E1).sub(&x)),
-        ("y>=-e2", y.add(&var(E2))),
-        ("y<=-1", c(-1).sub(&y)),
-    ];
-    let mut ok = true;
-    for (what, e) in checks {
-        let id = format!("in-K.{name}.{what}");
-        let st = format!("{name} satisfies {what}");
-        ok &= if name.starts_with('w') {
-            // x = +-1/lambda: e1 -+ x = (e2 - 1)/lambda or e1 + 1/lambda, with e2 = lambda e1.
-            let terms_owned: Vec<(Q, Vec<&str>)> = match what {
-                "x>=-e1" | "x<=e1" if (what == "x<=e1") == (name == "w1") => vec![(Q::int(1), vec!["e2-1"])],
-                "x>=-e1" | "x<=e1" => vec![(Q::int(1), vec!["e2-1"]), (Q::int(2), vec![])],
-                _ => vec![],
-            };
-            if terms_owned.is_empty() {
-                linear_sign(p, &id, &st, &e, uses).is_some_and(|s| s != Ordering::Less)
-            } else {
-                let terms: Vec<Term<'_>> =
-                    terms_owned.iter().map(|(q, v)| (q.clone(), v.as_slice())).collect();
-                p.positive(&id, &st, &e, &terms, &["l"], uses)
-            }
-        } else {
-            linear_sign(p, &id, &st, &e, uses).is_some_and(|s| s != Ordering::Less)
-        };
-    }
-    ok
+/// chi = (kappa + 1) det(lambda I - S_3), from the kernel's model of the square.
+fn chi() -> Poly<Q> {
+    let names: Vec<String> = VARS.iter().map(|s| s.to_string()).collect();
+    let m = [[0, -1, 1], [1, 0, 1], [0, 0, 1]].map(|r| r.map(Q::int));
+    let model = chatter_kernel::proof::SymbolicModel::new(4, 6, 0, 1, &m).expect("the square");
+    let one_k = lenient("k + 1", &names);
+    let d = char_det(&model.steps[2], &Poly::var(6, 2), &one_k);
+    div_exact(&d, 1, &one_k.pow(2)).expect("(1 + kappa)^2 divides the scaled determinant")
 }
 
-/// Runs every lemma; the returned proof records every step and whether it checked.
-pub fn prove() -> Proof {
-    let (g, k, l) = (var(G), var(K), var(L));
-    let one = c(1);
-    let a = g.add(&one).div(&k.add(&one));
-    let u0: M3 = [[c(1), c(0), c(0)], [c(0), one.sub(&a), a.clone()], [c(0), k.mul(&a), a.sub(&g)]];
-    let m = mat_mul3(&u0, &rot(1));
-    let lam_i: M3 = [[l.clone(), c(0), c(0)], [c(0), l.clone(), c(0)], [c(0), c(0), l.clone()]];
-    let char_m: M3 = std::array::from_fn(|r| std::array::from_fn(|col| lam_i[r][col].sub(&m[r][col])));
-    // (kappa + 1) det(lambda I - M) is a polynomial: divide out the denominator, a power of
-    // kappa + 1 (monic in kappa), exactly.
-    let det = det3(&char_m);
-    let scaled = det.num.mul(&k.add(&one).num);
-    let (chi, chi_rem) = scaled.div_rem_in(K, &det.den).expect("the denominator is monic in kappa");
-    let chi_ok = chi_rem.is_zero() && chi.degree_in(L) == 3;
-    let den_e1 = l.pow(2).mul(&k).add(&l.pow(2)).add(&k).sub(&g);
-    let e1_paper = g.add(&one).div(&den_e1);
-    let e1_simple = one.sub(&l).div(&k.mul(&one.add(&l.pow(2))));
-    let e2_def = l.mul(&e1_paper);
-    let mut p = Proof::new(chi.clone(), e1_paper.clone(), e2_def);
-    let pts = Points::new();
+/// The proof, step by step.
+pub fn prove() -> Builder {
+    let mut b = Builder::new(header(), chi());
+    let p = |b: &Builder, t: &str| Frac::poly(lenient(t, &b.ctx.names));
+    setting(&mut b, &p);
+    eigenvalue_below_one(&mut b, &p);
+    auxiliary(&mut b, &p);
+    eigenvector(&mut b, &p);
+    ordering(&mut b, &p);
+    named_points(&mut b, &p);
+    images(&mut b, &p);
+    cone(&mut b);
+    for j in [3, 1, 2] {
+        invariance(&mut b, j);
+    }
+    all_down(&mut b, &p);
+    pcc(&mut b, &p);
+    b
+}
 
-    // --- Setting ---------------------------------------------------------------------------
-    p.lemma("Setting");
-    p.assume("H1", "0 < gamma < 1 and kappa > 0 (atoms g, 1-g, k)");
-    p.assume("H2", "lambda > 0 is a real root of chi, e.g. the dominant eigenvalue of U_0 P_{pi/2} when it is real and positive (atom l)");
-    p.atom("g", g.clone(), "H1");
-    p.atom("1-g", one.sub(&g), "H1");
-    p.atom("k", k.clone(), "H1");
-    p.atom("l", l.clone(), "H2");
-    p.fact(
-        "chi",
-        &format!("chi(lambda) = (kappa + 1) det(lambda I - U_0 P_{{pi/2}}) = {chi}"),
-        "determinant of the paper's U_0 (equation U0, rho^2 = kappa) times P_{pi/2}, expanded exactly",
-        chi_ok,
-        String::new(),
-        &[],
+type P<'a> = dyn Fn(&Builder, &str) -> Frac<Q> + 'a;
+
+fn setting(b: &mut Builder, p: &P<'_>) {
+    b.section("Setting");
+    let e = p(b, "k + 1");
+    b.positive(
+        "1+k",
+        &e,
+        &Cert::sum(&[(1, &[]), (1, &["k"])]),
+        "1 + kappa > 0: every map of the model is scaled by it",
     );
-    // The paper's U_0 P_{pi/2} is the kernel's S_3 (MODEL.md): same characteristic polynomial.
-    let mut agree = true;
-    for (gg, kk) in
-        [(Q::new(1, 100), Q::new(1, 6)), (Q::new(3, 10), Q::int(2)), (Q::new(1, 20), Q::new(1, 10))]
-    {
-        let b = Body::new(4, kk.clone(), gg.clone()).expect("valid body");
-        let (c2, c1, c0) = chatter_kernel::model::linalg::char_poly(&b.step(3));
-        let at = |lam: &Q| (lam * lam * lam) - &(&c2 * &(lam * lam)) + &(&c1 * lam) - &c0;
-        for lam in [Q::int(0), Q::int(1), Q::int(-2), Q::new(1, 3)] {
-            let mine = chi.eval(&[gg.clone(), kk.clone(), lam.clone(), Q::int(0), Q::int(0), Q::int(0)]);
-            agree &= mine == at(&lam) * (&kk + &Q::int(1));
-        }
-    }
-    p.fact("model", "chi agrees with the characteristic polynomial of the kernel's exact step map S_3 at sample parameters", "exact evaluation at (gamma, kappa) in {(1/100, 1/6), (3/10, 2), (1/20, 1/10)}", agree, String::new(), &["chi"]);
+}
 
-    // --- lambda < 1 ---------------------------------------------------------------------------
-    p.lemma("Lemma 0 (every positive eigenvalue is below 1)");
-    let shifted = chi.subst(L, &MPoly::int(1).add(&MPoly::var(S)));
-    let certs: [&[Term<'_>]; 4] = [
-        &[(Q::int(2), &["g", "k"]), (Q::int(2), &["k"])],
-        &[(Q::int(4), &["k"]), (Q::int(2), &["g", "k"]), (Q::int(1), &["1-g"])],
-        &[(Q::int(3), &["k"]), (Q::int(2), &[]), (Q::int(1), &["g", "k"])],
-        &[(Q::int(1), &["k"]), (Q::int(1), &[])],
+fn eigenvalue_below_one(b: &mut Builder, _p: &P<'_>) {
+    b.section("Lemma 0: every positive eigenvalue is below 1");
+    let (l, s) = (b.var("l"), b.var("s"));
+    let nv = b.ctx.nvars();
+    let shifted = b.ctx.chi.subst_fraction(
+        l,
+        &Poly::constant(nv, Q::int(1)).add(&Poly::var(nv, s)),
+        &Poly::constant(nv, Q::int(1)),
+    );
+    let certs: [&[(i64, &[&str])]; 4] = [
+        &[(2, &["g", "k"]), (2, &["k"])],
+        &[(4, &["k"]), (2, &["g", "k"]), (1, &["1-g"])],
+        &[(3, &["k"]), (2, &[]), (1, &["g", "k"])],
+        &[(1, &["k"]), (1, &[])],
     ];
-    let mut coeff_ids = Vec::new();
     for (d, cert) in certs.iter().enumerate() {
-        let id = format!("L0.s{d}");
-        let coeff = RatFn::poly(shifted.coeff_in(S, d as u32));
-        p.positive(
-            &id,
+        let c = Frac::poly(shifted.coeff_in(s, d as u32));
+        b.positive(
+            &format!("1-l.{d}"),
+            &c,
+            &Cert::sum(cert),
             &format!("the coefficient of s^{d} in chi(1 + s) is positive"),
-            &coeff,
-            cert,
-            &[],
-            &["H1"],
         );
-        coeff_ids.push(id);
     }
-    let deg_ok = shifted.degree_in(S) == 3;
-    let uses: Vec<&str> = coeff_ids.iter().map(String::as_str).collect();
-    p.fact(
-        "L0",
-        "chi(1 + s) > 0 for every s >= 0, so every real root of chi is below 1: 0 < lambda < 1 (atom 1-l)",
-        "all coefficients of the cubic chi(1 + s) in s are positive",
-        deg_ok,
-        String::new(),
-        &uses,
+    b.raw(
+        Step::RootBound { id: "1-l".into(), below: "1".into(), variable: "s".into() },
+        "chi(1 + s) > 0 for s >= 0: every real root of chi is below 1, so 1 - lambda > 0",
     );
-    p.atom("1-l", one.sub(&l), "L0");
+    let one_minus_l = Frac::poly(lenient("-l + 1", &b.ctx.names));
+    b.ctx.add_atom("1-l", one_minus_l).expect("new atom");
+}
 
-    // --- auxiliary quantities ----------------------------------------------------------------------
-    p.lemma("Auxiliary quantities");
-    let d = k.mul(&one.add(&l.pow(2))).add(&one.sub(&l));
-    let a_q = l.mul(&one.sub(&l)).sub(&k.mul(&one.add(&l.pow(2))));
-    p.positive(
-        "sq",
-        "1 + lambda^2 > 0 (atom 1+l^2)",
-        &one.add(&l.pow(2)),
-        &[(Q::int(1), &[]), (Q::int(1), &["l", "l"])],
-        &[],
-        &[],
-    );
-    p.atom("1+l^2", one.add(&l.pow(2)), "sq");
-    p.positive(
+fn auxiliary(b: &mut Builder, p: &P<'_>) {
+    b.section("Auxiliary quantities");
+    let e = p(b, "l^2 + 1");
+    b.positive("1+l^2", &e, &Cert::sum(&[(1, &[]), (1, &["l", "l"])]), "1 + lambda^2 > 0");
+    let d = p(b, "k l^2 + k - l + 1");
+    b.positive(
         "D",
-        "D := kappa (1 + lambda^2) + 1 - lambda > 0 (atom D)",
         &d,
-        &[(Q::int(1), &["k"]), (Q::int(1), &["k", "l", "l"]), (Q::int(1), &["1-l"])],
-        &[],
-        &[],
+        &Cert::sum(&[(1, &["k"]), (1, &["k", "l", "l"]), (1, &["1-l"])]),
+        "D := kappa (1 + lambda^2) + 1 - lambda > 0",
     );
-    p.atom("D", d.clone(), "D");
-    p.identity("gD", "gamma D = lambda A at every root, with A := lambda (1 - lambda) - kappa (1 + lambda^2): chi is linear in gamma and this is gamma solved from chi = 0", &g.mul(&d), &l.mul(&a_q), true, &["chi"]);
-    p.positive(
-        "A",
-        "A > 0 (atom A): A = gamma D / lambda",
-        &a_q,
-        &[(Q::int(1), &["g", "D"])],
-        &["l"],
-        &["gD"],
+    let (gd, la) = (p(b, "g k l^2 + g k - g l + g"), p(b, "-k l^3 - k l - l^3 + l^2"));
+    b.identity(
+        "gD",
+        &gd,
+        &la,
+        "gamma D = lambda A with A := lambda (1 - lambda) - kappa (1 + lambda^2): chi = 0 solved for gamma",
     );
-    p.atom("A", a_q.clone(), "A");
+    let a = p(b, "-k l^2 - k - l^2 + l");
+    b.positive("A", &a, &Cert::atoms(&["g", "D"]).over(&["l"]), "A > 0, as A = gamma D / lambda");
+}
 
-    // --- the eigenvector -------------------------------------------------------------------------
-    p.lemma("Lemma l:r2, first part (the eigenvector p1)");
-    p.identity("den", "(1 - lambda)(lambda^2 kappa + lambda^2 + kappa - gamma) = (gamma + 1) kappa (1 + lambda^2) at every root", &one.sub(&l).mul(&den_e1), &g.add(&one).mul(&k).mul(&one.add(&l.pow(2))), true, &["chi"]);
-    p.positive(
-        "den+",
-        "the denominator lambda^2 kappa + lambda^2 + kappa - gamma of e1 is positive, so e1 is well defined",
-        &den_e1,
-        &[
-            (Q::int(1), &["g", "k"]),
-            (Q::int(1), &["g", "k", "l", "l"]),
-            (Q::int(1), &["k"]),
-            (Q::int(1), &["k", "l", "l"]),
-        ],
-        &["1-l"],
-        &["den"],
+fn eigenvector(b: &mut Builder, p: &P<'_>) {
+    b.section("Lemma l:r2, first part: the eigenvector p1 = (e1, -e2)");
+    let den = p(b, "k l^2 + l^2 + k - g");
+    let lhs = Frac::poly(den.num.mul(&lenient("-l + 1", &b.ctx.names)));
+    let rhs = p(b, "g k l^2 + g k + k l^2 + k");
+    b.identity(
+        "den",
+        &lhs,
+        &rhs,
+        "(1 - lambda)(lambda^2 kappa + lambda^2 + kappa - gamma) = (gamma + 1) kappa (1 + lambda^2)",
     );
-    p.identity("e1", "e1 = (gamma + 1)/(lambda^2 kappa + lambda^2 + kappa - gamma) equals (1 - lambda)/(kappa (1 + lambda^2))", &var(E1), &e1_simple, true, &["den"]);
-    let p1 = pts.get("p1");
-    let mp1 = mat_vec3(&m, &p1);
-    let lp1: V3 = std::array::from_fn(|i| l.mul(&p1[i]));
-    let mut ev_ok = true;
-    for (i, axis) in ["omega_x", "omega_y", "v"].iter().enumerate() {
-        ev_ok &= p.identity(
-            &format!("eig.{i}"),
-            &format!("component {axis} of U_0 P_{{pi/2}} p1 = lambda p1, p1 = [e1, -e2, -1], e2 = lambda e1"),
-            &mp1[i],
-            &lp1[i],
-            true,
-            &["chi"],
-        );
+    let cert = Cert::sum(&[(1, &["g", "k"]), (1, &["g", "k", "l", "l"]), (1, &["k"]), (1, &["k", "l", "l"])])
+        .over(&["1-l"]);
+    b.positive("den+", &den, &cert, "the denominator of e1 is positive");
+    let g1 = lenient("g + 1", &b.ctx.names);
+    b.define(
+        "e1",
+        &g1,
+        &den.num,
+        Some("den+"),
+        "e1 := (gamma + 1)/(lambda^2 kappa + lambda^2 + kappa - gamma), the paper's formula",
+    );
+    let e2 = lenient("l e1", &b.ctx.names);
+    b.define("e2", &e2, &lenient("1", &b.ctx.names), None, "e2 := lambda e1");
+    let simple = b.frac("(-l + 1) / [k] [1+l^2]");
+    let e1 = p(b, "e1");
+    b.identity("e1=", &e1, &simple, "e1 = (1 - lambda)/(kappa (1 + lambda^2))");
+}
+
+fn ordering(b: &mut Builder, p: &P<'_>) {
+    b.section("Lemma l:r2: e1 > e2 > 1 for all parameters (the paper checked e2 > 1 numerically)");
+    let e = p(b, "e1");
+    b.positive("e1>0", &e, &Cert::atoms(&["1-l"]).over(&["k", "1+l^2"]), "e1 > 0");
+    let e = p(b, "e1 - e2");
+    b.positive(
+        "e1-e2",
+        &e,
+        &Cert::atoms(&["1-l", "1-l"]).over(&["k", "1+l^2"]),
+        "e1 - e2 = (1 - lambda)^2/(kappa (1 + lambda^2)) > 0",
+    );
+    let e = p(b, "e2 - 1");
+    b.positive(
+        "e2-1",
+        &e,
+        &Cert::atoms(&["g", "D"]).over(&["k", "l", "1+l^2"]),
+        "e2 - 1 = gamma D/(kappa lambda (1 + lambda^2)) > 0: e2 > 1 is equivalent to gamma > 0",
+    );
+    let e = p(b, "e1 + 1");
+    b.positive("e1+1", &e, &Cert::sum(&[(1, &["e1-e2"]), (1, &["e2-1"]), (2, &[])]), "e1 + 1 > 0");
+}
+
+fn named_points(b: &mut Builder, p: &P<'_>) {
+    b.section("Named points of the plane v = -1 (paper's coordinates)");
+    let pts: [(&str, &str, &str); 14] = [
+        ("s1", "e1", "-1"),
+        ("s3", "-e1", "-1"),
+        ("p1", "e1", "-e2"),
+        ("p3", "-e1", "-e2"),
+        ("s01", "1", "-1"),
+        ("s12", "1", "1"),
+        ("s23", "-1", "1"),
+        ("s30", "-1", "-1"),
+        ("q1", "-1", "-e2"),
+        ("q3", "1", "-e2"),
+        ("k1", "e2", "-1"),
+        ("k3", "-e2", "-1"),
+        ("r+", "e2", "-e2"),
+        ("r-", "-e2", "-e2"),
+    ];
+    for (name, x, y) in pts {
+        let (x, y) = (p(b, x), p(b, y));
+        b.point(name, &x, &y);
     }
-    p.fact(
-        "eig",
-        "p1 = [e1, -e2, -1] is an eigenvector of U_0 P_{pi/2} for lambda",
-        "the three components above",
-        ev_ok,
-        String::new(),
-        &["eig.0", "eig.1", "eig.2"],
-    );
+    let y = p(b, "-e2");
+    for (name, x) in [("w1", "(1) / [l]"), ("w3", "(-1) / [l]")] {
+        let x = b.frac(x);
+        b.point(name, &x, &y);
+    }
+}
 
-    // --- symmetry ------------------------------------------------------------------------------------
-    p.lemma("Symmetry (equation tuk)");
-    let t = t_mat();
-    let m3 = mat_mul3(&u0, &rot(3));
-    let tmt = mat_mul3(&t, &mat_mul3(&m, &t));
-    let mut sym_ok = true;
-    for r in 0..3 {
-        for col in 0..3 {
-            sym_ok &= m3[r][col].equals(&tmt[r][col]);
+/// The coefficients of the S_2 decompositions, as atoms.
+fn combination_atoms(b: &mut Builder) {
+    let atoms = [
+        ("t", "(2) / [e1+1]", Cert::sum(&[(2, &[])]).over(&["e1+1"])),
+        ("1-t", "(e1 - 1) / [e1+1]", Cert::sum(&[(1, &["e1-e2"]), (1, &["e2-1"])]).over(&["e1+1"])),
+        ("u", "(e2 + 1) / [e1+1]", Cert::sum(&[(1, &["e2-1"]), (2, &[])]).over(&["e1+1"])),
+        ("1-u", "(e1 - e2) / [e1+1]", Cert::atoms(&["e1-e2"]).over(&["e1+1"])),
+    ];
+    for (id, e, cert) in atoms {
+        let e = b.frac(e);
+        b.positive(id, &e, &cert, "");
+    }
+}
+
+/// How S_j maps each vertex of K ∩ C_j: coefficients (as text and as atoms) and named points.
+pub fn decomposition(j: usize, w: &str) -> Vec<(&'static str, &'static [&'static str], &'static str)> {
+    match (j, w) {
+        (3, "s30") => vec![("1", &[], "s01")],
+        (3, "q1") => vec![("1", &[], "k1")],
+        (3, "p1") => vec![("l", &["l"], "p1")],
+        (3, "s1") => vec![("l", &["l"], "w1")],
+        (1, "s01") => vec![("1", &[], "s30")],
+        (1, "q3") => vec![("1", &[], "k3")],
+        (1, "p3") => vec![("l", &["l"], "p3")],
+        (1, "s3") => vec![("l", &["l"], "w3")],
+        (2, "s30") => vec![("(e1 - 1) / [e1+1]", &["1-t"], "s01"), ("(2 l) / [e1+1]", &["t", "l"], "w1")],
+        (2, "s01") => vec![("(e1 - 1) / [e1+1]", &["1-t"], "s30"), ("(2 l) / [e1+1]", &["t", "l"], "w3")],
+        (2, "r-") => vec![("(e1 - e2) / [e1+1]", &["1-u"], "k1"), ("(e2 l + l) / [e1+1]", &["u", "l"], "p1")],
+        (2, "r+") => vec![("(e1 - e2) / [e1+1]", &["1-u"], "k3"), ("(e2 l + l) / [e1+1]", &["u", "l"], "p3")],
+        _ => vec![],
+    }
+}
+
+fn images(b: &mut Builder, _p: &P<'_>) {
+    b.section("Lemmas l:r1, l:r4 and the eigenvector, with their mirror images and the map S_2");
+    combination_atoms(b);
+    let notes = [
+        (3, "s30", "Lemma l:r1: U_0 P_{pi/2} s30 = s01"),
+        (3, "q1", "Lemma l:r1: U_0 P_{pi/2} q1 = k1"),
+        (3, "p1", "Lemma l:r2: p1 is an eigenvector of U_0 P_{pi/2} for lambda"),
+        (3, "s1", "Lemma l:r4: U_0 P_{pi/2} s1 = lambda w1"),
+        (1, "s01", "mirror image: S_1 s01 = s30"),
+        (1, "q3", "mirror image: S_1 q3 = k3"),
+        (1, "p3", "mirror image: p3 is an eigenvector of S_1 for lambda"),
+        (1, "s3", "mirror image: S_1 s3 = lambda w3"),
+        (
+            2,
+            "s30",
+            "S_2 s30 = S_3 s01 = (1 - t) s01 + t lambda w1 with t = 2/(e1 + 1) (s01 = (1 - t) s30 + t s1)",
+        ),
+        (2, "s01", "S_2 s01 = (1 - t) s30 + t lambda w3 (mirror image)"),
+        (
+            2,
+            "r-",
+            "S_2 r- = S_3 r+ = (1 - u) k1 + u lambda p1 with u = (e2 + 1)/(e1 + 1) (r+ = (1 - u) q1 + u p1)",
+        ),
+        (2, "r+", "S_2 r+ = (1 - u) k3 + u lambda p3 (mirror image)"),
+    ];
+    for (j, w, note) in notes {
+        let equals: Vec<(Frac<Q>, &str)> =
+            decomposition(j, w).iter().map(|(c, _, pt)| (b.frac(c), *pt)).collect();
+        b.image(&format!("S{j}.{w}"), &format!("S{j}"), w, &equals, note);
+    }
+}
+
+/// The covector of a facet.
+fn facet(b: &Builder, i: usize) -> [Frac<Q>; 3] {
+    FACETS[i].1.map(|t| Frac::poly(lenient(t, &b.ctx.names)))
+}
+
+/// The sign steps K.{facet}.{point} (positive facet values) of a point in K.
+fn membership(b: &mut Builder, point: &str) {
+    for (i, (name, _)) in FACETS.iter().enumerate() {
+        let v = b.ctx.dot(&facet(b, i), b.pt(point));
+        if b.sign_step(&format!("K.{name}.{point}"), &v).is_lt() {
+            b.problems.push((format!("K.{name}.{point}"), format!("{point} is outside K")));
         }
     }
-    p.fact(
-        "tuk",
-        "U_0 P_{3pi/2} = T U_0 P_{pi/2} T with T = diag(-1, 1, 1)",
-        "entrywise identity of rational functions",
-        sym_ok,
-        String::new(),
-        &[],
-    );
-    let m2 = mat_mul3(&u0, &rot(2));
-    let tm2t = mat_mul3(&t, &mat_mul3(&m2, &t));
-    let sym2 = (0..3).all(|r| (0..3).all(|col| m2[r][col].equals(&tm2t[r][col])));
-    p.fact(
-        "tuk2",
-        "U_0 P_pi = T U_0 P_pi T",
-        "entrywise identity of rational functions",
-        sym2,
-        String::new(),
-        &[],
-    );
-    let tk = ["p1", "s1", "s01", "q1", "k1", "w1"].iter().zip(["p3", "s3", "s30", "q3", "k3", "w3"]).all(
-        |(a, b)| {
-            let ta = mat_vec3(&t, &pts.get(a));
-            (0..3).all(|i| ta[i].equals(&pts.get(b)[i]))
-        },
-    );
-    p.fact(
-        "T",
-        "T swaps p1/p3, s1/s3, s01/s30, q1/q3, k1/k3, w1/w3, so T K = K",
-        "exact",
-        tk,
-        String::new(),
-        &[],
-    );
+}
 
-    // --- e1 > e2 > 1 ----------------------------------------------------------------------------------
-    p.lemma("Lemma l:r2 (e1 > e2 > 1), proved for all parameters (the paper checked e2 > 1 numerically)");
-    p.positive("e1>0", "e1 > 0", &var(E1), &[(Q::int(1), &["1-l"])], &["k", "1+l^2"], &["e1"]);
-    p.positive(
-        "e1>e2",
-        "e1 - e2 = (1 - lambda)^2 / (kappa (1 + lambda^2)) > 0",
-        &var(E1).sub(&var(E2)),
-        &[(Q::int(1), &["1-l", "1-l"])],
-        &["k", "1+l^2"],
-        &["e1"],
+fn cone(b: &mut Builder) {
+    b.section("The cone K = cone(s3, p3, p1, s1): the rectangle [-e1, e1] x [-e2, -1]");
+    for v in VERTICES {
+        membership(b, v);
+    }
+    let facets = FACETS.iter().map(|(n, c)| (n.to_string(), c.map(str::to_string))).collect();
+    let vertices = VERTICES.iter().map(|s| s.to_string()).collect();
+    b.raw(
+        Step::Cone { id: "K".into(), vertices, facets },
+        "K is the convex cone over the rectangle; its facets: x >= -e1, y >= -e2, x <= e1, y <= -1",
     );
-    p.positive(
-        "e2>1",
-        "e2 - 1 = gamma D / (kappa lambda (1 + lambda^2)) > 0: e2 > 1 is equivalent to gamma > 0",
-        &var(E2).sub(&one),
-        &[(Q::int(1), &["g", "D"])],
-        &["k", "l", "1+l^2"],
-        &["e1", "gD"],
-    );
-    p.atom("e1", var(E1), "e1>0");
-    p.atom("e1-e2", var(E1).sub(&var(E2)), "e1>e2");
-    p.atom("e2-1", var(E2).sub(&one), "e2>1");
-    p.positive("1/l>1", "1/lambda > 1", &one.div(&l).sub(&one), &[(Q::int(1), &["1-l"])], &["l"], &["L0"]);
-    p.positive(
-        "e1>1/l",
-        "e1 > 1/lambda (as e2 = lambda e1 > 1)",
-        &var(E1).sub(&one.div(&l)),
-        &[(Q::int(1), &["e2-1"])],
-        &["l"],
-        &["e2>1"],
-    );
-    p.fact("order", "along the line F0 (y = -1): s3, k3, s30, s01, k1, s1 in this order (x = -e1 < -e2 < -1 < 1 < e2 < e1); along F_e (y = -e2): p3, r-, q1, q3, r+, p1; w1 lies between q3 and p1, w3 between p3 and q1", "from e1 > e2 > 1 and 1 < 1/lambda < e1", true, String::new(), &["e1>e2", "e2>1", "1/l>1", "e1>1/l"]);
+    b.section("Points in K (four certified inequalities each)");
+    for w in ["s01", "s30", "k1", "k3", "w1", "w3"] {
+        membership(b, w);
+    }
+}
 
-    // --- Lemma l:r1 -------------------------------------------------------------------------------------
-    p.lemma("Lemma l:r1 (images of s30 and q1)");
-    let vec_identity =
-        |p: &mut Proof, id: &str, st: &str, lhs: &V3, rhs: &V3, modulo: bool, uses: &[&str]| -> bool {
-            let mut ok = true;
-            for i in 0..3 {
-                ok &= p.identity(
-                    &format!("{id}.{i}"),
-                    &format!("{st}, component {i}"),
-                    &lhs[i],
-                    &rhs[i],
-                    modulo,
-                    uses,
-                );
-            }
-            ok
-        };
-    vec_identity(
-        &mut p,
-        "r1.s30",
-        "U_0 P_{pi/2} s30 = s01",
-        &mat_vec3(&m, &pts.get("s30")),
-        &pts.get("s01"),
-        false,
-        &[],
-    );
-    vec_identity(
-        &mut p,
-        "r1.q1",
-        "U_0 P_{pi/2} q1 = k1",
-        &mat_vec3(&m, &pts.get("q1")),
-        &pts.get("k1"),
-        false,
-        &[],
-    );
-
-    // --- Lemma l:r4 -------------------------------------------------------------------------------------
-    p.lemma("Lemma l:r4 (images of p1 and s1)");
-    let s1 = pts.get("s1");
-    let dec: V3 = std::array::from_fn(|i| p1[i].add(&pts.get("s30")[i]).sub(&pts.get("q1")[i]));
-    vec_identity(&mut p, "r4.dec", "s1 = p1 + s30 - q1", &s1, &dec, false, &[]);
-    let lw1: V3 = std::array::from_fn(|i| l.mul(&pts.get("w1")[i]));
-    vec_identity(
-        &mut p,
-        "r4.s1",
-        "U_0 P_{pi/2} s1 = lambda w1",
-        &mat_vec3(&m, &s1),
-        &lw1,
-        true,
-        &["chi", "eig"],
-    );
-
-    // --- The cones C_j in the plane, from the kernel's model ------------------------------------------
-    p.lemma("The cones C_j on the plane S (derived from the kernel's exact model, MODEL.md §4)");
-    let body = Body::new(4, Q::new(1, 6), Q::new(1, 100)).expect("valid");
-    let conv = square_paper_to_contact::<Q>();
-    let mut halfplanes: Vec<Vec<[Q; 3]>> = Vec::new();
-    for j in 1..=3i64 {
-        let mut hs = Vec::new();
-        for cov in body.next_contact_cone(j) {
-            // l . (M p) = (M^T l) . p; on the plane v = -1: a x + b y - c >= 0.
-            let lp: [Q; 3] =
-                std::array::from_fn(|col| (0..3).fold(Q::int(0), |acc, r| &acc + &(&cov[r] * &conv[r][col])));
-            let h = [lp[0].clone(), lp[1].clone(), -&lp[2]];
-            if !(h[0].is_zero() && h[1].is_zero()) {
-                hs.push(h);
+/// One pass of the clipping, as the checker does it: sign steps, and crossings named by search.
+fn clip(
+    b: &mut Builder,
+    key: &str,
+    poly: &[String],
+    l: &[Poly<Q>; 3],
+    crossings: &mut Vec<String>,
+) -> Vec<String> {
+    let lf = l.clone().map(Frac::poly);
+    let d: Vec<Frac<Q>> = poly.iter().map(|p| b.ctx.dot(&lf, b.pt(p))).collect();
+    let signs: Vec<_> = poly.iter().zip(&d).map(|(p, v)| b.sign_step(&format!("{key}.{p}"), v)).collect();
+    let mut out = Vec::new();
+    for i in 0..poly.len() {
+        let j = (i + 1) % poly.len();
+        if !signs[i].is_lt() {
+            out.push(poly[i].clone());
+        }
+        if signs[i].is_ne() && signs[j].is_ne() && signs[i] != signs[j] {
+            let (a, c) = (b.pt(&poly[i]).clone(), b.pt(&poly[j]).clone());
+            let x: [Frac<Q>; 3] =
+                std::array::from_fn(|k| b.ctx.add(&d[i].mul(&c[k]), &d[j].mul(&a[k]).neg()));
+            let found = b.points.iter().find(|(_, w)| {
+                [(1, 2), (2, 0), (0, 1)].iter().all(|&(r, s)| b.ctx.equal(&x[r].mul(&w[s]), &x[s].mul(&w[r])))
+            });
+            match found.map(|(n, _)| n.clone()) {
+                Some(n) => {
+                    crossings.push(n.clone());
+                    out.push(n);
+                }
+                None => b.problems.push((
+                    key.into(),
+                    format!("the crossing of {} -> {} is not a named point", poly[i], poly[j]),
+                )),
             }
         }
-        let text: Vec<String> =
-            hs.iter().map(|h| format!("{} x + {} y + {} >= 0", h[0], h[1], h[2])).collect();
-        p.fact(
-            &format!("C{j}"),
-            &format!("C_{j} on S: {}", text.join(", ")),
-            "the kernel's covectors of C_j converted to the paper's coordinates (v <= 0 holds on S)",
-            true,
-            String::new(),
-            &[],
-        );
-        halfplanes.push(hs);
     }
-    let dg_ok = body.all_down_generators().iter().zip(["s01", "s12", "s23", "s30"]).all(|(gv, name)| {
-        // p_paper = (u1 - v, v - u0, v).
-        let paper = [&gv[1] - &gv[2], &gv[2] - &gv[0], gv[2].clone()];
-        let want = pts.get(name);
-        (0..3).all(|i| want[i].equals(&q_of(&paper[i])))
-    });
-    p.fact("Dgen", "the all-down cone D has generators s01, s12, s23, s30 (the kernel's -m_{k,k+1} in the paper's coordinates)", "exact conversion", dg_ok, String::new(), &[]);
-    let _ = mat_vec::<Q>;
+    out
+}
 
-    // --- K ∩ C_j ---------------------------------------------------------------------------------------
-    p.lemma("K ∩ C_j (the paper reads these off its figures)");
-    let k_poly = ["s3", "p3", "p1", "s1"];
-    let claims: [&[&str]; 3] =
-        [&["s01", "q3", "p3", "s3"], &["s30", "r-", "r+", "s01"], &["s30", "q1", "p1", "s1"]];
-    let mut pieces: Vec<Vec<&'static str>> = Vec::new();
-    for (j, hs) in halfplanes.iter().enumerate() {
-        let mut poly: Vec<&'static str> = k_poly.to_vec();
-        let mut ok = true;
-        for (h_i, h) in hs.iter().enumerate() {
-            match clip(&mut p, &pts, &poly, h, &format!("KC{}.{h_i}", j + 1)) {
-                Some(next) => poly = next,
-                None => {
-                    ok = false;
-                    break;
+/// S_j(K ∩ C_j) ⊆ K: the clipping's sign steps, then a certificate for every facet at the image
+/// of every vertex of the piece, from the decomposition of the image.
+fn invariance(b: &mut Builder, j: usize) {
+    b.section(&format!("S_{j}(K ∩ C_{j}) ⊆ K"));
+    let mut poly: Vec<String> = VERTICES.iter().map(|s| s.to_string()).collect();
+    let mut crossings = Vec::new();
+    for (m, l) in b.model.cones[j - 1].clone().iter().enumerate() {
+        poly = clip(b, &format!("K.C{j}.h{m}"), &poly, l, &mut crossings);
+    }
+    for w in &poly {
+        let img = b.ctx.image(b.map(&format!("S{j}")), b.pt(w));
+        for (i, (name, _)) in FACETS.iter().enumerate() {
+            let f = facet(b, i);
+            facet_obligation(
+                b,
+                &format!("K.S{j}.{w}.{name}"),
+                &b.ctx.dot(&f, &img),
+                &f,
+                &decomposition(j, w),
+                name,
+            );
+        }
+    }
+    let note = format!("K ∩ C_{j} = conv({}), and S_{j} maps each of these vertices into K", poly.join(", "));
+    b.raw(Step::Invariant { id: format!("inv.S{j}"), cone: "K".into(), map: j as u64, crossings }, &note);
+}
+
+/// The certificate of `e = f . (1 + kappa) sum c_i w_i >= 0` from the facet atoms of the w_i.
+fn facet_obligation(
+    b: &mut Builder,
+    key: &str,
+    e: &Frac<Q>,
+    f: &[Frac<Q>; 3],
+    dec: &[(&str, &[&str], &str)],
+    facet: &str,
+) {
+    if b.ctx.is_zero(e) {
+        return;
+    }
+    let mut cert: Option<Cert> = None;
+    for (_, atoms, w) in dec {
+        if b.ctx.is_zero(&b.ctx.dot(f, b.pt(w))) {
+            continue;
+        }
+        let mut names = vec!["1+k"];
+        names.extend_from_slice(atoms);
+        let fw = format!("K.{facet}.{w}");
+        names.push(&fw);
+        let t = Cert::atoms(&names);
+        cert = Some(cert.map_or(t.clone(), |x| x.plus(t)));
+    }
+    match cert {
+        Some(cert) => b.positive(key, e, &cert, ""),
+        None => b.problems.push((key.into(), "no decomposition of the image".into())),
+    }
+}
+
+fn all_down(b: &mut Builder, p: &P<'_>) {
+    b.section("Lemma l:k0: every all-down drop lands in K");
+    let gens: Vec<[Frac<Q>; 3]> = b.model.all_down.iter().map(|g| g.clone().map(Frac::poly)).collect();
+    let img12 = b.ctx.image(&b.model.impact, b.pt("s12"));
+    let [x, y, z] = img12.map(|c| c.num);
+    let zz = Frac::poly(lenient("2 k l^3 - k l^2 + 2 k l - k - l + 1", &b.ctx.names));
+    b.positive(
+        "Z",
+        &zz,
+        &Cert::sum(&[
+            (1, &["1-l", "1-l", "1-l"]),
+            (1, &["1-l", "l"]),
+            (1, &["1-l", "A"]),
+            (1, &["k", "l"]),
+            (1, &["k", "l", "l", "l"]),
+        ]),
+        "Z := kappa (2 lambda - 1)(1 + lambda^2) + 1 - lambda > 0",
+    );
+    let minus_z = Frac::poly(z.neg());
+    b.positive(
+        "-Z~",
+        &minus_z,
+        &Cert::atoms(&["1+k", "Z"]).over(&["D"]),
+        "(1 + kappa) U_0 s12 has v-coordinate Z~ < 0: -Z~ = (1 + kappa) Z / D",
+    );
+    let over = |n: &Poly<Q>| Frac { num: n.clone(), den: vec!["-Z~".to_string()] };
+    let xp = over(&x);
+    let yp = over(&y);
+    let e1 = p(b, "e1");
+    let e2 = p(b, "e2");
+    let one = p(b, "1");
+    let right = b.ctx.add(&e1, &xp.neg());
+    b.positive(
+        "k0.right",
+        &right,
+        &Cert::sum(&[
+            (1, &["1-l", "1-l", "1-l", "1-l"]),
+            (1, &["A", "1-l"]),
+            (1, &["A", "1-l", "1-l"]),
+            (1, &["A", "k"]),
+            (1, &["A", "k", "l", "l"]),
+        ])
+        .over(&["k", "1+l^2", "Z"]),
+        "U_0 s12 projects to (x, y) with x <= e1",
+    );
+    let left = b.ctx.add(&e1, &xp);
+    b.positive(
+        "k0.left",
+        &left,
+        &Cert::sum(&[(1, &["e1>0", "Z"]), (1, &["D"])]).over(&["Z"]),
+        "and x >= -e1",
+    );
+    let bottom = b.ctx.add(&e2, &yp);
+    b.positive(
+        "k0.bottom",
+        &bottom,
+        &Cert::sum(&[(1, &["1-l", "1-l", "A"]), (1, &["A", "A"])]).over(&["k", "1+l^2", "Z"]),
+        "and y >= -e2",
+    );
+    let top = b.ctx.add(&one.neg(), &yp.neg());
+    b.positive("k0.top", &top, &Cert::sum(&[(2, &["l", "A"])]).over(&["Z"]), "and y <= -1");
+    for (m, g) in gens.iter().enumerate() {
+        let name = b
+            .points
+            .iter()
+            .find(|(_, w)| (0..3).all(|i| b.ctx.equal(&w[i], &g[i])))
+            .map(|(n, _)| n.clone())
+            .expect("D's generators are named points");
+        let img = b.ctx.image(&b.model.impact, g);
+        for (i, (facet_name, _)) in FACETS.iter().enumerate() {
+            let f = facet(b, i);
+            let key = format!("K.I0.{m}.{facet_name}");
+            let e = b.ctx.dot(&f, &img);
+            match name.as_str() {
+                "s01" | "s30" => facet_obligation(
+                    b,
+                    &key,
+                    &e,
+                    &f,
+                    &[("1", &[], if name == "s01" { "s01" } else { "s30" })],
+                    facet_name,
+                ),
+                "s12" => b.positive(&key, &e, &Cert::atoms(&["-Z~", &format!("k0.{facet_name}")]), ""),
+                _ => {
+                    let mirror = match *facet_name {
+                        "left" => "right",
+                        "right" => "left",
+                        other => other,
+                    };
+                    b.positive(&key, &e, &Cert::atoms(&["-Z~", &format!("k0.{mirror}")]), "");
                 }
             }
         }
-        poly.dedup();
-        let mut got: Vec<&str> = poly.clone();
-        let mut want: Vec<&str> = claims[j].to_vec();
-        got.sort();
-        want.sort();
-        let matches = ok && got == want;
-        p.fact(
-            &format!("KC{}", j + 1),
-            &format!("K ∩ C_{} is the convex hull of {}", j + 1, claims[j].join(", ")),
-            "exact clipping of K = [-e1, e1] x [-e2, -1] with every sign certified",
-            matches,
-            format!("computed vertices {poly:?}"),
-            &["e1>e2", "e2>1"],
-        );
-        pieces.push(poly);
     }
+    b.raw(Step::AllDown { id: "l:k0".into(), cone: "K".into() }, "I_0 maps the generators s01, s12, s23, s30 of D into K (s01 and s30 are fixed; s23 is the mirror image of s12)");
+}
 
-    // --- Lemma lem:square -------------------------------------------------------------------------------
-    p.lemma("Lemma lem:square (K = cone(p1, p3, s1, s3) is effectively invariant)");
-    p.fact(
-        "cond1",
-        "condition 1: every generator of K has v = -1 < 0",
-        "by construction",
-        true,
-        String::new(),
-        &[],
-    );
-    let mut members = Vec::new();
-    for name in ["s01", "s30", "k1", "k3", "p1", "p3", "w1", "w3", "r+", "q1"] {
-        let ok = in_k(&mut p, &pts, name, &["e1-e2", "e2-1"]);
-        p.fact(
-            &format!("K.{name}"),
-            &format!("{name} lies in K"),
-            "four certified inequalities",
-            ok,
-            String::new(),
-            &[],
-        );
-        members.push(ok);
-    }
-    let m1 = mat_mul3(&u0, &rot(3));
-    let images_c3 = [("s30", "s01", false), ("q1", "k1", false), ("p1", "p1", true), ("s1", "w1", true)];
-    let images_c1 = [("s01", "s30", false), ("q3", "k3", false), ("p3", "p3", true), ("s3", "w3", true)];
-    for (map, label, imgs) in
-        [(&m, "U_0 P_{pi/2} on K ∩ C_3", &images_c3), (&m1, "U_0 P_{3pi/2} on K ∩ C_1", &images_c1)]
-    {
-        let mut ok = true;
-        for (from, to, scaled) in imgs {
-            let img = mat_vec3(map, &pts.get(from));
-            let want = pts.get(to);
-            let want: V3 = if *scaled { std::array::from_fn(|i| l.mul(&want[i])) } else { want };
-            let id = format!("img.{from}");
-            ok &= vec_identity(
-                &mut p,
-                &id,
-                &format!("{label}: the image of {from} is {}{to}", if *scaled { "lambda " } else { "" }),
-                &img,
-                &want,
-                *scaled,
-                &["chi", "eig"],
-            );
+/// `p / (1 + kappa)^e` with `e` as small as exact division allows.
+fn over_one_k(b: &Builder, p: &Poly<Q>, e: usize) -> Frac<Q> {
+    let one_k = lenient("k + 1", &b.ctx.names);
+    let (mut num, mut left) = (p.clone(), e);
+    while left > 0 {
+        match div_exact(&num, b.var("k"), &one_k) {
+            Some(q) => {
+                num = q;
+                left -= 1;
+            }
+            None => break,
         }
-        let c = if label.contains("C_3") { "inv.C3" } else { "inv.C1" };
-        p.fact(c, &format!("{label}: every vertex maps into K (images s01/s30, k1/k3, lambda p1/p3, lambda w1/w3, all in K; lambda > 0)"), "identities above and membership in K", ok, String::new(), &["KC3", "KC1", "K.s01", "K.s30", "K.k1", "K.k3", "K.p1", "K.p3", "K.w1", "K.w3"]);
     }
-    // C_2: U_0 P_pi = U_0 P_{pi/2} P_{pi/2}; P_{pi/2} s30 = s01 and P_{pi/2} r- = r+, points of
-    // K ∩ C_3, on the segments s30-s1 and q1-p1.
-    let pm = rot(1);
-    let p_s30 = mat_vec3(&pm, &pts.get("s30"));
-    let p_rm = mat_vec3(&pm, &pts.get("r-"));
-    let rot_ok = (0..3).all(|i| p_s30[i].equals(&pts.get("s01")[i]) && p_rm[i].equals(&pts.get("r+")[i]));
-    let e1v = var(E1);
-    let t_s = c(2).div(&e1v.add(&one)); // s01 = (1 - t) s30 + t s1
-    let comb_ok = (0..3)
-        .all(|i| pts.get("s01")[i].equals(&one.sub(&t_s).mul(&pts.get("s30")[i]).add(&t_s.mul(&s1[i]))));
-    p.fact(
-        "C2.rot",
-        "P_{pi/2} s30 = s01, P_{pi/2} r- = r+, and s01 = (1 - t) s30 + t s1 with t = 2/(e1 + 1)",
-        "exact",
-        rot_ok && comb_ok,
-        String::new(),
-        &[],
-    );
-    p.positive(
-        "e1+1",
-        "e1 + 1 > 0",
-        &e1v.add(&one),
-        &[(Q::int(1), &["e1-e2"]), (Q::int(1), &["e2-1"]), (Q::int(2), &[])],
-        &[],
-        &[],
-    );
-    p.atom("e1+1", e1v.add(&one), "e1+1");
-    p.positive("C2.t", "t = 2/(e1 + 1) > 0", &t_s, &[(Q::int(2), &[])], &["e1+1"], &["e1+1"]);
-    p.positive(
-        "C2.1-t",
-        "1 - t = (e1 - 1)/(e1 + 1) > 0",
-        &one.sub(&t_s),
-        &[(Q::int(1), &["e1-e2"]), (Q::int(1), &["e2-1"])],
-        &["e1+1"],
-        &["e1+1"],
-    );
-    let u_s = var(E2).add(&one).div(&e1v.add(&one)); // r+ = (1 - u) q1 + u p1
-    let comb2 =
-        (0..3).all(|i| pts.get("r+")[i].equals(&one.sub(&u_s).mul(&pts.get("q1")[i]).add(&u_s.mul(&p1[i]))));
-    p.fact("C2.r+", "r+ = (1 - u) q1 + u p1 with u = (e2 + 1)/(e1 + 1)", "exact", comb2, String::new(), &[]);
-    p.positive("C2.u", "u > 0", &u_s, &[(Q::int(1), &["e2-1"]), (Q::int(2), &[])], &["e1+1"], &["e1+1"]);
-    p.positive(
-        "C2.1-u",
-        "1 - u = (e1 - e2)/(e1 + 1) > 0",
-        &one.sub(&u_s),
-        &[(Q::int(1), &["e1-e2"])],
-        &["e1+1"],
-        &["e1+1"],
-    );
-    p.fact(
-        "inv.C2",
-        "U_0 P_pi on K ∩ C_2 = conv(s30, r-, r+, s01): U_0 P_pi s30 = U_0 P_{pi/2} s01 and U_0 P_pi r- = U_0 P_{pi/2} r+ lie in cone(K) because s01 and r+ are non-negative combinations of vertices of K ∩ C_3, whose images lie in K; U_0 P_pi s01 = T U_0 P_pi s30 and U_0 P_pi r+ = T U_0 P_pi r- by the symmetry, and T K = K",
-        "convexity and the symmetry",
-        true,
-        String::new(),
-        &["KC2", "inv.C3", "C2.rot", "C2.1-t", "C2.r+", "C2.u", "C2.1-u", "tuk2", "T"],
-    );
-    p.fact("lem:square", "K = cone(p1, p3, s1, s3) satisfies conditions 1 and 2 of the paper's Theorem on effectively invariant cones", "the three maps above", true, String::new(), &["cond1", "inv.C1", "inv.C2", "inv.C3"]);
+    Frac { num, den: vec!["1+k".to_string(); left] }
+}
 
-    // --- Lemma l:k0 -------------------------------------------------------------------------------------
-    p.lemma("Lemma l:k0 (every all-down drop lands in K)");
-    let fixed = ["s01", "s30"].iter().all(|n| {
-        let img = mat_vec3(&u0, &pts.get(n));
-        (0..3).all(|i| img[i].equals(&pts.get(n)[i]))
-    });
-    p.fact("k0.fix", "U_0 fixes s01 and s30 (vertex 0 is at rest there)", "exact", fixed, String::new(), &[]);
-    let img12 = mat_vec3(&u0, &pts.get("s12"));
-    let z = img12[2].clone();
-    let zz = k.mul(&c(2).mul(&l).sub(&one)).mul(&one.add(&l.pow(2))).add(&one.sub(&l));
-    p.positive(
-        "Z",
-        "Z := kappa (2 lambda - 1)(1 + lambda^2) + 1 - lambda > 0 (atom Z)",
-        &zz,
-        &[
-            (Q::int(1), &["1-l", "1-l", "1-l"]),
-            (Q::int(1), &["1-l", "l"]),
-            (Q::int(1), &["1-l", "A"]),
-            (Q::int(1), &["k", "l"]),
-            (Q::int(1), &["k", "l", "l", "l"]),
-        ],
-        &[],
-        &[],
+fn pcc(b: &mut Builder, p: &P<'_>) {
+    b.section("Lemma noPCC and the finding against the paper");
+    let (s, nv) = (b.var("s"), b.ctx.nvars());
+    let one_k2 = lenient("k + 1", &b.ctx.names).pow(2);
+    let m = mat_mul(&b.model.steps[2], &b.model.steps[0]);
+    let d = char_det(&m, &Poly::var(nv, s), &one_k2);
+    let quad = div_exact(&d, s, &lenient("s - 1", &b.ctx.names)).expect("1 is an eigenvalue of S_3 S_1");
+    let (pp, qq) = (over_one_k(b, &quad.coeff_in(s, 1), 6), over_one_k(b, &quad.coeff_in(s, 0), 6));
+    let note = "det(tI - S_3 S_1) = (t - 1)(t^2 + p t + q) (t written s): the Lemma excludes PCC where p^2 - 4q < 0 and q < 1";
+    b.raw(Step::Pcc { id: "pcc".into(), variable: "s".into(), p: b.text(&pp), q: b.text(&qq) }, note);
+    let g2 = p(b, "g^2");
+    b.identity("pcc.q", &qq, &g2, "q = gamma^2");
+    let e = p(b, "-g^2 + 1");
+    b.positive(
+        "1-q",
+        &e,
+        &Cert::sum(&[(1, &["1-g"]), (1, &["1-g", "g"])]),
+        "q < 1: complex roots have modulus gamma < 1",
     );
-    p.atom("Z", zz.clone(), "Z");
-    p.positive(
-        "k0.z",
-        "U_0 s12 = [1, 1 - 2a, z] has z < 0: -z = Z / D",
-        &z.neg(),
-        &[(Q::int(1), &["Z"])],
-        &["D"],
-        &["chi"],
-    );
-    let x12 = img12[0].div(&z.neg());
-    let y12 = img12[1].div(&z.neg());
-    p.positive(
-        "k0.x",
-        "its projection x = 1/(-z) satisfies x <= e1",
-        &var(E1).sub(&x12),
-        &[
-            (Q::int(1), &["1-l", "1-l", "1-l", "1-l"]),
-            (Q::int(1), &["A", "1-l"]),
-            (Q::int(1), &["A", "1-l", "1-l"]),
-            (Q::int(1), &["A", "k"]),
-            (Q::int(1), &["A", "k", "l", "l"]),
-        ],
-        &["k", "1+l^2", "Z"],
-        &["chi", "e1"],
-    );
-    p.positive(
-        "k0.y1",
-        "y = (1 - 2a)/(-z) satisfies y >= -e2",
-        &y12.add(&var(E2)),
-        &[(Q::int(1), &["1-l", "1-l", "A"]), (Q::int(1), &["A", "A"])],
-        &["k", "1+l^2", "Z"],
-        &["chi", "e1"],
-    );
-    p.positive("k0.y2", "and y <= -1", &c(-1).sub(&y12), &[(Q::int(2), &["l", "A"])], &["Z"], &["chi"]);
-    p.positive(
-        "k0.x-",
-        "and x >= -e1 (x = D/Z > 0)",
-        &var(E1).add(&x12),
-        &[(Q::int(1), &["e1", "Z"]), (Q::int(1), &["D"])],
-        &["Z"],
-        &["chi"],
-    );
-    let t_s12 = mat_vec3(&t, &pts.get("s12"));
-    let mirror = (0..3).all(|i| t_s12[i].equals(&pts.get("s23")[i]));
-    p.fact(
-        "k0.s23",
-        "U_0 s23 = T U_0 s12 (T s12 = s23 and U_0 T = T U_0), which lies in T K = K",
-        "symmetry",
-        mirror && sym_ok,
-        String::new(),
-        &["T", "tuk"],
-    );
-    p.fact("l:k0", "U_0 maps the generators s01, s12, s23, s30 of D into cone(K): the velocity after the first impact of every drop with all vertices moving down lies in K", "the steps above", true, String::new(), &["Dgen", "k0.fix", "k0.z", "k0.x", "k0.x-", "k0.y1", "k0.y2", "k0.s23"]);
+    witness(b, &pp, &qq);
+}
 
-    // --- PCC and the theorem ---------------------------------------------------------------------
-    p.lemma("Lemma noPCC and the theorem for the square");
-    let u3 = mat_mul3(&u0, &rot(3)); // U_0 P_{-pi/2} = U_0 P_{3pi/2}
-    let nmat = mat_mul3(&m, &u3); // S_3 S_1 = U_0 P_{pi/2} U_0 P_{-pi/2}
-    let sv = var(S);
-    let char_n: M3 = std::array::from_fn(|r| {
-        std::array::from_fn(|col| if r == col { sv.sub(&nmat[r][col]) } else { nmat[r][col].neg() })
-    });
-    let detn = det3(&char_n);
-    let (quad, rem) = detn.num.div_rem_in(S, &MPoly::var(S).sub(&MPoly::int(1))).expect("s - 1 is monic");
-    p.fact(
-        "pcc.1",
-        "t = 1 is an eigenvalue of U_0 P_{pi/2} U_0 P_{-pi/2} (its char. polynomial is divisible by t - 1)",
-        "exact division",
-        rem.is_zero(),
-        String::new(),
-        &[],
-    );
-    let (c2q, c1q, c0q) = (quad.coeff_in(S, 2), quad.coeff_in(S, 1), quad.coeff_in(S, 0));
-    let qq = RatFn::new(c0q.clone(), c2q.clone());
-    p.identity(
-        "pcc.q",
-        "the quadratic factor t^2 + p t + q has q = gamma^2 < 1, so complex roots have modulus gamma < 1",
-        &qq,
-        &g.mul(&g),
-        false,
-        &["pcc.1"],
-    );
-    let disc = c1q.mul(&c1q).sub(&c0q.mul(&c2q).scale(&Q::int(4)));
-    let disc_r = RatFn::new(disc.clone(), c2q.mul(&c2q));
-    p.fact("pcc.disc", &format!("its discriminant is Delta(gamma, kappa) = {disc_r}; Lemma noPCC excludes PCC exactly where Delta < 0"), "exact", true, String::new(), &["pcc.1"]);
-    // The paper's claim that Delta < 0 always holds for n >= 4 is false: a witness in the region.
-    let (wg, wk) = (Q::new(1, 1000), Q::new(1, 6));
-    let at = [wg.clone(), wk.clone(), Q::int(0), Q::int(0), Q::int(0), Q::int(0)];
-    let disc_w = disc_r.eval(&at).expect("defined");
-    let chi_w = crate::spectral::poly::Poly::new((0..=3).map(|d| chi.coeff_in(L, d).eval(&at)).collect());
-    let positive_root =
-        crate::spectral::roots::isolate(&chi_w).into_iter().any(|mut r| r.sign() == Ordering::Greater);
-    p.fact(
-        "pcc.witness",
-        &format!("FINDING: at gamma = {wg}, kappa = {wk} (the square plate) U_0 P_{{pi/2}} has a positive eigenvalue but Delta = {disc_w} > 0: all eigenvalues of U_0 P_{{pi/2}} U_0 P_{{-pi/2}} are real, so Lemma noPCC does not exclude PCC there; the paper's claim that its condition is never met for n >= 4, on which its Theorem squarefinal relies, is false"),
-        "exact evaluation and exact root isolation",
-        positive_root && disc_w > Q::int(0),
-        String::new(),
-        &["pcc.disc"],
-    );
-    p.fact(
-        "theorem",
-        "THEOREM (as proved here). Let 0 < gamma < 1, kappa > 0, and let U_0 P_{pi/2} have a positive eigenvalue (e.g. a real positive dominant one). Then every drop of the square with all vertices moving down ends in CC or PCC; where moreover Delta(gamma, kappa) < 0 it ends in CC. The paper's Theorem squarefinal (CC without the condition Delta < 0) is not established by its proof where Delta >= 0",
-        "Lemma lem:square and Lemma l:k0 with the paper's Theorem on effectively invariant cones; Lemma noPCC where Delta < 0",
-        true,
-        String::new(),
-        &["lem:square", "l:k0", "pcc.q", "pcc.disc", "pcc.witness"],
-    );
-    let _ = (members, pieces, e1_simple);
-    p
+/// At gamma = 1/1000, kappa = 1/6: chi has a root in (0, 1] (a positive eigenvalue of S_3) and
+/// the discriminant p^2 - 4q is positive.
+fn witness(b: &mut Builder, pp: &Frac<Q>, qq: &Frac<Q>) {
+    let (g, k, l) = (b.var("g"), b.var("k"), b.var("l"));
+    let (gv, kv) = (Q::new(1, 1000), Q::new(1, 6));
+    let at = b.ctx.chi.subst_constant(g, &gv).subst_constant(k, &kv);
+    let coeffs: Coeffs<Q> =
+        (0..=at.degree_in(l)).map(|d| at.coeff_in(l, d).as_constant().expect("univariate")).collect();
+    let mut seq = vec![coeffs.clone(), derivative(&coeffs)];
+    loop {
+        let r: Coeffs<Q> =
+            rem(&seq[seq.len() - 2], &seq[seq.len() - 1]).iter().map(|c| c.negated()).collect();
+        if r.is_empty() {
+            break;
+        }
+        seq.push(r);
+    }
+    let nv = b.ctx.nvars();
+    let text = |c: &Coeffs<Q>| {
+        let p = c
+            .iter()
+            .enumerate()
+            .fold(Poly::zero(nv), |acc, (i, x)| acc.add(&Poly::var(nv, l).pow(i as u32).scale(x)));
+        p.text(&b.ctx.names)
+    };
+    let sequence: Vec<String> = seq.iter().map(text).collect();
+    let (lo, hi) = (Q::int(0), Q::int(1));
+    let roots = chatter_kernel::proof::count_roots(&coeffs, &seq, &lo, &hi).expect("a Sturm sequence");
+    let disc = b.ctx.add(&pp.mul(pp), &qq.mul(&Frac::poly(Poly::constant(nv, Q::int(-4)))));
+    let step = Step::Witness {
+        id: "pcc.witness".into(),
+        at: vec![("g".into(), gv.to_string()), ("k".into(), kv.to_string())],
+        interval: (lo.to_string(), hi.to_string()),
+        sequence,
+        roots,
+        positive: vec![b.text(&disc)],
+    };
+    b.raw(step, "FINDING: at gamma = 1/1000, kappa = 1/6 (the square plate) S_3 has a positive eigenvalue but p^2 - 4q > 0: all eigenvalues of S_3 S_1 are real, so the Lemma does not exclude PCC there; the paper's claim that its condition is never met for n >= 4, on which its Theorem squarefinal relies, is false");
 }

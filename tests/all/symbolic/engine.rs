@@ -1,56 +1,72 @@
-//! The polynomial and rational-function engine.
+//! The producer's helpers: hand-written polynomials, the linear sign method, exact division.
 
-use chatter::exact::Q;
-use chatter::symbolic::mpoly::{E1, G, K, L, MPoly, S};
-use chatter::symbolic::ratfn::{RatFn, prem_lambda, zero_mod_chi};
+use chatter::exact::{ParseLimits, Q};
+use chatter::symbolic::cert::{LinearVars, linear};
+use chatter::symbolic::square::div_exact;
+use chatter::symbolic::terms::lenient;
+use chatter_kernel::proof::{Context, Frac, Poly};
+use std::cmp::Ordering;
 
-fn v(i: usize) -> MPoly {
-    MPoly::var(i)
+fn names() -> Vec<String> {
+    ["g", "k", "l", "s", "e1", "e2"].iter().map(|s| s.to_string()).collect()
 }
 
 #[test]
-fn polynomial_arithmetic_and_printing() {
-    let p = v(G).mul(&v(K)).add(&v(L).pow(2)).sub(&MPoly::int(3)); // g k + l^2 - 3
-    assert_eq!(p.to_string(), "g k + l^2 - 3");
-    assert_eq!(p.sub(&p), MPoly::zero());
-    assert_eq!(p.degree_in(L), 2);
-    assert_eq!(p.coeff_in(L, 2), MPoly::int(1));
-    assert_eq!(p.coeff_in(L, 0), v(G).mul(&v(K)).sub(&MPoly::int(3)));
-    let at = [Q::int(2), Q::int(5), Q::int(-1), Q::int(0), Q::int(0), Q::int(0)];
-    assert_eq!(p.eval(&at), Q::int(8));
-    // (l + 1)^2 with l := g - 1 is g^2.
-    assert_eq!(v(L).add(&MPoly::int(1)).pow(2).subst(L, &v(G).sub(&MPoly::int(1))), v(G).pow(2));
-    // Exact division in kappa by a monic divisor.
-    let d = v(K).add(&MPoly::int(1));
-    let (q, r) = d.pow(3).mul(&v(L)).add(&MPoly::int(2)).div_rem_in(K, &d).unwrap();
-    assert_eq!(q, d.pow(2).mul(&v(L)));
-    assert_eq!(r, MPoly::int(2));
-    assert!(v(G).mul(&v(K)).div_rem_in(K, &v(G).mul(&v(K))).is_none(), "non-constant leading coefficient");
+fn hand_written_terms_in_any_order_give_the_canonical_polynomial() {
+    let n = names();
+    let p = lenient("1 - l + k + k l^2", &n);
+    assert_eq!(p.text(&n), "k l^2 + k - l + 1");
+    assert_eq!(lenient("e2 l + l", &n).text(&n), "l e2 + l");
+    assert_eq!(lenient("-2 g k + 1/2 g k", &n).text(&n), "-3/2 g k");
+    assert_eq!(lenient("g - g", &n).text(&n), "0");
 }
 
 #[test]
-fn rational_functions_compare_by_cross_multiplication() {
-    let x = RatFn::var(G);
-    let a = x.div(&x.add(&RatFn::int(1)));
-    let b = RatFn::int(1).sub(&RatFn::int(1).div(&x.add(&RatFn::int(1))));
-    assert!(a.equals(&b), "g/(g+1) = 1 - 1/(g+1)");
-    assert!(!a.equals(&RatFn::int(1)));
-    // Substituting e1 := (1 - l)/k into e1 k + l gives 1.
-    let e = RatFn::var(E1).mul(&RatFn::var(K)).add(&RatFn::var(L));
-    let by = RatFn::int(1).sub(&RatFn::var(L)).div(&RatFn::var(K));
-    assert!(e.subst(E1, &by).equals(&RatFn::int(1)));
-    let at = [Q::int(1), Q::int(2), Q::new(1, 2), Q::int(0), Q::int(0), Q::int(0)];
-    assert_eq!(a.eval(&at), Some(Q::new(1, 2)));
+fn exact_division_in_one_variable() {
+    let n = names();
+    let d = lenient("k + 1", &n);
+    let p = d.pow(3).mul(&lenient("l", &n));
+    assert_eq!(div_exact(&p, 1, &d.pow(2)), Some(d.mul(&lenient("l", &n))));
+    assert_eq!(div_exact(&p.add(&lenient("1", &n)), 1, &d), None, "not a multiple");
+}
+
+/// A context where e1 > e2 > 1 are atoms (as in the square's proof).
+fn context() -> Context<Q> {
+    let n = names();
+    let chi = lenient("l - 1/2", &n);
+    let mut c = Context::new(n.clone(), ParseLimits::default(), 2, chi);
+    for (name, e) in [("e1-e2", "e1 - e2"), ("e2-1", "e2 - 1"), ("l", "l")] {
+        c.add_atom(name, Frac::poly(lenient(e, &n))).unwrap();
+    }
+    c
 }
 
 #[test]
-fn normal_forms_modulo_a_cubic() {
-    // chi = (k + 1) l^3 - g: l^3 = g/(k + 1) at every root.
-    let chi = v(K).add(&MPoly::int(1)).mul(&v(L).pow(3)).sub(&v(G));
-    let l4 = v(L).pow(4);
-    // (k + 1) l^4 - g l vanishes at every root; l^4 - g l does not.
-    assert!(prem_lambda(&v(K).add(&MPoly::int(1)).mul(&l4).sub(&v(G).mul(&v(L))), &chi).is_zero());
-    assert!(!prem_lambda(&l4.sub(&v(G).mul(&v(L))), &chi).is_zero());
-    let e = RatFn::new(v(L).pow(3).mul(&v(K).add(&MPoly::int(1))).sub(&v(G)), v(S).add(&MPoly::int(2)));
-    assert!(zero_mod_chi(&e, &chi));
+fn the_linear_method_decides_signs_on_the_region_and_its_certificates_are_identities() {
+    let n = names();
+    let c = context();
+    let v = LinearVars { l: 2, e1: 4, e2: 5 };
+    for (e, want) in [
+        ("2 e1 - 2", Some(Ordering::Greater)),
+        ("e2 - e1", Some(Ordering::Less)),
+        ("3 + e2 - 2 e1", None),
+        ("g e1", None),
+    ] {
+        let f = Frac::poly(lenient(e, &n));
+        let got = linear(&f, v);
+        assert_eq!(got.as_ref().map(|x| x.0), want, "{e}");
+        if let Some((sign, cert)) = got {
+            let target = if sign == Ordering::Less { f.neg() } else { f.clone() };
+            let sum = cert.terms.iter().fold(Frac::poly(Poly::zero(6)), |acc, (q, atoms)| {
+                let t = atoms
+                    .iter()
+                    .fold(Frac::poly(Poly::constant(6, q.clone())), |t, a| t.mul(c.atom(a).unwrap()));
+                c.add(&acc, &t)
+            });
+            assert!(c.equal(&target, &sum), "{e}: the certificate is an identity");
+        }
+    }
+    // e1 l is read as e2 (the definition e2 = lambda e1).
+    let f = Frac { num: lenient("l e1 - 1", &n), den: vec!["l".into()] };
+    assert_eq!(linear(&f, v).map(|x| x.0), Some(Ordering::Greater));
 }

@@ -1,5 +1,5 @@
-//! Tests of `chatter::symbolic`.
+//! Tests of `chatter::symbolic`, the producer of the square-case proof (the checker's own tests
+//! are in kernel/tests/).
 
 mod engine;
-mod proof;
 mod square;

@@ -1,0 +1,260 @@
+//! The algebraic steps: positivity certificates, identities, definitions, points, root bounds,
+//! the PCC factorisation and witnesses at rational points.
+
+use super::check::Checker;
+use super::context::Frac;
+use super::model::{PMat, det};
+use super::poly::Poly;
+use super::sturm::{Coeffs, count_roots};
+use crate::exact::{Field, parse_canonical};
+use std::collections::BTreeMap;
+
+/// An expression's text for messages, abbreviated when long.
+pub(super) fn short(s: String) -> String {
+    if s.chars().count() <= 120 {
+        return s;
+    }
+    let head: String = s.chars().take(100).collect();
+    format!("{head}... ({} characters)", s.chars().count())
+}
+
+impl<F: Field> Checker<'_, F> {
+    /// A rational number of the text.
+    pub(super) fn rational(&self, s: &str) -> Result<F, String> {
+        parse_canonical(s, self.ctx.limits).map_err(|e| format!("{s:?}: {e}"))
+    }
+
+    /// `expr > 0` by a positive combination of products of atoms over a product of atoms.
+    pub(super) fn positive(
+        &mut self,
+        id: &str,
+        expr: &str,
+        terms: &[(String, Vec<String>)],
+        over: &[String],
+    ) -> Result<(), String> {
+        let e = self.ctx.frac(expr)?;
+        if terms.is_empty() {
+            return Err("a positivity certificate needs at least one term".into());
+        }
+        let mut sum: Option<Frac<F>> = None;
+        for (c, atoms) in terms {
+            let c = self.rational(c)?;
+            if !c.is_positive() {
+                return Err(format!("the coefficient {} is not positive", crate::exact::to_canonical(&c)));
+            }
+            let mut t = Frac::poly(self.ctx.constant(c));
+            for a in atoms {
+                t = t.mul(self.ctx.atom(a)?);
+            }
+            sum = Some(match sum {
+                None => t,
+                Some(s) => self.ctx.add(&s, &t),
+            });
+        }
+        let mut cert = sum.expect("non-empty");
+        for a in over {
+            self.ctx.polynomial_atom(a)?;
+            cert.den.push(a.clone());
+        }
+        if !self.ctx.equal(&e, &cert) {
+            return Err(format!(
+                "{} is not equal to its certificate {}",
+                short(self.ctx.text(&e)),
+                short(self.ctx.text(&cert))
+            ));
+        }
+        self.ctx.add_atom(id, e)
+    }
+
+    /// `lhs = rhs` at every point of the region.
+    pub(super) fn identity(&mut self, lhs: &str, rhs: &str) -> Result<(), String> {
+        let (a, b) = (self.ctx.frac(lhs)?, self.ctx.frac(rhs)?);
+        if self.ctx.equal(&a, &b) {
+            Ok(())
+        } else {
+            Err(format!("{} - ({}) does not vanish modulo chi", short(lhs.into()), short(rhs.into())))
+        }
+    }
+
+    /// Defines a variable as num / den, den proved positive by the step `positive`.
+    pub(super) fn define(
+        &mut self,
+        id: &str,
+        num: &str,
+        den: &str,
+        positive: Option<&str>,
+    ) -> Result<(), String> {
+        let v = self.ctx.var(id)?;
+        if v == self.params.0 || v == self.params.1 {
+            return Err(format!("the parameter {id:?} cannot be defined"));
+        }
+        let (n, d) = (self.ctx.poly(num)?, self.ctx.poly(den)?);
+        let proved = match positive {
+            None => d.as_constant().is_some_and(|c| c.is_positive()),
+            Some(step) => self.ctx.equal(self.ctx.atom(step)?, &Frac::poly(d.clone())),
+        };
+        if !proved {
+            return Err(format!("the denominator {den} is not proved positive"));
+        }
+        self.ctx.define(v, n, d)
+    }
+
+    /// Names the point (x, y, -1).
+    pub(super) fn point(&mut self, id: &str, x: &str, y: &str) -> Result<(), String> {
+        let p = [self.ctx.frac(x)?, self.ctx.frac(y)?, Frac::poly(self.ctx.constant(F::one().negated()))];
+        if self.points.insert(id.to_string(), p).is_some() {
+            return Err(format!("the point {id:?} is named twice"));
+        }
+        Ok(())
+    }
+
+    /// Every root of chi is below b: the coefficients of chi(b + s) in s are positive.
+    pub(super) fn root_bound(&mut self, id: &str, below: &str, variable: &str) -> Result<(), String> {
+        let b = self.rational(below)?;
+        let s = self.ctx.var(variable)?;
+        let l = self.ctx.lambda;
+        if s == l || s == self.params.0 || s == self.params.1 || self.ctx.chi.degree_in(s) > 0 {
+            return Err(format!("{variable:?} must be a fresh variable"));
+        }
+        let nv = self.ctx.nvars();
+        let shifted = self.ctx.chi.subst_fraction(
+            l,
+            &self.ctx.constant(b.clone()).add(&Poly::var(nv, s)),
+            &self.ctx.constant(F::one()),
+        );
+        for d in 0..=shifted.degree_in(s) {
+            let c = Frac::poly(shifted.coeff_in(s, d));
+            let sign = self.sign_of(&format!("{id}.{d}"), &c)?;
+            if sign.is_lt() || (d == 0 && sign.is_eq()) {
+                return Err(format!(
+                    "the coefficient of {variable}^{d} in chi({below} + {variable}) is not positive"
+                ));
+            }
+        }
+        let atom = self.ctx.constant(b).sub(&Poly::var(nv, l));
+        self.conclusions.push(format!("every real root of chi is below {below} (atom `{id}`)"));
+        self.ctx.add_atom(id, Frac::poly(atom))
+    }
+
+    /// det(t I - S_{n-1} S_1) = (t - 1)(t^2 + p t + q), as polynomials.
+    pub(super) fn pcc(&mut self, variable: &str, p: &str, q: &str) -> Result<(), String> {
+        let t = self.ctx.var(variable)?;
+        if t == self.ctx.lambda || t == self.params.0 || t == self.params.1 {
+            return Err(format!("{variable:?} must be a fresh variable"));
+        }
+        let (p, q) = (self.ctx.frac(p)?, self.ctx.frac(q)?);
+        let nv = self.ctx.nvars();
+        let one = self.ctx.constant(F::one());
+        let one_k2 = one.add(&Poly::var(nv, self.params.1)).pow(2);
+        let n = self.model.n;
+        let prod = super::model::mat_mul(&self.model.steps[n - 2], &self.model.steps[0]);
+        let tv = Poly::var(nv, t);
+        let char_m: PMat<F> = std::array::from_fn(|r| {
+            std::array::from_fn(|c| {
+                let diag = if r == c { one_k2.mul(&tv) } else { Poly::zero(nv) };
+                diag.sub(&prod[r][c])
+            })
+        });
+        let den = |f: &Frac<F>| {
+            f.den.iter().fold(one.clone(), |acc, a| acc.mul(self.ctx.polynomial_atom(a).expect("checked")))
+        };
+        let (dp, dq) = (den(&p), den(&q));
+        let quad = tv.pow(2).mul(&dp).mul(&dq).add(&p.num.mul(&dq).mul(&tv)).add(&q.num.mul(&dp));
+        let rhs = one_k2.pow(3).mul(&tv.sub(&one)).mul(&quad);
+        if det(&char_m).mul(&dp).mul(&dq) != rhs {
+            return Err("det(t I - S_(n-1) S_1) is not (t - 1)(t^2 + p t + q)".into());
+        }
+        self.conclusions.push(format!(
+            "det(tI - S_{} S_1) = ({variable} - 1)({variable}^2 + ({}) {variable} + ({})): the paper's Lemma on PCC excludes PCC where p^2 - 4q < 0 and q < 1",
+            n - 1,
+            short(self.ctx.text(&p)),
+            short(self.ctx.text(&q))
+        ));
+        Ok(())
+    }
+
+    /// A polynomial with constants substituted, as univariate coefficients in `v`.
+    fn univariate(
+        &self,
+        p: &Poly<F>,
+        at: &BTreeMap<usize, F>,
+        v: Option<usize>,
+    ) -> Result<Coeffs<F>, String> {
+        let p = at.iter().fold(p.clone(), |acc, (x, val)| acc.subst_constant(*x, val));
+        let deg = v.map_or(0, |v| p.degree_in(v));
+        let mut out = Vec::new();
+        for d in 0..=deg {
+            let c = v.map_or(p.clone(), |v| p.coeff_in(v, d));
+            out.push(c.as_constant().ok_or("the expression has other variables at the point")?);
+        }
+        while out.last().is_some_and(F::is_zero) {
+            out.pop();
+        }
+        Ok(out)
+    }
+
+    /// At a rational parameter point: a root count by a Sturm sequence, and positive values.
+    pub(super) fn witness(
+        &mut self,
+        at: &[(String, String)],
+        interval: &(String, String),
+        sequence: &[String],
+        roots: usize,
+        positive: &[String],
+    ) -> Result<(), String> {
+        let mut point = BTreeMap::new();
+        for (name, value) in at {
+            let v = self.ctx.var(name)?;
+            if v != self.params.0 && v != self.params.1 {
+                return Err(format!("{name:?} is not a parameter"));
+            }
+            point.insert(v, self.rational(value)?);
+        }
+        let value = |c: &Coeffs<F>| c.first().cloned().unwrap_or_else(F::zero);
+        for h in &self.file.hypotheses {
+            let p = self.ctx.poly(&h.expr)?;
+            if p.degree_in(self.ctx.lambda) == 0 && !value(&self.univariate(&p, &point, None)?).is_positive()
+            {
+                return Err(format!("the point does not satisfy the hypothesis {} > 0", h.expr));
+            }
+        }
+        let l = Some(self.ctx.lambda);
+        let chi = self.univariate(&self.ctx.chi, &point, l)?;
+        let seq = sequence
+            .iter()
+            .map(|s| self.univariate(&self.ctx.poly(s)?, &BTreeMap::new(), l))
+            .collect::<Result<Vec<_>, _>>()?;
+        let (lo, hi) = (self.rational(&interval.0)?, self.rational(&interval.1)?);
+        let count = count_roots(&chi, &seq, &lo, &hi)?;
+        if count != roots {
+            return Err(format!("the Sturm sequence counts {count} roots in (lo, hi], not {roots}"));
+        }
+        let mut values = Vec::new();
+        for e in positive {
+            let f = self.ctx.frac(e)?;
+            let num = value(&self.univariate(&f.num, &point, None)?);
+            let mut den = F::one();
+            for a in &f.den {
+                den = den.times(&value(&self.univariate(self.ctx.polynomial_atom(a)?, &point, None)?));
+            }
+            let v = num.over(&den).ok_or("a denominator vanishes at the point")?;
+            if !v.is_positive() {
+                return Err(format!("{} is not positive at the point", short(e.clone())));
+            }
+            values.push(crate::exact::to_canonical(&v));
+        }
+        let at_text: Vec<String> = at.iter().map(|(n, v)| format!("{n} = {v}")).collect();
+        let values = if values.is_empty() {
+            String::new()
+        } else {
+            format!("; the expressions listed are positive there: {}", values.join(", "))
+        };
+        self.conclusions.push(format!(
+            "at {}: chi has {roots} root(s) in ({}, {}]{values}",
+            at_text.join(", "),
+            interval.0,
+            interval.1
+        ));
+        Ok(())
+    }
+}

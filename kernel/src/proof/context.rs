@@ -1,0 +1,187 @@
+//! What a proof has established so far, and the exact tests on expressions: an identity holds
+//! when the numerator of the difference, with every definition substituted (denominators cleared,
+//! each proved positive), has pseudo-remainder zero by chi in lambda (docs/kernel-soundness.md).
+
+use super::poly::Poly;
+use crate::exact::{Field, ParseLimits};
+use std::collections::BTreeMap;
+
+/// An expression: a polynomial over a product of polynomial atoms (each proved positive).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Frac<F> {
+    /// The numerator.
+    pub num: Poly<F>,
+    /// Names of polynomial atoms whose product is the denominator.
+    pub den: Vec<String>,
+}
+
+impl<F: Field> Frac<F> {
+    /// A polynomial.
+    pub fn poly(num: Poly<F>) -> Self {
+        Frac { num, den: Vec::new() }
+    }
+
+    /// `self * o` (zero has no denominator).
+    pub fn mul(&self, o: &Self) -> Self {
+        let num = self.num.mul(&o.num);
+        let den = if num.is_zero() { Vec::new() } else { self.den.iter().chain(&o.den).cloned().collect() };
+        Frac { num, den }
+    }
+
+    /// `-self`.
+    pub fn neg(&self) -> Self {
+        Frac { num: self.num.neg(), den: self.den.clone() }
+    }
+}
+
+/// The state of a proof being checked.
+pub struct Context<F> {
+    /// Variable names.
+    pub names: Vec<String>,
+    /// Limits on numbers in the text.
+    pub limits: ParseLimits,
+    /// Index of lambda.
+    pub lambda: usize,
+    /// chi, whose roots lambda ranges over.
+    pub chi: Poly<F>,
+    /// Definitions (variable, numerator, denominator), in order.
+    defs: Vec<(usize, Poly<F>, Poly<F>)>,
+    /// Atoms: expressions proved (or assumed) positive.
+    atoms: BTreeMap<String, Frac<F>>,
+}
+
+impl<F: Field> Context<F> {
+    /// A context with variables, lambda's index and chi.
+    pub fn new(names: Vec<String>, limits: ParseLimits, lambda: usize, chi: Poly<F>) -> Self {
+        Context { names, limits, lambda, chi, defs: Vec::new(), atoms: BTreeMap::new() }
+    }
+
+    /// Number of variables.
+    pub fn nvars(&self) -> usize {
+        self.names.len()
+    }
+
+    /// The index of a variable.
+    pub fn var(&self, name: &str) -> Result<usize, String> {
+        self.names.iter().position(|n| n == name).ok_or_else(|| format!("unknown variable {name:?}"))
+    }
+
+    /// A constant polynomial.
+    pub fn constant(&self, c: F) -> Poly<F> {
+        Poly::constant(self.nvars(), c)
+    }
+
+    /// Parses a canonical polynomial.
+    pub fn poly(&self, text: &str) -> Result<Poly<F>, String> {
+        Poly::parse(text, &self.names, self.limits)
+    }
+
+    /// Parses `N` or `(N) / [a] [b] ...` (every atom known and polynomial).
+    pub fn frac(&self, text: &str) -> Result<Frac<F>, String> {
+        let Some(rest) = text.strip_prefix('(') else { return Ok(Frac::poly(self.poly(text)?)) };
+        let (num, den) =
+            rest.split_once(") / ").ok_or_else(|| format!("{text:?}: expected \"(N) / [atom] ...\""))?;
+        let mut atoms = Vec::new();
+        for tok in den.split(' ') {
+            let name = tok
+                .strip_prefix('[')
+                .and_then(|t| t.strip_suffix(']'))
+                .ok_or_else(|| format!("{text:?}: {tok:?} is not an atom in brackets"))?;
+            self.polynomial_atom(name)?;
+            atoms.push(name.to_string());
+        }
+        Ok(Frac { num: self.poly(num)?, den: atoms })
+    }
+
+    /// The canonical text of an expression.
+    pub fn text(&self, f: &Frac<F>) -> String {
+        let num = f.num.text(&self.names);
+        if f.den.is_empty() {
+            return num;
+        }
+        let den: Vec<String> = f.den.iter().map(|a| format!("[{a}]")).collect();
+        format!("({num}) / {}", den.join(" "))
+    }
+
+    /// Registers an atom (a name for an expression known to be positive).
+    pub fn add_atom(&mut self, name: &str, f: Frac<F>) -> Result<(), String> {
+        if self.atoms.contains_key(name) {
+            return Err(format!("the atom {name:?} is defined twice"));
+        }
+        self.atoms.insert(name.to_string(), f);
+        Ok(())
+    }
+
+    /// An atom's expression.
+    pub fn atom(&self, name: &str) -> Result<&Frac<F>, String> {
+        self.atoms
+            .get(name)
+            .ok_or_else(|| format!("unknown atom {name:?} (not a hypothesis or an earlier step)"))
+    }
+
+    /// An atom without denominator (usable as a denominator).
+    pub fn polynomial_atom(&self, name: &str) -> Result<&Poly<F>, String> {
+        let a = self.atom(name)?;
+        if a.den.is_empty() { Ok(&a.num) } else { Err(format!("the atom {name:?} has a denominator")) }
+    }
+
+    /// Registers a definition `v = num / den` (`den` proved positive by the caller).
+    pub fn define(&mut self, v: usize, num: Poly<F>, den: Poly<F>) -> Result<(), String> {
+        if v == self.lambda || self.defs.iter().any(|(d, _, _)| *d == v) {
+            return Err(format!("the variable {:?} cannot be defined (again)", self.names[v]));
+        }
+        self.defs.push((v, num, den));
+        Ok(())
+    }
+
+    /// The product of the atoms of a denominator.
+    fn den_poly(&self, f: &Frac<F>) -> Poly<F> {
+        f.den.iter().fold(self.constant(F::one()), |acc, a| {
+            acc.mul(self.polynomial_atom(a).expect("denominator atoms are checked when parsed"))
+        })
+    }
+
+    /// Whether a polynomial vanishes at every point of the region: definitions substituted
+    /// (latest first, denominators cleared), then the pseudo-remainder by chi in lambda is zero.
+    pub fn vanishes(&self, p: &Poly<F>) -> bool {
+        let p = self.defs.iter().rev().fold(p.clone(), |acc, (v, n, d)| acc.subst_fraction(*v, n, d));
+        p.pseudo_remainder(&self.chi, self.lambda).is_zero()
+    }
+
+    /// `a + b` (denominators multiplied unless equal).
+    pub fn add(&self, a: &Frac<F>, b: &Frac<F>) -> Frac<F> {
+        if a.num.is_zero() {
+            return b.clone();
+        }
+        if b.num.is_zero() {
+            return a.clone();
+        }
+        if a.den == b.den {
+            return Frac { num: a.num.add(&b.num), den: a.den.clone() };
+        }
+        Frac {
+            num: a.num.mul(&self.den_poly(b)).add(&b.num.mul(&self.den_poly(a))),
+            den: a.den.iter().chain(&b.den).cloned().collect(),
+        }
+    }
+
+    /// `a . b` for a covector and a point of expressions.
+    pub fn dot(&self, a: &[Frac<F>; 3], b: &[Frac<F>; 3]) -> Frac<F> {
+        (1..3).fold(a[0].mul(&b[0]), |acc, i| self.add(&acc, &a[i].mul(&b[i])))
+    }
+
+    /// `m p` for a matrix of polynomials.
+    pub fn image(&self, m: &[[Poly<F>; 3]; 3], p: &[Frac<F>; 3]) -> [Frac<F>; 3] {
+        std::array::from_fn(|r| self.dot(&m[r].clone().map(Frac::poly), p))
+    }
+
+    /// Whether `a = b` at every point of the region.
+    pub fn equal(&self, a: &Frac<F>, b: &Frac<F>) -> bool {
+        self.vanishes(&a.num.mul(&self.den_poly(b)).sub(&b.num.mul(&self.den_poly(a))))
+    }
+
+    /// Whether `a = 0` at every point of the region.
+    pub fn is_zero(&self, a: &Frac<F>) -> bool {
+        self.vanishes(&a.num)
+    }
+}

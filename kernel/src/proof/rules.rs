@@ -1,0 +1,210 @@
+//! The geometric rules. They carry no verdict: the checker computes the model's maps and cones
+//! (in the proof's coordinates), runs the certificate kernel's clipping on named points, and
+//! requires, for every sign it needs, either an exact zero, a non-zero constant, or the step
+//! with the key it names (a `Positive` step proving the expression or its negative).
+
+use super::algebra::short;
+use super::check::Checker;
+use super::context::Frac;
+use super::model::PVec;
+use crate::exact::Field;
+use std::cmp::Ordering;
+
+/// A cone declared by a `Cone` step: vertices (named points) and facets (name, covector).
+pub struct ConeDecl<F> {
+    vertices: Vec<String>,
+    facets: Vec<(String, [Frac<F>; 3])>,
+}
+
+impl<F: Field> Checker<'_, F> {
+    /// A polynomial covector applied to a point.
+    fn apply(&self, l: &PVec<F>, p: &[Frac<F>; 3]) -> Frac<F> {
+        self.ctx.dot(&l.clone().map(Frac::poly), p)
+    }
+
+    fn named(&self, p: &str) -> Result<&[Frac<F>; 3], String> {
+        self.points.get(p).ok_or_else(|| format!("unknown point {p:?}"))
+    }
+
+    /// The sign of `e`: zero, a constant, or proved by the `Positive` step `key`.
+    pub(super) fn sign_of(&self, key: &str, e: &Frac<F>) -> Result<Ordering, String> {
+        if self.ctx.is_zero(e) {
+            return Ok(Ordering::Equal);
+        }
+        if let Some(c) = e.num.as_constant() {
+            return Ok(c.sign()); // the denominator is a product of positive atoms
+        }
+        let atom = self
+            .ctx
+            .atom(key)
+            .map_err(|_| format!("no step `{key}` proves the sign of {}", short(self.ctx.text(e))))?;
+        if self.ctx.equal(atom, e) {
+            Ok(Ordering::Greater)
+        } else if self.ctx.equal(atom, &e.neg()) {
+            Ok(Ordering::Less)
+        } else {
+            Err(format!("step `{key}` does not prove the sign of {}", short(self.ctx.text(e))))
+        }
+    }
+
+    /// Requires `e >= 0` (by `sign_of`).
+    fn non_negative(&self, key: &str, e: &Frac<F>) -> Result<(), String> {
+        match self.sign_of(key, e)? {
+            Ordering::Less => Err(format!("{} is negative (step `{key}`)", short(self.ctx.text(e)))),
+            _ => Ok(()),
+        }
+    }
+
+    /// `map(point) = sum of c_i w_i` (maps scaled by 1 + kappa on both sides).
+    pub(super) fn image_step(
+        &mut self,
+        map: &str,
+        point: &str,
+        equals: &[(String, String)],
+    ) -> Result<(), String> {
+        let m = match map.strip_prefix('S').and_then(|j| j.parse::<usize>().ok()) {
+            Some(j) if (1..self.model.n).contains(&j) => &self.model.steps[j - 1],
+            _ if map == "I0" => &self.model.impact,
+            _ => return Err(format!("{map:?} is not a map of the model (S1..S{}, I0)", self.model.n - 1)),
+        };
+        let img = self.ctx.image(m, self.named(point)?);
+        let nv = self.ctx.nvars();
+        let one_k = Frac::poly(self.ctx.constant(F::one()).add(&super::poly::Poly::var(nv, self.params.1)));
+        let zero = Frac::poly(super::poly::Poly::zero(nv));
+        let mut sum = [zero.clone(), zero.clone(), zero];
+        for (c, w) in equals {
+            let c = one_k.mul(&self.ctx.frac(c)?);
+            let w = self.named(w)?;
+            sum = std::array::from_fn(|i| self.ctx.add(&sum[i], &c.mul(&w[i])));
+        }
+        if (0..3).all(|i| self.ctx.equal(&img[i], &sum[i])) {
+            Ok(())
+        } else {
+            Err(format!("{map} {point} is not the combination given"))
+        }
+    }
+
+    /// A cone over a polygon of named points, with its facets.
+    pub(super) fn cone(
+        &mut self,
+        id: &str,
+        vertices: &[String],
+        facets: &[(String, [String; 3])],
+    ) -> Result<(), String> {
+        let m = vertices.len();
+        if m < 3 || facets.len() != m {
+            return Err("a cone needs at least three vertices and one facet per edge".into());
+        }
+        let mut fs = Vec::with_capacity(m);
+        for (name, cov) in facets {
+            fs.push((
+                name.clone(),
+                [self.ctx.frac(&cov[0])?, self.ctx.frac(&cov[1])?, self.ctx.frac(&cov[2])?],
+            ));
+        }
+        for (i, (name, f)) in fs.iter().enumerate() {
+            for (k, v) in vertices.iter().enumerate() {
+                let value = self.ctx.dot(f, self.named(v)?);
+                let on_edge = k == i || k == (i + 1) % m;
+                if on_edge && !self.ctx.is_zero(&value) {
+                    return Err(format!("facet {name} does not vanish at {v}, an end of edge {i}"));
+                }
+                if !on_edge && !self.sign_of(&format!("{id}.{name}.{v}"), &value)?.is_gt() {
+                    return Err(format!("facet {name} is not positive at {v}"));
+                }
+            }
+        }
+        if self.cones.insert(id.to_string(), ConeDecl { vertices: vertices.to_vec(), facets: fs }).is_some() {
+            return Err(format!("the cone {id:?} is declared twice"));
+        }
+        Ok(())
+    }
+
+    /// One clipping pass (Sutherland-Hodgman) of a polygon of named points by l . p >= 0; the
+    /// crossing of an edge P -> N is (l.P) N - (l.N) P, which must be parallel to the next named
+    /// crossing point.
+    fn clip(
+        &self,
+        key: &str,
+        poly: &[String],
+        l: &PVec<F>,
+        crossings: &mut std::slice::Iter<'_, String>,
+    ) -> Result<Vec<String>, String> {
+        let mut d = Vec::with_capacity(poly.len());
+        let mut signs = Vec::with_capacity(poly.len());
+        for p in poly {
+            let v = self.apply(l, self.named(p)?);
+            signs.push(self.sign_of(&format!("{key}.{p}"), &v)?);
+            d.push(v);
+        }
+        let mut out = Vec::new();
+        for i in 0..poly.len() {
+            let j = (i + 1) % poly.len();
+            if !signs[i].is_lt() {
+                out.push(poly[i].clone());
+            }
+            if signs[i].is_ne() && signs[j].is_ne() && signs[i] != signs[j] {
+                let w = crossings.next().ok_or("fewer crossings listed than the clipping creates")?;
+                let (a, b) = (self.named(&poly[i])?, self.named(&poly[j])?);
+                let x: [Frac<F>; 3] =
+                    std::array::from_fn(|k| self.ctx.add(&d[i].mul(&b[k]), &d[j].mul(&a[k]).neg()));
+                let wp = self.named(w)?;
+                let parallel = [(1, 2), (2, 0), (0, 1)]
+                    .iter()
+                    .all(|&(r, s)| self.ctx.equal(&x[r].mul(&wp[s]), &x[s].mul(&wp[r])));
+                if !parallel {
+                    return Err(format!(
+                        "the edge {} -> {} crosses {key} at a point that is not {w}",
+                        poly[i], poly[j]
+                    ));
+                }
+                out.push(w.clone());
+            }
+        }
+        Ok(out)
+    }
+
+    /// S_j(K ∩ C_j) ⊆ K.
+    pub(super) fn invariant(&mut self, cone: &str, j: u64, crossings: &[String]) -> Result<(), String> {
+        let k = self.cones.get(cone).ok_or_else(|| format!("unknown cone {cone:?}"))?;
+        if j == 0 || j as usize >= self.model.n {
+            return Err(format!("map {j} is not one of S_1..S_{}", self.model.n - 1));
+        }
+        let mut poly = k.vertices.clone();
+        let mut it = crossings.iter();
+        for (m, l) in self.model.cones[j as usize - 1].iter().enumerate() {
+            poly = self.clip(&format!("{cone}.C{j}.h{m}"), &poly, l, &mut it)?;
+        }
+        if let Some(w) = it.next() {
+            return Err(format!("the crossing {w} is never created"));
+        }
+        let s = &self.model.steps[j as usize - 1];
+        for w in &poly {
+            let img = self.ctx.image(s, self.named(w)?);
+            for (name, f) in &k.facets {
+                self.non_negative(&format!("{cone}.S{j}.{w}.{name}"), &self.ctx.dot(f, &img))?;
+            }
+        }
+        self.conclusions.push(format!(
+            "S_{j}({cone} ∩ C_{j}) ⊆ {cone}: {cone} ∩ C_{j} is the polygon {}, and every facet is non-negative on the images",
+            poly.join(", ")
+        ));
+        self.invariant.entry(cone.to_string()).or_default().insert(j);
+        Ok(())
+    }
+
+    /// I_0(D) ⊆ K.
+    pub(super) fn all_down(&mut self, cone: &str) -> Result<(), String> {
+        let k = self.cones.get(cone).ok_or_else(|| format!("unknown cone {cone:?}"))?;
+        for (m, g) in self.model.all_down.iter().enumerate() {
+            let img = self.ctx.image(&self.model.impact, &g.clone().map(Frac::poly));
+            for (name, f) in &k.facets {
+                self.non_negative(&format!("{cone}.I0.{m}.{name}"), &self.ctx.dot(f, &img))?;
+            }
+        }
+        self.conclusions.push(format!(
+            "I_0(D) ⊆ {cone}: every drop with all contacts moving down has its velocity after the first impact in {cone}"
+        ));
+        Ok(())
+    }
+}

@@ -1,0 +1,61 @@
+//! `chatter check-proof`: re-checks proof files with the trusted crate, on both backends.
+
+use super::{Outcome, emit};
+use chatter_kernel::exact::ParseLimits;
+use chatter_kernel::verify::{Verdict, verify_proof_text};
+use clap::Args;
+use serde_json::json;
+use std::path::PathBuf;
+
+/// Raw arguments of `chatter check-proof`.
+#[derive(Args, Debug)]
+#[command(after_help = "Prints `FILE: OK` with what the proof establishes and under which hypotheses, or\n\
+`FILE: REJECTED: step i `id`: reason`. Exit status 0 only if every step of every file checks; 1 if a\n\
+step fails; 2 if a file cannot be read; 3 if the backends disagree (a bug).\n\n\
+Example:\n  chatter check-proof proofs/square.ron")]
+pub struct CheckProofArgs {
+    /// Proof files (e.g. proofs/square.ron).
+    #[arg(required = true)]
+    pub paths: Vec<PathBuf>,
+    /// Print one JSON object per file.
+    #[arg(long)]
+    pub json: bool,
+    /// Longest number accepted, in decimal digits.
+    #[arg(long, default_value_t = ParseLimits::default().max_digits)]
+    pub max_digits: usize,
+}
+
+pub fn run(a: CheckProofArgs) -> Outcome {
+    let limits = ParseLimits { max_digits: a.max_digits };
+    let mut outcome = Outcome::Success;
+    for path in &a.paths {
+        let text = match std::fs::read_to_string(path) {
+            Ok(t) => t,
+            Err(e) => return Outcome::Usage(format!("cannot read {}: {e}", path.display())),
+        };
+        let p = path.display();
+        match verify_proof_text(&text, limits) {
+            Verdict::Accepted(c) => {
+                if a.json {
+                    emit(&json!({"path": p.to_string(), "status": "OK", "steps": c.steps, "hypotheses": c.hypotheses, "conclusions": c.conclusions}).to_string());
+                } else {
+                    emit(&format!("{p}: OK ({}: {} steps, malachite + num-rational)", c.name, c.steps));
+                    emit(&format!("  hypotheses: {}", c.hypotheses.join("; ")));
+                    for (i, x) in c.conclusions.iter().enumerate() {
+                        emit(&format!("  {}. {x}", i + 1));
+                    }
+                }
+            }
+            Verdict::Rejected(r) => {
+                if a.json {
+                    emit(&json!({"path": p.to_string(), "status": "REJECTED", "code": r.code, "locus": r.locus, "reason": r.message}).to_string());
+                } else {
+                    emit(&format!("{p}: REJECTED: {}", r.message));
+                }
+                outcome = Outcome::Negative;
+            }
+            Verdict::Disagree(s) => return Outcome::Internal(format!("{p}: the backends disagree: {s}")),
+        }
+    }
+    outcome
+}
