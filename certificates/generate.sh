@@ -38,6 +38,7 @@ done <<'BODIES'
 2 1/3 1/20 uniform-rod
 2 1/3 7/100 uniform-rod-just-below-7-4sqrt3
 2 1/10 1/5 light-rod
+2 1/4 1/9 rod-on-goyals-boundary
 BODIES
 # A large certificate (64 generators) for the verification benchmark (benches/verify.rs).
 "$bin" certify --n 3 --kappa 3/20 --gamma 1/20 --claim effectively-invariant --max-vertices 60 \

@@ -49,9 +49,9 @@ pub fn hull<R: Ring>(pts: &[Vec3<R>]) -> Vec<usize> {
 pub struct ConvexPolygon<R> {
     /// The vertices, counter-clockwise.
     pub vertices: Vec<Vec3<R>>,
-    /// facets[i] . p >= 0 is the inner side of the edge from vertex i to vertex i+1.
+    /// `facets[i] . p >= 0` is the inner side of the edge from vertex i to vertex i+1.
     pub facets: Vec<Vec3<R>>,
-    /// chords[i] . p >= 0: p is left of the ray from vertex 0 through vertex i (i >= 1).
+    /// `chords[i] . p >= 0`: p is left of the ray from vertex 0 through vertex i (i >= 1).
     chords: Vec<Vec3<R>>,
 }
 

@@ -183,3 +183,30 @@ fn the_header_is_checked_against_the_model() {
     f.steps.insert(0, f.steps[0].clone());
     assert_eq!(fails_at(&f), Some(1), "a repeated id");
 }
+
+#[test]
+fn hypotheses_are_about_the_parameters_and_include_kappa_positive() {
+    use chatter_kernel::proof::Hypothesis;
+    let mut f = committed();
+    f.hypotheses.push(Hypothesis { name: "e1".into(), expr: "e1".into() });
+    let r = check::<Q>(&f, ParseLimits::default()).unwrap_err();
+    assert!(matches!(&r.locus, Locus::Field { path } if path == "hypotheses[4]"), "{r}");
+    let mut f = committed();
+    f.hypotheses.retain(|h| h.expr != "k");
+    let r = check::<Q>(&f, ParseLimits::default()).unwrap_err();
+    assert!(r.message.contains("kappa > 0 must be a hypothesis"), "{r}");
+}
+
+#[test]
+fn definitions_are_explicit_in_the_parameters_and_earlier_definitions() {
+    let base = committed();
+    let i = base.steps.iter().position(|s| matches!(s, Step::Define { id, .. } if id == "e1")).unwrap();
+    let mut f = base.clone();
+    let Step::Define { num, .. } = &mut f.steps[i] else { unreachable!() };
+    *num = "e2".into(); // e1 := e2 / den, e2 not yet defined
+    assert_eq!(fails_at(&f), Some(i));
+    let mut f = base.clone();
+    let Step::Define { id, .. } = &mut f.steps[i] else { unreachable!() };
+    *id = "k".into(); // redefining a parameter
+    assert_eq!(fails_at(&f), Some(i));
+}

@@ -106,7 +106,7 @@ impl SplitMix64 {
 
 /// The paper's random drop with seed `seed`: R_1..R_5 uniform on (0, 0.1), velocity
 /// (ω_x, ω_y, v) = (R1, R2, -1) and position (φ_x, φ_y, h) = (R3, R4, 1 + R5) in the paper's
-/// coordinates, converted to ours (MODEL §2) in `f64`.
+/// coordinates, converted to ours (docs/model.md §2) in `f64`.
 ///
 /// The rod uses (ω, v) = (R1, -1) and (φ, h) = (R3, 1 + R5) with contacts at x = -1 (contact 0)
 /// and x = +1: u0 = v - ω, u1 = v + ω, h0 = h - φ, h1 = h + φ.

@@ -19,7 +19,7 @@ pub enum Step {
     Breakdown,
 }
 
-/// An event-driven simulation in one arithmetic (MODEL §10: the state is q and p only).
+/// An event-driven simulation in one arithmetic (docs/model.md §10: the state is q and p only).
 pub trait Engine {
     /// Finds the next impact (the approaching contact that reaches height 0 first) and applies it.
     fn step(&mut self) -> Step;

@@ -1,6 +1,6 @@
 //! The exact engine: rational states and rational impact times (every impact time is
 //! h_k / (-u_k) with rational h_k, u_k), so ties are decided exactly and symmetric data keep
-//! their symmetry (MODEL §10).
+//! their symmetry (docs/model.md §10).
 
 use super::drop::Start;
 use super::engine::{Engine, Step};

@@ -1,4 +1,4 @@
-//! The `f64` engine with renormalisation (MODEL §10).
+//! The `f64` engine with renormalisation (docs/model.md §10).
 //!
 //! The dynamics are homogeneous: scaling q by a and p by b maps trajectories to trajectories
 //! with times scaled by a/b. After every impact q and p are each divided by the power of two

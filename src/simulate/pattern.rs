@@ -1,5 +1,5 @@
 //! The impact sequence in words: the transient and the periodic pattern it settles into,
-//! named by the step maps S_j of MODEL §3 (S_1 repeated is the paper's regular pattern
+//! named by the step maps S_j of docs/model.md §3 (S_1 repeated is the paper's regular pattern
 //! "an impact at a vertex is followed by an impact at its immediate neighbour").
 
 use super::system::Shape;

@@ -4,11 +4,11 @@
 //! 1. The paper's criterion (section "Comparison with direct simulation"): PCC ends in a state
 //!    q = c·m_{i,i+1} (c > 0), p = c'·m_{i,i+1} (c' < 0), so the simulation declares PCC when
 //!    |1 - cos∠(q, m)| < ε and |1 + cos∠(p, m)| < ε, the angles measured in the paper's
-//!    coordinates (φx, φy, h) and (ωx, ωy, v) (MODEL §2 gives the change of coordinates).
+//!    coordinates (φx, φy, h) and (ωx, ωy, v) (docs/model.md §2 gives the change of coordinates).
 //!
 //! 2. An exact variant, [`prove_pair_chatter`]. While only contacts i and j hit, their heights
 //!    and normal velocities form a closed two-contact system, a rod whose coupling is
-//!    E = f_j·kick_i = (1+γ)(κ + cos 2π/n)/(1+κ) (MODEL §3). Right after an impact at i, with
+//!    E = f_j·kick_i = (1+γ)(κ + cos 2π/n)/(1+κ) (docs/model.md §3). Right after an impact at i, with
 //!    a = u_i ≥ 0 and b = u_j < 0, the ratio s = a/(-b) evolves by g(s) = γ/(|E| - s) and the
 //!    pair keeps alternating iff every iterate stays below |E| — by the rod theorem of the paper
 //!    (after Goyal et al.), iff E < 0, D = E² - 4γ > 0 and s < s₊ = (|E| + √D)/2, a rational

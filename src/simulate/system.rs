@@ -1,4 +1,4 @@
-//! The falling body as the simulator sees it (MODEL §2-3, §7): contact covectors f_k with
+//! The falling body as the simulator sees it (docs/model.md §2-3, §7): contact covectors f_k with
 //! u_k = f_k·p and h_k = f_k·q, impact kicks with p+ = p - u_k kick_k, the centre-of-mass
 //! covector, the kinetic energy, and the paper's coordinates for the PCC criterion.
 //!
@@ -15,7 +15,7 @@ use chatter_kernel::model::{BodyError, Polygon, Rod, Shape as Body};
 /// the one place where the number of contacts decides between the rod and a polygon.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Shape {
-    /// The planar rod of MODEL §7: two contacts, coordinates (u0, u1).
+    /// The planar rod of docs/model.md §7: two contacts, coordinates (u0, u1).
     Rod,
     /// A flat regular n-gon, n in {3, 4, 6} (exact cosines).
     Polygon(u64),
@@ -67,13 +67,13 @@ pub struct System {
     pub gamma: Q,
     /// f_k, k = 0..n-1: u_k = f_k·p, h_k = f_k·q.
     pub contacts: Vec<Vec3<Q>>,
-    /// kick_k = beta d_k (MODEL §3): an impact at k maps p to p - u_k kick_k.
+    /// kick_k = beta d_k (docs/model.md §3): an impact at k maps p to p - u_k kick_k.
     pub kicks: Vec<Vec3<Q>>,
     /// c with v = c·p (centre-of-mass velocity) and hc = c·q.
     pub centre: Vec3<Q>,
     /// Kinetic energy as the quadratic form T(p) = pᵀ G p / 2 (exact).
     pub gram: [[Q; 3]; 3],
-    /// For polygons, m_{i,i+1} (i = 0..n-1) in our coordinates (MODEL §4); empty for the rod.
+    /// For polygons, m_{i,i+1} (i = 0..n-1) in our coordinates (docs/model.md §4); empty for the rod.
     pub rest_points: Vec<Vec3<Q>>,
     /// E = f_1·kick_0 = (1+γ)(κ + cos 2π/n)/(1+κ): how an impact at one contact changes the
     /// normal velocity of its neighbour, per unit of its own (polygons; 0 for the rod).
@@ -102,7 +102,7 @@ impl System {
         }
     }
 
-    /// The rod (MODEL §7) in the first two coordinates.
+    /// The rod (docs/model.md §7) in the first two coordinates.
     fn rod(rod: &Rod<Q>) -> System {
         let (kappa, gamma) = (rod.kappa().clone(), rod.gamma().clone());
         let one = Q::int(1);
@@ -124,7 +124,7 @@ impl System {
         System { shape, kappa, gamma, contacts, kicks, centre, gram, rest_points, pair_coupling }
     }
 
-    /// A regular polygon (MODEL §2-4) from the kernel's covectors, impact directions and rest points.
+    /// A regular polygon (docs/model.md §2-4) from the kernel's covectors, impact directions and rest points.
     fn polygon(body: &Polygon<Q>) -> System {
         let n = body.n() as i64;
         let beta = body.beta();
@@ -146,7 +146,7 @@ impl System {
         self.contacts.len()
     }
 
-    /// Kinetic energy T = pᵀ G p / 2 (MODEL §2; the rod: (v² + κω²)/2).
+    /// Kinetic energy T = pᵀ G p / 2 (docs/model.md §2; the rod: (v² + κω²)/2).
     pub fn energy(&self, p: &Vec3<Q>) -> Q {
         let mut t = z();
         for (r, row) in self.gram.iter().enumerate() {
@@ -223,7 +223,7 @@ pub struct FloatSystem {
     pub gamma: f64,
     /// Unit vectors along m_{i,i+1} in the paper's coordinates (polygons only).
     pub rest_paper: [[f64; 3]; MAX_CONTACTS],
-    /// cos and sin of 2π/n (polygons; the change to the paper's coordinates, MODEL §2).
+    /// cos and sin of 2π/n (polygons; the change to the paper's coordinates, docs/model.md §2).
     pub cos1: f64,
     pub sin1: f64,
     /// [`System::pcc_possible`].
@@ -282,7 +282,7 @@ impl FloatSystem {
     }
 
     /// Our coordinates (h0, h1, hc) or (u0, u1, v) to the paper's (φx, φy, h) or (ωx, ωy, v)
-    /// (MODEL §2: ω_y = v - u0, ω_x = (u1 - v + c ω_y)/s). Polygons only.
+    /// (docs/model.md §2: ω_y = v - u0, ω_x = (u1 - v + c ω_y)/s). Polygons only.
     pub fn to_paper(&self, x: &[f64; 3]) -> [f64; 3] {
         let wy = x[2] - x[0];
         let wx = (x[1] - x[2] + self.cos1 * wy) / self.sin1;
@@ -322,7 +322,7 @@ pub fn frame_index(slots: [usize; 3]) -> usize {
 /// unchanged and the new one is h = 0, u = -γ u⁻ exactly, so a change of frame costs nothing and
 /// loses nothing. Heights and velocities of chattering contacts are then always coordinates, not
 /// differences of O(1) numbers, and keep their relative precision however small they become
-/// next to the rest of the state (MODEL §10).
+/// next to the rest of the state (docs/model.md §10).
 #[derive(Clone, Debug, Default)]
 pub struct Frame {
     /// The contacts whose heights are the coordinates (slot 2 unused for the rod).

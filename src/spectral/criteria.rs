@@ -1,6 +1,6 @@
 //! The paper's spectral criteria, decided exactly, and their thresholds in gamma.
 //!
-//! - CC criterion (Conjecture 1 (iii), MODEL §6): S_1 has a real, positive dominant eigenvalue
+//! - CC criterion (Conjecture 1 (iii), docs/model.md §6): S_1 has a real, positive dominant eigenvalue
 //!   (Elsner-Vandergraft, with multiplicities).
 //! - PCC criterion (the PCC Lemma and Conjecture 2): all eigenvalues of S_{n-1} S_1 are real.
 //! - The rod (n = 2, the paper's Theorem after Goyal et al.): CC from pure translation iff

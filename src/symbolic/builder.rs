@@ -167,7 +167,8 @@ impl Builder {
     /// Defines a variable.
     pub fn define(&mut self, id: &str, num: &Poly<Q>, den: &Poly<Q>, positive: Option<&str>, note: &str) {
         let v = self.var(id);
-        if let Err(e) = self.ctx.define(v, num.clone(), den.clone()) {
+        let params = [self.var(self.header.gamma), self.var(self.header.kappa)];
+        if let Err(e) = self.ctx.define(v, num.clone(), den.clone(), &params) {
             self.problem(id, e);
         }
         let nm = &self.ctx.names;

@@ -13,7 +13,7 @@ fn rational(x: &Nf) -> Q {
 
 #[test]
 fn plate_kappas_follow_from_the_polygon_moments() {
-    // (1 + 2 cos^2(pi/n))/12 = (2 + cos(2 pi/n))/12 (MODEL §9), exactly in Q(cos 2pi/n).
+    // (1 + 2 cos^2(pi/n))/12 = (2 + cos(2 pi/n))/12 (docs/model.md §9), exactly in Q(cos 2pi/n).
     for n in 3..=12 {
         let e = prism(n, &Q::int(0)).unwrap();
         let c1 = bodies::cosine(n);

@@ -25,6 +25,8 @@ struct Expected {
     file: String,
     code: String,
     message: String,
+    /// The structured locus, as `chatter verify --json` writes it.
+    locus: serde_json::Value,
     why: String,
 }
 
@@ -80,6 +82,7 @@ fn every_invalid_certificate_is_rejected_for_its_stated_reason() {
             match verify_text(&text, ParseLimits::default(), b) {
                 Verdict::Rejected(r) => {
                     assert_eq!(r.code.as_str(), e.code, "{}: {}", e.file, r.message);
+                    assert_eq!(serde_json::to_value(&r.locus).unwrap(), e.locus, "{}: locus", e.file);
                     assert!(
                         r.message.contains(&e.message),
                         "{}: {:?} lacks {:?}",

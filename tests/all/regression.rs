@@ -175,3 +175,20 @@ fn issue8_rejections_carry_a_structured_locus() {
     assert_eq!(r.code, Code::ImageOutside);
     assert!(matches!(r.locus, Locus::Piece { piece: 1, vertex: 0, outside: Some(_) }), "{:?}", r.locus);
 }
+
+#[test]
+fn issue8_long_numbers_are_abbreviated_in_rejections() {
+    // The documented shrunk rectangle, with -4/9 replaced by a 1,200-digit neighbour.
+    let text =
+        std::fs::read_to_string(crate::common::root().join("certificates/invalid/shrunk-rectangle.ron"))
+            .unwrap();
+    let big = format!("-4{}1/9{}", "0".repeat(600), "0".repeat(600));
+    let text = text.replace("\"-4/9\"", &format!("\"{big}\""));
+    let Verdict::Rejected(r) = chatter_kernel::verify::verify_text(&text, Default::default(), &[MALACHITE])
+    else {
+        panic!("rejected")
+    };
+    assert_eq!(r.code, Code::ImageOutside);
+    assert!(r.message.len() < 300, "{} characters: {}", r.message.len(), r.message);
+    assert!(r.message.contains("characters)"), "the long numbers are marked as abbreviated: {}", r.message);
+}

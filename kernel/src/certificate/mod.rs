@@ -66,7 +66,7 @@ pub enum Coordinates {
 /// What the certificate proves (each claim includes the checks of the previous ones).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 pub enum Claim {
-    /// K lies in v <= 0 and S_j(K ∩ C_j) ⊆ K for j = 1..n-1 (MODEL §5 conditions 1-2).
+    /// K lies in v <= 0 and S_j(K ∩ C_j) ⊆ K for j = 1..n-1 (docs/model.md §5 conditions 1-2).
     EffectivelyInvariant,
     /// Also I_0(D) ⊆ K: every drop with all contacts moving down ends in CC or PCC.
     CcOrPccFromAllDown,

@@ -1,5 +1,5 @@
 //! The points m_{k,l}, the cones C_j of velocities from which contact j hits next
-//! (the paper's Lemma on C_j, MODEL §4), and the all-down cone D (MODEL §5).
+//! (the paper's Lemma on C_j, docs/model.md §4), and the all-down cone D (docs/model.md §5).
 
 use super::linalg::{Vec3, cross, neg};
 use super::polygon::Polygon;
@@ -21,7 +21,7 @@ impl<F: OrderedField> Polygon<F> {
         self.rest_point(k, k + 1).expect("adjacent contacts of a polygon are never opposite")
     }
 
-    /// Covectors l with C_j = { p : l . p >= 0 for all four } (MODEL §4), j = 1..n-1.
+    /// Covectors l with C_j = { p : l . p >= 0 for all four } (docs/model.md §4), j = 1..n-1.
     pub fn next_contact_cone(&self, j: i64) -> [Vec3<F>; 4] {
         let (z, o) = (F::zero(), F::one());
         let m01 = self.adjacent_rest_point(0);
@@ -34,7 +34,7 @@ impl<F: OrderedField> Polygon<F> {
         ]
     }
 
-    /// Generators -m_{k,k+1} (k = 0..n-1) of D = { p : u_k <= 0 for all k } (MODEL §5).
+    /// Generators -m_{k,k+1} (k = 0..n-1) of D = { p : u_k <= 0 for all k } (docs/model.md §5).
     pub fn all_down_generators(&self) -> Vec<Vec3<F>> {
         (0..self.n() as i64).map(|k| neg(&self.adjacent_rest_point(k))).collect()
     }

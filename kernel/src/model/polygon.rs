@@ -113,7 +113,7 @@ impl<F: OrderedField> Polygon<F> {
         &self.cos[m.rem_euclid(self.n as i64) as usize]
     }
 
-    /// Covector f_k of contact k: u_k = a_k u0 + b_k u1 + (1 - a_k - b_k) v (MODEL §2).
+    /// Covector f_k of contact k: u_k = a_k u0 + b_k u1 + (1 - a_k - b_k) v (docs/model.md §2).
     pub fn contact(&self, k: i64) -> &Vec3<F> {
         &self.contacts[k.rem_euclid(self.n as i64) as usize]
     }
@@ -130,7 +130,7 @@ impl<F: OrderedField> Polygon<F> {
         [kp.plus(self.cos(k)), kp.plus(self.cos(k - 1)), kp.clone()]
     }
 
-    /// Impact map I_k: p+ = p - beta u_k d_k (MODEL §3, the paper's equation for U_i).
+    /// Impact map I_k: p+ = p - beta u_k d_k (docs/model.md §3, the paper's equation for U_i).
     pub fn impact(&self, k: i64) -> Mat3<F> {
         let beta = self.beta();
         let d = self.impact_direction(k);

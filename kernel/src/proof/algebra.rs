@@ -96,7 +96,7 @@ impl<F: Field> Checker<'_, F> {
         if !proved {
             return Err(format!("the denominator {den} is not proved positive"));
         }
-        self.ctx.define(v, n, d)
+        self.ctx.define(v, n, d, &[self.params.0, self.params.1])
     }
 
     /// Names the point (x, y, -1).

@@ -166,11 +166,30 @@ impl<'a, F: Field> Checker<'a, F> {
         Ok(())
     }
 
+    /// The hypotheses: polynomials in gamma, kappa and lambda only (a hypothesis about a variable
+    /// defined later would constrain the definition), one of them kappa itself (the maps are
+    /// scaled by 1 + kappa, which must be positive).
     fn hypotheses(&mut self) -> Result<(), Rejection> {
+        let allowed = [self.params.0, self.params.1, self.ctx.lambda];
+        let mut kappa_positive = false;
         for (i, h) in self.file.hypotheses.iter().enumerate() {
             let path = format!("hypotheses[{i}]");
             let p = self.ctx.poly(&h.expr).map_err(|e| header_error(&path, e))?;
+            if let Some(v) = (0..self.ctx.nvars()).find(|v| !allowed.contains(v) && p.degree_in(*v) > 0) {
+                let msg = format!(
+                    "a hypothesis may involve gamma, kappa and lambda only, not {:?}",
+                    self.ctx.names[v]
+                );
+                return Err(header_error(&path, msg));
+            }
+            kappa_positive |= p == Poly::var(self.ctx.nvars(), self.params.1);
             self.ctx.add_atom(&h.name, Frac::poly(p)).map_err(|e| header_error(&path, e))?;
+        }
+        if !kappa_positive {
+            return Err(header_error(
+                "hypotheses",
+                "kappa > 0 must be a hypothesis (the maps are scaled by 1 + kappa)",
+            ));
         }
         Ok(())
     }

@@ -125,10 +125,22 @@ impl<F: Field> Context<F> {
         if a.den.is_empty() { Ok(&a.num) } else { Err(format!("the atom {name:?} has a denominator")) }
     }
 
-    /// Registers a definition `v = num / den` (`den` proved positive by the caller).
-    pub fn define(&mut self, v: usize, num: Poly<F>, den: Poly<F>) -> Result<(), String> {
-        if v == self.lambda || self.defs.iter().any(|(d, _, _)| *d == v) {
+    /// Registers a definition `v = num / den` (`den` proved positive by the caller). `num` and
+    /// `den` may involve only `allowed` variables (the parameters and lambda) and variables defined
+    /// before, so the definitions are explicit functions of the parameters and lambda.
+    pub fn define(&mut self, v: usize, num: Poly<F>, den: Poly<F>, allowed: &[usize]) -> Result<(), String> {
+        if v == self.lambda || allowed.contains(&v) || self.defs.iter().any(|(d, _, _)| *d == v) {
             return Err(format!("the variable {:?} cannot be defined (again)", self.names[v]));
+        }
+        let known =
+            |x: usize| allowed.contains(&x) || x == self.lambda || self.defs.iter().any(|(d, _, _)| *d == x);
+        if let Some(x) =
+            (0..self.nvars()).find(|&x| (num.degree_in(x) > 0 || den.degree_in(x) > 0) && !known(x))
+        {
+            return Err(format!(
+                "the definition uses {:?}, which is neither a parameter nor defined before",
+                self.names[x]
+            ));
         }
         self.defs.push((v, num, den));
         Ok(())

@@ -201,7 +201,7 @@ fn random_drops_follow_the_paper_protocol_and_are_pinned() {
     let a = random_drop(&m.float, 7);
     assert_eq!(a, random_drop(&m.float, 7));
     assert_ne!(a, random_drop(&m.float, 8));
-    // The square's paper coordinates: u0 = v - omega_y, u1 = v + omega_x (MODEL §2), so
+    // The square's paper coordinates: u0 = v - omega_y, u1 = v + omega_x (docs/model.md §2), so
     // p = (-1 - R2, -1 + R1, -1) and q = (1 + R5 - R4, 1 + R5 + R3, 1 + R5), R_i in (0, 0.1).
     assert_eq!(a.p[2], -1.0);
     assert!(a.p[0] < -1.0 && a.p[0] > -1.1 && a.p[1] > -1.0 && a.p[1] < -0.9);

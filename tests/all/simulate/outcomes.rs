@@ -140,7 +140,7 @@ fn exact_ties_are_reported_as_simultaneous() {
 #[test]
 fn exact_arithmetic_keeps_the_square_bouncing_on_a_diagonal_and_f64_does_not() {
     // Symmetric about the diagonal 0-2 (h1 = h3 = hc, u1 = u3 = v): exactly, contacts 1 and 3
-    // never land and the square chatters like a rod on contacts 0 and 2 (MODEL §10). Rounding
+    // never land and the square chatters like a rod on contacts 0 and 2 (docs/model.md §10). Rounding
     // breaks the symmetry and f64 soon leaves this unstable sub-mode.
     let m = model(4, "1/6", "1/100");
     let s = start(&m, &["0", "1", "1"], &["-1", "-1/2", "-1/2"]);
