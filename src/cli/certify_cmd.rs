@@ -102,10 +102,11 @@ fn summary(v: &Validated, r: &Report) -> String {
     let req = &v.req;
     let head = format!("n={} kappa={} gamma={}", req.n, req.kappa, req.gamma);
     let t = &r.timings;
+    let exactifier =
+        if t.exactify.is_zero() { String::new() } else { format!(", exactifier {:.2} ms", ms(t.exactify)) };
     let times = format!(
-        "finder {:.2} ms, exactifier {:.2} ms, kernel {:.2} ms ({} + {})",
+        "search {:.2} ms{exactifier}, kernel {:.2} ms ({} + {})",
         ms(t.finder),
-        ms(t.exactify),
         ms(t.kernel),
         req.backends[0].name,
         req.backends[1].name
@@ -118,7 +119,7 @@ fn summary(v: &Validated, r: &Report) -> String {
                 .as_ref()
                 .map_or(String::from(" (no -o: not written)"), |p| format!(" -> {}", p.display()));
             format!(
-                "CERTIFIED {head} claim={}: {} generators, largest denominator {} bits, cone from {}; {times}{out}{notes}",
+                "CERTIFIED {head} claim={}: {} generators, largest denominator {} bits, by {}; {times}{out}{notes}",
                 c.claim.name(),
                 c.cone.len(),
                 r.max_denominator_bits,

@@ -93,7 +93,7 @@ fn paper_cone(step: &Mat2<Q>, seeds: &[Q]) -> Option<RodCone> {
     invariant(step, &lo, &hi, seeds).then_some(RodCone {
         lo,
         hi,
-        method: "the paper's cone {p_min, R p_min}",
+        method: "exact eigenvectors: the paper's two-ray cone {p_min, R p_min}",
     })
 }
 

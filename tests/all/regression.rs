@@ -142,7 +142,7 @@ fn issue8_rod_on_goyals_boundary_is_certified_with_the_papers_cone() {
         let r = certify(&req(2, k, g));
         let cert = r.result.unwrap_or_else(|e| panic!("kappa={k} gamma={g}: {e}"));
         assert_eq!(cert.claim, Claim::CompleteChatterFromAllDown);
-        assert_eq!(r.method, Some("the paper's cone {p_min, R p_min}"));
+        assert_eq!(r.method, Some("exact eigenvectors: the paper's two-ray cone {p_min, R p_min}"));
         assert!(matches!(verify(&cert, Default::default()), Verdict::Accepted(_)));
     }
     // Just beyond the boundary there is no cone.
