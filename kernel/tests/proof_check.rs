@@ -210,3 +210,26 @@ fn definitions_are_explicit_in_the_parameters_and_earlier_definitions() {
     *id = "k".into(); // redefining a parameter
     assert_eq!(fails_at(&f), Some(i));
 }
+
+#[test]
+fn map_names_bodies_and_headers_are_read_strictly() {
+    let base = committed();
+    let i = base.steps.iter().position(|s| matches!(s, Step::Image { map, .. } if map == "S1")).unwrap();
+    for bad in ["S01", "S+1", "S4", "I1"] {
+        let mut f = base.clone();
+        let Step::Image { map, .. } = &mut f.steps[i] else { unreachable!() };
+        *map = bad.into();
+        assert_eq!(fails_at(&f), Some(i), "{bad}");
+    }
+    for n in [2, 5] {
+        let mut f = base.clone();
+        f.body = chatter_kernel::proof::ProofBody::RegularPolygon { n };
+        let r = check::<Q>(&f, ParseLimits::default()).unwrap_err();
+        assert_eq!(r.code, Code::InvalidHeader, "n = {n}: {r}");
+    }
+    let text = include_str!("../../proofs/square.ron");
+    let r = read(&text.replacen("version: 1,", "version: 2,\n    extra: 0,", 1)).unwrap_err();
+    assert_eq!(r.code, Code::UnsupportedVersion, "{r}");
+    let r = read(&text.replacen("version: 1,", "version: 1,\n    extra: 0,", 1)).unwrap_err();
+    assert_eq!(r.code, Code::UnknownField, "{r}");
+}

@@ -8,6 +8,7 @@ mod rejection;
 mod write;
 
 pub use read::read;
+pub(crate) use read::{check_header, syntax};
 pub use rejection::{Boundary, Code, Locus, Rejection};
 pub use write::write;
 

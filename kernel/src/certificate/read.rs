@@ -11,7 +11,8 @@ struct Header {
     version: Option<u64>,
 }
 
-fn syntax(e: ron::error::SpannedError) -> Rejection {
+/// A RON error as a rejection: schema errors get their own code, everything at its position.
+pub(crate) fn syntax(e: ron::error::SpannedError) -> Rejection {
     use ron::Error as E;
     let code = match &e.code {
         E::NoSuchStructField { .. } => Code::UnknownField,
@@ -24,27 +25,37 @@ fn syntax(e: ron::error::SpannedError) -> Rejection {
     Rejection::new(code, Locus::Text { line, column }, format!("line {line}, column {column}: {}", e.code))
 }
 
+/// Checks the header fields read leniently: the right format, a version this build reads.
+pub(crate) fn check_header(
+    format: Option<&str>,
+    version: Option<u64>,
+    expected: &str,
+    readable: u64,
+) -> Result<(), Rejection> {
+    match format {
+        Some(f) if f == expected => {}
+        Some(other) => {
+            let msg = format!("expected {expected:?}, found {other:?}");
+            return Err(Rejection::at_field(Code::WrongFormat, "format", msg));
+        }
+        None => return Err(missing("format")),
+    }
+    match version {
+        Some(v) if v == readable => Ok(()),
+        Some(v) => {
+            let msg = format!("version {v} is not supported (this build reads version {readable})");
+            Err(Rejection::at_field(Code::UnsupportedVersion, "version", msg))
+        }
+        None => Err(missing("version")),
+    }
+}
+
 /// Reads a certificate: first the header (`format`, `version`), then the full schema of that
 /// version. Every error names the field or the position.
 pub fn read(text: &str) -> Result<Certificate, Rejection> {
     let lenient = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
     let header: Header = lenient.from_str(text).map_err(syntax)?;
-    match header.format.as_deref() {
-        Some(FORMAT) => {}
-        Some(other) => {
-            let msg = format!("expected {FORMAT:?}, found {other:?}");
-            return Err(Rejection::at_field(Code::WrongFormat, "format", msg));
-        }
-        None => return Err(missing("format")),
-    }
-    match header.version {
-        Some(VERSION) => {}
-        Some(v) => {
-            let msg = format!("version {v} is not supported (this build reads version {VERSION})");
-            return Err(Rejection::at_field(Code::UnsupportedVersion, "version", msg));
-        }
-        None => return Err(missing("version")),
-    }
+    check_header(header.format.as_deref(), header.version, FORMAT, VERSION)?;
     ron::Options::default().from_str(text).map_err(syntax)
 }
 

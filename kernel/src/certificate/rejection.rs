@@ -41,6 +41,8 @@ pub enum Code {
     InitialOutside,
     /// The PCC Lemma does not apply (the quadratic factor has real roots, or roots of modulus >= 1).
     PccNotExcluded,
+    /// A proof's header is invalid (variables, coordinates, chi, hypotheses).
+    InvalidHeader,
     /// A step of a proof does not check.
     StepFailed,
     /// The model contradicts itself or the two backends disagree: a bug in chatter.
@@ -68,6 +70,7 @@ impl Code {
             Code::ImageOutside => "image-outside",
             Code::InitialOutside => "initial-outside",
             Code::PccNotExcluded => "pcc-not-excluded",
+            Code::InvalidHeader => "invalid-header",
             Code::StepFailed => "step-failed",
             Code::Internal => "internal",
         }

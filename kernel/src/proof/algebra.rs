@@ -113,8 +113,13 @@ impl<F: Field> Checker<'_, F> {
         let b = self.rational(below)?;
         let s = self.ctx.var(variable)?;
         let l = self.ctx.lambda;
-        if s == l || s == self.params.0 || s == self.params.1 || self.ctx.chi.degree_in(s) > 0 {
-            return Err(format!("{variable:?} must be a fresh variable"));
+        if s == l
+            || s == self.params.0
+            || s == self.params.1
+            || self.ctx.is_defined(s)
+            || self.ctx.chi.degree_in(s) > 0
+        {
+            return Err(format!("{variable:?} must be a free variable (not a parameter, lambda or defined)"));
         }
         let nv = self.ctx.nvars();
         let shifted = self.ctx.chi.subst_fraction(
@@ -139,8 +144,8 @@ impl<F: Field> Checker<'_, F> {
     /// det(t I - S_{n-1} S_1) = (t - 1)(t^2 + p t + q), as polynomials.
     pub(super) fn pcc(&mut self, variable: &str, p: &str, q: &str) -> Result<(), String> {
         let t = self.ctx.var(variable)?;
-        if t == self.ctx.lambda || t == self.params.0 || t == self.params.1 {
-            return Err(format!("{variable:?} must be a fresh variable"));
+        if t == self.ctx.lambda || t == self.params.0 || t == self.params.1 || self.ctx.is_defined(t) {
+            return Err(format!("{variable:?} must be a free variable (not a parameter, lambda or defined)"));
         }
         let (p, q) = (self.ctx.frac(p)?, self.ctx.frac(q)?);
         let nv = self.ctx.nvars();
@@ -165,7 +170,7 @@ impl<F: Field> Checker<'_, F> {
             return Err("det(t I - S_(n-1) S_1) is not (t - 1)(t^2 + p t + q)".into());
         }
         self.conclusions.push(format!(
-            "det(tI - S_{} S_1) = ({variable} - 1)({variable}^2 + ({}) {variable} + ({})): the paper's Lemma on PCC excludes PCC where p^2 - 4q < 0 and q < 1",
+            "det({variable} I - S_{} S_1) = ({variable} - 1)({variable}^2 + p {variable} + q) with p = {}, q = {}: the paper's Lemma on PCC excludes PCC where p^2 - 4q < 0 and q < 1",
             n - 1,
             short(self.ctx.text(&p)),
             short(self.ctx.text(&q))

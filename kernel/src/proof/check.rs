@@ -44,7 +44,7 @@ fn header_error(path: &str, msg: impl std::fmt::Display) -> Rejection {
     } else if path == "version" {
         Code::UnsupportedVersion
     } else {
-        Code::StepFailed
+        Code::InvalidHeader
     };
     Rejection::at_field(code, path, msg)
 }
@@ -65,16 +65,6 @@ fn coordinates<F: Field>(rows: &[[String; 3]; 3], limits: ParseLimits) -> Result
         return Err("the matrix is singular".into());
     }
     Ok(m)
-}
-
-/// Whether a polynomial is positive wherever the hypothesis variables are: non-negative
-/// coefficients, a positive constant term, and only variables assumed positive by themselves.
-fn obviously_positive<F: Field>(p: &Poly<F>, positive_vars: &[usize]) -> bool {
-    let constant = p.terms().find(|(e, _)| e.iter().all(|x| *x == 0)).map(|(_, c)| c.clone());
-    constant.is_some_and(|c| c.is_positive())
-        && p.terms().all(|(e, c)| {
-            !c.is_negative() && e.iter().enumerate().all(|(v, x)| *x == 0 || positive_vars.contains(&v))
-        })
 }
 
 impl<'a, F: Field> Checker<'a, F> {
@@ -132,15 +122,8 @@ impl<'a, F: Field> Checker<'a, F> {
         };
         c.eigenvalue().map_err(|e| header_error("eigenvalue", e))?;
         c.hypotheses()?;
-        let lc = c.ctx.chi.coeff_in(lambda, c.ctx.chi.degree_in(lambda));
-        let positive_vars: Vec<usize> =
-            file.hypotheses.iter().filter_map(|h| c.ctx.var(&h.expr).ok().filter(|v| *v != lambda)).collect();
-        if !obviously_positive(&lc, &positive_vars) {
-            return Err(header_error(
-                "eigenvalue.chi",
-                "the leading coefficient of chi in lambda must be positive on the region (non-negative coefficients, a positive constant term, variables assumed positive)",
-            ));
-        }
+        // lc(chi) in lambda is 1 + kappa (the eigenvalue check), positive (kappa > 0 is a
+        // hypothesis): pseudo-remainders by chi decide identities at every root.
         Ok(c)
     }
 

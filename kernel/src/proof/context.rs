@@ -146,6 +146,11 @@ impl<F: Field> Context<F> {
         Ok(())
     }
 
+    /// Whether a variable has been defined.
+    pub fn is_defined(&self, v: usize) -> bool {
+        self.defs.iter().any(|(d, _, _)| *d == v)
+    }
+
     /// The product of the atoms of a denominator.
     fn den_poly(&self, f: &Frac<F>) -> Poly<F> {
         f.den.iter().fold(self.constant(F::one()), |acc, a| {

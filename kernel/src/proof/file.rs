@@ -1,7 +1,7 @@
 //! The proof format, version 1 (RON; docs/proof-format.md): the schema and its reader.
 //! Expressions stay text here; the checker parses them with the proof's variables.
 
-use crate::certificate::{Code, Locus, Rejection};
+use crate::certificate::{Rejection, check_header, syntax};
 use serde::{Deserialize, Serialize};
 
 /// Value of the `format` field.
@@ -228,14 +228,18 @@ impl Step {
     }
 }
 
-/// Reads a proof file (unknown fields denied; errors name the position).
+#[derive(Deserialize)]
+#[serde(rename = "Proof")]
+struct Header {
+    format: Option<String>,
+    version: Option<u64>,
+}
+
+/// Reads a proof file: first the header (`format`, `version`), then the full schema of that
+/// version with unknown fields denied. Every error names the field or the position.
 pub fn read(text: &str) -> Result<ProofFile, Rejection> {
-    ron::Options::default().from_str(text).map_err(|e| {
-        let (line, column) = (e.span.start.line, e.span.start.col);
-        Rejection::new(
-            Code::Syntax,
-            Locus::Text { line, column },
-            format!("line {line}, column {column}: {}", e.code),
-        )
-    })
+    let lenient = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
+    let header: Header = lenient.from_str(text).map_err(syntax)?;
+    check_header(header.format.as_deref(), header.version, FORMAT, VERSION)?;
+    ron::Options::default().from_str(text).map_err(syntax)
 }

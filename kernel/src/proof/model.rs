@@ -82,6 +82,11 @@ impl<F: Field> SymbolicModel<F> {
     pub fn new(n: u64, nvars: usize, gamma: usize, kappa: usize, m: &Mat3<F>) -> Result<Self, String> {
         // Only the geometry (cosines, contact covectors, C_j, D) is used: it does not depend on
         // kappa and gamma, so any valid values build it.
+        if !matches!(n, 3 | 4 | 6) {
+            return Err(format!(
+                "n = {n}: proofs are about regular polygons with rational cos(2 pi/n), n in {{3, 4, 6}}"
+            ));
+        }
         let geo = Polygon::<F>::new(n, F::one(), F::zero()).map_err(|e| e.to_string())?;
         let (g, k) = (Poly::var(nvars, gamma), Poly::var(nvars, kappa));
         let one = Poly::constant(nvars, F::one());

@@ -62,10 +62,10 @@ impl<F: Field> Checker<'_, F> {
         point: &str,
         equals: &[(String, String)],
     ) -> Result<(), String> {
-        let m = match map.strip_prefix('S').and_then(|j| j.parse::<usize>().ok()) {
-            Some(j) if (1..self.model.n).contains(&j) => &self.model.steps[j - 1],
-            _ if map == "I0" => &self.model.impact,
-            _ => return Err(format!("{map:?} is not a map of the model (S1..S{}, I0)", self.model.n - 1)),
+        let m = match (1..self.model.n).find(|j| map == format!("S{j}")) {
+            Some(j) => &self.model.steps[j - 1],
+            None if map == "I0" => &self.model.impact,
+            None => return Err(format!("{map:?} is not a map of the model (S1..S{}, I0)", self.model.n - 1)),
         };
         let img = self.ctx.image(m, self.named(point)?);
         let nv = self.ctx.nvars();
@@ -94,6 +94,15 @@ impl<F: Field> Checker<'_, F> {
         let m = vertices.len();
         if m < 3 || facets.len() != m {
             return Err("a cone needs at least three vertices and one facet per edge".into());
+        }
+        let distinct = |names: Vec<&String>| {
+            names.iter().collect::<std::collections::BTreeSet<_>>().len() == names.len()
+        };
+        if !distinct(vertices.iter().collect()) || !distinct(facets.iter().map(|f| &f.0).collect()) {
+            return Err("the vertices, and the facet names, must be distinct".into());
+        }
+        if facets.iter().any(|f| f.0.is_empty() || f.0.contains(['.', ' '])) {
+            return Err("facet names are part of step keys: non-empty, without '.' or spaces".into());
         }
         let mut fs = Vec::with_capacity(m);
         for (name, cov) in facets {
