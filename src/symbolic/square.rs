@@ -11,7 +11,9 @@ use super::builder::{Builder, Header};
 use super::cert::Cert;
 use super::terms::lenient;
 use crate::exact::{Q, Ring};
-use chatter_kernel::proof::{Coeffs, Frac, PMat, Poly, Step, derivative, det, mat_mul, rem};
+use chatter_kernel::proof::{
+    Coeffs, Frac, Oracle, PMat, Point, Poly, Step, clip, derivative, det, mat_mul, parallel, rem,
+};
 
 const VARS: [&str; 6] = ["g", "k", "l", "s", "e1", "e2"];
 
@@ -340,43 +342,30 @@ fn cone(b: &mut Builder) {
     }
 }
 
-/// One pass of the clipping, as the checker does it: sign steps, and crossings named by search.
-fn clip(
-    b: &mut Builder,
-    key: &str,
-    poly: &[String],
-    l: &[Poly<Q>; 3],
-    crossings: &mut Vec<String>,
-) -> Vec<String> {
-    let lf = l.clone().map(Frac::poly);
-    let d: Vec<Frac<Q>> = poly.iter().map(|p| b.ctx.dot(&lf, b.pt(p))).collect();
-    let signs: Vec<_> = poly.iter().zip(&d).map(|(p, v)| b.sign_step(&format!("{key}.{p}"), v)).collect();
-    let mut out = Vec::new();
-    for i in 0..poly.len() {
-        let j = (i + 1) % poly.len();
-        if !signs[i].is_lt() {
-            out.push(poly[i].clone());
-        }
-        if signs[i].is_ne() && signs[j].is_ne() && signs[i] != signs[j] {
-            let (a, c) = (b.pt(&poly[i]).clone(), b.pt(&poly[j]).clone());
-            let x: [Frac<Q>; 3] =
-                std::array::from_fn(|k| b.ctx.add(&d[i].mul(&c[k]), &d[j].mul(&a[k]).neg()));
-            let found = b.points.iter().find(|(_, w)| {
-                [(1, 2), (2, 0), (0, 1)].iter().all(|&(r, s)| b.ctx.equal(&x[r].mul(&w[s]), &x[s].mul(&w[r])))
-            });
-            match found.map(|(n, _)| n.clone()) {
-                Some(n) => {
-                    crossings.push(n.clone());
-                    out.push(n);
-                }
-                None => b.problems.push((
-                    key.into(),
-                    format!("the crossing of {} -> {} is not a named point", poly[i], poly[j]),
-                )),
-            }
-        }
+/// The producer's oracle for the kernel's clipping: signs decided and written as steps under
+/// `{key}.{point}`, crossings named by searching the named points.
+struct Writer<'b> {
+    b: &'b mut Builder,
+    key: String,
+    crossings: &'b mut Vec<String>,
+}
+
+impl Oracle<Q> for Writer<'_> {
+    fn sign(&mut self, point: &str, value: &Frac<Q>) -> Result<std::cmp::Ordering, String> {
+        Ok(self.b.sign_step(&format!("{}.{point}", self.key), value))
     }
-    out
+
+    fn crossing(&mut self, x: &Point<Q>, from: &str, to: &str) -> Result<String, String> {
+        let b = &self.b;
+        let found = b.points.iter().find(|(_, w)| parallel(&b.ctx, x, w)).map(|(n, _)| n.clone());
+        let name = found.ok_or(format!("the crossing of {from} -> {to} is not a named point"))?;
+        self.crossings.push(name.clone());
+        Ok(name)
+    }
+
+    fn point(&self, name: &str) -> Result<&Point<Q>, String> {
+        self.b.points.get(name).ok_or(format!("unknown point {name}"))
+    }
 }
 
 /// S_j(K ∩ C_j) ⊆ K: the clipping's sign steps, then a certificate for every facet at the image
@@ -386,7 +375,12 @@ fn invariance(b: &mut Builder, j: usize) {
     let mut poly: Vec<String> = VERTICES.iter().map(|s| s.to_string()).collect();
     let mut crossings = Vec::new();
     for (m, l) in b.model.cones[j - 1].clone().iter().enumerate() {
-        poly = clip(b, &format!("K.C{j}.h{m}"), &poly, l, &mut crossings);
+        let ctx = b.ctx.clone();
+        let mut writer = Writer { b, key: format!("K.C{j}.h{m}"), crossings: &mut crossings };
+        match clip(&ctx, &poly, &l.clone().map(Frac::poly), &mut writer) {
+            Ok(p) => poly = p,
+            Err(e) => b.problems.push((format!("inv.S{j}"), e)),
+        }
     }
     for w in &poly {
         let img = b.ctx.image(b.map(&format!("S{j}")), b.pt(w));

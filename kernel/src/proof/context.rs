@@ -35,6 +35,7 @@ impl<F: Field> Frac<F> {
 }
 
 /// The state of a proof being checked.
+#[derive(Clone)]
 pub struct Context<F> {
     /// Variable names.
     pub names: Vec<String>,

@@ -12,6 +12,7 @@
 
 mod algebra;
 mod check;
+mod clip;
 mod context;
 mod file;
 mod model;
@@ -20,6 +21,7 @@ mod rules;
 mod sturm;
 
 pub use check::{Checked, check};
+pub use clip::{Oracle, Point, clip, parallel};
 pub use context::{Context, Frac};
 pub use file::{Eigenvalue, FORMAT, Hypothesis, Parameters, ProofBody, ProofFile, Step, VERSION, read};
 pub use model::{PMat, PVec, SymbolicModel, det, mat_mul, mat_vec};

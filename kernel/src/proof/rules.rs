@@ -5,10 +5,37 @@
 
 use super::algebra::short;
 use super::check::Checker;
+use super::clip::{Oracle, Point, clip, parallel};
 use super::context::Frac;
-use super::model::PVec;
 use crate::exact::Field;
 use std::cmp::Ordering;
+
+/// The checker's oracle: signs from the steps with the keys `{key}.{point}`, crossings from the
+/// list in the step, each checked to be parallel to the crossing computed.
+struct Lookup<'c, 'a, 'i, F> {
+    checker: &'c Checker<'a, F>,
+    key: String,
+    crossings: &'c mut std::slice::Iter<'i, String>,
+}
+
+impl<F: Field> Oracle<F> for Lookup<'_, '_, '_, F> {
+    fn sign(&mut self, point: &str, value: &Frac<F>) -> Result<Ordering, String> {
+        self.checker.sign_of(&format!("{}.{point}", self.key), value)
+    }
+
+    fn crossing(&mut self, x: &Point<F>, from: &str, to: &str) -> Result<String, String> {
+        let w = self.crossings.next().ok_or("fewer crossings listed than the clipping creates")?;
+        if parallel(&self.checker.ctx, x, self.checker.named(w)?) {
+            Ok(w.clone())
+        } else {
+            Err(format!("the edge {from} -> {to} crosses {} at a point that is not {w}", self.key))
+        }
+    }
+
+    fn point(&self, name: &str) -> Result<&Point<F>, String> {
+        self.checker.named(name)
+    }
+}
 
 /// A cone declared by a `Cone` step: vertices (named points) and facets (name, covector).
 pub struct ConeDecl<F> {
@@ -17,11 +44,6 @@ pub struct ConeDecl<F> {
 }
 
 impl<F: Field> Checker<'_, F> {
-    /// A polynomial covector applied to a point.
-    fn apply(&self, l: &PVec<F>, p: &[Frac<F>; 3]) -> Frac<F> {
-        self.ctx.dot(&l.clone().map(Frac::poly), p)
-    }
-
     fn named(&self, p: &str) -> Result<&[Frac<F>; 3], String> {
         self.points.get(p).ok_or_else(|| format!("unknown point {p:?}"))
     }
@@ -129,50 +151,6 @@ impl<F: Field> Checker<'_, F> {
         Ok(())
     }
 
-    /// One clipping pass (Sutherland-Hodgman) of a polygon of named points by l . p >= 0; the
-    /// crossing of an edge P -> N is (l.P) N - (l.N) P, which must be parallel to the next named
-    /// crossing point.
-    fn clip(
-        &self,
-        key: &str,
-        poly: &[String],
-        l: &PVec<F>,
-        crossings: &mut std::slice::Iter<'_, String>,
-    ) -> Result<Vec<String>, String> {
-        let mut d = Vec::with_capacity(poly.len());
-        let mut signs = Vec::with_capacity(poly.len());
-        for p in poly {
-            let v = self.apply(l, self.named(p)?);
-            signs.push(self.sign_of(&format!("{key}.{p}"), &v)?);
-            d.push(v);
-        }
-        let mut out = Vec::new();
-        for i in 0..poly.len() {
-            let j = (i + 1) % poly.len();
-            if !signs[i].is_lt() {
-                out.push(poly[i].clone());
-            }
-            if signs[i].is_ne() && signs[j].is_ne() && signs[i] != signs[j] {
-                let w = crossings.next().ok_or("fewer crossings listed than the clipping creates")?;
-                let (a, b) = (self.named(&poly[i])?, self.named(&poly[j])?);
-                let x: [Frac<F>; 3] =
-                    std::array::from_fn(|k| self.ctx.add(&d[i].mul(&b[k]), &d[j].mul(&a[k]).neg()));
-                let wp = self.named(w)?;
-                let parallel = [(1, 2), (2, 0), (0, 1)]
-                    .iter()
-                    .all(|&(r, s)| self.ctx.equal(&x[r].mul(&wp[s]), &x[s].mul(&wp[r])));
-                if !parallel {
-                    return Err(format!(
-                        "the edge {} -> {} crosses {key} at a point that is not {w}",
-                        poly[i], poly[j]
-                    ));
-                }
-                out.push(w.clone());
-            }
-        }
-        Ok(out)
-    }
-
     /// S_j(K ∩ C_j) ⊆ K.
     pub(super) fn invariant(&mut self, cone: &str, j: u64, crossings: &[String]) -> Result<(), String> {
         let k = self.cones.get(cone).ok_or_else(|| format!("unknown cone {cone:?}"))?;
@@ -182,7 +160,8 @@ impl<F: Field> Checker<'_, F> {
         let mut poly = k.vertices.clone();
         let mut it = crossings.iter();
         for (m, l) in self.model.cones[j as usize - 1].iter().enumerate() {
-            poly = self.clip(&format!("{cone}.C{j}.h{m}"), &poly, l, &mut it)?;
+            let mut oracle = Lookup { checker: self, key: format!("{cone}.C{j}.h{m}"), crossings: &mut it };
+            poly = clip(&self.ctx, &poly, &l.clone().map(Frac::poly), &mut oracle)?;
         }
         if let Some(w) = it.next() {
             return Err(format!("the crossing {w} is never created"));
