@@ -140,7 +140,13 @@ pub fn verdict_of(path: &Path, verdict: Verdict) -> FileVerdict {
 /// Verifies one file on the given backends.
 pub fn verify_file(path: &Path, limits: ParseLimits, backends: &[Backend]) -> FileVerdict {
     match std::fs::read_to_string(path) {
-        Ok(text) => verdict_of(path, verify_text(&text, limits, backends)),
+        Ok(text) => {
+            let mut v = verdict_of(path, verify_text(&text, limits, backends));
+            if v.status == Status::Rejected && text.contains("\"chatter-proof\"") {
+                v.reason = v.reason.map(|r| format!("{r} (this file is a proof: use `chatter check-proof`)"));
+            }
+            v
+        }
         Err(e) => {
             let mut v = FileVerdict::new(path, Status::Error);
             v.reason = Some(format!("cannot read: {e}"));

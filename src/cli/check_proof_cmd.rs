@@ -50,7 +50,12 @@ pub fn run(a: CheckProofArgs) -> Outcome {
                 if a.json {
                     emit(&json!({"path": p.to_string(), "status": "REJECTED", "code": r.code, "locus": r.locus, "reason": r.message}).to_string());
                 } else {
-                    emit(&format!("{p}: REJECTED: {}", r.message));
+                    let hint = if text.contains("\"chatter-certificate\"") {
+                        " (this file is a certificate: use `chatter verify`)"
+                    } else {
+                        ""
+                    };
+                    emit(&format!("{p}: REJECTED: {}{hint}", r.message));
                 }
                 outcome = Outcome::Negative;
             }
