@@ -3,7 +3,7 @@
 
 use chatter_kernel::certificate::{Code, Locus};
 use chatter_kernel::exact::ParseLimits;
-use chatter_kernel::verify::{Backend, Verdict, verify_text};
+use chatter_kernel::verify::{Backend, Verdict, format_of, verify_text};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -142,7 +142,9 @@ pub fn verify_file(path: &Path, limits: ParseLimits, backends: &[Backend]) -> Fi
     match std::fs::read_to_string(path) {
         Ok(text) => {
             let mut v = verdict_of(path, verify_text(&text, limits, backends));
-            if v.status == Status::Rejected && text.contains("\"chatter-proof\"") {
+            if v.status == Status::Rejected
+                && format_of(&text).as_deref() == Some(chatter_kernel::proof::FORMAT)
+            {
                 v.reason = v.reason.map(|r| format!("{r} (this file is a proof: use `chatter check-proof`)"));
             }
             v

@@ -8,13 +8,13 @@
 //! cannot be read, 3 if the two bignum backends disagree.
 
 use chatter_kernel::exact::ParseLimits;
-use chatter_kernel::verify::{MALACHITE, NUM, Verdict, verify_proof_text, verify_text};
+use chatter_kernel::verify::{MALACHITE, NUM, Verdict, format_of, verify_proof_text, verify_text};
 use std::process::ExitCode;
 
-/// The verdict on one file's text: certificates and proofs are told apart by their `format`.
+/// The verdict on one file's text: certificates and proofs are told apart by their `format` field.
 fn verdict(text: &str) -> (String, u8) {
     let limits = ParseLimits::default();
-    let (ok, rejected, disagree) = if text.contains("\"chatter-proof\"") {
+    let (ok, rejected, disagree) = if format_of(text).as_deref() == Some(chatter_kernel::proof::FORMAT) {
         match verify_proof_text(text, limits) {
             Verdict::Accepted(c) => (
                 Some(format!("proof {}: {} steps, {} conclusions", c.name, c.steps, c.conclusions.len())),

@@ -91,3 +91,31 @@ pub fn verify_proof_text(text: &str, limits: ParseLimits) -> Verdict<crate::proo
         Err(r) => Verdict::Rejected(r),
     }
 }
+
+/// The `format` field of a certificate or proof file, read leniently (any struct name, unknown
+/// fields ignored), to tell the two kinds apart; `None` if the text is not RON with a `format`.
+pub fn format_of(text: &str) -> Option<String> {
+    #[derive(serde::Deserialize)]
+    struct Header {
+        format: Option<String>,
+    }
+    let lenient = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
+    // The struct name in the text must match the one deserialised: try both.
+    #[derive(serde::Deserialize)]
+    #[serde(rename = "Certificate")]
+    struct CertificateHeader {
+        format: Option<String>,
+    }
+    #[derive(serde::Deserialize)]
+    #[serde(rename = "Proof")]
+    struct ProofHeader {
+        format: Option<String>,
+    }
+    lenient
+        .from_str::<CertificateHeader>(text)
+        .map(|h| h.format)
+        .or_else(|_| lenient.from_str::<ProofHeader>(text).map(|h| h.format))
+        .or_else(|_| lenient.from_str::<Header>(text).map(|h| h.format))
+        .ok()
+        .flatten()
+}

@@ -2,7 +2,7 @@
 
 use super::{Outcome, emit};
 use chatter_kernel::exact::ParseLimits;
-use chatter_kernel::verify::{Verdict, verify_proof_text};
+use chatter_kernel::verify::{Verdict, format_of, verify_proof_text};
 use clap::Args;
 use serde_json::json;
 use std::path::PathBuf;
@@ -37,12 +37,17 @@ pub fn run(a: CheckProofArgs) -> Outcome {
         match verify_proof_text(&text, limits) {
             Verdict::Accepted(c) => {
                 if a.json {
-                    emit(&json!({"path": p.to_string(), "status": "OK", "steps": c.steps, "hypotheses": c.hypotheses, "conclusions": c.conclusions}).to_string());
+                    emit(&json!({"path": p.to_string(), "status": "OK", "steps": c.steps, "hypotheses": c.hypotheses, "conclusions": c.conclusions, "region_nonempty": c.nonempty}).to_string());
                 } else {
                     emit(&format!("{p}: OK ({}: {} steps, malachite + num-rational)", c.name, c.steps));
                     emit(&format!("  hypotheses: {}", c.hypotheses.join("; ")));
                     for (i, x) in c.conclusions.iter().enumerate() {
                         emit(&format!("  {}. {x}", i + 1));
+                    }
+                    if !c.nonempty {
+                        emit(
+                            "  warning: no Witness shows that the region is not empty; the conclusions may be vacuous",
+                        );
                     }
                 }
             }
@@ -50,7 +55,7 @@ pub fn run(a: CheckProofArgs) -> Outcome {
                 if a.json {
                     emit(&json!({"path": p.to_string(), "status": "REJECTED", "code": r.code, "locus": r.locus, "reason": r.message}).to_string());
                 } else {
-                    let hint = if text.contains("\"chatter-certificate\"") {
+                    let hint = if format_of(&text).as_deref() == Some(chatter_kernel::certificate::FORMAT) {
                         " (this file is a certificate: use `chatter verify`)"
                     } else {
                         ""

@@ -79,6 +79,36 @@ impl Builder {
         }
     }
 
+    /// `a + b` (the producer's expressions are far inside the kernel's size limits).
+    pub fn add(&self, a: &Frac<Q>, b: &Frac<Q>) -> Frac<Q> {
+        self.ctx.add(a, b).expect("producer: within the size limits")
+    }
+
+    /// `a b`.
+    pub fn mul(&self, a: &Frac<Q>, b: &Frac<Q>) -> Frac<Q> {
+        self.ctx.mul(a, b).expect("producer: within the size limits")
+    }
+
+    /// `a . b`.
+    pub fn dot(&self, a: &Point, b: &Point) -> Frac<Q> {
+        self.ctx.dot(a, b).expect("producer: within the size limits")
+    }
+
+    /// `m p`.
+    pub fn apply(&self, m: &chatter_kernel::proof::PMat<Q>, p: &Point) -> Point {
+        self.ctx.image(m, p).expect("producer: within the size limits")
+    }
+
+    /// Whether `a = b` on the region.
+    pub fn equal(&self, a: &Frac<Q>, b: &Frac<Q>) -> bool {
+        self.ctx.equal(a, b).expect("producer: within the size limits")
+    }
+
+    /// Whether `a = 0` on the region.
+    pub fn is_zero(&self, a: &Frac<Q>) -> bool {
+        self.ctx.is_zero(a).expect("producer: within the size limits")
+    }
+
     /// The index of a variable.
     pub fn var(&self, name: &str) -> usize {
         self.ctx.var(name).expect("declared variable")
@@ -135,15 +165,15 @@ impl Builder {
             let mut t = Frac::poly(self.ctx.constant(c.clone()));
             for a in atoms {
                 match self.ctx.atom(a) {
-                    Ok(x) => t = t.mul(x),
+                    Ok(x) => t = self.mul(&t, x),
                     Err(e) => return self.problem(id, e),
                 }
             }
-            sum = Some(sum.map_or(t.clone(), |s| self.ctx.add(&s, &t)));
+            sum = Some(sum.map_or(t.clone(), |s| self.add(&s, &t)));
         }
         let mut c = sum.unwrap_or_else(|| Frac::poly(self.ctx.constant(Q::int(0))));
         c.den.extend(cert.over.iter().cloned());
-        if !self.ctx.equal(expr, &c) {
+        if !self.equal(expr, &c) {
             self.problem(id, format!("{} differs from its certificate", self.text(expr)));
         }
         let _ = self.ctx.add_atom(id, expr.clone());
@@ -158,7 +188,7 @@ impl Builder {
 
     /// `lhs = rhs` at every point of the region.
     pub fn identity(&mut self, id: &str, lhs: &Frac<Q>, rhs: &Frac<Q>, note: &str) {
-        if !self.ctx.equal(lhs, rhs) {
+        if !self.equal(lhs, rhs) {
             self.problem(id, "the identity does not hold".into());
         }
         self.push(Step::Identity { id: id.into(), lhs: self.text(lhs), rhs: self.text(rhs) }, note.into());
@@ -204,16 +234,16 @@ impl Builder {
 
     /// `map(point) = sum c_i w_i`, both sides scaled by 1 + kappa.
     pub fn image(&mut self, id: &str, map: &str, point: &str, equals: &[(Frac<Q>, &str)], note: &str) {
-        let img = self.ctx.image(self.map(map), self.pt(point));
+        let img = self.apply(self.map(map), self.pt(point));
         let one_k = Frac::poly(self.poly("k + 1"));
         let zero = Frac::poly(self.ctx.constant(Q::int(0)));
         let mut sum = [zero.clone(), zero.clone(), zero];
         for (c, w) in equals {
-            let c = one_k.mul(c);
+            let c = self.mul(&one_k, c);
             let w = self.pt(w).clone();
-            sum = std::array::from_fn(|i| self.ctx.add(&sum[i], &c.mul(&w[i])));
+            sum = std::array::from_fn(|i| self.add(&sum[i], &self.mul(&c, &w[i])));
         }
-        if !(0..3).all(|i| self.ctx.equal(&img[i], &sum[i])) {
+        if !(0..3).all(|i| self.equal(&img[i], &sum[i])) {
             self.problem(id, format!("{map} {point} is not the combination given"));
         }
         let equals = equals.iter().map(|(c, w)| (self.text(c), w.to_string())).collect();
@@ -223,7 +253,7 @@ impl Builder {
     /// Writes a sign step for `e` under `key` when the checker needs one (not zero, not a
     /// constant), by the linear method; returns the sign.
     pub fn sign_step(&mut self, key: &str, e: &Frac<Q>) -> Ordering {
-        if self.ctx.is_zero(e) {
+        if self.is_zero(e) {
             return Ordering::Equal;
         }
         if let Some(c) = e.num.as_constant() {

@@ -12,7 +12,7 @@ use super::cert::Cert;
 use super::terms::lenient;
 use crate::exact::{Q, Ring};
 use chatter_kernel::proof::{
-    Coeffs, Frac, Oracle, PMat, Point, Poly, Step, clip, derivative, det, mat_mul, parallel, rem,
+    Coeffs, Frac, Oracle, PMat, Point, Poly, Step, clip, det, mat_mul, parallel, sturm_sequence,
 };
 
 const VARS: [&str; 6] = ["g", "k", "l", "s", "e1", "e2"];
@@ -115,11 +115,15 @@ fn eigenvalue_below_one(b: &mut Builder, _p: &P<'_>) {
     b.section("Lemma 0: every positive eigenvalue is below 1");
     let (l, s) = (b.var("l"), b.var("s"));
     let nv = b.ctx.nvars();
-    let shifted = b.ctx.chi.subst_fraction(
-        l,
-        &Poly::constant(nv, Q::int(1)).add(&Poly::var(nv, s)),
-        &Poly::constant(nv, Q::int(1)),
-    );
+    let shifted = b
+        .ctx
+        .chi
+        .subst_fraction(
+            l,
+            &Poly::constant(nv, Q::int(1)).add(&Poly::var(nv, s)),
+            &Poly::constant(nv, Q::int(1)),
+        )
+        .expect("a cubic");
     let certs: [&[(i64, &[&str])]; 4] = [
         &[(2, &["g", "k"]), (2, &["k"])],
         &[(4, &["k"]), (2, &["g", "k"]), (1, &["1-g"])],
@@ -318,7 +322,7 @@ fn facet(b: &Builder, i: usize) -> [Frac<Q>; 3] {
 /// The sign steps K.{facet}.{point} (positive facet values) of a point in K.
 fn membership(b: &mut Builder, point: &str) {
     for (i, (name, _)) in FACETS.iter().enumerate() {
-        let v = b.ctx.dot(&facet(b, i), b.pt(point));
+        let v = b.dot(&facet(b, i), b.pt(point));
         if b.sign_step(&format!("K.{name}.{point}"), &v).is_lt() {
             b.problems.push((format!("K.{name}.{point}"), format!("{point} is outside K")));
         }
@@ -357,7 +361,8 @@ impl Oracle<Q> for Writer<'_> {
 
     fn crossing(&mut self, x: &Point<Q>, from: &str, to: &str) -> Result<String, String> {
         let b = &self.b;
-        let found = b.points.iter().find(|(_, w)| parallel(&b.ctx, x, w)).map(|(n, _)| n.clone());
+        let found =
+            b.points.iter().find(|(_, w)| parallel(&b.ctx, x, w).unwrap_or(false)).map(|(n, _)| n.clone());
         let name = found.ok_or(format!("the crossing of {from} -> {to} is not a named point"))?;
         self.crossings.push(name.clone());
         Ok(name)
@@ -383,13 +388,13 @@ fn invariance(b: &mut Builder, j: usize) {
         }
     }
     for w in &poly {
-        let img = b.ctx.image(b.map(&format!("S{j}")), b.pt(w));
+        let img = b.apply(b.map(&format!("S{j}")), b.pt(w));
         for (i, (name, _)) in FACETS.iter().enumerate() {
             let f = facet(b, i);
             facet_obligation(
                 b,
                 &format!("K.S{j}.{w}.{name}"),
-                &b.ctx.dot(&f, &img),
+                &b.dot(&f, &img),
                 &f,
                 &decomposition(j, w),
                 name,
@@ -409,12 +414,12 @@ fn facet_obligation(
     dec: &[(&str, &[&str], &str)],
     facet: &str,
 ) {
-    if b.ctx.is_zero(e) {
+    if b.is_zero(e) {
         return;
     }
     let mut cert: Option<Cert> = None;
     for (_, atoms, w) in dec {
-        if b.ctx.is_zero(&b.ctx.dot(f, b.pt(w))) {
+        if b.is_zero(&b.dot(f, b.pt(w))) {
             continue;
         }
         let mut names = vec!["1+k"];
@@ -433,7 +438,7 @@ fn facet_obligation(
 fn all_down(b: &mut Builder, p: &P<'_>) {
     b.section("Lemma l:k0: every all-down drop lands in K");
     let gens: Vec<[Frac<Q>; 3]> = b.model.all_down.iter().map(|g| g.clone().map(Frac::poly)).collect();
-    let img12 = b.ctx.image(&b.model.impact, b.pt("s12"));
+    let img12 = b.apply(&b.model.impact, b.pt("s12"));
     let [x, y, z] = img12.map(|c| c.num);
     let zz = Frac::poly(lenient("2 k l^3 - k l^2 + 2 k l - k - l + 1", &b.ctx.names));
     b.positive(
@@ -461,7 +466,7 @@ fn all_down(b: &mut Builder, p: &P<'_>) {
     let e1 = p(b, "e1");
     let e2 = p(b, "e2");
     let one = p(b, "1");
-    let right = b.ctx.add(&e1, &xp.neg());
+    let right = b.add(&e1, &xp.neg());
     b.positive(
         "k0.right",
         &right,
@@ -475,34 +480,34 @@ fn all_down(b: &mut Builder, p: &P<'_>) {
         .over(&["k", "1+l^2", "Z"]),
         "U_0 s12 projects to (x, y) with x <= e1",
     );
-    let left = b.ctx.add(&e1, &xp);
+    let left = b.add(&e1, &xp);
     b.positive(
         "k0.left",
         &left,
         &Cert::sum(&[(1, &["e1>0", "Z"]), (1, &["D"])]).over(&["Z"]),
         "and x >= -e1",
     );
-    let bottom = b.ctx.add(&e2, &yp);
+    let bottom = b.add(&e2, &yp);
     b.positive(
         "k0.bottom",
         &bottom,
         &Cert::sum(&[(1, &["1-l", "1-l", "A"]), (1, &["A", "A"])]).over(&["k", "1+l^2", "Z"]),
         "and y >= -e2",
     );
-    let top = b.ctx.add(&one.neg(), &yp.neg());
+    let top = b.add(&one.neg(), &yp.neg());
     b.positive("k0.top", &top, &Cert::sum(&[(2, &["l", "A"])]).over(&["Z"]), "and y <= -1");
     for (m, g) in gens.iter().enumerate() {
         let name = b
             .points
             .iter()
-            .find(|(_, w)| (0..3).all(|i| b.ctx.equal(&w[i], &g[i])))
+            .find(|(_, w)| (0..3).all(|i| b.equal(&w[i], &g[i])))
             .map(|(n, _)| n.clone())
             .expect("D's generators are named points");
-        let img = b.ctx.image(&b.model.impact, g);
+        let img = b.apply(&b.model.impact, g);
         for (i, (facet_name, _)) in FACETS.iter().enumerate() {
             let f = facet(b, i);
             let key = format!("K.I0.{m}.{facet_name}");
-            let e = b.ctx.dot(&f, &img);
+            let e = b.dot(&f, &img);
             match name.as_str() {
                 "s01" | "s30" => facet_obligation(
                     b,
@@ -565,23 +570,15 @@ fn pcc(b: &mut Builder, p: &P<'_>) {
     witness(b, &pp, &qq);
 }
 
-/// At gamma = 1/1000, kappa = 1/6: chi has a root in (0, 1] (a positive eigenvalue of S_3) and
-/// the discriminant p^2 - 4q is positive.
+/// At gamma = 1/1000, kappa = 1/6: chi has roots in (1/10, 1] (positive eigenvalues of S_3, so
+/// the region is not empty) and the discriminant p^2 - 4q is positive.
 fn witness(b: &mut Builder, pp: &Frac<Q>, qq: &Frac<Q>) {
     let (g, k, l) = (b.var("g"), b.var("k"), b.var("l"));
     let (gv, kv) = (Q::new(1, 1000), Q::new(1, 6));
     let at = b.ctx.chi.subst_constant(g, &gv).subst_constant(k, &kv);
     let coeffs: Coeffs<Q> =
         (0..=at.degree_in(l)).map(|d| at.coeff_in(l, d).as_constant().expect("univariate")).collect();
-    let mut seq = vec![coeffs.clone(), derivative(&coeffs)];
-    loop {
-        let r: Coeffs<Q> =
-            rem(&seq[seq.len() - 2], &seq[seq.len() - 1]).iter().map(|c| c.negated()).collect();
-        if r.is_empty() {
-            break;
-        }
-        seq.push(r);
-    }
+    let seq = sturm_sequence(&coeffs);
     let nv = b.ctx.nvars();
     let text = |c: &Coeffs<Q>| {
         let p = c
@@ -591,9 +588,11 @@ fn witness(b: &mut Builder, pp: &Frac<Q>, qq: &Frac<Q>) {
         p.text(&b.ctx.names)
     };
     let sequence: Vec<String> = seq.iter().map(text).collect();
-    let (lo, hi) = (Q::int(0), Q::int(1));
+    // Above 0, so that the hypothesis lambda > 0 holds on the whole interval: the witness then
+    // also shows that the region is not empty.
+    let (lo, hi) = (Q::new(1, 10), Q::int(1));
     let roots = chatter_kernel::proof::count_roots(&coeffs, &seq, &lo, &hi).expect("a Sturm sequence");
-    let disc = b.ctx.add(&pp.mul(pp), &qq.mul(&Frac::poly(Poly::constant(nv, Q::int(-4)))));
+    let disc = b.add(&b.mul(pp, pp), &b.mul(qq, &Frac::poly(Poly::constant(nv, Q::int(-4)))));
     let step = Step::Witness {
         id: "pcc.witness".into(),
         at: vec![("g".into(), gv.to_string()), ("k".into(), kv.to_string())],

@@ -5,7 +5,7 @@ use super::check::Checker;
 use super::context::Frac;
 use super::model::{PMat, det};
 use super::poly::Poly;
-use super::sturm::{Coeffs, count_roots};
+use super::sturm::{Coeffs, count_roots, positive_on};
 use crate::exact::{Field, parse_canonical};
 use std::collections::BTreeMap;
 
@@ -44,11 +44,11 @@ impl<F: Field> Checker<'_, F> {
             }
             let mut t = Frac::poly(self.ctx.constant(c));
             for a in atoms {
-                t = t.mul(self.ctx.atom(a)?);
+                t = self.ctx.mul(&t, self.ctx.atom(a)?)?;
             }
             sum = Some(match sum {
                 None => t,
-                Some(s) => self.ctx.add(&s, &t),
+                Some(s) => self.ctx.add(&s, &t)?,
             });
         }
         let mut cert = sum.expect("non-empty");
@@ -56,12 +56,16 @@ impl<F: Field> Checker<'_, F> {
             self.ctx.polynomial_atom(a)?;
             cert.den.push(a.clone());
         }
-        if !self.ctx.equal(&e, &cert) {
+        if !self.ctx.equal(&e, &cert)? {
             return Err(format!(
                 "{} is not equal to its certificate {}",
                 short(self.ctx.text(&e)),
                 short(self.ctx.text(&cert))
             ));
+        }
+        if self.ctx.is_zero(&e)? {
+            // 0 > 0 would mean that the region is empty: refuse it rather than prove anything.
+            return Err("the expression vanishes on the region: it cannot be positive".into());
         }
         self.ctx.add_atom(id, e)
     }
@@ -69,7 +73,7 @@ impl<F: Field> Checker<'_, F> {
     /// `lhs = rhs` at every point of the region.
     pub(super) fn identity(&mut self, lhs: &str, rhs: &str) -> Result<(), String> {
         let (a, b) = (self.ctx.frac(lhs)?, self.ctx.frac(rhs)?);
-        if self.ctx.equal(&a, &b) {
+        if self.ctx.equal(&a, &b)? {
             Ok(())
         } else {
             Err(format!("{} - ({}) does not vanish modulo chi", short(lhs.into()), short(rhs.into())))
@@ -91,7 +95,7 @@ impl<F: Field> Checker<'_, F> {
         let (n, d) = (self.ctx.poly(num)?, self.ctx.poly(den)?);
         let proved = match positive {
             None => d.as_constant().is_some_and(|c| c.is_positive()),
-            Some(step) => self.ctx.equal(self.ctx.atom(step)?, &Frac::poly(d.clone())),
+            Some(step) => self.ctx.equal(self.ctx.atom(step)?, &Frac::poly(d.clone()))?,
         };
         if !proved {
             return Err(format!("the denominator {den} is not proved positive"));
@@ -126,7 +130,7 @@ impl<F: Field> Checker<'_, F> {
             l,
             &self.ctx.constant(b.clone()).add(&Poly::var(nv, s)),
             &self.ctx.constant(F::one()),
-        );
+        )?;
         for d in 0..=shifted.degree_in(s) {
             let c = Frac::poly(shifted.coeff_in(s, d));
             let sign = self.sign_of(&format!("{id}.{d}"), &c)?;
@@ -148,6 +152,19 @@ impl<F: Field> Checker<'_, F> {
             return Err(format!("{variable:?} must be a free variable (not a parameter, lambda or defined)"));
         }
         let (p, q) = (self.ctx.frac(p)?, self.ctx.frac(q)?);
+        let params = [self.params.0, self.params.1];
+        for f in [&p, &q] {
+            let mut polys = vec![&f.num];
+            for a in &f.den {
+                polys.push(self.ctx.polynomial_atom(a)?);
+            }
+            let nv = self.ctx.nvars();
+            if polys.iter().any(|x| (0..nv).any(|v| !params.contains(&v) && x.degree_in(v) > 0)) {
+                return Err(
+                    "p and q (and their denominators) must be expressions in gamma and kappa only".into()
+                );
+            }
+        }
         let nv = self.ctx.nvars();
         let one = self.ctx.constant(F::one());
         let one_k2 = one.add(&Poly::var(nv, self.params.1)).pow(2);
@@ -160,13 +177,22 @@ impl<F: Field> Checker<'_, F> {
                 diag.sub(&prod[r][c])
             })
         });
-        let den = |f: &Frac<F>| {
-            f.den.iter().fold(one.clone(), |acc, a| acc.mul(self.ctx.polynomial_atom(a).expect("checked")))
+        let den = |f: &Frac<F>| -> Result<Poly<F>, String> {
+            let mut acc = one.clone();
+            for a in &f.den {
+                acc = acc.try_mul(self.ctx.polynomial_atom(a)?)?;
+            }
+            Ok(acc)
         };
-        let (dp, dq) = (den(&p), den(&q));
-        let quad = tv.pow(2).mul(&dp).mul(&dq).add(&p.num.mul(&dq).mul(&tv)).add(&q.num.mul(&dp));
-        let rhs = one_k2.pow(3).mul(&tv.sub(&one)).mul(&quad);
-        if det(&char_m).mul(&dp).mul(&dq) != rhs {
+        let (dp, dq) = (den(&p)?, den(&q)?);
+        let quad = tv
+            .pow(2)
+            .try_mul(&dp)?
+            .try_mul(&dq)?
+            .add(&p.num.try_mul(&dq)?.try_mul(&tv)?)
+            .add(&q.num.try_mul(&dp)?);
+        let rhs = one_k2.pow(3).try_mul(&tv.sub(&one))?.try_mul(&quad)?;
+        if det(&char_m).try_mul(&dp)?.try_mul(&dq)? != rhs {
             return Err("det(t I - S_(n-1) S_1) is not (t - 1)(t^2 + p t + q)".into());
         }
         self.conclusions.push(format!(
@@ -213,14 +239,24 @@ impl<F: Field> Checker<'_, F> {
             if v != self.params.0 && v != self.params.1 {
                 return Err(format!("{name:?} is not a parameter"));
             }
-            point.insert(v, self.rational(value)?);
+            if point.insert(v, self.rational(value)?).is_some() {
+                return Err(format!("{name:?} is given twice"));
+            }
         }
         let value = |c: &Coeffs<F>| c.first().cloned().unwrap_or_else(F::zero);
+        let (lo, hi) = (self.rational(&interval.0)?, self.rational(&interval.1)?);
+        // Every hypothesis holds at the point: those free of lambda there, those with lambda on the
+        // whole interval (then every root of chi in it is a point of the region).
+        let mut all_hold_on_interval = true;
         for h in &self.file.hypotheses {
             let p = self.ctx.poly(&h.expr)?;
-            if p.degree_in(self.ctx.lambda) == 0 && !value(&self.univariate(&p, &point, None)?).is_positive()
-            {
-                return Err(format!("the point does not satisfy the hypothesis {} > 0", h.expr));
+            if p.degree_in(self.ctx.lambda) == 0 {
+                if !value(&self.univariate(&p, &point, None)?).is_positive() {
+                    return Err(format!("the point does not satisfy the hypothesis {} > 0", h.expr));
+                }
+            } else {
+                let on = self.univariate(&p, &point, Some(self.ctx.lambda))?;
+                all_hold_on_interval &= positive_on(&on, &lo, &hi);
             }
         }
         let l = Some(self.ctx.lambda);
@@ -229,7 +265,6 @@ impl<F: Field> Checker<'_, F> {
             .iter()
             .map(|s| self.univariate(&self.ctx.poly(s)?, &BTreeMap::new(), l))
             .collect::<Result<Vec<_>, _>>()?;
-        let (lo, hi) = (self.rational(&interval.0)?, self.rational(&interval.1)?);
         let count = count_roots(&chi, &seq, &lo, &hi)?;
         if count != roots {
             return Err(format!("the Sturm sequence counts {count} roots in (lo, hi], not {roots}"));
@@ -260,6 +295,13 @@ impl<F: Field> Checker<'_, F> {
             interval.0,
             interval.1
         ));
+        if roots > 0 && all_hold_on_interval && !self.nonempty {
+            self.nonempty = true;
+            self.conclusions.push(format!(
+                "the region is not empty: every hypothesis holds at {} with lambda any of these roots, so the conclusions are not vacuous",
+                at_text.join(", ")
+            ));
+        }
         Ok(())
     }
 }

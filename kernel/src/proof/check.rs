@@ -1,7 +1,7 @@
 //! The proof checker's driver: the header (variables, coordinates, chi against the model,
 //! hypotheses), then every step in order. The first failing step is reported with its locus.
 
-use super::context::{Context, Frac};
+use super::context::{Context, Frac, MAX_VARIABLES};
 use super::file::{FORMAT, ProofBody, ProofFile, Step, VERSION};
 use super::model::{PMat, SymbolicModel, det};
 use super::poly::Poly;
@@ -22,6 +22,9 @@ pub struct Checked {
     pub hypotheses: Vec<String>,
     /// What the rules established, in order.
     pub conclusions: Vec<String>,
+    /// Whether a `Witness` showed that the region is not empty (else every conclusion may be
+    /// vacuous, e.g. under contradictory hypotheses).
+    pub nonempty: bool,
 }
 
 /// The checker's state.
@@ -36,6 +39,8 @@ pub(super) struct Checker<'a, F> {
     /// For each cone, the maps j with S_j(K ∩ C_j) ⊆ K established.
     pub invariant: BTreeMap<String, BTreeSet<u64>>,
     pub conclusions: Vec<String>,
+    /// Whether a witness showed the region to be non-empty.
+    pub nonempty: bool,
 }
 
 fn header_error(path: &str, msg: impl std::fmt::Display) -> Rejection {
@@ -85,6 +90,9 @@ impl<'a, F: Field> Checker<'a, F> {
             n.chars().next().is_some_and(|c| c.is_ascii_alphabetic())
                 && n.chars().all(|c| c.is_ascii_alphanumeric())
         };
+        if names.len() > MAX_VARIABLES {
+            return Err(header_error("variables", format!("at most {MAX_VARIABLES} variables")));
+        }
         if distinct.len() != names.len() || !names.iter().all(good) {
             return Err(header_error(
                 "variables",
@@ -119,6 +127,7 @@ impl<'a, F: Field> Checker<'a, F> {
             cones: BTreeMap::new(),
             invariant: BTreeMap::new(),
             conclusions: Vec::new(),
+            nonempty: false,
         };
         c.eigenvalue().map_err(|e| header_error("eigenvalue", e))?;
         c.hypotheses()?;
@@ -166,6 +175,12 @@ impl<'a, F: Field> Checker<'a, F> {
                 return Err(header_error(&path, msg));
             }
             kappa_positive |= p == Poly::var(self.ctx.nvars(), self.params.1);
+            if self.ctx.is_zero(&Frac::poly(p.clone())).map_err(|e| header_error(&path, e))? {
+                return Err(header_error(
+                    &path,
+                    "the hypothesis vanishes wherever chi does: the region would be empty",
+                ));
+            }
             self.ctx.add_atom(&h.name, Frac::poly(p)).map_err(|e| header_error(&path, e))?;
         }
         if !kappa_positive {
@@ -240,5 +255,6 @@ pub fn check<F: Field>(file: &ProofFile, limits: ParseLimits) -> Result<Checked,
         steps: file.steps.len(),
         hypotheses: c.hypothesis_text(),
         conclusions: c.conclusions,
+        nonempty: c.nonempty,
     })
 }

@@ -20,8 +20,13 @@ pub trait Oracle<F> {
 }
 
 /// Whether `x` and `w` are parallel at every point of the region (x × w = 0).
-pub fn parallel<F: Field>(ctx: &Context<F>, x: &Point<F>, w: &Point<F>) -> bool {
-    [(1, 2), (2, 0), (0, 1)].iter().all(|&(r, s)| ctx.equal(&x[r].mul(&w[s]), &x[s].mul(&w[r])))
+pub fn parallel<F: Field>(ctx: &Context<F>, x: &Point<F>, w: &Point<F>) -> Result<bool, String> {
+    for (r, s) in [(1, 2), (2, 0), (0, 1)] {
+        if !ctx.equal(&ctx.mul(&x[r], &w[s])?, &ctx.mul(&x[s], &w[r])?)? {
+            return Ok(false);
+        }
+    }
+    Ok(true)
 }
 
 /// Clips the polygon `poly` (named vertices in cyclic order) by `l . p >= 0`: keeps the vertices
@@ -36,7 +41,7 @@ pub fn clip<F: Field>(
     let mut d = Vec::with_capacity(poly.len());
     let mut signs = Vec::with_capacity(poly.len());
     for p in poly {
-        let v = ctx.dot(l, oracle.point(p)?);
+        let v = ctx.dot(l, oracle.point(p)?)?;
         signs.push(oracle.sign(p, &v)?);
         d.push(v);
     }
@@ -48,7 +53,8 @@ pub fn clip<F: Field>(
         }
         if signs[i].is_ne() && signs[j].is_ne() && signs[i] != signs[j] {
             let (a, b) = (oracle.point(&poly[i])?, oracle.point(&poly[j])?);
-            let x: Point<F> = std::array::from_fn(|k| ctx.add(&d[i].mul(&b[k]), &d[j].mul(&a[k]).neg()));
+            let coord = |k: usize| ctx.add(&ctx.mul(&d[i], &b[k])?, &ctx.mul(&d[j], &a[k])?.neg());
+            let x: Point<F> = [coord(0)?, coord(1)?, coord(2)?];
             out.push(oracle.crossing(&x, &poly[i], &poly[j])?);
         }
     }

@@ -2,7 +2,12 @@
 //! when the numerator of the difference, with every definition substituted (denominators cleared,
 //! each proved positive), has pseudo-remainder zero by chi in lambda (docs/kernel-soundness.md).
 
-use super::poly::Poly;
+use super::poly::{MAX_TOTAL_DEGREE, Poly};
+
+/// Largest degree in lambda before the reduction by chi (the pseudo-remainder costs grow with it).
+pub const MAX_LAMBDA_DEGREE: u32 = 32;
+/// Largest number of variables of a proof.
+pub const MAX_VARIABLES: usize = 16;
 use crate::exact::{Field, ParseLimits};
 use std::collections::BTreeMap;
 
@@ -19,13 +24,6 @@ impl<F: Field> Frac<F> {
     /// A polynomial.
     pub fn poly(num: Poly<F>) -> Self {
         Frac { num, den: Vec::new() }
-    }
-
-    /// `self * o` (zero has no denominator).
-    pub fn mul(&self, o: &Self) -> Self {
-        let num = self.num.mul(&o.num);
-        let den = if num.is_zero() { Vec::new() } else { self.den.iter().chain(&o.den).cloned().collect() };
-        Frac { num, den }
     }
 
     /// `-self`.
@@ -153,53 +151,83 @@ impl<F: Field> Context<F> {
     }
 
     /// The product of the atoms of a denominator.
-    fn den_poly(&self, f: &Frac<F>) -> Poly<F> {
-        f.den.iter().fold(self.constant(F::one()), |acc, a| {
-            acc.mul(self.polynomial_atom(a).expect("denominator atoms are checked when parsed"))
-        })
+    fn den_poly(&self, f: &Frac<F>) -> Result<Poly<F>, String> {
+        let mut acc = self.constant(F::one());
+        for a in &f.den {
+            acc = acc.try_mul(self.polynomial_atom(a)?)?;
+        }
+        Ok(acc)
     }
 
     /// Whether a polynomial vanishes at every point of the region: definitions substituted
     /// (latest first, denominators cleared), then the pseudo-remainder by chi in lambda is zero.
-    pub fn vanishes(&self, p: &Poly<F>) -> bool {
-        let p = self.defs.iter().rev().fold(p.clone(), |acc, (v, n, d)| acc.subst_fraction(*v, n, d));
-        p.pseudo_remainder(&self.chi, self.lambda).is_zero()
+    /// An error when the polynomials would exceed the size limits.
+    pub fn vanishes(&self, p: &Poly<F>) -> Result<bool, String> {
+        let mut p = p.clone();
+        for (v, n, d) in self.defs.iter().rev() {
+            let k = p.degree_in(*v);
+            let predicted = p.total_degree() + k * n.total_degree().max(d.total_degree());
+            if predicted > MAX_TOTAL_DEGREE {
+                let name = &self.names[*v];
+                return Err(format!(
+                    "substituting {name} would give degree {predicted}, beyond the limit of {MAX_TOTAL_DEGREE}"
+                ));
+            }
+            p = p.subst_fraction(*v, n, d)?;
+        }
+        if p.degree_in(self.lambda) > MAX_LAMBDA_DEGREE {
+            return Err(format!(
+                "degree {} in lambda is beyond the limit of {MAX_LAMBDA_DEGREE}",
+                p.degree_in(self.lambda)
+            ));
+        }
+        Ok(p.pseudo_remainder(&self.chi, self.lambda)?.is_zero())
     }
 
-    /// `a + b` (denominators multiplied unless equal).
-    pub fn add(&self, a: &Frac<F>, b: &Frac<F>) -> Frac<F> {
+    /// `a b`, within the size limits.
+    pub fn mul(&self, a: &Frac<F>, b: &Frac<F>) -> Result<Frac<F>, String> {
+        let num = a.num.try_mul(&b.num)?;
+        let den = if num.is_zero() { Vec::new() } else { a.den.iter().chain(&b.den).cloned().collect() };
+        Ok(Frac { num, den })
+    }
+
+    /// `a + b` (denominators multiplied unless equal), within the size limits.
+    pub fn add(&self, a: &Frac<F>, b: &Frac<F>) -> Result<Frac<F>, String> {
         if a.num.is_zero() {
-            return b.clone();
+            return Ok(b.clone());
         }
         if b.num.is_zero() {
-            return a.clone();
+            return Ok(a.clone());
         }
         if a.den == b.den {
-            return Frac { num: a.num.add(&b.num), den: a.den.clone() };
+            return Ok(Frac { num: a.num.add(&b.num), den: a.den.clone() });
         }
-        Frac {
-            num: a.num.mul(&self.den_poly(b)).add(&b.num.mul(&self.den_poly(a))),
-            den: a.den.iter().chain(&b.den).cloned().collect(),
-        }
+        let num = a.num.try_mul(&self.den_poly(b)?)?.add(&b.num.try_mul(&self.den_poly(a)?)?);
+        Ok(Frac { num, den: a.den.iter().chain(&b.den).cloned().collect() })
     }
 
     /// `a . b` for a covector and a point of expressions.
-    pub fn dot(&self, a: &[Frac<F>; 3], b: &[Frac<F>; 3]) -> Frac<F> {
-        (1..3).fold(a[0].mul(&b[0]), |acc, i| self.add(&acc, &a[i].mul(&b[i])))
+    pub fn dot(&self, a: &[Frac<F>; 3], b: &[Frac<F>; 3]) -> Result<Frac<F>, String> {
+        let mut acc = self.mul(&a[0], &b[0])?;
+        for i in 1..3 {
+            acc = self.add(&acc, &self.mul(&a[i], &b[i])?)?;
+        }
+        Ok(acc)
     }
 
     /// `m p` for a matrix of polynomials.
-    pub fn image(&self, m: &[[Poly<F>; 3]; 3], p: &[Frac<F>; 3]) -> [Frac<F>; 3] {
-        std::array::from_fn(|r| self.dot(&m[r].clone().map(Frac::poly), p))
+    pub fn image(&self, m: &[[Poly<F>; 3]; 3], p: &[Frac<F>; 3]) -> Result<[Frac<F>; 3], String> {
+        let row = |r: usize| self.dot(&m[r].clone().map(Frac::poly), p);
+        Ok([row(0)?, row(1)?, row(2)?])
     }
 
     /// Whether `a = b` at every point of the region.
-    pub fn equal(&self, a: &Frac<F>, b: &Frac<F>) -> bool {
-        self.vanishes(&a.num.mul(&self.den_poly(b)).sub(&b.num.mul(&self.den_poly(a))))
+    pub fn equal(&self, a: &Frac<F>, b: &Frac<F>) -> Result<bool, String> {
+        self.vanishes(&a.num.try_mul(&self.den_poly(b)?)?.sub(&b.num.try_mul(&self.den_poly(a)?)?))
     }
 
     /// Whether `a = 0` at every point of the region.
-    pub fn is_zero(&self, a: &Frac<F>) -> bool {
+    pub fn is_zero(&self, a: &Frac<F>) -> Result<bool, String> {
         self.vanishes(&a.num)
     }
 }

@@ -26,4 +26,4 @@ pub use context::{Context, Frac};
 pub use file::{Eigenvalue, FORMAT, Hypothesis, Parameters, ProofBody, ProofFile, Step, VERSION, read};
 pub use model::{PMat, PVec, SymbolicModel, det, mat_mul, mat_vec};
 pub use poly::{MAX_DEGREE, Poly};
-pub use sturm::{Coeffs, count_roots, derivative, rem};
+pub use sturm::{Coeffs, count_roots, derivative, positive_on, rem, sturm_sequence};

@@ -7,6 +7,12 @@ use std::collections::BTreeMap;
 
 /// Largest exponent of a variable in a term of the text (keeps the arithmetic small).
 pub const MAX_DEGREE: u32 = 64;
+/// Largest number of terms of any polynomial the checker builds.
+pub const MAX_TERMS: usize = 20_000;
+/// Largest number of coefficient products in one multiplication.
+pub const MAX_WORK: usize = 4_000_000;
+/// Largest total degree of a polynomial after the definitions are substituted.
+pub const MAX_TOTAL_DEGREE: u32 = 96;
 
 /// A polynomial: exponent vectors (one entry per variable) to non-zero coefficients.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -114,9 +120,34 @@ impl<F: Field> Poly<F> {
         p
     }
 
+    /// `self o`, or an error when the product would exceed the size limits.
+    pub fn try_mul(&self, o: &Self) -> Result<Self, String> {
+        let work = self.terms.len().saturating_mul(o.terms.len());
+        if work > MAX_WORK {
+            return Err(format!(
+                "a product of polynomials with {} and {} terms is beyond the size limit",
+                self.terms.len(),
+                o.terms.len()
+            ));
+        }
+        let p = self.mul(o);
+        if p.terms.len() > MAX_TERMS {
+            return Err(format!(
+                "a polynomial with {} terms is beyond the limit of {MAX_TERMS}",
+                p.terms.len()
+            ));
+        }
+        Ok(p)
+    }
+
     /// `self^k`.
     pub fn pow(&self, k: u32) -> Self {
         (0..k).fold(Poly::constant(self.nvars, F::one()), |acc, _| acc.mul(self))
+    }
+
+    /// The total degree (0 for the zero polynomial).
+    pub fn total_degree(&self) -> u32 {
+        self.terms.keys().map(|e| e.iter().sum()).max().unwrap_or(0)
     }
 
     /// The degree in variable `v` (0 for the zero polynomial).
@@ -136,23 +167,40 @@ impl<F: Field> Poly<F> {
     }
 
     /// `self` with `num / den` substituted for variable `v`, times `den^deg_v(self)` (a
-    /// polynomial; it vanishes exactly where `self(v = num/den)` does, wherever `den != 0`).
-    pub fn subst_fraction(&self, v: usize, num: &Self, den: &Self) -> Self {
+    /// polynomial; it vanishes exactly where `self(v = num/den)` does, wherever `den != 0`), or
+    /// an error beyond the size limits.
+    pub fn subst_fraction(&self, v: usize, num: &Self, den: &Self) -> Result<Self, String> {
         let d = self.degree_in(v);
-        (0..=d).fold(Poly::zero(self.nvars), |acc, i| {
-            acc.add(&self.coeff_in(v, i).mul(&num.pow(i)).mul(&den.pow(d - i)))
-        })
+        let mut num_pow = vec![Poly::constant(self.nvars, F::one())];
+        let mut den_pow = vec![Poly::constant(self.nvars, F::one())];
+        for i in 1..=d as usize {
+            num_pow.push(num_pow[i - 1].try_mul(num)?);
+            den_pow.push(den_pow[i - 1].try_mul(den)?);
+        }
+        let mut acc = Poly::zero(self.nvars);
+        for i in 0..=d as usize {
+            let term = self.coeff_in(v, i as u32).try_mul(&num_pow[i])?.try_mul(&den_pow[d as usize - i])?;
+            acc = acc.add(&term);
+        }
+        Ok(acc)
     }
 
-    /// `self` with the constant `x` substituted for variable `v`.
+    /// `self` with the constant `x` substituted for variable `v` (never larger than `self`).
     pub fn subst_constant(&self, v: usize, x: &F) -> Self {
-        let one = Poly::constant(self.nvars, F::one());
-        self.subst_fraction(v, &Poly::constant(self.nvars, x.clone()), &one)
+        let mut out = Poly::zero(self.nvars);
+        for (e, c) in &self.terms {
+            let mut e = e.clone();
+            let k = std::mem::take(&mut e[v]);
+            let xk = (0..k).fold(F::one(), |acc, _| acc.times(x));
+            out.add_term(e, c.times(&xk));
+        }
+        out
     }
 
     /// The pseudo-remainder of `self` by `m` in variable `v`: `lead(m)^e self = q m + r` with
-    /// `deg_v r < deg_v m`, where `lead(m)` is the coefficient of the highest power of `v`.
-    pub fn pseudo_remainder(&self, m: &Self, v: usize) -> Self {
+    /// `deg_v r < deg_v m`, where `lead(m)` is the coefficient of the highest power of `v`; or an
+    /// error beyond the size limits.
+    pub fn pseudo_remainder(&self, m: &Self, v: usize) -> Result<Self, String> {
         let n = m.degree_in(v);
         let lc = m.coeff_in(v, n);
         let mut r = self.clone();
@@ -162,9 +210,9 @@ impl<F: Field> Poly<F> {
             shift[v] = d - n;
             let mut x = Poly::zero(self.nvars);
             x.add_term(shift, F::one());
-            r = r.mul(&lc).sub(&r.coeff_in(v, d).mul(&x).mul(m));
+            r = r.try_mul(&lc)?.sub(&r.coeff_in(v, d).try_mul(&x)?.try_mul(m)?);
         }
-        r
+        Ok(r)
     }
 
     /// The canonical text, with the given variable names.

@@ -25,7 +25,7 @@ impl<F: Field> Oracle<F> for Lookup<'_, '_, '_, F> {
 
     fn crossing(&mut self, x: &Point<F>, from: &str, to: &str) -> Result<String, String> {
         let w = self.crossings.next().ok_or("fewer crossings listed than the clipping creates")?;
-        if parallel(&self.checker.ctx, x, self.checker.named(w)?) {
+        if parallel(&self.checker.ctx, x, self.checker.named(w)?)? {
             Ok(w.clone())
         } else {
             Err(format!("the edge {from} -> {to} crosses {} at a point that is not {w}", self.key))
@@ -50,7 +50,7 @@ impl<F: Field> Checker<'_, F> {
 
     /// The sign of `e`: zero, a constant, or proved by the `Positive` step `key`.
     pub(super) fn sign_of(&self, key: &str, e: &Frac<F>) -> Result<Ordering, String> {
-        if self.ctx.is_zero(e) {
+        if self.ctx.is_zero(e)? {
             return Ok(Ordering::Equal);
         }
         if let Some(c) = e.num.as_constant() {
@@ -60,9 +60,9 @@ impl<F: Field> Checker<'_, F> {
             .ctx
             .atom(key)
             .map_err(|_| format!("no step `{key}` proves the sign of {}", short(self.ctx.text(e))))?;
-        if self.ctx.equal(atom, e) {
+        if self.ctx.equal(atom, e)? {
             Ok(Ordering::Greater)
-        } else if self.ctx.equal(atom, &e.neg()) {
+        } else if self.ctx.equal(atom, &e.neg())? {
             Ok(Ordering::Less)
         } else {
             Err(format!("step `{key}` does not prove the sign of {}", short(self.ctx.text(e))))
@@ -89,21 +89,24 @@ impl<F: Field> Checker<'_, F> {
             None if map == "I0" => &self.model.impact,
             None => return Err(format!("{map:?} is not a map of the model (S1..S{}, I0)", self.model.n - 1)),
         };
-        let img = self.ctx.image(m, self.named(point)?);
+        let img = self.ctx.image(m, self.named(point)?)?;
         let nv = self.ctx.nvars();
         let one_k = Frac::poly(self.ctx.constant(F::one()).add(&super::poly::Poly::var(nv, self.params.1)));
         let zero = Frac::poly(super::poly::Poly::zero(nv));
         let mut sum = [zero.clone(), zero.clone(), zero];
         for (c, w) in equals {
-            let c = one_k.mul(&self.ctx.frac(c)?);
+            let c = self.ctx.mul(&one_k, &self.ctx.frac(c)?)?;
             let w = self.named(w)?;
-            sum = std::array::from_fn(|i| self.ctx.add(&sum[i], &c.mul(&w[i])));
+            for i in 0..3 {
+                sum[i] = self.ctx.add(&sum[i], &self.ctx.mul(&c, &w[i])?)?;
+            }
         }
-        if (0..3).all(|i| self.ctx.equal(&img[i], &sum[i])) {
-            Ok(())
-        } else {
-            Err(format!("{map} {point} is not the combination given"))
+        for i in 0..3 {
+            if !self.ctx.equal(&img[i], &sum[i])? {
+                return Err(format!("{map} {point} is not the combination given"));
+            }
         }
+        Ok(())
     }
 
     /// A cone over a polygon of named points, with its facets.
@@ -135,9 +138,9 @@ impl<F: Field> Checker<'_, F> {
         }
         for (i, (name, f)) in fs.iter().enumerate() {
             for (k, v) in vertices.iter().enumerate() {
-                let value = self.ctx.dot(f, self.named(v)?);
+                let value = self.ctx.dot(f, self.named(v)?)?;
                 let on_edge = k == i || k == (i + 1) % m;
-                if on_edge && !self.ctx.is_zero(&value) {
+                if on_edge && !self.ctx.is_zero(&value)? {
                     return Err(format!("facet {name} does not vanish at {v}, an end of edge {i}"));
                 }
                 if !on_edge && !self.sign_of(&format!("{id}.{name}.{v}"), &value)?.is_gt() {
@@ -168,9 +171,9 @@ impl<F: Field> Checker<'_, F> {
         }
         let s = &self.model.steps[j as usize - 1];
         for w in &poly {
-            let img = self.ctx.image(s, self.named(w)?);
+            let img = self.ctx.image(s, self.named(w)?)?;
             for (name, f) in &k.facets {
-                self.non_negative(&format!("{cone}.S{j}.{w}.{name}"), &self.ctx.dot(f, &img))?;
+                self.non_negative(&format!("{cone}.S{j}.{w}.{name}"), &self.ctx.dot(f, &img)?)?;
             }
         }
         self.conclusions.push(format!(
@@ -185,9 +188,9 @@ impl<F: Field> Checker<'_, F> {
     pub(super) fn all_down(&mut self, cone: &str) -> Result<(), String> {
         let k = self.cones.get(cone).ok_or_else(|| format!("unknown cone {cone:?}"))?;
         for (m, g) in self.model.all_down.iter().enumerate() {
-            let img = self.ctx.image(&self.model.impact, &g.clone().map(Frac::poly));
+            let img = self.ctx.image(&self.model.impact, &g.clone().map(Frac::poly))?;
             for (name, f) in &k.facets {
-                self.non_negative(&format!("{cone}.I0.{m}.{name}"), &self.ctx.dot(f, &img))?;
+                self.non_negative(&format!("{cone}.I0.{m}.{name}"), &self.ctx.dot(f, &img)?)?;
             }
         }
         self.conclusions.push(format!(

@@ -48,6 +48,34 @@ fn variations<F: Field>(seq: &[Coeffs<F>], x: &F) -> usize {
     signs.windows(2).filter(|w| w[0] != w[1]).count()
 }
 
+/// The Sturm sequence of `p`: p, p', then minus the remainders, until a remainder vanishes.
+pub fn sturm_sequence<F: Field>(p: &Coeffs<F>) -> Vec<Coeffs<F>> {
+    let mut seq = vec![trim(p.clone()), derivative(p)];
+    while seq.last().is_some_and(|x| !x.is_empty()) {
+        let r: Coeffs<F> = rem(&seq[seq.len() - 2], &seq[seq.len() - 1]).iter().map(F::negated).collect();
+        if r.is_empty() {
+            break;
+        }
+        seq.push(r);
+    }
+    if seq.last().is_some_and(Vec::is_empty) {
+        seq.pop();
+    }
+    seq
+}
+
+/// Whether `p` is positive on (lo, hi]: p(lo) != 0, p(hi) > 0 and no root in (lo, hi] (so p keeps
+/// the sign of p(hi) there).
+pub fn positive_on<F: Field>(p: &Coeffs<F>, lo: &F, hi: &F) -> bool {
+    if p.is_empty() {
+        return false;
+    }
+    if p.len() == 1 {
+        return p[0].is_positive();
+    }
+    eval(p, hi).is_positive() && count_roots(p, &sturm_sequence(p), lo, hi) == Ok(0)
+}
+
 /// Checks that `seq` is the Sturm sequence of `p` and returns the number of distinct roots in
 /// (lo, hi]; errors say which element is wrong.
 pub fn count_roots<F: Field>(p: &Coeffs<F>, seq: &[Coeffs<F>], lo: &F, hi: &F) -> Result<usize, String> {

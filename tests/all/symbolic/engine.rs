@@ -58,12 +58,12 @@ fn the_linear_method_decides_signs_on_the_region_and_its_certificates_are_identi
         if let Some((sign, cert)) = got {
             let target = if sign == Ordering::Less { f.neg() } else { f.clone() };
             let sum = cert.terms.iter().fold(Frac::poly(Poly::zero(6)), |acc, (q, atoms)| {
-                let t = atoms
-                    .iter()
-                    .fold(Frac::poly(Poly::constant(6, q.clone())), |t, a| t.mul(c.atom(a).unwrap()));
-                c.add(&acc, &t)
+                let t = atoms.iter().fold(Frac::poly(Poly::constant(6, q.clone())), |t, a| {
+                    c.mul(&t, c.atom(a).unwrap()).unwrap()
+                });
+                c.add(&acc, &t).unwrap()
             });
-            assert!(c.equal(&target, &sum), "{e}: the certificate is an identity");
+            assert!(c.equal(&target, &sum).unwrap(), "{e}: the certificate is an identity");
         }
     }
     // e1 l is read as e2 (the definition e2 = lambda e1).
