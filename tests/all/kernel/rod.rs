@@ -64,6 +64,15 @@ fn rod_rejections_are_located() {
     let small = rod_cert("1/3", "1/20", Claim::EffectivelyInvariant, &[("0", "-2"), ("1/10", "-21/10")]);
     let r = both(&small).unwrap_err();
     assert_eq!(r.code, Code::ImageOutside);
+    assert_eq!(
+        r.locus,
+        chatter_kernel::certificate::Locus::Piece {
+            piece: 1,
+            vertex: 0,
+            outside: Some(chatter_kernel::certificate::Boundary::End { generator: 1 })
+        },
+        "{r}"
+    );
     assert!(r.message.contains("of K∩C_1") && r.message.contains("beyond generator 1"), "{r}");
     let up = rod_cert("1/3", "1/20", Claim::EffectivelyInvariant, &[("0", "-2"), ("1", "1")]);
     assert_eq!(both(&up).unwrap_err().code, Code::GeneratorNotBelow);
