@@ -3,14 +3,9 @@
 //! numerical search.
 
 use crate::exact::{OrderedField, Q, QExt};
+use chatter_kernel::model::Polygon as Body;
 use chatter_kernel::model::linalg::{Mat3, Vec3, neg, sub};
-use chatter_kernel::model::{BodyError, Polygon as Body};
 use nalgebra::{Matrix3, Vector3};
-
-/// Builds the exact body of a regular n-gon.
-pub fn body(n: u64, kappa: &Q, gamma: &Q) -> Result<Body<Q>, BodyError> {
-    Body::new(n, kappa.clone(), gamma.clone())
-}
 
 /// sin^2(2 pi / n) = 1 - c_1^2, rational whenever c_1 is.
 fn sin2<F: OrderedField>(b: &Body<F>) -> F {

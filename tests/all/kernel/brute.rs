@@ -1,13 +1,13 @@
 //! An independent brute-force evaluator of certificates, written in rationals on the projection
-//! plane v = -1, for cross-checking `kernel::check`.
+//! plane v = -1, for cross-checking `chatter_kernel::check`.
 //!
-//! It deliberately shares nothing with `kernel::polygon` or `kernel::check`: no homogeneous
+//! It deliberately shares nothing with `chatter_kernel::geometry` or `chatter_kernel::check`: no homogeneous
 //! integer vectors, no hull algorithm, no clipping. K is the intersection of every supporting
 //! half-plane through two projected generators, the vertices of K ∩ C_j are all pairwise
 //! intersections of constraint lines that satisfy every constraint, and the PCC quadratic is
 //! recomputed from the matrix S_{n-1} S_1 by hand. Only the model maps (`Body::step`,
 //! `Body::impact`, `Body::next_contact_cone`, `Body::all_down_generators`) come from the kernel;
-//! they are tested in `kernel::impact` and `kernel::cones`.
+//! they are tested in kernel/impact.rs and kernel/cones.rs.
 //!
 //! The tests at the bottom check the evaluator itself on small hand-made cases.
 #![allow(dead_code)]

@@ -1,4 +1,4 @@
-//! Tests of `kernel::check` on both backends, against the brute-force evaluator of
+//! Tests of `chatter_kernel::check` on both backends, against the brute-force evaluator of
 //! `kernel::brute`.
 
 use super::brute::{self, HalfPlane, Pt, Verdict, lift, orient2, project};
@@ -742,7 +742,7 @@ fn corpus_agrees_with_brute_force() {
             else {
                 continue;
             };
-            // The brute force is for n >= 3; the rod (n = 2) is tested in kernel::rod.
+            // The brute force is for n >= 3; the rod (n = 2) is tested in kernel/rod.rs.
             if matches!(cert.body, chatter_kernel::certificate::Body::RegularPolygon { n: 2, .. }) {
                 continue;
             }

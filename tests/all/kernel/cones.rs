@@ -1,4 +1,4 @@
-//! Tests of `kernel::cones`: the points m_{k,l}, the cones C_j and the all-down cone D.
+//! Tests of the cones of `chatter_kernel::model`: the points m_{k,l}, the cones C_j and the all-down cone D.
 
 use crate::common::{NS, body, q};
 use chatter::exact::Q;

@@ -1,4 +1,4 @@
-//! Tests of `kernel::impact`: contact covectors, impact maps, relabelling and step maps.
+//! Tests of `chatter_kernel::model::Polygon`: contact covectors, impact maps, relabelling and step maps.
 
 use crate::common::{GAMMAS, KAPPAS, NS, body, q};
 use chatter::exact::{OrderedField, Q, QExt};

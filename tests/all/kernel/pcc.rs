@@ -1,4 +1,4 @@
-//! Tests of `kernel::pcc`: the factor (t - 1)(t^2 + p t + q) of S_{n-1} S_1.
+//! Tests of `chatter_kernel::model::pcc_quadratic`: the factor (t - 1)(t^2 + p t + q) of S_{n-1} S_1.
 
 use crate::common::{GAMMAS, KAPPAS, NS, body};
 use chatter::exact::{Q, QExt, Ring};

@@ -1,4 +1,4 @@
-//! Tests of `kernel::polygon`: exact homogeneous geometry against brute force on projected
+//! Tests of `chatter_kernel::geometry`: exact homogeneous geometry against brute force on projected
 //! rational points (the helpers of `kernel::brute`, which share nothing with the kernel).
 
 use super::brute::{HalfPlane, Pt, ccw_hull, extreme_points, full_dimensional, in_hull, orient2, twice_area};

@@ -1,4 +1,4 @@
-//! Tests of `kernel::rod`: the planar rod model and its certificate checks (n = 2).
+//! Tests of `chatter_kernel::model::Rod` and the rod rules of `chatter_kernel::check`: the planar rod model and its certificate checks (n = 2).
 
 use crate::common::q;
 use chatter::certify::{ClaimChoice, Request, certify};

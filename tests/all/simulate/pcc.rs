@@ -52,7 +52,7 @@ fn pcc_lemma_guard_agrees_with_the_kernel_quadratic() {
         for kappa in KAPPAS {
             for gamma in GAMMAS {
                 let m = model(n, kappa, gamma);
-                let body = chatter::model::body(n, &q(kappa), &q(gamma)).unwrap();
+                let body = chatter_kernel::model::Polygon::new(n, q(kappa), q(gamma)).unwrap();
                 let quad = chatter_kernel::model::pcc_quadratic(&body).expect("1 is an eigenvalue");
                 let e = &m.system.pair_coupling;
                 let expected = e.is_negative() && !quad.discriminant.is_negative();
