@@ -67,6 +67,8 @@ pub enum Failure {
     Body(String),
     /// `CompleteChatterFromAllDown` was requested but the PCC Lemma does not apply.
     PccNotExcluded(String),
+    /// A claim about drops was requested at gamma = 0 or 1.
+    GammaOutOfRange(String),
     /// A drop the claim covers leaves with v >= 0 after its first impact (the body separates),
     /// so no cone in v < 0 can contain it and the claim cannot hold.
     SeedNotBelow {
@@ -86,6 +88,7 @@ impl std::fmt::Display for Failure {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Failure::Body(s) => write!(f, "invalid body: {s}"),
+            Failure::GammaOutOfRange(s) => write!(f, "{s}"),
             Failure::PccNotExcluded(s) => {
                 write!(f, "PCC is not excluded, so complete chatter cannot be certified: {s}")
             }
@@ -263,6 +266,19 @@ fn pcc_text(b: &Polygon<Q>, quad: &PccQuadratic<Q>) -> String {
 
 /// The claims to try, strongest first, with notes; `Err` if the requested claim is impossible.
 fn claims_for(req: &Request, shape: &Shape<Q>, notes: &mut Vec<String>) -> Result<Vec<Claim>, Failure> {
+    let g = shape.gamma();
+    if *g == Q::int(0) || *g == Q::int(1) {
+        let why = format!(
+            "gamma = {g}: the claims about drops need 0 < gamma < 1 (the paper's Theorem on effectively invariant cones); only EffectivelyInvariant can be certified"
+        );
+        return match req.claim {
+            ClaimChoice::Exactly(Claim::EffectivelyInvariant) | ClaimChoice::Strongest => {
+                notes.push(why);
+                Ok(vec![Claim::EffectivelyInvariant])
+            }
+            ClaimChoice::Exactly(_) => Err(Failure::GammaOutOfRange(why)),
+        };
+    }
     let strongest = match shape {
         Shape::Rod(_) => {
             notes.push("rod (n = 2): exact search, no float search; with two contacts PCC is CC".into());

@@ -77,11 +77,16 @@ fn invalid_bodies_fail_cleanly() {
 /// Regression (found by a helper's test): at gamma = 0 every post-impact velocity has u0 = 0,
 /// the reachable cone is flat, and the finder never converged; it now accepts a converged
 /// segment and the exactifier's slack gives K an interior.
+/// Since issue 9, gamma = 0 certifies only the cone property: the claims about drops need
+/// 0 < gamma < 1, and asking for one is refused with the reason.
 #[test]
 fn perfectly_plastic_impacts_are_certified() {
     for (n, k) in [(4, "1/6"), (3, "3/20"), (3, "1/8"), (6, "1/40")] {
         let r = run(n, k, "0", ClaimChoice::Strongest);
         let c = r.result.unwrap_or_else(|e| panic!("n={n} kappa={k}: {e}"));
-        assert_eq!(c.claim, Claim::CcOrPccFromAllDown, "at gamma = 0 the PCC quadratic has the root 0");
+        assert_eq!(c.claim, Claim::EffectivelyInvariant, "at gamma = 0 only the cone property is claimed");
+        assert!(r.notes.iter().any(|x| x.contains("0 < gamma < 1")), "{:?}", r.notes);
+        let r = run(n, k, "0", ClaimChoice::Exactly(Claim::CcOrPccFromAllDown));
+        assert!(matches!(r.result, Err(Failure::GammaOutOfRange(_))), "{:?}", r.result);
     }
 }

@@ -112,7 +112,7 @@ fn certify_cli(args: &[&str]) -> (Option<i32>, String) {
 #[test]
 fn issue8_rod_above_the_all_down_limit_is_not_certified_without_a_panic() {
     // kappa (1 + 2 gamma) >= 1: the all-down drop (-1, 0) leaves with v >= 0.
-    for (k, g) in [("1", "1/10"), ("1/2", "1/2"), ("3", "0"), ("1", "1")] {
+    for (k, g) in [("1", "1/10"), ("1/2", "1/2"), ("3", "1/100"), ("1", "99/100")] {
         let (code, out) = certify_cli(&["--n", "2", "--kappa", k, "--gamma", g]);
         assert_eq!(code, Some(1), "kappa={k} gamma={g}: {out}");
         assert!(out.starts_with("NOT CERTIFIED"), "{out}");
@@ -155,9 +155,14 @@ fn issue8_rod_on_goyals_boundary_is_certified_with_the_papers_cone() {
 fn issue8_gamma_one_does_not_claim_all_eigenvalues_real() {
     let (code, out) = certify_cli(&["--gamma", "1"]);
     assert_eq!(code, Some(1), "{out}");
-    assert!(out.contains("modulus"), "the Lemma fails by the modulus: {out}");
     assert!(!out.contains("contradicts the paper"), "{out}");
     assert!(!out.contains("real roots"), "{out}");
+    // Since issue 9 the claims about drops are refused at gamma = 1 before the Lemma is tried;
+    // the Lemma itself still fails by the modulus there.
+    assert!(out.contains("0 < gamma < 1"), "{out}");
+    let b = chatter_kernel::model::Polygon::new(4, q("1/6"), q("1")).unwrap();
+    let quad = chatter_kernel::model::pcc_quadratic(&b).unwrap();
+    assert_eq!(quad.exclusion(), chatter_kernel::model::PccExclusion::ModulusNotBelowOne);
     // Where the roots are real for n >= 4, the contradiction with the paper is reported.
     let (_, out) = certify_cli(&["--gamma", "1/1000"]);
     assert!(out.contains("real roots") && out.contains("contradicts the paper"), "{out}");

@@ -41,6 +41,7 @@ pub struct Accepted {
 pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
     header(cert)?;
     let shape: Shape<F> = body(&cert.body, limits)?;
+    claim_range(&shape, cert.claim)?;
     let gens = generators::<F>(cert, shape.coordinates(), limits)?;
     match &shape {
         Shape::Rod(r) => rod::check(r, &gens, cert.claim),
@@ -80,6 +81,23 @@ fn body<F: Field>(b: &Body, limits: ParseLimits) -> Result<Shape<F>, Rejection> 
         };
         Rejection::at_field(code, path, e)
     })
+}
+
+/// The claims about drops need 0 < gamma < 1, the hypothesis of the paper's Theorem on
+/// effectively invariant cones: at gamma = 1 energy is conserved and chatter is impossible; at
+/// gamma = 0 a drop can stop after finitely many impacts (an image exactly 0), which is neither CC
+/// nor PCC. `EffectivelyInvariant`, a property of the cone and the maps, holds for 0 <= gamma <= 1.
+fn claim_range<F: Field>(shape: &Shape<F>, claim: Claim) -> Result<(), Rejection> {
+    let g = shape.gamma();
+    if claim > Claim::EffectivelyInvariant && (g.is_zero() || *g == F::one()) {
+        let msg = format!(
+            "gamma = {} is outside 0 < gamma < 1, which the claim {} needs (the paper's Theorem on effectively invariant cones assumes it); only EffectivelyInvariant holds for gamma = 0 or 1",
+            show::number(g),
+            claim.name()
+        );
+        return Err(Rejection::at_field(Code::ParameterOutOfRange, "body.gamma", msg));
+    }
+    Ok(())
 }
 
 /// The generators as integer vectors, positive multiples of the given ones, with the largest

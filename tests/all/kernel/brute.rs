@@ -364,6 +364,11 @@ pub fn evaluate_parts(b: &Body<Q>, claim: Claim, gens: &[[Q; 3]]) -> Verdict {
         }
     };
 
+    // The claims about drops need 0 < gamma < 1 (docs/kernel-soundness.md).
+    if claim > Claim::EffectivelyInvariant && (*b.gamma() == Q::int(0) || *b.gamma() == Q::int(1)) {
+        stage(&mut v, vec![Code::ParameterOutOfRange]);
+        return v;
+    }
     let pts: Vec<Pt> = match gens.iter().map(project).collect::<Option<Vec<Pt>>>() {
         Some(p) => p,
         None => {

@@ -566,11 +566,17 @@ fn bodies_out_of_range_are_named_by_field() {
         assert_eq!(r.code, Code::ParameterOutOfRange, "{kappa} {gamma}: {r}");
         assert_eq!(r.locus, Locus::Field { path: field.to_string() }, "{r}");
     }
-    // The limits themselves are legal: gamma = 0 and gamma = 1 are read (and then judged).
+    // gamma = 0 and gamma = 1 are legal for the cone property, not for the claims about drops.
     for gamma in ["0", "1"] {
         set_body(&mut c, 4, "1/6", gamma);
+        c.claim = Claim::EffectivelyInvariant;
         let r = run(&c);
         assert!(!matches!(&r, Err(e) if e.code == Code::ParameterOutOfRange), "{r:?}");
+        for claim in [Claim::CcOrPccFromAllDown, Claim::CompleteChatterFromAllDown] {
+            c.claim = claim;
+            let r = rejected(&c);
+            assert_eq!((r.code, r.locus.clone()), (Code::ParameterOutOfRange, field("body.gamma")), "{r}");
+        }
     }
 }
 
@@ -669,15 +675,14 @@ fn restitution_zero_is_accepted_and_zero_images_are_allowed() {
             }
         };
         set_body(&mut cert, 3, kappa, "0");
-        cert.claim = Claim::CcOrPccFromAllDown;
+        cert.claim = Claim::EffectivelyInvariant;
         let (a, v) = agree(&cert);
         a.unwrap_or_else(|e| panic!("kappa = {kappa}, gamma = 0: {e}"));
         assert!(v.accepted());
-        // At gamma = 0, S_j . I_0 kills d_0 and the PCC quadratic has q = 0 (real roots).
-        cert.claim = Claim::CompleteChatterFromAllDown;
-        let r = agree(&cert).0.expect_err("PCC not excluded at gamma = 0");
-        assert_eq!(r.code, Code::PccNotExcluded);
-        assert!(r.message.contains("t + (0))"), "{r}");
+        // The claims about drops need 0 < gamma < 1 (issue 9).
+        cert.claim = Claim::CcOrPccFromAllDown;
+        let r = agree(&cert).0.expect_err("no drop claim at gamma = 0");
+        assert_eq!(r.code, Code::ParameterOutOfRange);
     }
 }
 
