@@ -8,7 +8,7 @@ use chatter_kernel::proof::{Checked, ProofFile, Step};
 
 /// The proof object as RON (deterministic layout).
 pub fn ron(file: &ProofFile) -> String {
-    let cfg = ron::ser::PrettyConfig::default().struct_names(true).compact_arrays(true);
+    let cfg = ron::ser::PrettyConfig::default().struct_names(true).compact_arrays(true).escape_strings(false);
     let mut out = ron::ser::to_string_pretty(file, cfg).expect("serialisable");
     out.push('\n');
     out

@@ -23,8 +23,12 @@ fn sample() -> Certificate {
 fn the_writer_round_trips_and_is_stable() {
     let c = sample();
     let text = write(&c);
-    assert_eq!(read(&text).unwrap(), c);
-    assert_eq!(write(&read(&text).unwrap()), text);
+    // The strict syntax has no escapes: characters it cannot write in a string become spaces,
+    // which only the free-text producer can contain.
+    let back = read(&text).unwrap();
+    assert_eq!(back.producer, "a  quoted  producer with a newline");
+    assert_eq!(Certificate { producer: c.producer.clone(), ..back.clone() }, c);
+    assert_eq!(write(&back), text);
     assert!(text.starts_with("Certificate(\n    format: \"chatter-certificate\",\n    version: 1,\n"));
     assert!(text.contains("    cone: [\n        (\"0\", \"-11/4\", \"-1\"),\n"));
 }

@@ -5,10 +5,12 @@
 
 mod read;
 mod rejection;
+mod strict;
 mod write;
 
-pub use read::read;
-pub(crate) use read::{check_header, syntax};
+pub use read::{Syntax, read, read_with};
+pub(crate) use read::{check_header, ron_error};
+pub(crate) use strict::check as check_strict;
 pub use rejection::{Boundary, Code, Locus, Rejection};
 pub use write::write;
 

@@ -12,7 +12,7 @@ struct Header {
 }
 
 /// A RON error as a rejection: schema errors get their own code, everything at its position.
-pub(crate) fn syntax(e: ron::error::SpannedError) -> Rejection {
+pub(crate) fn ron_error(e: ron::error::SpannedError) -> Rejection {
     use ron::Error as E;
     let code = match &e.code {
         E::NoSuchStructField { .. } => Code::UnknownField,
@@ -50,13 +50,31 @@ pub(crate) fn check_header(
     }
 }
 
-/// Reads a certificate: first the header (`format`, `version`), then the full schema of that
-/// version. Every error names the field or the position.
+/// Which RON syntax a reader accepts.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Syntax {
+    /// Only the subset the format uses (docs/certificate-format.md §2): the default.
+    #[default]
+    Strict,
+    /// Anything RON accepts (comments, escapes, raw strings, ...).
+    Lenient,
+}
+
+/// Reads a certificate in the strict syntax: see [`read_with`].
 pub fn read(text: &str) -> Result<Certificate, Rejection> {
+    read_with(text, Syntax::Strict)
+}
+
+/// Reads a certificate: the syntax, then the header (`format`, `version`), then the full schema
+/// of that version. Every error names the field or the position.
+pub fn read_with(text: &str, syntax: Syntax) -> Result<Certificate, Rejection> {
+    if syntax == Syntax::Strict {
+        super::strict::check(text)?;
+    }
     let lenient = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
-    let header: Header = lenient.from_str(text).map_err(syntax)?;
+    let header: Header = lenient.from_str(text).map_err(ron_error)?;
     check_header(header.format.as_deref(), header.version, FORMAT, VERSION)?;
-    ron::Options::default().from_str(text).map_err(syntax)
+    ron::Options::default().from_str(text).map_err(ron_error)
 }
 
 fn missing(field: &str) -> Rejection {

@@ -1,10 +1,18 @@
-//! The deterministic writer: one generator per line.
+//! The deterministic writer: one generator per line, in the strict syntax.
 
 use super::{Body, Certificate};
 
+/// A string in the strict syntax: quoted, without escapes. Characters the syntax does not allow
+/// in strings (`"`, `\`, control characters) become spaces; they can only come from the free-text
+/// `producer` field (numbers and names never contain them).
+pub fn quoted(s: &str) -> String {
+    let clean: String = s.chars().map(|c| if c == '"' || c == '\\' || c.is_control() { ' ' } else { c }).collect();
+    format!("\"{clean}\"")
+}
+
 /// Writes a certificate as RON, one generator per line (deterministic).
 pub fn write(c: &Certificate) -> String {
-    let q = |s: &str| ron::to_string(s).expect("strings always serialise");
+    let q = |s: &str| quoted(s);
     let Body::RegularPolygon { n, kappa, gamma } = &c.body;
     let mut out = String::new();
     out.push_str("Certificate(\n");

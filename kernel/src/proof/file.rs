@@ -1,7 +1,7 @@
 //! The proof format, version 1 (RON; docs/proof-format.md): the schema and its reader.
 //! Expressions stay text here; the checker parses them with the proof's variables.
 
-use crate::certificate::{Rejection, check_header, syntax};
+use crate::certificate::{Rejection, check_header, check_strict, ron_error};
 use serde::{Deserialize, Serialize};
 
 /// Value of the `format` field.
@@ -235,11 +235,13 @@ struct Header {
     version: Option<u64>,
 }
 
-/// Reads a proof file: first the header (`format`, `version`), then the full schema of that
-/// version with unknown fields denied. Every error names the field or the position.
+/// Reads a proof file: the strict syntax of docs/certificate-format.md §2, then the header
+/// (`format`, `version`), then the full schema of that version with unknown fields denied. Every
+/// error names the field or the position.
 pub fn read(text: &str) -> Result<ProofFile, Rejection> {
+    check_strict(text)?;
     let lenient = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
-    let header: Header = lenient.from_str(text).map_err(syntax)?;
+    let header: Header = lenient.from_str(text).map_err(ron_error)?;
     check_header(header.format.as_deref(), header.version, FORMAT, VERSION)?;
-    ron::Options::default().from_str(text).map_err(syntax)
+    ron::Options::default().from_str(text).map_err(ron_error)
 }
