@@ -10,8 +10,8 @@ mod write;
 
 pub use read::{Syntax, read, read_with};
 pub(crate) use read::{check_header, ron_error};
-pub(crate) use strict::check as check_strict;
 pub use rejection::{Boundary, Code, Locus, Rejection};
+pub(crate) use strict::check as check_strict;
 pub use write::write;
 
 use serde::de::{SeqAccess, Visitor};

@@ -59,9 +59,15 @@ pub fn check(text: &str) -> Result<(), Rejection> {
                 advance(&mut i, &mut line, &mut col, d);
                 match d {
                     '"' => break,
-                    '\\' => return Err(reject(line, col - 1, "escapes in strings are not part of the format")),
+                    '\\' => {
+                        return Err(reject(line, col - 1, "escapes in strings are not part of the format"));
+                    }
                     _ if d.is_control() => {
-                        return Err(reject(line, col - 1, "control characters in strings are not part of the format"));
+                        return Err(reject(
+                            line,
+                            col - 1,
+                            "control characters in strings are not part of the format",
+                        ));
                     }
                     _ => {}
                 }

@@ -6,7 +6,8 @@ use super::{Body, Certificate};
 /// in strings (`"`, `\`, control characters) become spaces; they can only come from the free-text
 /// `producer` field (numbers and names never contain them).
 pub fn quoted(s: &str) -> String {
-    let clean: String = s.chars().map(|c| if c == '"' || c == '\\' || c.is_control() { ' ' } else { c }).collect();
+    let clean: String =
+        s.chars().map(|c| if c == '"' || c == '\\' || c.is_control() { ' ' } else { c }).collect();
     format!("\"{clean}\"")
 }
 
