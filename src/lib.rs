@@ -16,6 +16,7 @@ pub mod exact;
 pub mod exactify;
 pub mod finder;
 pub mod model;
+pub mod oracle;
 pub mod simulate;
 pub mod spectral;
 pub mod symbolic;

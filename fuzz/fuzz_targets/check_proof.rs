@@ -8,7 +8,7 @@ use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
     if let Ok(text) = std::str::from_utf8(data) {
-        let limits = ParseLimits { max_digits: 200 };
+        let limits = ParseLimits { max_digits: 200, ..ParseLimits::default() };
         if let Verdict::Disagree(s) = verify_proof_text(text, limits) {
             panic!("backends disagree: {s}");
         }

@@ -9,7 +9,7 @@ use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
     if let Ok(text) = std::str::from_utf8(data) {
-        let limits = ParseLimits { max_digits: 200 };
+        let limits = ParseLimits { max_digits: 200, ..ParseLimits::default() };
         if let Verdict::Disagree(s) = verify_text(text, limits, &[MALACHITE, NUM]) {
             panic!("backends disagree: {s}");
         }

@@ -37,19 +37,29 @@ pub enum Verdict<T = Accepted> {
 }
 
 /// Compares the verdicts of several runs: identical verdicts (messages included), or a
-/// disagreement naming the first two that differ.
+/// disagreement naming the first two that differ. A run that ran out of time gives no verdict on
+/// the content, so it is the verdict (`time-limit`), never a disagreement.
 pub fn agree<T: PartialEq + std::fmt::Debug>(
     runs: impl IntoIterator<Item = (&'static str, Result<T, crate::certificate::Rejection>)>,
 ) -> Verdict<T> {
     let mut first: Option<(&str, Result<T, crate::certificate::Rejection>)> = None;
+    let mut differ = None;
     for (name, r) in runs {
+        if let Err(e) = &r {
+            if e.code == crate::certificate::Code::TimeLimit {
+                return Verdict::Rejected(e.clone());
+            }
+        }
         match &first {
             None => first = Some((name, r)),
-            Some((n0, f)) if *f != r => {
-                return Verdict::Disagree(format!("{n0} says {f:?}, {name} says {r:?}"));
+            Some((n0, f)) if *f != r && differ.is_none() => {
+                differ = Some(format!("{n0} says {f:?}, {name} says {r:?}"));
             }
             Some(_) => {}
         }
+    }
+    if let Some(d) = differ {
+        return Verdict::Disagree(d);
     }
     match first {
         Some((_, Ok(a))) => Verdict::Accepted(a),

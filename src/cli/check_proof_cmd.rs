@@ -1,6 +1,8 @@
 //! `chatter check-proof`: re-checks proof files with the trusted crate, on both backends.
 
 use super::{Outcome, emit};
+use crate::verify::read::{Input, read_input};
+use crate::verify::{DEFAULT_MAX_FILE_SIZE, DEFAULT_TIME_LIMIT, with_time_limit};
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::verify::{Verdict, format_of, verify_proof_text};
 use clap::Args;
@@ -23,18 +25,37 @@ pub struct CheckProofArgs {
     /// Longest number accepted, in decimal digits.
     #[arg(long, default_value_t = ParseLimits::default().max_digits)]
     pub max_digits: usize,
+    /// Largest file read, in bytes.
+    #[arg(long, default_value_t = DEFAULT_MAX_FILE_SIZE)]
+    pub max_file_size: u64,
+    /// Longest time per file, in seconds, over both backends (0: no limit).
+    #[arg(long, default_value_t = DEFAULT_TIME_LIMIT.as_secs())]
+    pub time_limit: u64,
 }
 
 pub fn run(a: CheckProofArgs) -> Outcome {
-    let limits = ParseLimits { max_digits: a.max_digits };
+    let limits = ParseLimits::digits(a.max_digits);
+    let time_limit = (a.time_limit > 0).then(|| std::time::Duration::from_secs(a.time_limit));
     let mut outcome = Outcome::Success;
     for path in &a.paths {
-        let text = match std::fs::read_to_string(path) {
-            Ok(t) => t,
-            Err(e) => return Outcome::Usage(format!("cannot read {}: {e}", path.display())),
+        let text = match read_input(path, a.max_file_size) {
+            Input::Text { text, .. } => text,
+            Input::TooLarge { what } => {
+                return Outcome::Usage(format!(
+                    "{}: {what}, more than --max-file-size = {}",
+                    path.display(),
+                    a.max_file_size
+                ));
+            }
+            Input::Unreadable(why) => return Outcome::Usage(format!("{}: {why}", path.display())),
         };
         let p = path.display();
-        match verify_proof_text(&text, limits) {
+        let owned = text.clone();
+        let run = move |deadline| verify_proof_text(&owned, ParseLimits { deadline, ..limits });
+        let verdict = with_time_limit(time_limit, run).unwrap_or_else(|| {
+            Verdict::Rejected(chatter_kernel::certificate::Rejection::time_limit("checking the proof"))
+        });
+        match verdict {
             Verdict::Accepted(c) => {
                 if a.json {
                     emit(&json!({"path": p.to_string(), "status": "OK", "steps": c.steps, "hypotheses": c.hypotheses, "conclusions": c.conclusions, "region_nonempty": c.nonempty}).to_string());

@@ -1,13 +1,16 @@
 //! `chatter verify`.
 
 use super::{Env, Outcome, emit};
-use crate::verify::{Status, collect_files, verify_file};
+use crate::verify::expect::Manifest;
+use crate::verify::files;
+use crate::verify::{DEFAULT_MAX_FILE_SIZE, DEFAULT_TIME_LIMIT, Options, Summary, verify_all};
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::verify::Backend;
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
 use std::path::PathBuf;
+use std::time::Duration;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum BackendArg {
@@ -19,22 +22,46 @@ pub enum BackendArg {
 
 /// Raw arguments of `chatter verify`.
 #[derive(Args, Debug)]
-#[command(after_help = "Prints one line per file: `PATH: OK (...)` or `PATH: REJECTED: reason`.\n\
-Exit status 0 only if every file verifies; 1 if one is rejected; 2 if one cannot be read;\n\
-3 if the backends disagree (a bug).")]
+#[command(
+    after_help = "Prints one line per input, `PATH: OK (...)`, `PATH: REJECTED: reason` or `PATH: ERROR: reason`,\n\
+then a summary line. A directory is searched recursively for *.ron and *.ron.gz files (any letter\n\
+case); every real path is checked at most once. Limits (file size, generators, digits, time) are\n\
+reported as REJECTED with the code too-large or time-limit, naming the limit.\n\n\
+Exit status: 3 if the backends disagree on an input (a bug); else 2 if an input could not be\n\
+read; else 1 if one was rejected; else 0. With --expect: 0 if every verdict is the expected one,\n\
+1 if any differs (each mismatch is printed), 2 if the manifest cannot be read.\n\n\
+Examples:\n  chatter verify square.ron\n  chatter verify certificates/valid\n  chatter verify --expect certificates/invalid/expected.json"
+)]
 pub struct VerifyArgs {
-    /// Certificate files, or directories searched recursively for *.ron files.
-    #[arg(required = true)]
+    /// Certificate files, or directories searched recursively (default with --expect: the
+    /// manifest's directory).
+    #[arg(required_unless_present = "expect")]
     pub paths: Vec<PathBuf>,
-    /// Print one JSON object (summary and one entry per file).
+    /// Compare every verdict with a manifest of expected verdicts (JSON, the form of
+    /// certificates/invalid/expected.json) and report every mismatch.
+    #[arg(long, value_name = "MANIFEST")]
+    pub expect: Option<PathBuf>,
+    /// Print one JSON object (summary and one entry per input).
     #[arg(long)]
     pub json: bool,
     /// Bignum backends the kernel runs on.
     #[arg(long, value_enum, default_value = "both")]
     pub backend: BackendArg,
-    /// Longest number accepted in a certificate, in decimal digits.
+    /// Longest number accepted, in decimal digits (numerator and denominator together).
     #[arg(long, default_value_t = ParseLimits::default().max_digits)]
     pub max_digits: usize,
+    /// Most digits of all the numbers of one file together.
+    #[arg(long, default_value_t = ParseLimits::default().max_total_digits)]
+    pub max_total_digits: usize,
+    /// Most generators of one cone.
+    #[arg(long, default_value_t = ParseLimits::default().max_generators)]
+    pub max_generators: usize,
+    /// Largest file read, in bytes (after decompression for gzip'd files).
+    #[arg(long, default_value_t = DEFAULT_MAX_FILE_SIZE)]
+    pub max_file_size: u64,
+    /// Longest time per file, in seconds, over all backends (0: no limit).
+    #[arg(long, default_value_t = DEFAULT_TIME_LIMIT.as_secs())]
+    pub time_limit: u64,
 }
 
 fn backends(a: BackendArg, env: &Env) -> Vec<Backend> {
@@ -45,43 +72,83 @@ fn backends(a: BackendArg, env: &Env) -> Vec<Backend> {
     }
 }
 
-pub fn run(a: VerifyArgs, env: &Env) -> Outcome {
-    let files = match collect_files(&a.paths) {
-        Ok(f) => f,
-        Err(e) => return Outcome::Usage(format!("cannot list certificates: {e}")),
+/// The validated options (second layer of argument parsing).
+fn options(a: &VerifyArgs, env: &Env) -> Options {
+    let limits = ParseLimits {
+        max_digits: a.max_digits,
+        max_total_digits: a.max_total_digits,
+        max_generators: a.max_generators,
+        deadline: None,
     };
-    if files.is_empty() {
-        return Outcome::Usage("no certificate files (*.ron) found".into());
-    }
-    let backends = backends(a.backend, env);
-    let limits = ParseLimits { max_digits: a.max_digits };
-    let bar = ProgressBar::new(files.len() as u64);
+    let time_limit = (a.time_limit > 0).then(|| Duration::from_secs(a.time_limit));
+    Options { limits, max_file_size: a.max_file_size, time_limit, backends: backends(a.backend, env) }
+}
+
+fn progress(n: usize) -> ProgressBar {
+    let bar = ProgressBar::new(n as u64);
     bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}").expect("valid template"));
-    if files.len() < 20 {
+    if n < 20 {
         bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
     }
-    let mut verdicts = Vec::with_capacity(files.len());
-    for f in &files {
-        let v = verify_file(f, limits, &backends);
+    bar
+}
+
+pub fn run(a: VerifyArgs, env: &Env) -> Outcome {
+    let manifest = match a.expect.as_deref().map(Manifest::read).transpose() {
+        Ok(m) => m,
+        Err(e) => return Outcome::Usage(e),
+    };
+    let paths = match (&manifest, a.paths.is_empty()) {
+        (Some(m), true) => vec![m.dir.clone()],
+        _ => a.paths.clone(),
+    };
+    let listing = files::list(&paths);
+    if listing.entries.is_empty() {
+        return Outcome::Usage(format!(
+            "no certificate files (*.ron, *.ron.gz) found; {}",
+            Summary::of(&[], listing.skipped).line()
+        ));
+    }
+    let opts = options(&a, env);
+    let bar = progress(listing.entries.len());
+    let verdicts = verify_all(&listing, &opts, |v| {
         if !a.json {
             bar.suspend(|| emit(&v.line()));
         }
         bar.inc(1);
-        verdicts.push(v);
-    }
+    });
     bar.finish_and_clear();
-    let count = |s: Status| verdicts.iter().filter(|v| v.status == s).count();
-    let (ok, rejected, errors) = (count(Status::Ok), count(Status::Rejected), count(Status::Error));
+    let summary = Summary::of(&verdicts, listing.skipped);
+    let mismatches = manifest.as_ref().map(|m| m.mismatches(&verdicts));
     if a.json {
-        emit(&json!({"files": verdicts, "ok": ok, "rejected": rejected, "errors": errors}).to_string());
-    } else if files.len() > 1 {
-        eprintln!("{} files: {ok} OK, {rejected} rejected, {errors} errors", files.len());
-    }
-    if let Some(v) = verdicts.iter().find(|v| v.is_internal()) {
-        Outcome::Internal(format!("{}: the backends disagree", v.path))
-    } else if errors > 0 {
-        Outcome::Usage(format!("{errors} of {} files could not be read", files.len()))
+        emit(&json!({"files": verdicts, "summary": summary, "mismatches": mismatches}).to_string());
     } else {
-        Outcome::from_answer(ok == files.len())
+        emit(&summary.line());
+        if let Some(ms) = &mismatches {
+            ms.iter().for_each(|m| emit(&format!("MISMATCH {m}")));
+            emit(&format!("{} mismatches with the manifest", ms.len()));
+        }
     }
+    outcome(&summary, &verdicts, mismatches.as_deref())
+}
+
+/// The documented exit rule over all inputs (see `--help`).
+fn outcome(s: &Summary, verdicts: &[crate::verify::FileVerdict], mismatches: Option<&[String]>) -> Outcome {
+    if let Some(v) = verdicts.iter().find(|v| v.is_internal()) {
+        return Outcome::Internal(format!("{}: the backends disagree", v.path));
+    }
+    if let Some(ms) = mismatches {
+        return Outcome::from_answer(ms.is_empty());
+    }
+    if s.errors > 0 {
+        let first = verdicts
+            .iter()
+            .find(|v| v.status == crate::verify::Status::Error)
+            .map_or("", |v| v.path.as_str());
+        return Outcome::Usage(format!(
+            "{} of {} inputs could not be read (the first: {first})",
+            s.errors, s.inputs
+        ));
+    }
+    Outcome::from_answer(s.rejected == 0)
 }

@@ -11,6 +11,7 @@ mod docs;
 mod exact;
 mod exactify;
 mod finder;
+mod fuzz_smoke;
 mod kernel;
 mod readme;
 mod regression;

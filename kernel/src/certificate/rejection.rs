@@ -41,6 +41,11 @@ pub enum Code {
     InitialOutside,
     /// The PCC Lemma does not apply (the quadratic factor has real roots, or roots of modulus >= 1).
     PccNotExcluded,
+    /// The file asks for more work than a limit allows (generators, digits, file size): the
+    /// limit is named. No verdict on the content.
+    TooLarge,
+    /// The time limit ran out before the check ended. No verdict on the content.
+    TimeLimit,
     /// A proof's header is invalid (variables, coordinates, chi, hypotheses).
     InvalidHeader,
     /// A step of a proof does not check.
@@ -70,6 +75,8 @@ impl Code {
             Code::ImageOutside => "image-outside",
             Code::InitialOutside => "initial-outside",
             Code::PccNotExcluded => "pcc-not-excluded",
+            Code::TooLarge => "too-large",
+            Code::TimeLimit => "time-limit",
             Code::InvalidHeader => "invalid-header",
             Code::StepFailed => "step-failed",
             Code::Internal => "internal",
@@ -126,6 +133,12 @@ pub enum Locus {
         /// The step's id.
         id: String,
     },
+    /// A limit on the work a file may ask for (`too-large`, `time-limit`), by name, e.g.
+    /// `max-generators`.
+    Limit {
+        /// The limit's name, as in docs/certificate-format.md §2.
+        name: String,
+    },
     /// Nowhere in particular (internal errors).
     Nowhere,
 }
@@ -173,6 +186,19 @@ impl Rejection {
         let path = path.into();
         let message = format!("field `{path}`: {message}");
         Rejection { code, locus: Locus::Field { path }, message }
+    }
+}
+
+impl Rejection {
+    /// The time limit ran out (no verdict on the content).
+    pub fn time_limit(during: &str) -> Self {
+        let msg = format!("the time limit ran out while {during}: no verdict on the content");
+        Rejection::new(Code::TimeLimit, Locus::Limit { name: "time-limit".into() }, msg)
+    }
+
+    /// Whether this rejection is a limit reached rather than a verdict on the content.
+    pub fn is_limit(&self) -> bool {
+        matches!(self.code, Code::TooLarge | Code::TimeLimit)
     }
 }
 

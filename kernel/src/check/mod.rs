@@ -11,7 +11,7 @@ mod rod;
 mod show;
 
 use crate::certificate::{Body, Certificate, Claim, Code, FORMAT, Locus, Rejection, VERSION};
-use crate::exact::{Field, Int, ParseLimits, parse_canonical, parse_canonical_parts};
+use crate::exact::{Field, Int, NumberError, ParseLimits, parse_canonical, parse_canonical_parts};
 use crate::model::{BodyError, Shape};
 
 /// What an accepted certificate established.
@@ -40,13 +40,56 @@ pub struct Accepted {
 /// Checks a certificate exactly over the field `F`. The first failing check is reported.
 pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
     header(cert)?;
+    size(cert, limits)?;
     let shape: Shape<F> = body(&cert.body, limits)?;
     claim_range(&shape, cert.claim)?;
     let gens = generators::<F>(cert, shape.coordinates(), limits)?;
     match &shape {
-        Shape::Rod(r) => rod::check(r, &gens, cert.claim),
-        Shape::Polygon(p) => polygon::check(p, &gens, cert.claim),
+        Shape::Rod(r) => rod::check(r, &gens, cert.claim, limits),
+        Shape::Polygon(p) => polygon::check(p, &gens, cert.claim, limits),
     }
+}
+
+/// The limits on the whole file, before any arithmetic: the number of generators and the
+/// digits of all numbers together (a number's length counts its sign and slash: an upper bound).
+fn size(cert: &Certificate, limits: ParseLimits) -> Result<(), Rejection> {
+    let too_large = |name: &str, msg: String| {
+        Rejection::new(
+            Code::TooLarge,
+            Locus::Limit { name: name.into() },
+            format!("{msg}: no verdict on the content"),
+        )
+    };
+    if cert.cone.len() > limits.max_generators {
+        let msg = format!(
+            "{} generators, more than the limit max-generators = {}",
+            cert.cone.len(),
+            limits.max_generators
+        );
+        return Err(too_large("max-generators", msg));
+    }
+    let Body::RegularPolygon { kappa, gamma, .. } = &cert.body;
+    let coords = cert.cone.iter().flat_map(|g| g.0.iter());
+    let total: usize = [kappa, gamma].into_iter().chain(coords).map(String::len).sum();
+    if total > limits.max_total_digits {
+        let msg = format!(
+            "{total} characters of numbers, more than the limit max-total-digits = {}",
+            limits.max_total_digits
+        );
+        return Err(too_large("max-total-digits", msg));
+    }
+    Ok(())
+}
+
+/// `time-limit` once the deadline has passed.
+pub(crate) fn in_time(limits: ParseLimits, during: &str) -> Result<(), Rejection> {
+    if limits.expired() { Err(Rejection::time_limit(during)) } else { Ok(()) }
+}
+
+/// A number that cannot be read: `too-large` beyond max-digits, `bad-number` otherwise.
+fn number_error(path: String, s: &str, e: NumberError) -> Rejection {
+    let code = if matches!(e, NumberError::TooLong { .. }) { Code::TooLarge } else { Code::BadNumber };
+    Rejection::at_field(code, path, format!("{}: {e}", show::quote(s)))
 }
 
 /// `format` and `version` (the reader has checked them already; a certificate built in memory
@@ -64,8 +107,7 @@ fn header(cert: &Certificate) -> Result<(), Rejection> {
 
 /// A canonical number of a field of the body.
 fn number<F: Field>(path: &str, s: &str, limits: ParseLimits) -> Result<F, Rejection> {
-    parse_canonical(s, limits)
-        .map_err(|e| Rejection::at_field(Code::BadNumber, path, format!("{}: {e}", show::quote(s))))
+    parse_canonical(s, limits).map_err(|e| number_error(path.to_string(), s, e))
 }
 
 /// The exact model of the body (rule R1).
@@ -127,6 +169,7 @@ fn generators<'a, F: Field>(
     let mut vectors = Vec::with_capacity(cert.cone.len());
     let mut bits = 0;
     for (i, g) in cert.cone.iter().enumerate() {
+        in_time(limits, "reading the generators")?;
         if g.0.len() != names.len() {
             let msg =
                 format!("expected {} coordinates ({}), found {}", names.len(), names.join(", "), g.0.len());
@@ -134,13 +177,8 @@ fn generators<'a, F: Field>(
         }
         let mut parts = Vec::with_capacity(names.len());
         for (c, name) in g.0.iter().zip(names) {
-            let (p, q) = parse_canonical_parts::<F::Int>(c, limits).map_err(|e| {
-                Rejection::at_field(
-                    Code::BadNumber,
-                    format!("cone[{i}].{name}"),
-                    format!("{}: {e}", show::quote(c)),
-                )
-            })?;
+            let (p, q) = parse_canonical_parts::<F::Int>(c, limits)
+                .map_err(|e| number_error(format!("cone[{i}].{name}"), c, e))?;
             bits = bits.max(q.bit_length());
             parts.push((p, q));
         }

@@ -1,10 +1,11 @@
 //! The acceptance rules R1 (dimension) to R4 for a regular polygon, n >= 3
 //! (docs/certificate-format.md §5).
 
+use super::in_time;
 use super::show;
 use super::{Accepted, Generators};
 use crate::certificate::{Boundary, Claim, Code, Locus, Rejection};
-use crate::exact::{Field, Ring, scale_to_ints, to_canonical};
+use crate::exact::{Field, ParseLimits, Ring, scale_to_ints, to_canonical};
 use crate::geometry::{ConvexPolygon, clip, hull};
 use crate::model::linalg::{Mat3, Vec3, is_zero, mat_vec};
 use crate::model::{PccExclusion, Polygon, pcc_quadratic};
@@ -100,7 +101,11 @@ fn cone<F: Field>(gens: &Generators<'_, F::Int>) -> Result<Cone<F::Int>, Rejecti
 
 /// R2: S_j(K ∩ C_j) ⊆ K for j = 1..n-1, on the vertices of each clipped piece. Returns the
 /// number of vertices of each piece.
-fn invariance<F: Field>(body: &Polygon<F>, k: &Cone<F::Int>) -> Result<Vec<usize>, Rejection> {
+fn invariance<F: Field>(
+    body: &Polygon<F>,
+    k: &Cone<F::Int>,
+    limits: ParseLimits,
+) -> Result<Vec<usize>, Rejection> {
     let mut pieces = Vec::with_capacity(body.n() - 1);
     for j in 1..body.n() {
         let s = int_mat(&body.step(j as i64));
@@ -109,6 +114,7 @@ fn invariance<F: Field>(body: &Polygon<F>, k: &Cone<F::Int>) -> Result<Vec<usize
             piece = clip(&piece, &int_vec(&l));
         }
         for (i, p) in piece.iter().enumerate() {
+            in_time(limits, "checking effective invariance (rule R2)")?;
             let what = || format!("vertex {i} of K∩C_{j}, at {}, maps under S_{j}", shown::<F>(p));
             let locus = |outside| Locus::Piece { piece: j, vertex: i, outside };
             let t = Target {
@@ -169,9 +175,11 @@ pub(super) fn check<F: Field>(
     body: &Polygon<F>,
     gens: &Generators<'_, F::Int>,
     claim: Claim,
+    limits: ParseLimits,
 ) -> Result<Accepted, Rejection> {
     let k = cone::<F>(gens)?;
-    let pieces = invariance(body, &k)?;
+    in_time(limits, "building K")?;
+    let pieces = invariance(body, &k, limits)?;
     if claim >= Claim::CcOrPccFromAllDown {
         all_down(body, &k)?;
     }
@@ -179,11 +187,13 @@ pub(super) fn check<F: Field>(
     let down = [F::Int::from_i64(-1), F::Int::from_i64(-1), F::Int::from_i64(-1)];
     let translation = mat_vec(&int_mat(&body.impact(0)), &down);
     let contains_translation = translation[2].is_negative() && k.polygon.contains(&translation);
+    let mut extreme = vec![false; gens.vectors.len()];
+    k.hull.iter().for_each(|&i| extreme[i] = true);
     Ok(Accepted {
         claim,
         n: body.n() as u64,
         generators: gens.vectors.len(),
-        redundant: (0..gens.vectors.len()).filter(|i| !k.hull.contains(i)).collect(),
+        redundant: (0..gens.vectors.len()).filter(|&i| !extreme[i]).collect(),
         pieces,
         max_denominator_bits: gens.max_denominator_bits,
         pcc,

@@ -6,7 +6,7 @@
 use super::show;
 use super::{Accepted, Generators};
 use crate::certificate::{Boundary, Claim, Code, Locus, Rejection};
-use crate::exact::{Field, Ring, scale_to_ints};
+use crate::exact::{Field, ParseLimits, Ring, scale_to_ints};
 use crate::model::{Mat2, Rod, Vec2, mat2_vec};
 use std::cmp::Ordering;
 
@@ -128,8 +128,10 @@ pub(super) fn check<F: Field>(
     rod: &Rod<F>,
     gens: &Generators<'_, F::Int>,
     claim: Claim,
+    limits: ParseLimits,
 ) -> Result<Accepted, Rejection> {
     let k = interval::<F>(gens)?;
+    super::in_time(limits, "building K")?;
     // R2: S_1(K ∩ C_1) ⊆ K on the ends of the piece K ∩ C_1.
     let piece = rod.next_contact_cone().iter().fold(k.ends.to_vec(), |p, l| clip(&p, &int_vec(l)));
     let step = int_mat(&rod.step());

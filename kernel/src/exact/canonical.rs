@@ -5,16 +5,43 @@
 use super::{Field, Int, Ring};
 use std::fmt;
 
-/// Limits applied while parsing numbers from untrusted text.
+/// Limits on the work an untrusted file may ask for (docs/certificate-format.md §2, "Limits").
+/// A file beyond a limit is rejected with code `too-large` or `time-limit`, naming the limit;
+/// no limit can make a false certificate pass.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ParseLimits {
-    /// Largest number of decimal digits in one number (numerator and denominator together).
+    /// `max-digits`: largest number of decimal digits in one number (numerator and denominator
+    /// together).
     pub max_digits: usize,
+    /// `max-total-digits`: largest number of digits of all the numbers of a file together.
+    pub max_total_digits: usize,
+    /// `max-generators`: largest number of generators of a cone.
+    pub max_generators: usize,
+    /// `time-limit`: when to give up, checked between the steps of the work (each number, each
+    /// image, each proof step); `None` for no time limit.
+    pub deadline: Option<std::time::Instant>,
 }
 
 impl Default for ParseLimits {
     fn default() -> Self {
-        ParseLimits { max_digits: 10_000 }
+        ParseLimits {
+            max_digits: 10_000,
+            max_total_digits: 1_000_000,
+            max_generators: 100_000,
+            deadline: None,
+        }
+    }
+}
+
+impl ParseLimits {
+    /// The defaults with another per-number digit limit.
+    pub fn digits(max_digits: usize) -> Self {
+        ParseLimits { max_digits, ..Default::default() }
+    }
+
+    /// Whether the deadline has passed.
+    pub fn expired(&self) -> bool {
+        self.deadline.is_some_and(|d| std::time::Instant::now() >= d)
     }
 }
 
@@ -74,7 +101,7 @@ impl fmt::Display for NumberError {
                 write!(f, "not in lowest terms (canonical form {canonical:?})")
             }
             NumberError::TooLong { digits, max } => {
-                write!(f, "number has {digits} digits, more than the limit of {max}")
+                write!(f, "number has {digits} digits, more than the limit max-digits = {max}")
             }
         }
     }

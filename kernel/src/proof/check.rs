@@ -247,6 +247,7 @@ pub fn check<F: Field>(file: &ProofFile, limits: ParseLimits) -> Result<Checked,
         if !ids.insert(id.clone()) {
             return Err(fail("the id is used twice".into()));
         }
+        crate::check::in_time(limits, &format!("checking step {index} `{id}`"))?;
         c.step(s).map_err(fail)?;
     }
     c.summary();

@@ -178,7 +178,12 @@ fn digits(n: usize) -> String {
 
 #[test]
 fn default_limit_is_ten_thousand_digits() {
-    assert_eq!(ParseLimits::default(), ParseLimits { max_digits: 10_000 });
+    let d = ParseLimits::default();
+    assert_eq!(
+        (d.max_digits, d.max_total_digits, d.max_generators, d.deadline),
+        (10_000, 1_000_000, 100_000, None),
+        "the defaults documented in docs/certificate-format.md §2"
+    );
     let at = digits(10_000);
     let x = parse_both(&at).expect("exactly at the limit is accepted");
     assert_eq!(to_canonical(&x), at);
@@ -199,7 +204,7 @@ fn default_limit_is_ten_thousand_digits() {
 
 #[test]
 fn custom_limit_counts_numerator_and_denominator_together() {
-    let lim = ParseLimits { max_digits: 5 };
+    let lim = ParseLimits::digits(5);
     let p = |s: &str| parse_canonical::<Q>(s, lim);
     let pn = |s: &str| parse_canonical::<BigRational>(s, lim).map(|x| to_canonical(&x));
     assert_eq!(p("12345"), Ok(Q::int(12345)));
@@ -217,7 +222,7 @@ fn custom_limit_counts_numerator_and_denominator_together() {
         Err(NumberError::TooLong { digits: 6, max: 5 })
     );
     // A zero limit only rejects; the empty string is still Empty.
-    let zero = ParseLimits { max_digits: 0 };
+    let zero = ParseLimits::digits(0);
     assert_eq!(parse_canonical::<Q>("1", zero), Err(NumberError::TooLong { digits: 1, max: 0 }));
     assert_eq!(parse_canonical::<Q>("", zero), Err(NumberError::Empty));
 }
@@ -280,7 +285,7 @@ proptest! {
 /// limit was reported as "too long" instead of naming the bad character.
 #[test]
 fn bad_characters_are_named_before_the_length_limit() {
-    let lim = ParseLimits { max_digits: 2 };
+    let lim = ParseLimits::digits(2);
     assert_eq!(parse_canonical::<Q>("abc", lim), Err(NumberError::InvalidCharacter('a')));
     assert_eq!(parse_canonical::<Q>("12/3x", lim), Err(NumberError::InvalidCharacter('x')));
     assert_eq!(parse_canonical::<Q>("123", lim), Err(NumberError::TooLong { digits: 3, max: 2 }));

@@ -1,5 +1,5 @@
-//! Tests of `chatter_kernel::check` on both backends, against the brute-force evaluator of
-//! `kernel::brute`.
+//! Tests of `chatter_kernel::check` on both backends, against the independent brute-force
+//! evaluator `chatter::oracle` (re-exported as `kernel::brute`).
 
 use super::brute::{self, HalfPlane, Pt, Verdict, lift, orient2, project};
 use crate::common::{GAMMAS, KAPPAS, NS, body, q};

@@ -1,0 +1,140 @@
+//! Which files `chatter verify` looks at (docs/certificate-format.md §7, "Inputs"): a file named
+//! on the command line is always checked; a directory is searched recursively for certificate
+//! files (`*.ron` and `*.ron.gz`, in any letter case), in name order. Every real path is visited
+//! at most once, so symbolic-link loops end and a file reached twice is checked once. A problem
+//! with one path (missing, unreadable directory, broken link) becomes one entry, and the others
+//! are still listed.
+
+use serde::Serialize;
+use std::collections::HashSet;
+use std::path::{Path, PathBuf};
+
+/// One input of a verification run.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Entry {
+    /// A file to check.
+    File(PathBuf),
+    /// A path that cannot be listed or followed, and why.
+    Problem {
+        /// The path as found.
+        path: PathBuf,
+        /// Why (e.g. "no such file or directory").
+        message: String,
+    },
+}
+
+/// Files not checked, by reason (reported in the summary).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Skipped {
+    /// Files in a searched directory whose name is not a certificate's (`*.ron`, `*.ron.gz`).
+    pub other_names: usize,
+    /// Paths whose real path was already visited (links to a file or directory seen before).
+    pub seen_before: usize,
+}
+
+impl Skipped {
+    /// All skipped files.
+    pub fn total(&self) -> usize {
+        self.other_names + self.seen_before
+    }
+}
+
+/// The inputs of a run, in order, and what was skipped.
+#[derive(Clone, Debug, Default)]
+pub struct Listing {
+    /// Files and problems, in the order they are reported.
+    pub entries: Vec<Entry>,
+    /// What was skipped.
+    pub skipped: Skipped,
+}
+
+/// Whether a file name is a certificate's: `*.ron` or `*.ron.gz`, in any letter case.
+pub fn is_certificate_name(p: &Path) -> bool {
+    let name = p.file_name().map(|n| n.to_string_lossy().to_lowercase()).unwrap_or_default();
+    name.ends_with(".ron") || name.ends_with(".ron.gz")
+}
+
+/// An I/O error in words, without the OS error number.
+pub fn describe(e: &std::io::Error) -> String {
+    use std::io::ErrorKind as K;
+    match e.kind() {
+        K::NotFound => "no such file or directory".into(),
+        K::PermissionDenied => "permission denied".into(),
+        _ => {
+            let s = e.to_string();
+            s.split(" (os error").next().unwrap_or(&s).to_lowercase()
+        }
+    }
+}
+
+/// Lists the inputs named by `paths` (files and directories).
+pub fn list(paths: &[PathBuf]) -> Listing {
+    let mut walk = Walk::default();
+    for p in paths {
+        match std::fs::metadata(p) {
+            Err(e) => walk.problem(p, describe(&e)),
+            Ok(m) if m.is_dir() => walk.directory(p),
+            Ok(_) => walk.file(p),
+        }
+    }
+    Listing { entries: walk.entries, skipped: walk.skipped }
+}
+
+/// Why an entry of a directory cannot be followed: a broken link, or the I/O error.
+fn link_problem(path: &Path, e: &std::io::Error) -> String {
+    match std::fs::symlink_metadata(path) {
+        Ok(m) if m.file_type().is_symlink() => {
+            format!("a symbolic link whose target cannot be read: {}", describe(e))
+        }
+        _ => describe(e),
+    }
+}
+
+#[derive(Default)]
+struct Walk {
+    seen: HashSet<PathBuf>,
+    entries: Vec<Entry>,
+    skipped: Skipped,
+}
+
+impl Walk {
+    fn problem(&mut self, path: &Path, message: String) {
+        self.entries.push(Entry::Problem { path: path.to_path_buf(), message });
+    }
+
+    /// Whether `path`'s real path is new (then it is marked as seen).
+    fn first_visit(&mut self, path: &Path) -> bool {
+        let real = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
+        let new = self.seen.insert(real);
+        if !new {
+            self.skipped.seen_before += 1;
+        }
+        new
+    }
+
+    fn file(&mut self, path: &Path) {
+        if self.first_visit(path) {
+            self.entries.push(Entry::File(path.to_path_buf()));
+        }
+    }
+
+    fn directory(&mut self, dir: &Path) {
+        if !self.first_visit(dir) {
+            return;
+        }
+        let listed = std::fs::read_dir(dir).and_then(|r| r.map(|e| e.map(|e| e.path())).collect());
+        let mut children: Vec<PathBuf> = match listed {
+            Ok(c) => c,
+            Err(e) => return self.problem(dir, format!("cannot list the directory: {}", describe(&e))),
+        };
+        children.sort();
+        for child in children {
+            match std::fs::metadata(&child) {
+                Ok(m) if m.is_dir() => self.directory(&child),
+                _ if !is_certificate_name(&child) => self.skipped.other_names += 1,
+                Ok(_) => self.file(&child),
+                Err(e) => self.problem(&child, link_problem(&child, &e)),
+            }
+        }
+    }
+}

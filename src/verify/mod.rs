@@ -1,0 +1,313 @@
+//! Verification of certificate files (docs/certificate-format.md §7): list the inputs
+//! ([`files`]), read each with bounded work ([`read`]), run the kernel on the chosen backends
+//! ([`chatter_kernel::verify`]) under a time limit, and report one verdict per input; with a
+//! manifest ([`expect`]), compare the verdicts with the expected ones.
+
+pub mod expect;
+pub mod files;
+pub mod read;
+
+use chatter_kernel::certificate::{Code, Locus, Rejection};
+use chatter_kernel::exact::ParseLimits;
+use chatter_kernel::verify::{Backend, Verdict, format_of, verify_text};
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+/// The verdict on one file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Status {
+    /// Every backend accepts.
+    #[serde(rename = "OK")]
+    Ok,
+    /// Every backend rejects, for the same reason.
+    #[serde(rename = "REJECTED")]
+    Rejected,
+    /// The file cannot be read, or the backends disagree.
+    #[serde(rename = "ERROR")]
+    Error,
+}
+
+impl Status {
+    /// The word printed in verdict lines.
+    pub fn word(self) -> &'static str {
+        match self {
+            Status::Ok => "OK",
+            Status::Rejected => "REJECTED",
+            Status::Error => "ERROR",
+        }
+    }
+}
+
+/// One line of `chatter verify` output.
+#[derive(Clone, Debug, Serialize)]
+pub struct FileVerdict {
+    pub path: String,
+    pub status: Status,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub claim: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub n: Option<u64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub generators: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub redundant: Option<Vec<usize>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_denominator_bits: Option<u64>,
+    /// Whether K contains the post-impact velocity of a pure downward translation.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contains_translation: Option<bool>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub code: Option<Code>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub locus: Option<Locus>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
+    /// Whether the file was gzip'd.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gzip: Option<bool>,
+}
+
+impl FileVerdict {
+    fn new(path: &Path, status: Status) -> Self {
+        FileVerdict {
+            path: path.display().to_string(),
+            status,
+            claim: None,
+            n: None,
+            generators: None,
+            redundant: None,
+            max_denominator_bits: None,
+            contains_translation: None,
+            code: None,
+            locus: None,
+            reason: None,
+            gzip: None,
+        }
+    }
+
+    /// Whether the backends disagreed (an internal error).
+    pub fn is_internal(&self) -> bool {
+        self.code == Some(Code::Internal)
+    }
+
+    /// The human-readable line.
+    pub fn line(&self) -> String {
+        if self.status != Status::Ok {
+            return format!(
+                "{}: {}: {}",
+                self.path,
+                self.status.word(),
+                self.reason.as_deref().unwrap_or("")
+            );
+        }
+        let red = self.redundant.as_ref().map_or(0, Vec::len);
+        let red = if red > 0 { format!(", {red} redundant") } else { String::new() };
+        let gzip = if self.gzip == Some(true) { ", gzip'd" } else { "" };
+        let vacuous = if self.contains_translation == Some(false) {
+            "; warning: K does not contain the post-impact velocity of a pure translation"
+        } else {
+            ""
+        };
+        format!(
+            "{}: OK ({}, n = {}, {} generators{red}, denominators <= {} bits{gzip}{vacuous})",
+            self.path,
+            self.claim.unwrap_or("?"),
+            self.n.unwrap_or(0),
+            self.generators.unwrap_or(0),
+            self.max_denominator_bits.unwrap_or(0)
+        )
+    }
+}
+
+/// The verdict on certificate text, reported for `path`.
+pub fn verdict_of(path: &Path, verdict: Verdict) -> FileVerdict {
+    match verdict {
+        Verdict::Accepted(a) => {
+            let mut v = FileVerdict::new(path, Status::Ok);
+            v.claim = Some(a.claim.name());
+            v.n = Some(a.n);
+            v.generators = Some(a.generators);
+            v.redundant = Some(a.redundant);
+            v.max_denominator_bits = Some(a.max_denominator_bits);
+            v.contains_translation = Some(a.contains_translation);
+            v
+        }
+        Verdict::Rejected(r) => {
+            let mut v = FileVerdict::new(path, Status::Rejected);
+            v.code = Some(r.code);
+            v.locus = Some(r.locus);
+            v.reason = Some(r.message);
+            v
+        }
+        Verdict::Disagree(s) => {
+            let mut v = FileVerdict::new(path, Status::Error);
+            v.code = Some(Code::Internal);
+            v.reason = Some(format!("internal error, backends disagree: {s}"));
+            v
+        }
+    }
+}
+
+/// How files are verified: the kernel's limits, the file-size limit, the time limit per file and
+/// the backends.
+#[derive(Clone)]
+pub struct Options {
+    /// Limits on the numbers and generators (the deadline is set per file from `time_limit`).
+    pub limits: ParseLimits,
+    /// `max-file-size`: largest file read, in bytes (after decompression for gzip'd files).
+    pub max_file_size: u64,
+    /// `time-limit`: the longest a file may take, over all backends; `None` for no limit.
+    pub time_limit: Option<Duration>,
+    /// The backends the kernel runs on.
+    pub backends: Vec<Backend>,
+}
+
+impl Options {
+    /// The default limits (documented in docs/certificate-format.md §2) on the given backends.
+    pub fn new(backends: Vec<Backend>) -> Self {
+        Options {
+            limits: ParseLimits::default(),
+            max_file_size: DEFAULT_MAX_FILE_SIZE,
+            time_limit: Some(DEFAULT_TIME_LIMIT),
+            backends,
+        }
+    }
+}
+
+/// Default `max-file-size`: 64 MiB.
+pub const DEFAULT_MAX_FILE_SIZE: u64 = 64 << 20;
+/// Default `time-limit`: 60 s per file.
+pub const DEFAULT_TIME_LIMIT: Duration = Duration::from_secs(60);
+
+/// Runs `work` with a deadline `limit` from now. The kernel checks the deadline between its steps
+/// and gives up with `time-limit`; should one step outlast it (only with limits raised far above
+/// the defaults), the work is abandoned on its thread after a grace period and `None` returned.
+pub fn with_time_limit<T: Send + 'static>(
+    limit: Option<Duration>,
+    work: impl FnOnce(Option<Instant>) -> T + Send + 'static,
+) -> Option<T> {
+    let Some(limit) = limit else { return Some(work(None)) };
+    let deadline = Instant::now() + limit;
+    let (tx, rx) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let _ = tx.send(work(Some(deadline)));
+    });
+    rx.recv_timeout(limit + limit / 10 + Duration::from_secs(1)).ok()
+}
+
+/// The verdict for a file whose check ran past the time limit.
+fn out_of_time(path: &Path) -> FileVerdict {
+    verdict_of(path, Verdict::Rejected(Rejection::time_limit("checking the file")))
+}
+
+/// The verdict for a file over `max-file-size`.
+fn too_large(path: &Path, what: &str, max: u64) -> FileVerdict {
+    let msg = format!("{what}, more than the limit max-file-size = {max} bytes: no verdict on the content");
+    let r = Rejection::new(Code::TooLarge, Locus::Limit { name: "max-file-size".into() }, msg);
+    verdict_of(path, Verdict::Rejected(r))
+}
+
+/// The verdict for an input that cannot be read.
+pub fn unreadable(path: &Path, why: &str) -> FileVerdict {
+    let mut v = FileVerdict::new(path, Status::Error);
+    v.reason = Some(why.to_string());
+    v
+}
+
+/// Verifies one file: bounded reading, then the kernel on every backend under the time limit.
+pub fn verify_file(path: &Path, opts: &Options) -> FileVerdict {
+    let (text, gzip) = match read::read_input(path, opts.max_file_size) {
+        read::Input::Text { text, gzip } => (text, gzip),
+        read::Input::TooLarge { what } => return too_large(path, &what, opts.max_file_size),
+        read::Input::Unreadable(why) => return unreadable(path, &why),
+    };
+    let (limits, backends) = (opts.limits, opts.backends.clone());
+    let is_proof = format_of(&text).as_deref() == Some(chatter_kernel::proof::FORMAT);
+    let run = move |deadline| verify_text(&text, ParseLimits { deadline, ..limits }, &backends);
+    let Some(verdict) = with_time_limit(opts.time_limit, run) else { return out_of_time(path) };
+    let mut v = verdict_of(path, verdict);
+    if gzip {
+        v.gzip = Some(true);
+    }
+    if v.status == Status::Rejected && is_proof {
+        v.reason = v.reason.map(|r| format!("{r} (this file is a proof: use `chatter check-proof`)"));
+    }
+    v
+}
+
+/// Verifies every input of a listing, in order; `each` sees every verdict as it is made.
+pub fn verify_all(
+    listing: &files::Listing,
+    opts: &Options,
+    mut each: impl FnMut(&FileVerdict),
+) -> Vec<FileVerdict> {
+    let mut out = Vec::with_capacity(listing.entries.len());
+    for e in &listing.entries {
+        let v = match e {
+            files::Entry::File(p) => verify_file(p, opts),
+            files::Entry::Problem { path, message } => unreadable(path, message),
+        };
+        each(&v);
+        out.push(v);
+    }
+    out
+}
+
+/// Counts of verdicts, and the exit rule over all of them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Summary {
+    /// Inputs checked (files and problems).
+    pub inputs: usize,
+    /// Accepted.
+    pub ok: usize,
+    /// Rejected (including limits reached).
+    pub rejected: usize,
+    /// Not readable, or the backends disagree.
+    pub errors: usize,
+    /// Of the errors, disagreements of the backends (bugs).
+    pub internal: usize,
+    /// Files skipped.
+    pub skipped: files::Skipped,
+}
+
+impl Summary {
+    /// Counts the verdicts.
+    pub fn of(verdicts: &[FileVerdict], skipped: files::Skipped) -> Self {
+        let count = |s: Status| verdicts.iter().filter(|v| v.status == s).count();
+        Summary {
+            inputs: verdicts.len(),
+            ok: count(Status::Ok),
+            rejected: count(Status::Rejected),
+            errors: count(Status::Error),
+            internal: verdicts.iter().filter(|v| v.is_internal()).count(),
+            skipped,
+        }
+    }
+
+    /// The summary line, e.g. "3 files: 2 OK, 1 rejected, 0 errors; 4 skipped (...)".
+    pub fn line(&self) -> String {
+        let plural =
+            |n: usize, word: &str| if n == 1 { format!("{n} {word}") } else { format!("{n} {word}s") };
+        let mut s = format!(
+            "{}: {} OK, {} rejected, {}",
+            plural(self.inputs, "file"),
+            self.ok,
+            self.rejected,
+            plural(self.errors, "error")
+        );
+        if self.internal > 0 {
+            s += &format!(" ({} internal: the backends disagree)", self.internal);
+        }
+        let k = self.skipped;
+        if k.total() > 0 {
+            s += &format!(
+                "; {} skipped ({} not named *.ron or *.ron.gz, {} reached again through a link)",
+                k.total(),
+                k.other_names,
+                k.seen_before
+            );
+        }
+        s
+    }
+}
