@@ -523,7 +523,8 @@ pub fn parse_number(s: &str, limits: ParseLimits) -> Option<Q> {
 /// characters of all numbers together.
 fn too_large(cert: &Certificate, limits: ParseLimits) -> bool {
     let CertBody::RegularPolygon { kappa, gamma, .. } = &cert.body;
-    let chars = kappa.len() + gamma.len() + cert.cone.iter().flat_map(|g| &g.0).map(String::len).sum::<usize>();
+    let chars =
+        kappa.len() + gamma.len() + cert.cone.iter().flat_map(|g| &g.0).map(String::len).sum::<usize>();
     cert.cone.len() > limits.max_generators || chars > limits.max_total_digits
 }
 

@@ -175,8 +175,8 @@ impl Options {
     }
 }
 
-/// Default `max-file-size`: 64 MiB.
-pub const DEFAULT_MAX_FILE_SIZE: u64 = 64 << 20;
+/// Default `max-file-size`: 16 MiB.
+pub const DEFAULT_MAX_FILE_SIZE: u64 = 16 << 20;
 /// Default `time-limit`: 60 s per file.
 pub const DEFAULT_TIME_LIMIT: Duration = Duration::from_secs(60);
 
@@ -223,14 +223,17 @@ pub fn verify_file(path: &Path, opts: &Options) -> FileVerdict {
         read::Input::Unreadable(why) => return unreadable(path, &why),
     };
     let (limits, backends) = (opts.limits, opts.backends.clone());
-    let is_proof = format_of(&text).as_deref() == Some(chatter_kernel::proof::FORMAT);
-    let run = move |deadline| verify_text(&text, ParseLimits { deadline, ..limits }, &backends);
-    let Some(verdict) = with_time_limit(opts.time_limit, run) else { return out_of_time(path) };
+    let run = move |deadline| {
+        let verdict = verify_text(&text, ParseLimits { deadline, ..limits }, &backends);
+        let rejected = matches!(verdict, Verdict::Rejected(_));
+        (verdict, rejected && format_of(&text).as_deref() == Some(chatter_kernel::proof::FORMAT))
+    };
+    let Some((verdict, is_proof)) = with_time_limit(opts.time_limit, run) else { return out_of_time(path) };
     let mut v = verdict_of(path, verdict);
     if gzip {
         v.gzip = Some(true);
     }
-    if v.status == Status::Rejected && is_proof {
+    if is_proof {
         v.reason = v.reason.map(|r| format!("{r} (this file is a proof: use `chatter check-proof`)"));
     }
     v

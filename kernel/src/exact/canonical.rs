@@ -26,7 +26,7 @@ impl Default for ParseLimits {
     fn default() -> Self {
         ParseLimits {
             max_digits: 10_000,
-            max_total_digits: 1_000_000,
+            max_total_digits: 2_000_000,
             max_generators: 100_000,
             deadline: None,
         }

@@ -181,7 +181,7 @@ fn default_limit_is_ten_thousand_digits() {
     let d = ParseLimits::default();
     assert_eq!(
         (d.max_digits, d.max_total_digits, d.max_generators, d.deadline),
-        (10_000, 1_000_000, 100_000, None),
+        (10_000, 2_000_000, 100_000, None),
         "the defaults documented in docs/certificate-format.md §2"
     );
     let at = digits(10_000);
