@@ -660,6 +660,31 @@ pub fn evaluate_parts(b: &Body<Q>, claim: Claim, gens: &[[Q; 3]]) -> Verdict {
     v
 }
 
+/// Where the images of rule R2 land (n >= 3): for each j, each vertex p of K ∩ C_j and its image
+/// q = S_j p, the least orient2(A, B, q) over the edges A -> B of K (counter-clockwise), the
+/// kernel's "by" amount: negative outside, zero exactly on an edge. `None` when q is 0 or has
+/// v >= 0. `None` overall when K is not a full-dimensional cone below v = 0.
+pub fn image_margins(b: &Body<Q>, gens: &[[Q; 3]]) -> Option<Vec<(usize, Pt, Option<Q>)>> {
+    let pts: Vec<Pt> = gens.iter().map(project).collect::<Option<Vec<Pt>>>()?;
+    if !full_dimensional(&pts) {
+        return None;
+    }
+    let ccw = jarvis(&pts);
+    let m = ccw.len();
+    let k: Vec<HalfPlane> = (0..m).map(|i| HalfPlane::left_of(&ccw[i], &ccw[(i + 1) % m])).collect();
+    let mut out = Vec::new();
+    for j in 1..b.n() {
+        let cone: Vec<HalfPlane> =
+            b.next_contact_cone(j as i64).iter().map(HalfPlane::from_covector).collect();
+        for p in clipped_vertices(&ccw, &k, &cone) {
+            let margin = project(&mat_vec(&b.step(j as i64), &lift(&p)))
+                .map(|q| (0..m).map(|e| orient2(&ccw[e], &ccw[(e + 1) % m], &q)).min().expect("m >= 3"));
+            out.push((j, p, margin));
+        }
+    }
+    Some(out)
+}
+
 /// The rod's impact at end 0, I_0 (u0, u1) = (-gamma u0, u1 - (1 + gamma) c u0) with
 /// c = (kappa - 1)/(kappa + 1) (docs/model.md §7).
 pub fn rod_impact(kappa: &Q, gamma: &Q, p: &[Q; 2]) -> [Q; 2] {

@@ -3,21 +3,32 @@
 //! certificates/invalid/expected.json.
 
 use crate::common::root;
-use chatter::exact::ParseLimits;
+use chatter::exact::{ParseLimits, Q};
+use chatter::verify::files::is_certificate_name;
+use chatter::verify::read::{Input, read_input};
 use chatter_kernel::certificate::{Claim, read};
 use chatter_kernel::verify::{MALACHITE, NUM, Verdict, verify_text};
 use serde::Deserialize;
 use std::collections::BTreeSet;
 use std::path::PathBuf;
 
+/// The certificate files of a corpus directory (`*.ron`, `*.ron.gz`), sorted.
 fn ron_files(dir: &str) -> Vec<PathBuf> {
     let mut v: Vec<PathBuf> = std::fs::read_dir(root().join(dir))
         .unwrap()
         .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "ron"))
+        .filter(|p| is_certificate_name(p))
         .collect();
     v.sort();
     v
+}
+
+/// A corpus file's text (gzip'd files decompressed), as `chatter verify` reads it.
+fn text_of(p: &std::path::Path) -> String {
+    match read_input(p, 1 << 24) {
+        Input::Text { text, .. } => text,
+        other => panic!("{}: {other:?}", p.display()),
+    }
 }
 
 #[derive(Deserialize)]
@@ -36,7 +47,7 @@ fn every_valid_certificate_verifies_on_both_backends() {
     assert!(files.len() >= 30, "the valid corpus has {} files", files.len());
     let (mut ns, mut claims) = (BTreeSet::new(), BTreeSet::new());
     for f in &files {
-        let text = std::fs::read_to_string(f).unwrap();
+        let text = text_of(f);
         // Each backend alone, and both together, accept with the same report.
         let both = verify_text(&text, ParseLimits::default(), &[MALACHITE, NUM]);
         let Verdict::Accepted(a) = &both else { panic!("{}: {both:?}", f.display()) };
@@ -77,7 +88,7 @@ fn every_invalid_certificate_is_rejected_for_its_stated_reason() {
     let reasons: BTreeSet<&str> = manifest.iter().map(|e| e.why.as_str()).collect();
     assert_eq!(reasons.len(), manifest.len(), "each file fails for a different stated reason");
     for e in &manifest {
-        let text = std::fs::read_to_string(root().join("certificates/invalid").join(&e.file)).unwrap();
+        let text = text_of(&root().join("certificates/invalid").join(&e.file));
         for b in [&[MALACHITE, NUM][..], &[MALACHITE], &[NUM]] {
             match verify_text(&text, ParseLimits::default(), b) {
                 Verdict::Rejected(r) => {
@@ -108,5 +119,82 @@ fn corpus_certificates_round_trip_through_the_writer() {
             "{}: the writer's layout is canonical",
             f.display()
         );
+    }
+}
+
+/// The model and generators of a polygon certificate, for the oracle.
+fn polygon_parts(text: &str) -> (chatter_kernel::model::Polygon<Q>, Vec<[Q; 3]>) {
+    let c = read(text).unwrap();
+    let chatter_kernel::certificate::Body::RegularPolygon { n, kappa, gamma } = &c.body;
+    let b = chatter_kernel::model::Polygon::new(*n, kappa.parse().unwrap(), gamma.parse().unwrap()).unwrap();
+    let q = |s: &String| s.parse::<Q>().unwrap();
+    (b, c.cone.iter().map(|g| [q(&g.0[0]), q(&g.0[1]), q(&g.0[2])]).collect())
+}
+
+#[test]
+fn an_image_exactly_on_an_edge_of_k_is_accepted() {
+    let text = text_of(&root().join("certificates/valid/image-on-edge-square.ron"));
+    let (b, gens) = polygon_parts(&text);
+    let margins = chatter::oracle::image_margins(&b, &gens).unwrap();
+    let on_edge = margins.iter().filter(|m| m.2 == Some(Q::int(0))).count();
+    assert_eq!(on_edge, 4, "four images lie exactly on the edge u0 = 0");
+    assert!(margins.iter().all(|m| m.2.as_ref().is_some_and(|x| *x >= Q::int(0))));
+    assert!(matches!(verify_text(&text, ParseLimits::default(), &[MALACHITE, NUM]), Verdict::Accepted(_)));
+}
+
+#[test]
+fn an_image_outside_by_ten_to_the_minus_thirty_is_rejected() {
+    let text = text_of(&root().join("certificates/invalid/image-outside-by-1e-30.ron"));
+    let (b, gens) = polygon_parts(&text);
+    let least =
+        chatter::oracle::image_margins(&b, &gens).unwrap().into_iter().filter_map(|m| m.2).min().unwrap();
+    assert_eq!(least, "-1/1000000000000000000000000000000".parse::<Q>().unwrap(), "the oracle's amount");
+}
+
+/// The rows `| rule | code | file |` of docs/kernel-soundness.md §5 ("Which file breaks which rule").
+fn rule_rows() -> Vec<(String, String, String)> {
+    let doc = std::fs::read_to_string(root().join("docs/kernel-soundness.md")).unwrap();
+    let start = doc.find("| rule | code | corpus file |").expect("the table of §5");
+    doc[start..]
+        .lines()
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| {
+            let c: Vec<&str> = l.trim_matches('|').split('|').map(|x| x.trim().trim_matches('`')).collect();
+            (c[0].to_string(), c[1].to_string(), c[2].to_string())
+        })
+        .collect()
+}
+
+#[test]
+fn every_acceptance_rule_has_a_corpus_file_that_breaks_only_it() {
+    let rows = rule_rows();
+    let rules: BTreeSet<&str> = rows.iter().map(|r| r.0.as_str()).collect();
+    for rule in
+        ["reading", "limits", "numbers", "body", "range of γ", "R1", "R2", "R3", "R4", "rod R2", "rod R3"]
+    {
+        assert!(rules.contains(rule), "rule {rule} has a row");
+    }
+    for (rule, code, file) in &rows {
+        let text = text_of(&root().join("certificates/invalid").join(file));
+        let Verdict::Rejected(r) = verify_text(&text, ParseLimits::default(), &[MALACHITE, NUM]) else {
+            panic!("{file} is rejected")
+        };
+        assert_eq!(r.code.as_str(), code, "{file}");
+        // The independent oracle finds exactly this rule broken (for the content rules, after
+        // evaluating every rule of the claim).
+        if let Ok(cert) = read(&text) {
+            let v = chatter::oracle::evaluate(&cert);
+            let codes: Vec<&str> = v.failing.iter().map(|c| c.as_str()).collect();
+            let allowed: &[&str] = if code == "image-not-below" {
+                &["image-not-below", "image-outside"]
+            } else {
+                &[code.as_str()]
+            };
+            assert!(
+                !codes.is_empty() && codes.iter().all(|c| allowed.contains(c)),
+                "{rule}: {file} breaks {codes:?}"
+            );
+        }
     }
 }

@@ -21,7 +21,7 @@ pub enum Code {
     WrongFormat,
     /// A version this build does not read.
     UnsupportedVersion,
-    /// A number that is not canonical `p/q` text, or too long.
+    /// A number that is not canonical `p/q` text.
     BadNumber,
     /// A body this build cannot model exactly (e.g. n = 5).
     UnsupportedBody,
