@@ -197,8 +197,9 @@ pub fn with_time_limit<T: Send + 'static>(
 }
 
 /// The verdict for a file whose check ran past the time limit.
-fn out_of_time(path: &Path) -> FileVerdict {
-    verdict_of(path, Verdict::Rejected(Rejection::time_limit("checking the file")))
+fn out_of_time(path: &Path, limit: Duration) -> FileVerdict {
+    let during = format!("checking the file (time-limit = {} s)", limit.as_secs_f32());
+    verdict_of(path, Verdict::Rejected(Rejection::time_limit(&during)))
 }
 
 /// The verdict for a file over `max-file-size`.
@@ -228,7 +229,9 @@ pub fn verify_file(path: &Path, opts: &Options) -> FileVerdict {
         let rejected = matches!(verdict, Verdict::Rejected(_));
         (verdict, rejected && format_of(&text).as_deref() == Some(chatter_kernel::proof::FORMAT))
     };
-    let Some((verdict, is_proof)) = with_time_limit(opts.time_limit, run) else { return out_of_time(path) };
+    let Some((verdict, is_proof)) = with_time_limit(opts.time_limit, run) else {
+        return out_of_time(path, opts.time_limit.unwrap_or_default());
+    };
     let mut v = verdict_of(path, verdict);
     if gzip {
         v.gzip = Some(true);
