@@ -44,4 +44,20 @@ BODIES
 "$bin" certify --n 3 --kappa 3/20 --gamma 1/20 --claim effectively-invariant --max-vertices 60 \
   -o "$out/n3-kappa3_20-gamma1_20-64-generators.ron" >/dev/null
 written=$((written + 1))
+# Box certificates (format version 2): one cone for every (kappa, gamma) of a box.
+while read -r n kappa gamma note; do
+  name="n${n}-kappa${kappa//[\/:]/_}-gamma${gamma//[\/:]/_}-box.ron"
+  if "$bin" certify --n "$n" --kappa "$kappa" --gamma "$gamma" -o "$out/$name" >/dev/null; then
+    written=$((written + 1))
+  else
+    rm -f "$out/$name"
+    echo "not certified: box n=$n kappa=$kappa gamma=$gamma ($note)"
+  fi
+done <<'BOXES'
+4 1/10:3/25 1/100:1/50 square
+3 1/10:1/8 1/100:1/20 triangle-pcc-possible
+3 3/20:1/6 1/20:3/40 tetrahedron
+6 1/40:1/30 1/100:1/50 hexagon
+2 1/4:1/3 1/100:1/20 rod
+BOXES
 echo "$written certificates in $out"

@@ -6,14 +6,18 @@
 
 use crate::exact::{ParseLimits, Q};
 use crate::exactify::{ExactifyConfig, ExactifyError, exactify};
-use crate::finder::rod::{RodCone, find_rod_cone, s_of};
+use crate::finder::rod::{RodCone, find_rod_cone_box, s_of};
 use crate::finder::{FinderConfig, Search, Seed, find_cone};
 use crate::model::{FloatBody, translation_down};
+use chatter_kernel::bivariate::{NotNegative, Rect, negative_on};
 use chatter_kernel::certificate::{
-    Body as CertBody, Certificate, Claim, Coordinates, FORMAT, Generator, Rejection, VERSION,
+    Body as CertBody, Certificate, Claim, Coordinates, FORMAT, Generator, Param, Rejection,
 };
+use chatter_kernel::check::MAX_PCC_BOXES;
 use chatter_kernel::model::linalg::{Vec3, mat_vec};
-use chatter_kernel::model::{PccExclusion, PccQuadratic, Polygon, Rod, Shape, Vec2, mat2_vec, pcc_quadratic};
+use chatter_kernel::model::{
+    PccExclusion, PccQuadratic, Polygon, Rod, Shape, Vec2, mat2_vec, pcc_polynomials, pcc_quadratic,
+};
 use chatter_kernel::verify::{Backend, MALACHITE, NUM, Verdict, verify_on};
 use std::time::{Duration, Instant};
 
@@ -25,12 +29,15 @@ pub enum ClaimChoice {
     Exactly(Claim),
 }
 
-/// A certification request.
+/// A certification request: a point (kappa, gamma), or a box of parameters.
 #[derive(Clone)]
 pub struct Request {
     pub n: u64,
     pub kappa: Q,
     pub gamma: Q,
+    /// For a box certificate: the upper corner (kappa, gamma) of the box [kappa, kappa_hi] x
+    /// [gamma, gamma_hi]; `None` for a point.
+    pub upper: Option<(Q, Q)>,
     pub claim: ClaimChoice,
     pub finder: FinderConfig,
     pub exactify: ExactifyConfig,
@@ -44,10 +51,47 @@ impl Request {
             n,
             kappa,
             gamma,
+            upper: None,
             claim: ClaimChoice::Strongest,
             finder: FinderConfig::default(),
             exactify: ExactifyConfig::default(),
             backends: [MALACHITE, NUM],
+        }
+    }
+}
+
+impl Request {
+    /// A request for the box [kappa0, kappa1] x [gamma0, gamma1] (a point when both are equal).
+    pub fn boxed(n: u64, kappa: [Q; 2], gamma: [Q; 2]) -> Self {
+        let [k0, k1] = kappa;
+        let [g0, g1] = gamma;
+        let upper = (k0 != k1 || g0 != g1).then_some((k1, g1));
+        Request { upper, ..Request::new(n, k0, g0) }
+    }
+
+    /// The distinct corners (kappa, gamma) in the kernel's order: (lo, lo), (hi, lo), (lo, hi),
+    /// (hi, hi); one for a point.
+    pub fn corners(&self) -> Vec<(Q, Q)> {
+        let (k1, g1) = self.upper.clone().unwrap_or((self.kappa.clone(), self.gamma.clone()));
+        let ks = [self.kappa.clone(), k1];
+        let gs = [self.gamma.clone(), g1];
+        let mut out: Vec<(Q, Q)> = Vec::new();
+        for (gi, ki) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
+            let c = (ks[ki].clone(), gs[gi].clone());
+            if !out.contains(&c) {
+                out.push(c);
+            }
+        }
+        out
+    }
+
+    /// "n=4 kappa=1/6 gamma=1/100", or with intervals for a box.
+    pub fn describe(&self) -> String {
+        match &self.upper {
+            None => format!("n={} kappa={} gamma={}", self.n, self.kappa, self.gamma),
+            Some((k1, g1)) => {
+                format!("n={} kappa=[{}, {k1}] gamma=[{}, {g1}]", self.n, self.kappa, self.gamma)
+            }
         }
     }
 }
@@ -140,14 +184,25 @@ impl Attempt {
 }
 
 fn certificate(req: &Request, claim: Claim, cone: Vec<Generator>, how: &str) -> Certificate {
+    let param = |lo: &Q, hi: Option<&Q>| match hi {
+        Some(hi) if hi != lo => Param::Interval(lo.to_string(), hi.to_string()),
+        _ => Param::Point(lo.to_string()),
+    };
+    let (k1, g1) = (req.upper.as_ref().map(|u| &u.0), req.upper.as_ref().map(|u| &u.1));
+    let body = match &req.upper {
+        None => CertBody::RegularPolygon {
+            n: req.n,
+            kappa: param(&req.kappa, None),
+            gamma: param(&req.gamma, None),
+        },
+        Some(_) => {
+            CertBody::RegularPolygon { n: req.n, kappa: param(&req.kappa, k1), gamma: param(&req.gamma, g1) }
+        }
+    };
     Certificate {
         format: FORMAT.to_string(),
-        version: VERSION,
-        body: CertBody::RegularPolygon {
-            n: req.n,
-            kappa: req.kappa.to_string(),
-            gamma: req.gamma.to_string(),
-        },
+        version: body.version_needed(),
+        body,
         coordinates: Coordinates::ContactVelocities,
         claim,
         cone,
@@ -185,23 +240,25 @@ fn show<const D: usize>(p: &[Q; D]) -> String {
     format!("({})", p.iter().map(ToString::to_string).collect::<Vec<_>>().join(", "))
 }
 
-/// The rod: the exact search, then the kernel.
-fn attempt_rod(req: &Request, rod: &Rod<Q>, claim: Claim, t: &mut Timings) -> Attempt {
-    let i0 = rod.impact(0);
+/// The rod at every corner: the exact search, then the kernel.
+fn attempt_rod(req: &Request, rods: &[Rod<Q>], claim: Claim, t: &mut Timings) -> Attempt {
     let down = [Q::int(-1), Q::int(-1)];
     let mut seeds = Vec::new();
-    for d in drops_of(claim, down, rod.all_down_generators().to_vec()) {
-        let after: Vec2<Q> = mat2_vec(&i0, &d);
-        if after.iter().all(|x| *x == Q::int(0)) {
-            continue; // at rest after one impact: inside every cone
-        }
-        match s_of(&after) {
-            Some(s) => seeds.push(s),
-            None => {
-                return Attempt::failed(
-                    Failure::SeedNotBelow { seed: show(&d), velocity: show(&after) },
-                    None,
-                );
+    for rod in rods {
+        let i0 = rod.impact(0);
+        for d in drops_of(claim, down.clone(), rod.all_down_generators().to_vec()) {
+            let after: Vec2<Q> = mat2_vec(&i0, &d);
+            if after.iter().all(|x| *x == Q::int(0)) {
+                continue; // at rest after one impact: inside every cone
+            }
+            match s_of(&after) {
+                Some(s) => seeds.push(s),
+                None => {
+                    return Attempt::failed(
+                        Failure::SeedNotBelow { seed: show(&d), velocity: show(&after) },
+                        None,
+                    );
+                }
             }
         }
     }
@@ -209,7 +266,7 @@ fn attempt_rod(req: &Request, rod: &Rod<Q>, claim: Claim, t: &mut Timings) -> At
         seeds.push(Q::new(-1, 2));
     }
     let start = Instant::now();
-    let search = find_rod_cone(rod, &seeds, &req.finder);
+    let search = find_rod_cone_box(rods, &seeds, &req.finder);
     t.finder += start.elapsed();
     let Search::Found { cone, .. } = &search else {
         return Attempt::failed(Failure::Finder(search.map(|_| 2)), Some(search.map(|_| 2)));
@@ -218,15 +275,17 @@ fn attempt_rod(req: &Request, rod: &Rod<Q>, claim: Claim, t: &mut Timings) -> At
     kernel_check(req, certificate(req, claim, gens, cone.method), cone.method, t)
 }
 
-/// A regular polygon: float finder, exactifier, kernel.
-fn attempt_polygon(req: &Request, b: &Polygon<Q>, claim: Claim, t: &mut Timings) -> Attempt {
+/// A regular polygon at every corner: float finder, exactifier, kernel.
+fn attempt_polygon(req: &Request, bodies: &[Polygon<Q>], claim: Claim, t: &mut Timings) -> Attempt {
     let seed = if claim == Claim::EffectivelyInvariant { Seed::Translation } else { Seed::AllDown };
-    let i0 = b.impact(0);
-    let exact_seeds: Vec<Vec3<Q>> = drops_of(claim, translation_down(), b.all_down_generators())
-        .iter()
-        .map(|g| mat_vec(&i0, g))
-        .collect();
-    let fb = FloatBody::new(b);
+    let mut exact_seeds: Vec<Vec3<Q>> = Vec::new();
+    for b in bodies {
+        let i0 = b.impact(0);
+        exact_seeds.extend(
+            drops_of(claim, translation_down(), b.all_down_generators()).iter().map(|g| mat_vec(&i0, g)),
+        );
+    }
+    let fb = FloatBody::corners(bodies);
     let start = Instant::now();
     let outcome = find_cone(&fb, seed, &req.finder);
     t.finder += start.elapsed();
@@ -235,7 +294,7 @@ fn attempt_polygon(req: &Request, b: &Polygon<Q>, claim: Claim, t: &mut Timings)
         return Attempt::failed(Failure::Finder(outcome.map(Vec::len)), summary);
     };
     let start = Instant::now();
-    let ex = exactify(b, polygon, &exact_seeds, &req.exactify);
+    let ex = exactify(bodies, polygon, &exact_seeds, &req.exactify);
     t.exactify += start.elapsed();
     let ex = match ex {
         Ok(ex) => ex,
@@ -264,10 +323,59 @@ fn pcc_text(b: &Polygon<Q>, quad: &PccQuadratic<Q>) -> String {
     )
 }
 
+/// Whether the PCC Lemma applies on the whole box (the kernel's rule R4 on a box), with a text
+/// for notes.
+fn pcc_on_box(req: &Request, b: &Polygon<Q>) -> Result<(bool, String), Failure> {
+    let polys =
+        pcc_polynomials(b).map_err(|_| Failure::Internal("model error: t = 1 is not a root".into()))?;
+    let (k1, g1) = req.upper.clone().expect("a box");
+    let rect = Rect { kappa: [req.kappa.clone(), k1], gamma: [req.gamma.clone(), g1] };
+    for (p, what) in [(&polys.discriminant, "discriminant"), (&polys.modulus, "q - 1")] {
+        if let Err(e) = negative_on(p, &rect, MAX_PCC_BOXES) {
+            let why = match e {
+                NotNegative::At(k, g) => {
+                    format!("the PCC quadratic's {what} is >= 0 at kappa = {k}, gamma = {g}")
+                }
+                NotNegative::Undecided(r) => format!(
+                    "the PCC quadratic's {what} is not proved negative on kappa in [{}, {}], gamma in [{}, {}]",
+                    r.kappa[0], r.kappa[1], r.gamma[0], r.gamma[1]
+                ),
+            };
+            return Ok((false, why));
+        }
+    }
+    Ok((true, "complex roots of modulus below 1 on the whole box (Bernstein bounds)".into()))
+}
+
+/// The strongest claim a polygon can carry by the PCC Lemma (at a point or on a box), with notes;
+/// `Err` if `CompleteChatterFromAllDown` was asked for and the Lemma does not apply.
+fn polygon_strongest(req: &Request, b: &Polygon<Q>, notes: &mut Vec<String>) -> Result<Claim, Failure> {
+    let (excluded, text, real_roots) = if req.upper.is_some() {
+        let (ok, text) = pcc_on_box(req, b)?;
+        (ok, text, false)
+    } else {
+        let quad = pcc_quadratic(b)
+            .map_err(|v| Failure::Internal(format!("model error: det(I - S_(n-1) S_1) = {v}")))?;
+        (quad.excludes_pcc(), pcc_text(b, &quad), quad.exclusion() == PccExclusion::RealRoots)
+    };
+    if excluded {
+        return Ok(Claim::CompleteChatterFromAllDown);
+    }
+    if req.claim == ClaimChoice::Exactly(Claim::CompleteChatterFromAllDown) {
+        return Err(Failure::PccNotExcluded(text));
+    }
+    notes.push(format!("the PCC Lemma does not apply: {text}"));
+    if real_roots && b.n() >= 4 {
+        notes.push(format!("this contradicts the paper, which states that the Lemma's condition (all eigenvalues real) is never met for n >= 4; here n = {}", b.n()));
+    }
+    Ok(Claim::CcOrPccFromAllDown)
+}
+
 /// The claims to try, strongest first, with notes; `Err` if the requested claim is impossible.
-fn claims_for(req: &Request, shape: &Shape<Q>, notes: &mut Vec<String>) -> Result<Vec<Claim>, Failure> {
-    let g = shape.gamma();
-    if *g == Q::int(0) || *g == Q::int(1) {
+fn claims_for(req: &Request, shapes: &[Shape<Q>], notes: &mut Vec<String>) -> Result<Vec<Claim>, Failure> {
+    let (g0, g1) = (shapes[0].gamma(), shapes[shapes.len() - 1].gamma());
+    if *g0 == Q::int(0) || *g1 == Q::int(1) {
+        let g = if *g0 == Q::int(0) { g0 } else { g1 };
         let why = format!(
             "gamma = {g}: the claims about drops need 0 < gamma < 1 (the paper's Theorem on effectively invariant cones); only EffectivelyInvariant can be certified"
         );
@@ -279,34 +387,30 @@ fn claims_for(req: &Request, shape: &Shape<Q>, notes: &mut Vec<String>) -> Resul
             ClaimChoice::Exactly(_) => Err(Failure::GammaOutOfRange(why)),
         };
     }
-    let strongest = match shape {
+    let strongest = match &shapes[0] {
         Shape::Rod(_) => {
             notes.push("rod (n = 2): exact search, no float search; with two contacts PCC is CC".into());
             Claim::CompleteChatterFromAllDown
         }
-        Shape::Polygon(b) => {
-            let quad = pcc_quadratic(b)
-                .map_err(|v| Failure::Internal(format!("model error: det(I - S_(n-1) S_1) = {v}")))?;
-            let text = pcc_text(b, &quad);
-            match quad.exclusion() {
-                PccExclusion::Excluded => Claim::CompleteChatterFromAllDown,
-                _ if req.claim == ClaimChoice::Exactly(Claim::CompleteChatterFromAllDown) => {
-                    return Err(Failure::PccNotExcluded(text));
-                }
-                exclusion => {
-                    notes.push(format!("the PCC Lemma does not apply: {text}"));
-                    if exclusion == PccExclusion::RealRoots && b.n() >= 4 {
-                        notes.push(format!("this contradicts the paper, which states that the Lemma's condition (all eigenvalues real) is never met for n >= 4; here n = {}", b.n()));
-                    }
-                    Claim::CcOrPccFromAllDown
-                }
-            }
-        }
+        Shape::Polygon(b) => polygon_strongest(req, b, notes)?,
     };
     Ok(match req.claim {
         ClaimChoice::Exactly(c) => vec![c],
         ClaimChoice::Strongest => vec![strongest, Claim::EffectivelyInvariant],
     })
+}
+
+/// The exact models at the corners of the request (one for a point).
+fn shapes(req: &Request) -> Result<Vec<Shape<Q>>, Failure> {
+    if let Some((k1, g1)) = &req.upper {
+        if *k1 < req.kappa || *g1 < req.gamma {
+            return Err(Failure::Body("an interval is empty (its upper end is below its lower end)".into()));
+        }
+    }
+    req.corners()
+        .into_iter()
+        .map(|(k, g)| Shape::new(req.n, k, g).map_err(|e| Failure::Body(e.to_string())))
+        .collect()
 }
 
 /// Runs the pipeline.
@@ -321,19 +425,31 @@ pub fn certify(req: &Request) -> Report {
         max_denominator_bits: bits,
         notes,
     };
-    let shape = match Shape::new(req.n, req.kappa.clone(), req.gamma.clone()) {
+    let shapes = match shapes(req) {
         Ok(s) => s,
-        Err(e) => return report(Err(Failure::Body(e.to_string())), None, None, timings, 0, notes),
+        Err(f) => return report(Err(f), None, None, timings, 0, notes),
     };
-    let claims = match claims_for(req, &shape, &mut notes) {
+    let claims = match claims_for(req, &shapes, &mut notes) {
         Ok(c) => c,
         Err(f) => return report(Err(f), None, None, timings, 0, notes),
     };
     let mut last = None;
     for claim in claims {
-        let a = match &shape {
-            Shape::Rod(r) => attempt_rod(req, r, claim, &mut timings),
-            Shape::Polygon(b) => attempt_polygon(req, b, claim, &mut timings),
+        let a = match &shapes[0] {
+            Shape::Rod(_) => {
+                let rods: Vec<Rod<Q>> = shapes
+                    .iter()
+                    .filter_map(|s| if let Shape::Rod(r) = s { Some(r.clone()) } else { None })
+                    .collect();
+                attempt_rod(req, &rods, claim, &mut timings)
+            }
+            Shape::Polygon(_) => {
+                let bodies: Vec<Polygon<Q>> = shapes
+                    .iter()
+                    .filter_map(|s| if let Shape::Polygon(b) = s { Some(b.clone()) } else { None })
+                    .collect();
+                attempt_polygon(req, &bodies, claim, &mut timings)
+            }
         };
         let stop = a.result.is_ok() || matches!(a.result, Err(Failure::Internal(_)));
         if !stop {

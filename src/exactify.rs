@@ -99,24 +99,27 @@ fn polygon_of(normals: &[(i64, i64)], h: &[Q]) -> HPoly {
     poly
 }
 
-/// The exact images of the vertices of every K ∩ C_j, or the step j of an image with v >= 0.
-pub fn exact_images(body: &Body<Q>, poly: &HPoly) -> Result<Vec<Vec3<Integer>>, usize> {
+/// The exact images of the vertices of every K ∩ C_j under S_j of every body (the corners of a
+/// box of parameters share C_j), or the step j of an image with v >= 0.
+pub fn exact_images(bodies: &[Body<Q>], poly: &HPoly) -> Result<Vec<Vec3<Integer>>, usize> {
     let mut out = Vec::new();
-    for j in 1..body.n() as i64 {
-        let s = int_mat(&body.step(j));
+    for j in 1..bodies[0].n() as i64 {
         let mut piece = poly.clone();
-        for l in body.next_contact_cone(j) {
+        for l in bodies[0].next_contact_cone(j) {
             piece = clip(&piece, &int_vec(&l)).into_iter().map(primitive).collect();
         }
-        for p in &piece {
-            let q = primitive(mat_vec(&s, p));
-            if q.iter().all(|c| *c == 0u32) {
-                continue;
+        for body in bodies {
+            let s = int_mat(&body.step(j));
+            for p in &piece {
+                let q = primitive(mat_vec(&s, p));
+                if q.iter().all(|c| *c == 0u32) {
+                    continue;
+                }
+                if q[2] >= 0u32 {
+                    return Err(j as usize);
+                }
+                out.push(q);
             }
-            if q[2] >= 0u32 {
-                return Err(j as usize);
-            }
-            out.push(q);
         }
     }
     Ok(out)
@@ -175,10 +178,11 @@ pub struct Exactified {
     pub rounds: usize,
 }
 
-/// Exactifies a float polygon. `seeds` are exact points that K must contain (e.g. I_0 of the
-/// generators of D); every exact image is added as the rounds go.
+/// Exactifies a float polygon for the maps of `bodies` (one body, or the corners of a box).
+/// `seeds` are exact points that K must contain (e.g. I_0 of the generators of D); every exact
+/// image is added as the rounds go.
 pub fn exactify(
-    body: &Body<Q>,
+    bodies: &[Body<Q>],
     float_poly: &[P2],
     seeds: &[Vec3<Q>],
     cfg: &ExactifyConfig,
@@ -216,7 +220,8 @@ pub fn exactify(
     let mut worst_excess = 0.0;
     for round in 0..cfg.max_rounds {
         let poly = polygon_of(&normals, &h);
-        let mut pts = exact_images(body, &poly).map_err(|step| ExactifyError::ImageAbove { round, step })?;
+        let mut pts =
+            exact_images(bodies, &poly).map_err(|step| ExactifyError::ImageAbove { round, step })?;
         pts.extend(seeds.iter().cloned());
         let mut changed = false;
         worst_excess = 0.0;

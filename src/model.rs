@@ -49,6 +49,8 @@ pub struct FloatBody {
     pub cones: Vec<[Vector3<f64>; 4]>,
     pub impact0: Matrix3<f64>,
     pub all_down: Vec<Vector3<f64>>,
+    /// For a box of parameters: I_0 at the other corners (seeds are taken at every corner).
+    pub more_impacts: Vec<Matrix3<f64>>,
 }
 
 impl FloatBody {
@@ -60,7 +62,22 @@ impl FloatBody {
             cones: js.map(|j| b.next_contact_cone(j).map(|l| vec_f64(&l))).collect(),
             impact0: mat_f64(&b.impact(0)),
             all_down: b.all_down_generators().iter().map(vec_f64).collect(),
+            more_impacts: Vec::new(),
         }
+    }
+
+    /// The maps of several bodies with the same n (the corners of a box of parameters) as one:
+    /// a cone is invariant under all of them iff it is for every point of the box
+    /// (docs/kernel-soundness.md §2, "Boxes"). Steps are listed corner by corner.
+    pub fn corners(bodies: &[Body<Q>]) -> Self {
+        let mut all = FloatBody::new(&bodies[0]);
+        for b in &bodies[1..] {
+            let f = FloatBody::new(b);
+            all.steps.extend(f.steps);
+            all.cones.extend(f.cones);
+            all.more_impacts.push(f.impact0);
+        }
+        all
     }
 }
 

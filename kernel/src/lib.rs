@@ -19,6 +19,7 @@
 #![deny(missing_docs)]
 #![deny(clippy::float_arithmetic)]
 
+pub mod bivariate;
 pub mod certificate;
 pub mod check;
 pub mod exact;

@@ -24,8 +24,11 @@ pub enum ClaimArg {
 /// Raw arguments of `chatter certify`.
 #[derive(Args, Debug)]
 #[command(after_help = "Numbers are read exactly: 1/6, 0.01 (= 1/100), 1e-2.\n\
-Defaults certify the flat homogeneous square plate: n = 4, kappa = 1/6, gamma = 1/100.\n\n\
-Example:\n  chatter certify --n 3 --kappa 3/20 --gamma 0.05 -o triangle.ron")]
+Defaults certify the flat homogeneous square plate: n = 4, kappa = 1/6, gamma = 1/100.\n\
+kappa and gamma may be closed intervals a:b: one cone then certifies every (kappa, gamma) of the\n\
+box (a box certificate, docs/certificate-format.md).\n\n\
+Examples:\n  chatter certify --n 3 --kappa 3/20 --gamma 0.05 -o triangle.ron\n  \
+chatter certify --kappa 1/10:3/25 --gamma 1/100:1/50 -o box.ron")]
 pub struct CertifyArgs {
     #[command(flatten)]
     pub body: super::BodyArgs,
@@ -54,19 +57,21 @@ struct Validated {
 }
 
 fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
-    let (n, kappa, gamma) = a.body.parse()?;
-    if let Err(e) = Shape::new(n, kappa.clone(), gamma.clone()) {
-        let flag = match e {
-            BodyError::UnsupportedN(_) => "--n",
-            BodyError::KappaNotPositive => "--kappa",
-            BodyError::GammaOutOfRange => "--gamma",
-        };
-        return Err(format!("{flag}: {e}"));
+    let (n, kappa, gamma) = a.body.parse_ranges()?;
+    for (k, g) in [(&kappa[0], &gamma[0]), (&kappa[1], &gamma[1])] {
+        if let Err(e) = Shape::new(n, k.clone(), g.clone()) {
+            let flag = match e {
+                BodyError::UnsupportedN(_) => "--n",
+                BodyError::KappaNotPositive => "--kappa",
+                BodyError::GammaOutOfRange => "--gamma",
+            };
+            return Err(format!("{flag}: {e}"));
+        }
     }
     if a.max_vertices < 3 {
         return Err("--max-vertices must be at least 3".into());
     }
-    let mut req = Request::new(n, kappa, gamma);
+    let mut req = Request::boxed(n, kappa, gamma);
     req.claim = match a.claim {
         ClaimArg::Strongest => ClaimChoice::Strongest,
         ClaimArg::EffectivelyInvariant => ClaimChoice::Exactly(Claim::EffectivelyInvariant),
@@ -100,7 +105,7 @@ fn finder_json(f: &Option<Search<usize>>) -> serde_json::Value {
 
 fn summary(v: &Validated, r: &Report) -> String {
     let req = &v.req;
-    let head = format!("n={} kappa={} gamma={}", req.n, req.kappa, req.gamma);
+    let head = req.describe();
     let t = &r.timings;
     let exactifier =
         if t.exactify.is_zero() { String::new() } else { format!(", exactifier {:.2} ms", ms(t.exactify)) };
@@ -130,6 +135,14 @@ fn summary(v: &Validated, r: &Report) -> String {
     }
 }
 
+/// A parameter in JSON: its text, or [lo, hi] for a box.
+fn param_json(lo: &crate::exact::Q, hi: Option<&crate::exact::Q>) -> serde_json::Value {
+    match hi {
+        Some(hi) => json!([lo.to_string(), hi.to_string()]),
+        None => json!(lo.to_string()),
+    }
+}
+
 pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
     let v = match validate(a, env) {
         Ok(v) => v,
@@ -146,8 +159,8 @@ pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
         let obj = json!({
             "status": if report.result.is_ok() { "certified" } else { "not-certified" },
             "n": v.req.n,
-            "kappa": v.req.kappa.to_string(),
-            "gamma": v.req.gamma.to_string(),
+            "kappa": param_json(&v.req.kappa, v.req.upper.as_ref().map(|u| &u.0)),
+            "gamma": param_json(&v.req.gamma, v.req.upper.as_ref().map(|u| &u.1)),
             "claim": report.result.as_ref().ok().map(|c| c.claim.name()),
             "generators": report.result.as_ref().ok().map(|c| c.cone.len()),
             "max_denominator_bits": report.result.as_ref().ok().map(|_| report.max_denominator_bits),

@@ -121,6 +121,30 @@ impl BodyArgs {
         let gamma = parse_user_number(&self.gamma).map_err(|e| format!("--gamma: {e}"))?;
         Ok((n, kappa, gamma))
     }
+
+    /// n, and kappa and gamma each as a number (`[x, x]`) or a closed interval written `a:b`.
+    pub fn parse_ranges(&self) -> Result<(u64, [Q; 2], [Q; 2]), String> {
+        let (n, _, _) = BodyArgs { kappa: "1".into(), gamma: "0".into(), ..self.clone() }.parse()?;
+        Ok((n, range("--kappa", &self.kappa)?, range("--gamma", &self.gamma)?))
+    }
+}
+
+/// A number `x` (the interval [x, x]) or a closed interval `a:b` with a <= b, read exactly.
+pub fn range(flag: &str, text: &str) -> Result<[Q; 2], String> {
+    let num = |t: &str| parse_user_number(t).map_err(|e| format!("{flag}: {e}"));
+    match text.split_once(':') {
+        None => {
+            let x = num(text)?;
+            Ok([x.clone(), x])
+        }
+        Some((a, b)) => {
+            let (lo, hi) = (num(a)?, num(b)?);
+            if lo > hi {
+                return Err(format!("{flag}: the interval {text} is empty ({lo} > {hi})"));
+            }
+            Ok([lo, hi])
+        }
+    }
 }
 
 /// Runs a parsed command line in an environment.

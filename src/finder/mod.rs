@@ -91,9 +91,10 @@ impl std::fmt::Display for Search<usize> {
 /// The seed points on the plane v = -1.
 pub fn seed_points(body: &FloatBody, seed: Seed) -> Vec<P2> {
     let down = Vector3::new(-1.0, -1.0, -1.0);
+    let impacts = std::iter::once(&body.impact0).chain(&body.more_impacts);
     match seed {
-        Seed::Translation => vec![project(&(body.impact0 * down))],
-        Seed::AllDown => body.all_down.iter().map(|g| project(&(body.impact0 * g))).collect(),
+        Seed::Translation => impacts.map(|i| project(&(i * down))).collect(),
+        Seed::AllDown => impacts.flat_map(|i| body.all_down.iter().map(move |g| project(&(i * g)))).collect(),
     }
 }
 
@@ -109,7 +110,7 @@ pub fn images(body: &FloatBody, poly: &[P2]) -> Result<Vec<P2>, usize> {
         for p in &piece {
             let q = s * geometry::lift(p);
             if q.z >= 0.0 {
-                return Err(j + 1);
+                return Err(j % (body.n - 1) + 1);
             }
             out.push(project(&q));
         }

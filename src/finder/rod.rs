@@ -60,10 +60,11 @@ fn piece_images(step: &Mat2<Q>, lo: &Q, hi: &Q) -> Option<Vec<Q>> {
     Some(out)
 }
 
-/// Whether [lo, hi] (lo < hi) contains the seeds and is invariant, exactly.
-fn invariant(step: &Mat2<Q>, lo: &Q, hi: &Q, seeds: &[Q]) -> bool {
+/// Whether [lo, hi] (lo < hi) contains the seeds and is invariant under every step, exactly.
+fn invariant(steps: &[Mat2<Q>], lo: &Q, hi: &Q, seeds: &[Q]) -> bool {
     let inside = |s: &Q| lo <= s && s <= hi;
-    lo < hi && seeds.iter().all(inside) && piece_images(step, lo, hi).is_some_and(|v| v.iter().all(inside))
+    let images_inside = |step| piece_images(step, lo, hi).is_some_and(|v| v.iter().all(inside));
+    lo < hi && seeds.iter().all(inside) && steps.iter().all(images_inside)
 }
 
 /// The square root of a non-negative rational, if it is rational.
@@ -73,8 +74,9 @@ fn rational_sqrt(x: &Q) -> Option<Q> {
     Some(Q::from_rational(malachite::rational::Rational::from_naturals(n, d)))
 }
 
-/// Method 1: the paper's cone cone(p_min, R p_min) when S_1 has rational eigenvalues.
-fn paper_cone(step: &Mat2<Q>, seeds: &[Q]) -> Option<RodCone> {
+/// Method 1: the paper's cone cone(p_min, R p_min) of `step` when S_1 has rational eigenvalues,
+/// if it is invariant under every one of `steps` (the corners of a box; `step` is one of them).
+fn paper_cone(step: &Mat2<Q>, steps: &[Mat2<Q>], seeds: &[Q]) -> Option<RodCone> {
     let [[a, b], [c, d]] = step;
     let disc = &(&(a - d) * &(a - d)) + &(&Q::int(4) * &(b * c));
     if disc.is_negative() {
@@ -90,21 +92,22 @@ fn paper_cone(step: &Mat2<Q>, seeds: &[Q]) -> Option<RodCone> {
     let s = s_of(&p).or_else(|| s_of(&[-&p[0], -&p[1]]))?;
     let (x, y) = (s.clone(), -(&s + &Q::int(1)));
     let (lo, hi) = if x < y { (x, y) } else { (y, x) };
-    invariant(step, &lo, &hi, seeds).then_some(RodCone {
+    invariant(steps, &lo, &hi, seeds).then_some(RodCone {
         lo,
         hi,
         method: "exact eigenvectors: the paper's two-ray cone {p_min, R p_min}",
     })
 }
 
-/// Method 2: exact interval iteration with outward slack (dyadic ends).
-fn iterate(step: &Mat2<Q>, seeds: &[Q], cfg: &FinderConfig) -> Search<RodCone> {
+/// Method 2: exact interval iteration with outward slack (dyadic ends), under every step.
+fn iterate(steps: &[Mat2<Q>], seeds: &[Q], cfg: &FinderConfig) -> Search<RodCone> {
     let (mut lo, mut hi) =
         (seeds.iter().min().expect("a seed").clone(), seeds.iter().max().expect("a seed").clone());
     for it in 0..cfg.max_iterations {
-        let Some(images) = piece_images(step, &lo, &hi) else {
+        let Some(images) = steps.iter().map(|s| piece_images(s, &lo, &hi)).collect::<Option<Vec<_>>>() else {
             return Search::NoCone { iteration: it, step: 1 };
         };
+        let images: Vec<Q> = images.into_iter().flatten().collect();
         let mut grew = false;
         for s in images {
             // A grown end goes a little beyond the image (the orbit approaches the attracting
@@ -136,9 +139,15 @@ fn iterate(step: &Mat2<Q>, seeds: &[Q], cfg: &FinderConfig) -> Search<RodCone> {
 
 /// Searches an invariant interval containing the seeds (given as values of s; at least one).
 pub fn find_rod_cone(rod: &Rod<Q>, seeds: &[Q], cfg: &FinderConfig) -> Search<RodCone> {
-    let step = rod.step();
-    match paper_cone(&step, seeds) {
+    find_rod_cone_box(std::slice::from_ref(rod), seeds, cfg)
+}
+
+/// Searches an interval invariant under the rod's maps at every one of `rods` (the corners of a
+/// box of parameters, docs/kernel-soundness.md §2 "Boxes") and containing the seeds.
+pub fn find_rod_cone_box(rods: &[Rod<Q>], seeds: &[Q], cfg: &FinderConfig) -> Search<RodCone> {
+    let steps: Vec<Mat2<Q>> = rods.iter().map(Rod::step).collect();
+    match steps.iter().find_map(|step| paper_cone(step, &steps, seeds)) {
         Some(cone) => Search::Found { cone, iterations: 0 },
-        None => iterate(&step, seeds, cfg),
+        None => iterate(&steps, seeds, cfg),
     }
 }

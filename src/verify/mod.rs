@@ -66,6 +66,12 @@ pub struct FileVerdict {
     /// Whether the file was gzip'd.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gzip: Option<bool>,
+    /// For a box certificate: [lo, hi] of kappa and of gamma.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub region: Option<[[String; 2]; 2]>,
+    /// For a box certificate with rule R4: the sub-boxes of the Bernstein subdivision.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pcc_boxes: Option<usize>,
 }
 
 impl FileVerdict {
@@ -83,6 +89,8 @@ impl FileVerdict {
             locus: None,
             reason: None,
             gzip: None,
+            region: None,
+            pcc_boxes: None,
         }
     }
 
@@ -104,13 +112,21 @@ impl FileVerdict {
         let red = self.redundant.as_ref().map_or(0, Vec::len);
         let red = if red > 0 { format!(", {red} redundant") } else { String::new() };
         let gzip = if self.gzip == Some(true) { ", gzip'd" } else { "" };
+        let region = match &self.region {
+            Some([k, g]) => {
+                format!(", for every kappa in [{}, {}] and gamma in [{}, {}]", k[0], k[1], g[0], g[1])
+            }
+            None => String::new(),
+        };
+        let pcc =
+            self.pcc_boxes.map_or(String::new(), |b| format!(", PCC exclusion shown on {b} Bernstein boxes"));
         let vacuous = if self.contains_translation == Some(false) {
             "; warning: K does not contain the post-impact velocity of a pure translation"
         } else {
             ""
         };
         format!(
-            "{}: OK ({}, n = {}, {} generators{red}, denominators <= {} bits{gzip}{vacuous})",
+            "{}: OK ({}, n = {}{region}, {} generators{red}, denominators <= {} bits{pcc}{gzip}{vacuous})",
             self.path,
             self.claim.unwrap_or("?"),
             self.n.unwrap_or(0),
@@ -131,6 +147,8 @@ pub fn verdict_of(path: &Path, verdict: Verdict) -> FileVerdict {
             v.redundant = Some(a.redundant);
             v.max_denominator_bits = Some(a.max_denominator_bits);
             v.contains_translation = Some(a.contains_translation);
+            v.region = a.region;
+            v.pcc_boxes = a.pcc_boxes;
             v
         }
         Verdict::Rejected(r) => {

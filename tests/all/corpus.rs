@@ -126,7 +126,12 @@ fn corpus_certificates_round_trip_through_the_writer() {
 fn polygon_parts(text: &str) -> (chatter_kernel::model::Polygon<Q>, Vec<[Q; 3]>) {
     let c = read(text).unwrap();
     let chatter_kernel::certificate::Body::RegularPolygon { n, kappa, gamma } = &c.body;
-    let b = chatter_kernel::model::Polygon::new(*n, kappa.parse().unwrap(), gamma.parse().unwrap()).unwrap();
+    let b = chatter_kernel::model::Polygon::new(
+        *n,
+        kappa.as_point().unwrap().parse().unwrap(),
+        gamma.as_point().unwrap().parse().unwrap(),
+    )
+    .unwrap();
     let q = |s: &String| s.parse::<Q>().unwrap();
     (b, c.cone.iter().map(|g| [q(&g.0[0]), q(&g.0[1]), q(&g.0[2])]).collect())
 }

@@ -6,14 +6,14 @@ use chatter::exactify::{ExactifyConfig, ExactifyError, exactify};
 use chatter::finder::geometry::P2;
 use chatter::finder::{FinderConfig, FinderOutcome, Seed, find_cone};
 use chatter::model::{FloatBody, translation_down};
-use chatter_kernel::certificate::{Body, Certificate, Claim, Coordinates, FORMAT, Generator, VERSION};
+use chatter_kernel::certificate::{Body, Certificate, Claim, Coordinates, FORMAT, Generator};
 use chatter_kernel::model::linalg::mat_vec;
 use chatter_kernel::verify::{Verdict, verify};
 
 fn cert(n: u64, k: &str, g: &str, gens: &[[Q; 3]]) -> Certificate {
     Certificate {
         format: FORMAT.into(),
-        version: VERSION,
+        version: 1,
         body: Body::RegularPolygon { n, kappa: k.into(), gamma: g.into() },
         coordinates: Coordinates::ContactVelocities,
         claim: Claim::EffectivelyInvariant,
@@ -38,8 +38,13 @@ fn exactified_cones_pass_the_kernel_and_contain_the_seed() {
             panic!("n={n} kappa={k} gamma={g}: finder");
         };
         let seed = mat_vec(&b.impact(0), &translation_down());
-        let ex = exactify(&b, &polygon, std::slice::from_ref(&seed), &ExactifyConfig::default())
-            .unwrap_or_else(|e| panic!("n={n} kappa={k} gamma={g}: {e}"));
+        let ex = exactify(
+            std::slice::from_ref(&b),
+            &polygon,
+            std::slice::from_ref(&seed),
+            &ExactifyConfig::default(),
+        )
+        .unwrap_or_else(|e| panic!("n={n} kappa={k} gamma={g}: {e}"));
         assert!(ex.generators.iter().all(|p| p[2] == Q::int(-1)), "generators are normalised to v = -1");
         let c = cert(n, k, g, &ex.generators);
         let Verdict::Accepted(a) = verify(&c, ParseLimits::default()) else {
@@ -61,7 +66,7 @@ fn slowly_contracting_points_converge() {
         else {
             panic!("finder");
         };
-        let ex = exactify(&b, &polygon, &[], &ExactifyConfig::default()).unwrap();
+        let ex = exactify(std::slice::from_ref(&b), &polygon, &[], &ExactifyConfig::default()).unwrap();
         assert!(ex.rounds < 40, "kappa={k} gamma={g}: {} rounds", ex.rounds);
     }
 }
@@ -71,12 +76,12 @@ fn failures_carry_reasons() {
     let b = body(4, "1/6", "1/100");
     let degenerate = [P2::new(0.0, 0.0)];
     assert!(matches!(
-        exactify(&b, &degenerate, &[], &ExactifyConfig::default()),
+        exactify(std::slice::from_ref(&b), &degenerate, &[], &ExactifyConfig::default()),
         Err(ExactifyError::BadInput(_))
     ));
     // A polygon far too large: exact images move the centre of mass up.
     let huge = [P2::new(0.0, -50.0), P2::new(50.0, -50.0), P2::new(50.0, 50.0), P2::new(0.0, 50.0)];
-    let e = exactify(&b, &huge, &[], &ExactifyConfig::default()).unwrap_err();
+    let e = exactify(std::slice::from_ref(&b), &huge, &[], &ExactifyConfig::default()).unwrap_err();
     assert!(matches!(e, ExactifyError::ImageAbove { .. }), "{e:?}");
     assert!(e.to_string().contains("v >= 0"));
     // A round budget of one cannot absorb the float polygon's rounding.
@@ -87,6 +92,6 @@ fn failures_carry_reasons() {
         panic!()
     };
     let tight = ExactifyConfig { max_rounds: 1, ..ExactifyConfig::default() };
-    let e = exactify(&body(3, "3/20", "1/20"), &polygon, &[], &tight).unwrap_err();
+    let e = exactify(&[body(3, "3/20", "1/20")], &polygon, &[], &tight).unwrap_err();
     assert!(matches!(e, ExactifyError::NoConvergence { rounds: 1, .. }), "{e:?}");
 }

@@ -178,7 +178,11 @@ fn issue8_rejections_carry_a_structured_locus() {
         panic!("rejected")
     };
     assert_eq!(r.code, Code::ImageOutside);
-    assert!(matches!(r.locus, Locus::Piece { piece: 1, vertex: 0, outside: Some(_) }), "{:?}", r.locus);
+    assert!(
+        matches!(r.locus, Locus::Piece { piece: 1, vertex: 0, outside: Some(_), corner: None }),
+        "{:?}",
+        r.locus
+    );
 }
 
 #[test]

@@ -20,8 +20,11 @@ use std::fmt;
 
 /// Value of the `format` field.
 pub const FORMAT: &str = "chatter-certificate";
-/// The one version this build reads and writes.
-pub const VERSION: u64 = 1;
+/// The newest version this build reads and writes: version 2 adds parameter intervals (box
+/// certificates); a file that uses no version-2 feature is written as version 1.
+pub const VERSION: u64 = 2;
+/// The versions this build reads.
+pub const VERSIONS: std::ops::RangeInclusive<u64> = 1..=VERSION;
 
 /// A certificate, numbers as canonical text.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -52,11 +55,93 @@ pub enum Body {
     RegularPolygon {
         /// Number of contacts (2 for the rod).
         n: u64,
-        /// kappa, canonical rational text.
-        kappa: String,
-        /// gamma, canonical rational text.
-        gamma: String,
+        /// kappa: a number, or a closed interval (version 2).
+        kappa: Param,
+        /// gamma: a number, or a closed interval (version 2).
+        gamma: Param,
     },
+}
+
+impl Body {
+    /// The oldest format version that can express this body: 2 with a parameter interval, else 1.
+    pub fn version_needed(&self) -> u64 {
+        let Body::RegularPolygon { kappa, gamma, .. } = self;
+        if matches!(kappa, Param::Interval(..)) || matches!(gamma, Param::Interval(..)) { 2 } else { 1 }
+    }
+}
+
+/// A parameter: one number (`"1/6"`), or a closed interval of numbers written as a two-element
+/// list (`["1/10", "3/25"]`, version 2), each in canonical text.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Param {
+    /// One value.
+    Point(String),
+    /// The closed interval [lo, hi].
+    Interval(String, String),
+}
+
+impl Param {
+    /// The value of a point parameter.
+    pub fn as_point(&self) -> Option<&str> {
+        match self {
+            Param::Point(s) => Some(s),
+            Param::Interval(..) => None,
+        }
+    }
+
+    /// The numbers as written: one or two.
+    pub fn texts(&self) -> Vec<&str> {
+        match self {
+            Param::Point(s) => vec![s],
+            Param::Interval(a, b) => vec![a, b],
+        }
+    }
+}
+
+impl From<&str> for Param {
+    fn from(s: &str) -> Self {
+        Param::Point(s.to_string())
+    }
+}
+
+impl From<String> for Param {
+    fn from(s: String) -> Self {
+        Param::Point(s)
+    }
+}
+
+impl Serialize for Param {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self {
+            Param::Point(x) => s.serialize_str(x),
+            Param::Interval(a, b) => [a, b].serialize(s),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for Param {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = Param;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a number such as \"1/6\", or an interval such as [\"1/10\", \"3/25\"]")
+            }
+            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<Param, E> {
+                Ok(Param::Point(v.to_string()))
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Param, A::Error> {
+                use serde::de::Error;
+                let lo: String = seq.next_element()?.ok_or_else(|| A::Error::invalid_length(0, &self))?;
+                let hi: String = seq.next_element()?.ok_or_else(|| A::Error::invalid_length(1, &self))?;
+                if seq.next_element::<String>()?.is_some() {
+                    return Err(A::Error::invalid_length(3, &self));
+                }
+                Ok(Param::Interval(lo, hi))
+            }
+        }
+        d.deserialize_any(V)
+    }
 }
 
 /// The coordinates of the generators.

@@ -1,8 +1,9 @@
 //! The reader: first the header (`format`, `version`), then the full schema of that version with
 //! unknown fields denied. Every error names the field or the position.
 
-use super::{Certificate, Code, FORMAT, Locus, Rejection, VERSION};
+use super::{Certificate, Code, FORMAT, Locus, Rejection, VERSIONS};
 use serde::Deserialize;
+use std::ops::RangeInclusive;
 
 #[derive(Deserialize)]
 #[serde(rename = "Certificate")]
@@ -30,7 +31,7 @@ pub(crate) fn check_header(
     format: Option<&str>,
     version: Option<u64>,
     expected: &str,
-    readable: u64,
+    readable: RangeInclusive<u64>,
 ) -> Result<(), Rejection> {
     match format {
         Some(f) if f == expected => {}
@@ -41,9 +42,14 @@ pub(crate) fn check_header(
         None => return Err(missing("format")),
     }
     match version {
-        Some(v) if v == readable => Ok(()),
+        Some(v) if readable.contains(&v) => Ok(()),
         Some(v) => {
-            let msg = format!("version {v} is not supported (this build reads version {readable})");
+            let reads = if readable.start() == readable.end() {
+                format!("version {}", readable.start())
+            } else {
+                format!("versions {} to {}", readable.start(), readable.end())
+            };
+            let msg = format!("version {v} is not supported (this build reads {reads})");
             Err(Rejection::at_field(Code::UnsupportedVersion, "version", msg))
         }
         None => Err(missing("version")),
@@ -73,7 +79,7 @@ pub fn read_with(text: &str, syntax: Syntax) -> Result<Certificate, Rejection> {
     }
     let lenient = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
     let header: Header = lenient.from_str(text).map_err(ron_error)?;
-    check_header(header.format.as_deref(), header.version, FORMAT, VERSION)?;
+    check_header(header.format.as_deref(), header.version, FORMAT, VERSIONS)?;
     ron::Options::default().from_str(text).map_err(ron_error)
 }
 

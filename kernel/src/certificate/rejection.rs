@@ -116,6 +116,10 @@ pub enum Locus {
         vertex: usize,
         /// The part of K's boundary the image violates (`None` when its v is >= 0).
         outside: Option<Boundary>,
+        /// For a box certificate, the corner whose maps fail: 0 to 3 for (kappa, gamma) at
+        /// (lo, lo), (hi, lo), (lo, hi), (hi, hi) (omitted for a point).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        corner: Option<usize>,
     },
     /// The image under I_0 of generator `generator` of the all-down cone D (rule R3).
     AllDown {
@@ -123,9 +127,20 @@ pub enum Locus {
         generator: usize,
         /// The part of K's boundary the image violates (`None` when its v is >= 0).
         outside: Option<Boundary>,
+        /// For a box certificate, the corner whose map fails (see `Piece`).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        corner: Option<usize>,
     },
     /// The PCC quadratic (rule R4).
     Pcc,
+    /// Rule R4 on a box: the sub-box [kappa] x [gamma] on which PCC exclusion fails or could not
+    /// be shown (a point when lo = hi).
+    PccRegion {
+        /// [lo, hi] of kappa, canonical text.
+        kappa: Box<[String; 2]>,
+        /// [lo, hi] of gamma, canonical text.
+        gamma: Box<[String; 2]>,
+    },
     /// Step `index` (from 0) of a proof, with its id.
     Step {
         /// Position in the list of steps.

@@ -1,6 +1,6 @@
 //! The deterministic writer: one generator per line, in the strict syntax.
 
-use super::{Body, Certificate};
+use super::{Body, Certificate, Param};
 
 /// A string in the strict syntax: quoted, without escapes. Characters the syntax does not allow
 /// in strings (`"`, `\`, control characters) become spaces; they can only come from the free-text
@@ -11,6 +11,14 @@ pub fn quoted(s: &str) -> String {
     format!("\"{clean}\"")
 }
 
+/// A parameter: `"x"` or `["lo", "hi"]`.
+fn param(p: &Param) -> String {
+    match p {
+        Param::Point(x) => quoted(x),
+        Param::Interval(a, b) => format!("[{}, {}]", quoted(a), quoted(b)),
+    }
+}
+
 /// Writes a certificate as RON, one generator per line (deterministic).
 pub fn write(c: &Certificate) -> String {
     let q = |s: &str| quoted(s);
@@ -19,7 +27,11 @@ pub fn write(c: &Certificate) -> String {
     out.push_str("Certificate(\n");
     out.push_str(&format!("    format: {},\n", q(&c.format)));
     out.push_str(&format!("    version: {},\n", c.version));
-    out.push_str(&format!("    body: RegularPolygon(n: {n}, kappa: {}, gamma: {}),\n", q(kappa), q(gamma)));
+    out.push_str(&format!(
+        "    body: RegularPolygon(n: {n}, kappa: {}, gamma: {}),\n",
+        param(kappa),
+        param(gamma)
+    ));
     out.push_str("    coordinates: ContactVelocities,\n");
     out.push_str(&format!("    claim: {},\n", c.claim.name()));
     out.push_str("    cone: [\n");

@@ -7,12 +7,14 @@
 //! positive number changes nothing.
 
 mod polygon;
+pub use polygon::MAX_PCC_BOXES;
+mod region;
 mod rod;
 mod show;
 
-use crate::certificate::{Body, Certificate, Claim, Code, FORMAT, Locus, Rejection, VERSION};
+use crate::certificate::{Body, Certificate, Claim, Code, FORMAT, Locus, Rejection, VERSIONS};
 use crate::exact::{Field, Int, NumberError, ParseLimits, parse_canonical, parse_canonical_parts};
-use crate::model::{BodyError, Shape};
+use crate::model::Shape;
 
 /// What an accepted certificate established.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -33,21 +35,32 @@ pub struct Accepted {
     /// canonical text.
     pub pcc: Option<[String; 3]>,
     /// Whether K contains the velocity after the first impact of a pure downward translation
-    /// (informational: without some such velocity the claim is vacuous).
+    /// (informational: without some such velocity the claim is vacuous); for a box, at every
+    /// corner.
     pub contains_translation: bool,
+    /// For a box certificate: the bounds [lo, hi] of kappa and of gamma, canonical text.
+    pub region: Option<[[String; 2]; 2]>,
+    /// For `CompleteChatterFromAllDown` on a box: the number of sub-boxes on which PCC exclusion
+    /// was shown by Bernstein bounds.
+    pub pcc_boxes: Option<usize>,
 }
 
 /// Checks a certificate exactly over the field `F`. The first failing check is reported.
 pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
     header(cert)?;
     size(cert, limits)?;
-    let shape: Shape<F> = body(&cert.body, limits)?;
-    claim_range(&shape, cert.claim)?;
-    let gens = generators::<F>(cert, shape.coordinates(), limits)?;
-    match &shape {
-        Shape::Rod(r) => rod::check(r, &gens, cert.claim, limits),
-        Shape::Polygon(p) => polygon::check(p, &gens, cert.claim, limits),
+    let region = region::region::<F>(cert, limits)?;
+    region::claim_range(&region, cert.claim)?;
+    let gens = generators::<F>(cert, region.corners[0].shape.coordinates(), limits)?;
+    let mut accepted = match &region.corners[0].shape {
+        Shape::Rod(_) => rod::check(&region, &gens, cert.claim, limits)?,
+        Shape::Polygon(_) => polygon::check(&region, &gens, cert.claim, limits)?,
+    };
+    if region.is_box {
+        let text = |r: &[F; 2]| [crate::exact::to_canonical(&r[0]), crate::exact::to_canonical(&r[1])];
+        accepted.region = Some([text(&region.rect.kappa), text(&region.rect.gamma)]);
     }
+    Ok(accepted)
 }
 
 /// The limits on the whole file, before any arithmetic: the number of generators and the
@@ -69,8 +82,9 @@ fn size(cert: &Certificate, limits: ParseLimits) -> Result<(), Rejection> {
         return Err(too_large("max-generators", msg));
     }
     let Body::RegularPolygon { kappa, gamma, .. } = &cert.body;
-    let coords = cert.cone.iter().flat_map(|g| g.0.iter());
-    let total: usize = [kappa, gamma].into_iter().chain(coords).map(String::len).sum();
+    let params = kappa.texts().into_iter().chain(gamma.texts());
+    let total: usize =
+        params.chain(cert.cone.iter().flat_map(|g| g.0.iter().map(String::as_str))).map(str::len).sum();
     if total > limits.max_total_digits {
         let msg = format!(
             "{total} characters of numbers, more than the limit max-total-digits = {}",
@@ -98,8 +112,8 @@ fn header(cert: &Certificate) -> Result<(), Rejection> {
     if cert.format != FORMAT {
         return Err(Rejection::at_field(Code::WrongFormat, "format", format!("expected {FORMAT:?}")));
     }
-    if cert.version != VERSION {
-        let msg = format!("{} is not {VERSION}", cert.version);
+    if !VERSIONS.contains(&cert.version) {
+        let msg = format!("{} is not one of the versions this build reads ({VERSIONS:?})", cert.version);
         return Err(Rejection::at_field(Code::UnsupportedVersion, "version", msg));
     }
     Ok(())
@@ -108,38 +122,6 @@ fn header(cert: &Certificate) -> Result<(), Rejection> {
 /// A canonical number of a field of the body.
 fn number<F: Field>(path: &str, s: &str, limits: ParseLimits) -> Result<F, Rejection> {
     parse_canonical(s, limits).map_err(|e| number_error(path.to_string(), s, e))
-}
-
-/// The exact model of the body (rule R1).
-fn body<F: Field>(b: &Body, limits: ParseLimits) -> Result<Shape<F>, Rejection> {
-    let Body::RegularPolygon { n, kappa, gamma } = b;
-    let kappa: F = number("body.kappa", kappa, limits)?;
-    let gamma: F = number("body.gamma", gamma, limits)?;
-    Shape::new(*n, kappa, gamma).map_err(|e| {
-        let (code, path) = match e {
-            BodyError::UnsupportedN(_) => (Code::UnsupportedBody, "body.n"),
-            BodyError::KappaNotPositive => (Code::ParameterOutOfRange, "body.kappa"),
-            BodyError::GammaOutOfRange => (Code::ParameterOutOfRange, "body.gamma"),
-        };
-        Rejection::at_field(code, path, e)
-    })
-}
-
-/// The claims about drops need 0 < gamma < 1, the hypothesis of the paper's Theorem on
-/// effectively invariant cones: at gamma = 1 energy is conserved and chatter is impossible; at
-/// gamma = 0 a drop can stop after finitely many impacts (an image exactly 0), which is neither CC
-/// nor PCC. `EffectivelyInvariant`, a property of the cone and the maps, holds for 0 <= gamma <= 1.
-fn claim_range<F: Field>(shape: &Shape<F>, claim: Claim) -> Result<(), Rejection> {
-    let g = shape.gamma();
-    if claim > Claim::EffectivelyInvariant && (g.is_zero() || *g == F::one()) {
-        let msg = format!(
-            "gamma = {} is outside 0 < gamma < 1, which the claim {} needs (the paper's Theorem on effectively invariant cones assumes it); only EffectivelyInvariant holds for gamma = 0 or 1",
-            show::number(g),
-            claim.name()
-        );
-        return Err(Rejection::at_field(Code::ParameterOutOfRange, "body.gamma", msg));
-    }
-    Ok(())
 }
 
 /// The generators as integer vectors, positive multiples of the given ones, with the largest

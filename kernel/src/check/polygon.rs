@@ -2,13 +2,15 @@
 //! (docs/certificate-format.md §5).
 
 use super::in_time;
+use super::region::{Corner, Region};
 use super::show;
 use super::{Accepted, Generators};
+use crate::bivariate::{NotNegative, negative_on};
 use crate::certificate::{Boundary, Claim, Code, Locus, Rejection};
 use crate::exact::{Field, ParseLimits, Ring, scale_to_ints, to_canonical};
 use crate::geometry::{ConvexPolygon, clip, hull};
 use crate::model::linalg::{Mat3, Vec3, is_zero, mat_vec};
-use crate::model::{PccExclusion, Polygon, pcc_quadratic};
+use crate::model::{PccExclusion, Polygon, Shape, pcc_polynomials, pcc_quadratic};
 
 /// A positive integer multiple of a rational matrix.
 fn int_mat<F: Field>(m: &Mat3<F>) -> Mat3<F::Int> {
@@ -99,24 +101,42 @@ fn cone<F: Field>(gens: &Generators<'_, F::Int>) -> Result<Cone<F::Int>, Rejecti
     Ok(Cone { hull: hull_idx, polygon })
 }
 
-/// R2: S_j(K ∩ C_j) ⊆ K for j = 1..n-1, on the vertices of each clipped piece. Returns the
-/// number of vertices of each piece.
+/// The pieces K ∩ C_j, j = 1..n-1, as the vertices of each clipped polygon. C_j depends only on
+/// n, not on kappa or gamma (docs/model.md §4): the pieces are computed from the first corner,
+/// and every other corner must give the same covectors (else the model contradicts itself).
+fn pieces<F: Field>(bodies: &[&Polygon<F>], k: &Cone<F::Int>) -> Result<Vec<Vec<Vec3<F::Int>>>, Rejection> {
+    let first = bodies[0];
+    let mut out = Vec::with_capacity(first.n() - 1);
+    for j in 1..first.n() as i64 {
+        let covectors = first.next_contact_cone(j);
+        if bodies.iter().any(|b| b.next_contact_cone(j) != covectors) {
+            let msg = format!("model error: C_{j} differs between the corners of the box");
+            return Err(Rejection::new(Code::Internal, Locus::Nowhere, msg));
+        }
+        let mut piece = k.polygon.vertices.clone();
+        for l in &covectors {
+            piece = clip(&piece, &int_vec(l));
+        }
+        out.push(piece);
+    }
+    Ok(out)
+}
+
+/// R2 at one corner: S_j(K ∩ C_j) ⊆ K for j = 1..n-1, on the vertices of each piece.
 fn invariance<F: Field>(
     body: &Polygon<F>,
+    corner: &Corner<F>,
+    pieces: &[Vec<Vec3<F::Int>>],
     k: &Cone<F::Int>,
     limits: ParseLimits,
-) -> Result<Vec<usize>, Rejection> {
-    let mut pieces = Vec::with_capacity(body.n() - 1);
-    for j in 1..body.n() {
+) -> Result<(), Rejection> {
+    for (j, piece) in (1..).zip(pieces) {
         let s = int_mat(&body.step(j as i64));
-        let mut piece = k.polygon.vertices.clone();
-        for l in body.next_contact_cone(j as i64) {
-            piece = clip(&piece, &int_vec(&l));
-        }
         for (i, p) in piece.iter().enumerate() {
             in_time(limits, "checking effective invariance (rule R2)")?;
-            let what = || format!("vertex {i} of K∩C_{j}, at {}, maps under S_{j}", shown::<F>(p));
-            let locus = |outside| Locus::Piece { piece: j, vertex: i, outside };
+            let what =
+                || corner.say(format!("vertex {i} of K∩C_{j}, at {}, maps under S_{j}", shown::<F>(p)));
+            let locus = |outside| Locus::Piece { piece: j, vertex: i, outside, corner: corner.index };
             let t = Target {
                 locus: &locus,
                 what: &what,
@@ -125,20 +145,20 @@ fn invariance<F: Field>(
             };
             check_image::<F>(k, &mat_vec(&s, p), &t)?;
         }
-        pieces.push(piece.len());
     }
-    Ok(pieces)
+    Ok(())
 }
 
-/// R3: I_0(D) ⊆ K, on the generators -m_{k,k+1} of D.
-fn all_down<F: Field>(body: &Polygon<F>, k: &Cone<F::Int>) -> Result<(), Rejection> {
+/// R3 at one corner: I_0(D) ⊆ K, on the generators -m_{k,k+1} of D.
+fn all_down<F: Field>(body: &Polygon<F>, corner: &Corner<F>, k: &Cone<F::Int>) -> Result<(), Rejection> {
     let i0 = int_mat(&body.impact(0));
     for (m, g) in body.all_down_generators().iter().enumerate() {
         let g = int_vec(g);
         let what = || {
-            format!("I_0 maps the all-down generator -m_({m},{}) = {}", (m + 1) % body.n(), shown::<F>(&g))
+            let m1 = (m + 1) % body.n();
+            corner.say(format!("I_0 maps the all-down generator -m_({m},{m1}) = {}", shown::<F>(&g)))
         };
-        let locus = |outside| Locus::AllDown { generator: m, outside };
+        let locus = |outside| Locus::AllDown { generator: m, outside, corner: corner.index };
         let t =
             Target { locus: &locus, what: &what, outside: Code::InitialOutside, above: Code::InitialOutside };
         check_image::<F>(k, &mat_vec(&i0, &g), &t)?;
@@ -170,33 +190,109 @@ fn pcc<F: Field>(body: &Polygon<F>) -> Result<[String; 3], Rejection> {
     Err(Rejection::new(Code::PccNotExcluded, Locus::Pcc, msg))
 }
 
-/// Rules R1 (dimension) to R4 for a regular polygon.
+/// R4 on a box: the discriminant and q - 1 of the PCC quadratic, as polynomials in (kappa,
+/// gamma) times (1 + kappa)^6, are negative on the whole box (Bernstein bounds, subdivided up to
+/// [`MAX_PCC_BOXES`] boxes). Returns the number of boxes examined.
+fn pcc_on_box<F: Field>(body: &Polygon<F>, region: &Region<F>) -> Result<usize, Rejection> {
+    let polys = pcc_polynomials(body).map_err(|_| {
+        Rejection::new(
+            Code::Internal,
+            Locus::Nowhere,
+            "model error: t = 1 is not a root of det(tI - S_(n-1) S_1)",
+        )
+    })?;
+    let mut boxes = 0;
+    for (poly, what) in [(&polys.discriminant, "the discriminant p^2 - 4q"), (&polys.modulus, "q - 1")] {
+        boxes += negative_on(poly, &region.rect, MAX_PCC_BOXES).map_err(|e| pcc_box_rejection(e, what))?;
+    }
+    Ok(boxes)
+}
+
+/// Sub-boxes the Bernstein subdivision of rule R4 may examine, per polynomial.
+pub const MAX_PCC_BOXES: usize = 20_000;
+
+fn pcc_box_rejection<F: Field>(e: NotNegative<F>, what: &str) -> Rejection {
+    let text = |x: &F| to_canonical(x);
+    let (kappa, gamma, msg) = match e {
+        NotNegative::At(k, g) => {
+            let msg = format!(
+                "PCC is not excluded on the box: at kappa = {}, gamma = {}, {what} of the PCC quadratic is >= 0",
+                show::number(&k),
+                show::number(&g)
+            );
+            ([text(&k), text(&k)], [text(&g), text(&g)], msg)
+        }
+        NotNegative::Undecided(r) => {
+            let msg = format!(
+                "PCC exclusion not shown on the box: {what} of the PCC quadratic is not proved negative on kappa in [{}, {}], gamma in [{}, {}] within {MAX_PCC_BOXES} sub-boxes",
+                show::number(&r.kappa[0]),
+                show::number(&r.kappa[1]),
+                show::number(&r.gamma[0]),
+                show::number(&r.gamma[1])
+            );
+            ([text(&r.kappa[0]), text(&r.kappa[1])], [text(&r.gamma[0]), text(&r.gamma[1])], msg)
+        }
+    };
+    let locus = Locus::PccRegion { kappa: Box::new(kappa), gamma: Box::new(gamma) };
+    Rejection::new(Code::PccNotExcluded, locus, msg)
+}
+
+/// The polygon model at each corner.
+fn polygons<F: Field>(region: &Region<F>) -> Vec<&Polygon<F>> {
+    region
+        .corners
+        .iter()
+        .map(|c| match &c.shape {
+            Shape::Polygon(p) => p,
+            Shape::Rod(_) => unreachable!("every corner has the same n"),
+        })
+        .collect()
+}
+
+/// Rules R1 (dimension) to R4 for a regular polygon, at a point or on a box.
 pub(super) fn check<F: Field>(
-    body: &Polygon<F>,
+    region: &Region<F>,
     gens: &Generators<'_, F::Int>,
     claim: Claim,
     limits: ParseLimits,
 ) -> Result<Accepted, Rejection> {
+    let bodies = polygons(region);
     let k = cone::<F>(gens)?;
     in_time(limits, "building K")?;
-    let pieces = invariance(body, &k, limits)?;
-    if claim >= Claim::CcOrPccFromAllDown {
-        all_down(body, &k)?;
+    let pieces = pieces(&bodies, &k)?;
+    for (body, corner) in bodies.iter().zip(&region.corners) {
+        invariance(body, corner, &pieces, &k, limits)?;
     }
-    let pcc = if claim >= Claim::CompleteChatterFromAllDown { Some(pcc(body)?) } else { None };
+    if claim >= Claim::CcOrPccFromAllDown {
+        for (body, corner) in bodies.iter().zip(&region.corners) {
+            all_down(body, corner, &k)?;
+        }
+    }
+    let (mut pcc_text, mut pcc_boxes) = (None, None);
+    if claim >= Claim::CompleteChatterFromAllDown {
+        if region.is_box {
+            pcc_boxes = Some(pcc_on_box(bodies[0], region)?);
+        } else {
+            pcc_text = Some(pcc(bodies[0])?);
+        }
+    }
     let down = [F::Int::from_i64(-1), F::Int::from_i64(-1), F::Int::from_i64(-1)];
-    let translation = mat_vec(&int_mat(&body.impact(0)), &down);
-    let contains_translation = translation[2].is_negative() && k.polygon.contains(&translation);
+    let contains_translation = bodies.iter().all(|b| {
+        let t = mat_vec(&int_mat(&b.impact(0)), &down);
+        t[2].is_negative() && k.polygon.contains(&t)
+    });
     let mut extreme = vec![false; gens.vectors.len()];
     k.hull.iter().for_each(|&i| extreme[i] = true);
     Ok(Accepted {
         claim,
-        n: body.n() as u64,
+        n: bodies[0].n() as u64,
         generators: gens.vectors.len(),
         redundant: (0..gens.vectors.len()).filter(|&i| !extreme[i]).collect(),
-        pieces,
+        pieces: pieces.iter().map(Vec::len).collect(),
         max_denominator_bits: gens.max_denominator_bits,
-        pcc,
+        pcc: pcc_text,
         contains_translation,
+        region: None,
+        pcc_boxes,
     })
 }

@@ -3,11 +3,12 @@
 //! between the extreme generators. C_1 and D come from the rod's model; R4 holds trivially (with
 //! two contacts PCC is CC).
 
+use super::region::{Corner, Region};
 use super::show;
 use super::{Accepted, Generators};
 use crate::certificate::{Boundary, Claim, Code, Locus, Rejection};
 use crate::exact::{Field, ParseLimits, Ring, scale_to_ints};
-use crate::model::{Mat2, Rod, Vec2, mat2_vec};
+use crate::model::{Mat2, Rod, Shape, Vec2, mat2_vec};
 use std::cmp::Ordering;
 
 /// w = -(u0 + u1) = -2v, positive below the floor's plane.
@@ -123,40 +124,69 @@ fn check_image<F: Field>(
     Err(Rejection::new(codes.0, locus(Some(Boundary::End { generator })), msg))
 }
 
-/// Rules R1 to R3 for the rod (R4 holds trivially).
-pub(super) fn check<F: Field>(
+/// The rod's model at each corner.
+fn rods<F: Field>(region: &Region<F>) -> Vec<&Rod<F>> {
+    region
+        .corners
+        .iter()
+        .map(|c| match &c.shape {
+            Shape::Rod(r) => r,
+            Shape::Polygon(_) => unreachable!("every corner has n = 2"),
+        })
+        .collect()
+}
+
+/// R2 and R3 for the rod at one corner, on the ends of the piece K ∩ C_1 and the generators of D.
+fn at_corner<F: Field>(
     rod: &Rod<F>,
+    corner: &Corner<F>,
+    k: &Interval<F::Int>,
+    piece: &[Vec2<F::Int>],
+    claim: Claim,
+) -> Result<(), Rejection> {
+    let step = int_mat(&rod.step());
+    for (i, p) in piece.iter().enumerate() {
+        let what = || corner.say(format!("vertex {i} of K∩C_1, at {}, maps under S_1", shown::<F>(p)));
+        let locus = |outside| Locus::Piece { piece: 1, vertex: i, outside, corner: corner.index };
+        check_image::<F>(k, &mat2_vec(&step, p), &what, &locus, (Code::ImageOutside, Code::ImageNotBelow))?;
+    }
+    if claim >= Claim::CcOrPccFromAllDown {
+        let i0 = int_mat(&rod.impact(0));
+        for (m, g) in rod.all_down_generators().iter().enumerate() {
+            let g = int_vec(g);
+            let what = || corner.say(format!("I_0 maps the all-down generator {m} = {}", shown::<F>(&g)));
+            let locus = |outside| Locus::AllDown { generator: m, outside, corner: corner.index };
+            let codes = (Code::InitialOutside, Code::InitialOutside);
+            check_image::<F>(k, &mat2_vec(&i0, &g), &what, &locus, codes)?;
+        }
+    }
+    Ok(())
+}
+
+/// Rules R1 to R3 for the rod (R4 holds trivially), at a point or on a box. C_1 does not depend
+/// on kappa or gamma, so the piece K ∩ C_1 is computed once.
+pub(super) fn check<F: Field>(
+    region: &Region<F>,
     gens: &Generators<'_, F::Int>,
     claim: Claim,
     limits: ParseLimits,
 ) -> Result<Accepted, Rejection> {
+    let rods = rods(region);
     let k = interval::<F>(gens)?;
     super::in_time(limits, "building K")?;
-    // R2: S_1(K ∩ C_1) ⊆ K on the ends of the piece K ∩ C_1.
-    let piece = rod.next_contact_cone().iter().fold(k.ends.to_vec(), |p, l| clip(&p, &int_vec(l)));
-    let step = int_mat(&rod.step());
-    for (i, p) in piece.iter().enumerate() {
-        let what = || format!("vertex {i} of K∩C_1, at {}, maps under S_1", shown::<F>(p));
-        let locus = |outside| Locus::Piece { piece: 1, vertex: i, outside };
-        check_image::<F>(&k, &mat2_vec(&step, p), &what, &locus, (Code::ImageOutside, Code::ImageNotBelow))?;
+    let cone = rods[0].next_contact_cone();
+    if rods.iter().any(|r| r.next_contact_cone() != cone) {
+        let msg = "model error: C_1 differs between the corners of the box";
+        return Err(Rejection::new(Code::Internal, Locus::Nowhere, msg));
     }
-    // R3: I_0(D) ⊆ K on the generators of D.
-    let i0 = int_mat(&rod.impact(0));
-    if claim >= Claim::CcOrPccFromAllDown {
-        for (m, g) in rod.all_down_generators().iter().enumerate() {
-            let g = int_vec(g);
-            let what = || format!("I_0 maps the all-down generator {m} = {}", shown::<F>(&g));
-            let locus = |outside| Locus::AllDown { generator: m, outside };
-            check_image::<F>(
-                &k,
-                &mat2_vec(&i0, &g),
-                &what,
-                &locus,
-                (Code::InitialOutside, Code::InitialOutside),
-            )?;
-        }
+    let piece = cone.iter().fold(k.ends.to_vec(), |p, l| clip(&p, &int_vec(l)));
+    for (rod, corner) in rods.iter().zip(&region.corners) {
+        at_corner(rod, corner, &k, &piece, claim)?;
     }
-    let t = mat2_vec(&i0, &[F::Int::from_i64(-1), F::Int::from_i64(-1)]);
+    let contains_translation = rods.iter().all(|rod| {
+        let t = mat2_vec(&int_mat(&rod.impact(0)), &[F::Int::from_i64(-1), F::Int::from_i64(-1)]);
+        w(&t).is_positive() && k.contains(&t)
+    });
     Ok(Accepted {
         claim,
         n: 2,
@@ -165,6 +195,8 @@ pub(super) fn check<F: Field>(
         pieces: vec![piece.len()],
         max_denominator_bits: gens.max_denominator_bits,
         pcc: None,
-        contains_translation: w(&t).is_positive() && k.contains(&t),
+        contains_translation,
+        region: None,
+        pcc_boxes: None,
     })
 }

@@ -7,7 +7,7 @@ mod pcc;
 mod polygon;
 mod rod;
 
-pub use pcc::{PccExclusion, PccQuadratic, pcc_quadratic};
+pub use pcc::{PccExclusion, PccPolynomials, PccQuadratic, pcc_polynomials, pcc_quadratic};
 pub use polygon::{BodyError, Polygon, rational_cos};
 pub use rod::{Mat2, Rod, Vec2, mat2_mul, mat2_vec};
 

@@ -242,6 +242,6 @@ pub fn read(text: &str) -> Result<ProofFile, Rejection> {
     check_strict(text)?;
     let lenient = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
     let header: Header = lenient.from_str(text).map_err(ron_error)?;
-    check_header(header.format.as_deref(), header.version, FORMAT, VERSION)?;
+    check_header(header.format.as_deref(), header.version, FORMAT, VERSION..=VERSION)?;
     ron::Options::default().from_str(text).map_err(ron_error)
 }

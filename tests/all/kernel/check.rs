@@ -434,12 +434,14 @@ struct Outside {
 /// smallest vertex), and some vertex of K ∩ C_j maps outside it and inside every earlier edge.
 fn verify_outside(cert: &Certificate, r: &Rejection) -> Outside {
     assert_eq!(r.code, Code::ImageOutside, "{r}");
-    let Locus::Piece { piece, vertex, outside: Some(Boundary::Edge { index, from, to }) } = r.locus else {
+    let Locus::Piece { piece, vertex, outside: Some(Boundary::Edge { index, from, to }), corner: None } =
+        r.locus
+    else {
         panic!("an image outside K is located at a piece's vertex and an edge: {:?}", r.locus);
     };
     let o = Outside { vertex, j: piece as i64, edge: index, from, to };
     let Body::RegularPolygon { n, kappa, gamma } = &cert.body;
-    let b = body(*n, kappa, gamma);
+    let b = body(*n, kappa.as_point().unwrap(), gamma.as_point().unwrap());
     assert!((1..*n as i64).contains(&o.j));
     let pts = points(cert);
     let ccw = brute::evaluate(cert).k_ccw;

@@ -1,5 +1,6 @@
 //! Tests of `chatter::kernel`.
 
+mod boxes;
 mod brute;
 mod check;
 mod cones;

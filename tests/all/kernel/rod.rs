@@ -3,7 +3,7 @@
 use crate::common::q;
 use chatter::certify::{ClaimChoice, Request, certify};
 use chatter::exact::{ParseLimits, Q};
-use chatter_kernel::certificate::{Body, Certificate, Claim, Code, Coordinates, FORMAT, Generator, VERSION};
+use chatter_kernel::certificate::{Body, Certificate, Claim, Code, Coordinates, FORMAT, Generator};
 use chatter_kernel::check::check;
 use chatter_kernel::model::{Rod, mat2_vec};
 use num_rational::BigRational;
@@ -11,7 +11,7 @@ use num_rational::BigRational;
 fn rod_cert(kappa: &str, gamma: &str, claim: Claim, gens: &[(&str, &str)]) -> Certificate {
     Certificate {
         format: FORMAT.into(),
-        version: VERSION,
+        version: 1,
         body: Body::RegularPolygon { n: 2, kappa: kappa.into(), gamma: gamma.into() },
         coordinates: Coordinates::ContactVelocities,
         claim,
@@ -71,7 +71,8 @@ fn rod_rejections_are_located() {
         chatter_kernel::certificate::Locus::Piece {
             piece: 1,
             vertex: 0,
-            outside: Some(chatter_kernel::certificate::Boundary::End { generator: 1 })
+            outside: Some(chatter_kernel::certificate::Boundary::End { generator: 1 }),
+            corner: None,
         },
         "{r}"
     );

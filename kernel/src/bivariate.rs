@@ -1,0 +1,201 @@
+//! Polynomials in (kappa, gamma) and their sign on a box of parameters, by Bernstein expansion
+//! with subdivision (docs/kernel-soundness.md §2, "Boxes"). A polynomial is dense: `c[i][j]` is
+//! the coefficient of kappa^i gamma^j.
+
+use crate::exact::OrderedField;
+
+/// A polynomial in (kappa, gamma) with coefficients in `F`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Bi<F> {
+    /// `c[i][j]`: the coefficient of kappa^i gamma^j; every row has the same length.
+    c: Vec<Vec<F>>,
+}
+
+/// A closed box [k0, k1] x [g0, g1] of parameters (k0 <= k1, g0 <= g1).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Rect<F> {
+    /// kappa's interval.
+    pub kappa: [F; 2],
+    /// gamma's interval.
+    pub gamma: [F; 2],
+}
+
+impl<F: OrderedField> Bi<F> {
+    /// The constant `x`.
+    pub fn constant(x: F) -> Self {
+        Bi { c: vec![vec![x]] }
+    }
+
+    /// `a + b kappa + c gamma + d kappa gamma`.
+    pub fn bilinear(a: F, b: F, c: F, d: F) -> Self {
+        Bi { c: vec![vec![a, c], vec![b, d]] }
+    }
+
+    fn degrees(&self) -> (usize, usize) {
+        (self.c.len() - 1, self.c[0].len() - 1)
+    }
+
+    fn zero_of(dk: usize, dg: usize) -> Self {
+        Bi { c: vec![vec![F::zero(); dg + 1]; dk + 1] }
+    }
+
+    /// `self + o`.
+    pub fn plus(&self, o: &Self) -> Self {
+        let (a, b) = (self.degrees(), o.degrees());
+        let mut r = Self::zero_of(a.0.max(b.0), a.1.max(b.1));
+        for p in [self, o] {
+            for (i, row) in p.c.iter().enumerate() {
+                for (j, x) in row.iter().enumerate() {
+                    r.c[i][j] = r.c[i][j].plus(x);
+                }
+            }
+        }
+        r
+    }
+
+    /// `-self`.
+    pub fn negated(&self) -> Self {
+        Bi { c: self.c.iter().map(|row| row.iter().map(F::negated).collect()).collect() }
+    }
+
+    /// `self - o`.
+    pub fn minus(&self, o: &Self) -> Self {
+        self.plus(&o.negated())
+    }
+
+    /// `self o`.
+    pub fn times(&self, o: &Self) -> Self {
+        let (a, b) = (self.degrees(), o.degrees());
+        let mut r = Self::zero_of(a.0 + b.0, a.1 + b.1);
+        for (i, row) in self.c.iter().enumerate() {
+            for (j, x) in row.iter().enumerate().filter(|(_, x)| !x.is_zero()) {
+                for (k, row2) in o.c.iter().enumerate() {
+                    for (l, y) in row2.iter().enumerate() {
+                        r.c[i + k][j + l] = r.c[i + k][j + l].plus(&x.times(y));
+                    }
+                }
+            }
+        }
+        r
+    }
+
+    /// Whether every coefficient is zero.
+    pub fn is_zero(&self) -> bool {
+        self.c.iter().flatten().all(F::is_zero)
+    }
+
+    /// The value at (kappa, gamma).
+    pub fn at(&self, kappa: &F, gamma: &F) -> F {
+        let row = |r: &Vec<F>| r.iter().rev().fold(F::zero(), |acc, x| acc.times(gamma).plus(x));
+        self.c.iter().rev().fold(F::zero(), |acc, r| acc.times(kappa).plus(&row(r)))
+    }
+
+    /// The Bernstein coefficients on `rect`: the polynomial in (s, t) in [0, 1]^2 with
+    /// kappa = k0 + (k1 - k0) s, gamma = g0 + (g1 - g0) t, in the tensor Bernstein basis of its
+    /// degrees. The polynomial's values on the box lie between their least and greatest.
+    pub fn bernstein(&self, rect: &Rect<F>) -> Vec<Vec<F>> {
+        let (dk, dg) = self.degrees();
+        let lin = |r: &[F; 2]| [r[0].clone(), r[1].minus(&r[0])];
+        let (ks, gs) = (lin(&rect.kappa), lin(&rect.gamma));
+        // Substitute: kappa = ks0 + ks1 s, gamma = gs0 + gs1 t, term by term.
+        let mut sub = Self::zero_of(dk, dg);
+        for (i, row) in self.c.iter().enumerate() {
+            for (j, x) in row.iter().enumerate().filter(|(_, x)| !x.is_zero()) {
+                let pk = powers_of_affine(&ks, i);
+                let pg = powers_of_affine(&gs, j);
+                for (a, u) in pk.iter().enumerate() {
+                    for (b, w) in pg.iter().enumerate() {
+                        sub.c[a][b] = sub.c[a][b].plus(&x.times(u).times(w));
+                    }
+                }
+            }
+        }
+        // Power basis to Bernstein basis, in each variable: b_i = sum_{k <= i} C(i,k)/C(d,k) a_k.
+        let to_b = |a: &[F], d: usize| -> Vec<F> {
+            (0..=d)
+                .map(|i| {
+                    (0..=i).fold(F::zero(), |acc, k| {
+                        let w = F::from_ratio(binomial(i, k), binomial(d, k));
+                        acc.plus(&w.times(&a[k]))
+                    })
+                })
+                .collect()
+        };
+        let rows: Vec<Vec<F>> = sub.c.iter().map(|r| to_b(r, dg)).collect();
+        let cols: Vec<Vec<F>> =
+            (0..=dg).map(|j| to_b(&rows.iter().map(|r| r[j].clone()).collect::<Vec<_>>(), dk)).collect();
+        (0..=dk).map(|i| (0..=dg).map(|j| cols[j][i].clone()).collect()).collect()
+    }
+}
+
+/// The coefficients of (a0 + a1 s)^e in s, lowest first.
+fn powers_of_affine<F: OrderedField>(a: &[F; 2], e: usize) -> Vec<F> {
+    let mut p = vec![F::one()];
+    for _ in 0..e {
+        let mut q = vec![F::zero(); p.len() + 1];
+        for (k, x) in p.iter().enumerate() {
+            q[k] = q[k].plus(&x.times(&a[0]));
+            q[k + 1] = q[k + 1].plus(&x.times(&a[1]));
+        }
+        p = q;
+    }
+    p
+}
+
+/// C(n, k) for the small degrees used here.
+fn binomial(n: usize, k: usize) -> i64 {
+    (0..k).fold(1i64, |acc, i| acc * (n - i) as i64 / (i + 1) as i64)
+}
+
+impl<F: OrderedField> Rect<F> {
+    /// The four quarters, in the order (low kappa, low gamma), (high, low), (low, high), (high, high).
+    pub fn quarters(&self) -> [Rect<F>; 4] {
+        let mid = |r: &[F; 2]| r[0].plus(&r[1]).over(&F::from_i64(2)).expect("2 != 0");
+        let (km, gm) = (mid(&self.kappa), mid(&self.gamma));
+        let k = [[self.kappa[0].clone(), km.clone()], [km, self.kappa[1].clone()]];
+        let g = [[self.gamma[0].clone(), gm.clone()], [gm, self.gamma[1].clone()]];
+        [(0, 0), (1, 0), (0, 1), (1, 1)].map(|(a, b)| Rect { kappa: k[a].clone(), gamma: g[b].clone() })
+    }
+}
+
+/// Why a polynomial was not shown negative on a box.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum NotNegative<F> {
+    /// It is >= 0 at this point (kappa, gamma): a corner of a sub-box.
+    At(F, F),
+    /// The subdivision limit was reached; this sub-box is still undecided.
+    Undecided(Rect<F>),
+}
+
+/// Proves `p < 0` on `rect`: every Bernstein coefficient negative on every box of a subdivision
+/// into quarters (breadth first, at most `max_boxes` boxes examined). Returns the number of boxes
+/// examined.
+pub fn negative_on<F: OrderedField>(
+    p: &Bi<F>,
+    rect: &Rect<F>,
+    max_boxes: usize,
+) -> Result<usize, NotNegative<F>> {
+    let mut queue = std::collections::VecDeque::from([rect.clone()]);
+    let mut examined = 0;
+    while let Some(r) = queue.pop_front() {
+        examined += 1;
+        let b = p.bernstein(&r);
+        if b.iter().flatten().all(F::is_negative) {
+            continue;
+        }
+        // The corner coefficients are the values at the corners.
+        let (dk, dg) = p.degrees();
+        for (i, j) in [(0, 0), (dk, 0), (0, dg), (dk, dg)] {
+            if !b[i][j].is_negative() {
+                let k = r.kappa[usize::from(i > 0)].clone();
+                let g = r.gamma[usize::from(j > 0)].clone();
+                return Err(NotNegative::At(k, g));
+            }
+        }
+        if examined + queue.len() + 4 > max_boxes {
+            return Err(NotNegative::Undecided(r));
+        }
+        queue.extend(r.quarters());
+    }
+    Ok(examined)
+}
