@@ -201,3 +201,23 @@ fn issue8_long_numbers_are_abbreviated_in_rejections() {
     assert!(r.message.len() < 300, "{} characters: {}", r.message.len(), r.message);
     assert!(r.message.contains("characters)"), "the long numbers are marked as abbreviated: {}", r.message);
 }
+
+#[test]
+fn issue11_a_rod_box_checks_r2_at_every_corner_before_r3() {
+    // Found by the structure-aware smoke test: at the corner kappa = 1/3 only R3 fails, at
+    // kappa = 13/30 R2 fails; the documented order (R2 at every corner, then R3) reports R2.
+    let text = std::fs::read_to_string(
+        crate::common::root().join("certificates/valid/n2-kappa1_3-gamma7_100-effectively-invariant.ron"),
+    )
+    .unwrap();
+    let text = text
+        .replace("version: 1", "version: 2")
+        .replace("kappa: \"1/3\"", "kappa: [\"1/3\", \"13/30\"]")
+        .replace("claim: EffectivelyInvariant", "claim: CcOrPccFromAllDown");
+    let cert = chatter_kernel::certificate::read(&text).unwrap();
+    let oracle = chatter::oracle::evaluate(&cert);
+    assert!(oracle.failing.contains(&Code::InitialOutside) && oracle.failing.contains(&Code::ImageOutside));
+    let Verdict::Rejected(r) = verify(&cert, Default::default()) else { panic!() };
+    assert_eq!(r.code, Code::ImageOutside, "{r}");
+    assert!(matches!(r.locus, Locus::Piece { corner: Some(1), .. }), "{:?}", r.locus);
+}

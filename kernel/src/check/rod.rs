@@ -136,13 +136,12 @@ fn rods<F: Field>(region: &Region<F>) -> Vec<&Rod<F>> {
         .collect()
 }
 
-/// R2 and R3 for the rod at one corner, on the ends of the piece K ∩ C_1 and the generators of D.
-fn at_corner<F: Field>(
+/// R2 for the rod at one corner, on the ends of the piece K ∩ C_1.
+fn invariance<F: Field>(
     rod: &Rod<F>,
     corner: &Corner<F>,
     k: &Interval<F::Int>,
     piece: &[Vec2<F::Int>],
-    claim: Claim,
 ) -> Result<(), Rejection> {
     let step = int_mat(&rod.step());
     for (i, p) in piece.iter().enumerate() {
@@ -150,15 +149,18 @@ fn at_corner<F: Field>(
         let locus = |outside| Locus::Piece { piece: 1, vertex: i, outside, corner: corner.index };
         check_image::<F>(k, &mat2_vec(&step, p), &what, &locus, (Code::ImageOutside, Code::ImageNotBelow))?;
     }
-    if claim >= Claim::CcOrPccFromAllDown {
-        let i0 = int_mat(&rod.impact(0));
-        for (m, g) in rod.all_down_generators().iter().enumerate() {
-            let g = int_vec(g);
-            let what = || corner.say(format!("I_0 maps the all-down generator {m} = {}", shown::<F>(&g)));
-            let locus = |outside| Locus::AllDown { generator: m, outside, corner: corner.index };
-            let codes = (Code::InitialOutside, Code::InitialOutside);
-            check_image::<F>(k, &mat2_vec(&i0, &g), &what, &locus, codes)?;
-        }
+    Ok(())
+}
+
+/// R3 for the rod at one corner, on the generators of D.
+fn all_down<F: Field>(rod: &Rod<F>, corner: &Corner<F>, k: &Interval<F::Int>) -> Result<(), Rejection> {
+    let i0 = int_mat(&rod.impact(0));
+    for (m, g) in rod.all_down_generators().iter().enumerate() {
+        let g = int_vec(g);
+        let what = || corner.say(format!("I_0 maps the all-down generator {m} = {}", shown::<F>(&g)));
+        let locus = |outside| Locus::AllDown { generator: m, outside, corner: corner.index };
+        let codes = (Code::InitialOutside, Code::InitialOutside);
+        check_image::<F>(k, &mat2_vec(&i0, &g), &what, &locus, codes)?;
     }
     Ok(())
 }
@@ -181,7 +183,12 @@ pub(super) fn check<F: Field>(
     }
     let piece = cone.iter().fold(k.ends.to_vec(), |p, l| clip(&p, &int_vec(l)));
     for (rod, corner) in rods.iter().zip(&region.corners) {
-        at_corner(rod, corner, &k, &piece, claim)?;
+        invariance(rod, corner, &k, &piece)?;
+    }
+    if claim >= Claim::CcOrPccFromAllDown {
+        for (rod, corner) in rods.iter().zip(&region.corners) {
+            all_down(rod, corner, &k)?;
+        }
     }
     let contains_translation = rods.iter().all(|rod| {
         let t = mat2_vec(&int_mat(&rod.impact(0)), &[F::Int::from_i64(-1), F::Int::from_i64(-1)]);
