@@ -60,4 +60,14 @@ done <<'BOXES'
 6 1/40:1/30 1/100:1/50 hexagon
 2 1/4:1/3 1/100:1/20 rod
 BOXES
+# Refutations: exact derivations that no effectively invariant cone contains the seeds.
+while read -r n kappa gamma claim name; do
+  "$bin" refute --n "$n" --kappa "$kappa" --gamma "$gamma" --claim "$claim" -o "$out/$name" >/dev/null
+  written=$((written + 1))
+done <<'REFUTATIONS'
+4 1/6 1/20 effectively-invariant refutation-n4-kappa1_6-gamma1_20.ron
+3 1/8 1/5 cc-or-pcc-from-all-down refutation-n3-kappa1_8-gamma1_5-all-down.ron
+6 1/20 1/10 effectively-invariant refutation-n6-kappa1_20-gamma1_10.ron
+2 1/3 1/10 effectively-invariant refutation-n2-kappa1_3-gamma1_10.ron
+REFUTATIONS
 echo "$written certificates in $out"

@@ -17,6 +17,7 @@ pub mod exactify;
 pub mod finder;
 pub mod model;
 pub mod oracle;
+pub mod refute;
 pub mod simulate;
 pub mod spectral;
 pub mod symbolic;

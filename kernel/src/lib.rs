@@ -26,4 +26,5 @@ pub mod exact;
 pub mod geometry;
 pub mod model;
 pub mod proof;
+pub mod refute;
 pub mod verify;

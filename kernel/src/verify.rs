@@ -10,6 +10,12 @@ use num_rational::BigRational;
 /// A kernel run on one backend: `check::<F>` for some backend `F`.
 pub type Checker = fn(&Certificate, ParseLimits) -> Result<Accepted, crate::certificate::Rejection>;
 
+/// The refutation checker on one backend: `refute::check::<F>` for some backend `F`.
+pub type RefutationChecker = fn(
+    &crate::refute::Refutation,
+    ParseLimits,
+) -> Result<crate::refute::Refuted, crate::certificate::Rejection>;
+
 /// A named backend.
 #[derive(Clone, Copy)]
 pub struct Backend {
@@ -17,12 +23,19 @@ pub struct Backend {
     pub name: &'static str,
     /// The kernel on it.
     pub check: Checker,
+    /// The refutation checker on it.
+    pub refute: RefutationChecker,
 }
 
 /// malachite, the main backend.
-pub const MALACHITE: Backend = Backend { name: "malachite", check: check::<Q> };
+pub const MALACHITE: Backend =
+    Backend { name: "malachite", check: check::<Q>, refute: crate::refute::check::<Q> };
 /// num-bigint/num-rational, the independent second backend.
-pub const NUM: Backend = Backend { name: "num-rational", check: check::<BigRational> };
+pub const NUM: Backend = Backend {
+    name: "num-rational",
+    check: check::<BigRational>,
+    refute: crate::refute::check::<BigRational>,
+};
 
 /// The kernel's verdict, possibly over two backends (on a certificate, `T` = [`Accepted`]; on a
 /// proof, `T` = [`crate::proof::Checked`]).
@@ -102,6 +115,27 @@ pub fn verify_proof_text(text: &str, limits: ParseLimits) -> Verdict<crate::proo
     }
 }
 
+/// Checks a refutation on the given backends.
+pub fn verify_refutation(
+    r: &crate::refute::Refutation,
+    limits: ParseLimits,
+    backends: &[Backend],
+) -> Verdict<crate::refute::Refuted> {
+    agree(backends.iter().map(|b| (b.name, (b.refute)(r, limits))))
+}
+
+/// Reads refutation text and checks it on the given backends.
+pub fn verify_refutation_text(
+    text: &str,
+    limits: ParseLimits,
+    backends: &[Backend],
+) -> Verdict<crate::refute::Refuted> {
+    match crate::refute::read(text) {
+        Ok(r) => verify_refutation(&r, limits, backends),
+        Err(r) => Verdict::Rejected(r),
+    }
+}
+
 /// The `format` field of a certificate or proof file, read leniently (any struct name, unknown
 /// fields ignored), to tell the two kinds apart; `None` if the text is not RON with a `format`.
 pub fn format_of(text: &str) -> Option<String> {
@@ -121,10 +155,16 @@ pub fn format_of(text: &str) -> Option<String> {
     struct ProofHeader {
         format: Option<String>,
     }
+    #[derive(serde::Deserialize)]
+    #[serde(rename = "Refutation")]
+    struct RefutationHeader {
+        format: Option<String>,
+    }
     lenient
         .from_str::<CertificateHeader>(text)
         .map(|h| h.format)
         .or_else(|_| lenient.from_str::<ProofHeader>(text).map(|h| h.format))
+        .or_else(|_| lenient.from_str::<RefutationHeader>(text).map(|h| h.format))
         .or_else(|_| lenient.from_str::<Header>(text).map(|h| h.format))
         .ok()
         .flatten()

@@ -9,6 +9,7 @@ mod certify_cmd;
 mod check_proof_cmd;
 mod classify_cmd;
 mod prove_cmd;
+mod refute_cmd;
 mod simulate_cmd;
 mod verify_cmd;
 
@@ -95,6 +96,8 @@ pub enum Command {
     CheckProof(check_proof_cmd::CheckProofArgs),
     /// Simulate drops event by event (f64 or exact) and classify them as CC, PCC or ICC.
     Simulate(simulate_cmd::SimulateArgs),
+    /// Derive exactly that no effectively invariant cone exists at a point; write a refutation.
+    Refute(refute_cmd::RefuteArgs),
 }
 
 /// The body as typed (raw layer), shared by certify, classify and simulate; each command
@@ -157,6 +160,7 @@ pub fn run(cli: Cli, env: &Env) -> Outcome {
         Command::Bodies(a) => bodies_cmd::run(a),
         Command::Prove(a) => prove_cmd::run(a),
         Command::CheckProof(a) => check_proof_cmd::run(a),
+        Command::Refute(a) => refute_cmd::run(a, env),
     }
 }
 

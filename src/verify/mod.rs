@@ -72,6 +72,22 @@ pub struct FileVerdict {
     /// For a box certificate with rule R4: the sub-boxes of the Bernstein subdivision.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pcc_boxes: Option<usize>,
+    /// For an accepted refutation: what it refutes and how.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub refutation: Option<RefutationReport>,
+}
+
+/// What an accepted refutation shows.
+#[derive(Clone, Debug, Serialize)]
+pub struct RefutationReport {
+    /// The claim refuted (every stronger claim is refuted too).
+    pub refutes: &'static str,
+    /// Derived points.
+    pub points: usize,
+    /// The last point (canonical text, long numbers abbreviated).
+    pub last: Vec<String>,
+    /// Whether its v is > 0 (else = 0).
+    pub v_positive: bool,
 }
 
 impl FileVerdict {
@@ -91,6 +107,7 @@ impl FileVerdict {
             gzip: None,
             region: None,
             pcc_boxes: None,
+            refutation: None,
         }
     }
 
@@ -107,6 +124,17 @@ impl FileVerdict {
                 self.path,
                 self.status.word(),
                 self.reason.as_deref().unwrap_or("")
+            );
+        }
+        if let Some(r) = &self.refutation {
+            let v = if r.v_positive { "v > 0" } else { "v = 0" };
+            return format!(
+                "{}: OK (refutes {} at n = {}: {} derived points, the last ({}) with {v})",
+                self.path,
+                r.refutes,
+                self.n.unwrap_or(0),
+                r.points,
+                r.last.join(", ")
             );
         }
         let red = self.redundant.as_ref().map_or(0, Vec::len);
@@ -164,6 +192,52 @@ pub fn verdict_of(path: &Path, verdict: Verdict) -> FileVerdict {
             v.reason = Some(format!("internal error, backends disagree: {s}"));
             v
         }
+    }
+}
+
+/// The verdict on refutation text, reported for `path`.
+pub fn refutation_verdict_of(path: &Path, verdict: Verdict<chatter_kernel::refute::Refuted>) -> FileVerdict {
+    match verdict {
+        Verdict::Accepted(a) => {
+            let mut v = FileVerdict::new(path, Status::Ok);
+            v.claim = Some(a.claim.name());
+            v.n = Some(a.n);
+            v.refutation = Some(RefutationReport {
+                refutes: a.claim.name(),
+                points: a.points,
+                last: a.last,
+                v_positive: a.v_positive,
+            });
+            v
+        }
+        Verdict::Rejected(r) => verdict_of(path, Verdict::Rejected(r)),
+        Verdict::Disagree(s) => verdict_of(path, Verdict::Disagree(s)),
+    }
+}
+
+/// Which kind of file the text is, by its `format` field.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    Certificate,
+    Refutation,
+    Proof,
+}
+
+/// Verifies certificate or refutation text on the backends; the kind of a rejected certificate
+/// is looked up only when its format is not a certificate's.
+fn verify_any(text: &str, limits: ParseLimits, backends: &[Backend]) -> (FileVerdict, Kind) {
+    let path = Path::new("");
+    let verdict = verify_text(text, limits, backends);
+    if !matches!(&verdict, Verdict::Rejected(r) if r.code == Code::WrongFormat || r.code == Code::Syntax) {
+        return (verdict_of(path, verdict), Kind::Certificate);
+    }
+    match format_of(text).as_deref() {
+        Some(chatter_kernel::refute::FORMAT) => {
+            let v = chatter_kernel::verify::verify_refutation_text(text, limits, backends);
+            (refutation_verdict_of(path, v), Kind::Refutation)
+        }
+        Some(chatter_kernel::proof::FORMAT) => (verdict_of(path, verdict), Kind::Proof),
+        _ => (verdict_of(path, verdict), Kind::Certificate),
     }
 }
 
@@ -242,19 +316,15 @@ pub fn verify_file(path: &Path, opts: &Options) -> FileVerdict {
         read::Input::Unreadable(why) => return unreadable(path, &why),
     };
     let (limits, backends) = (opts.limits, opts.backends.clone());
-    let run = move |deadline| {
-        let verdict = verify_text(&text, ParseLimits { deadline, ..limits }, &backends);
-        let rejected = matches!(verdict, Verdict::Rejected(_));
-        (verdict, rejected && format_of(&text).as_deref() == Some(chatter_kernel::proof::FORMAT))
-    };
-    let Some((verdict, is_proof)) = with_time_limit(opts.time_limit, run) else {
+    let run = move |deadline| verify_any(&text, ParseLimits { deadline, ..limits }, &backends);
+    let Some((mut v, kind)) = with_time_limit(opts.time_limit, run) else {
         return out_of_time(path, opts.time_limit.unwrap_or_default());
     };
-    let mut v = verdict_of(path, verdict);
+    v.path = path.display().to_string();
     if gzip {
         v.gzip = Some(true);
     }
-    if is_proof {
+    if kind == Kind::Proof && v.status == Status::Rejected {
         v.reason = v.reason.map(|r| format!("{r} (this file is a proof: use `chatter check-proof`)"));
     }
     v

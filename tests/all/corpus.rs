@@ -41,9 +41,58 @@ struct Expected {
     why: String,
 }
 
+/// Whether a corpus file is a refutation (by its name; the kernel checks the format field).
+fn is_refutation(p: &std::path::Path) -> bool {
+    p.file_name().is_some_and(|n| n.to_string_lossy().starts_with("refutation-"))
+}
+
+/// The kernel's rejection of certificate or refutation text on the backends, if any.
+fn rejection(
+    text: &str,
+    backends: &[chatter_kernel::verify::Backend],
+) -> Option<chatter_kernel::certificate::Rejection> {
+    let refutation =
+        chatter_kernel::verify::format_of(text).as_deref() == Some(chatter_kernel::refute::FORMAT);
+    if refutation {
+        match chatter_kernel::verify::verify_refutation_text(text, ParseLimits::default(), backends) {
+            Verdict::Rejected(r) => Some(r),
+            other => panic!("expected a rejection, got {other:?}"),
+        }
+    } else {
+        match verify_text(text, ParseLimits::default(), backends) {
+            Verdict::Rejected(r) => Some(r),
+            _ => None,
+        }
+    }
+}
+
+#[test]
+fn every_valid_refutation_verifies_on_both_backends() {
+    let files: Vec<PathBuf> =
+        ron_files("certificates/valid").into_iter().filter(|f| is_refutation(f)).collect();
+    assert!(files.len() >= 4, "refutations for n = 2, 3, 4, 6");
+    let mut ns = BTreeSet::new();
+    for f in &files {
+        let text = text_of(f);
+        let both =
+            chatter_kernel::verify::verify_refutation_text(&text, ParseLimits::default(), &[MALACHITE, NUM]);
+        let Verdict::Accepted(a) = &both else { panic!("{}: {both:?}", f.display()) };
+        ns.insert(a.n);
+        let r = chatter_kernel::refute::read(&text).unwrap();
+        assert_eq!(
+            chatter_kernel::refute::write(&r),
+            text,
+            "{}: the writer's layout is canonical",
+            f.display()
+        );
+    }
+    assert_eq!(ns, BTreeSet::from([2, 3, 4, 6]));
+}
+
 #[test]
 fn every_valid_certificate_verifies_on_both_backends() {
-    let files = ron_files("certificates/valid");
+    let files: Vec<PathBuf> =
+        ron_files("certificates/valid").into_iter().filter(|f| !is_refutation(f)).collect();
     assert!(files.len() >= 30, "the valid corpus has {} files", files.len());
     let (mut ns, mut claims) = (BTreeSet::new(), BTreeSet::new());
     for f in &files {
@@ -90,8 +139,8 @@ fn every_invalid_certificate_is_rejected_for_its_stated_reason() {
     for e in &manifest {
         let text = text_of(&root().join("certificates/invalid").join(&e.file));
         for b in [&[MALACHITE, NUM][..], &[MALACHITE], &[NUM]] {
-            match verify_text(&text, ParseLimits::default(), b) {
-                Verdict::Rejected(r) => {
+            match rejection(&text, b) {
+                Some(r) => {
                     assert_eq!(r.code.as_str(), e.code, "{}: {}", e.file, r.message);
                     assert_eq!(serde_json::to_value(&r.locus).unwrap(), e.locus, "{}: locus", e.file);
                     assert!(
@@ -102,7 +151,7 @@ fn every_invalid_certificate_is_rejected_for_its_stated_reason() {
                         e.message
                     );
                 }
-                other => panic!("{} ({}): expected a rejection, got {other:?}", e.file, b[0].name),
+                None => panic!("{} ({}): expected a rejection", e.file, b[0].name),
             }
         }
     }
@@ -110,7 +159,7 @@ fn every_invalid_certificate_is_rejected_for_its_stated_reason() {
 
 #[test]
 fn corpus_certificates_round_trip_through_the_writer() {
-    for f in ron_files("certificates/valid") {
+    for f in ron_files("certificates/valid").into_iter().filter(|f| !is_refutation(f)) {
         let text = std::fs::read_to_string(&f).unwrap();
         let cert = read(&text).unwrap();
         assert_eq!(
@@ -182,9 +231,7 @@ fn every_acceptance_rule_has_a_corpus_file_that_breaks_only_it() {
     }
     for (rule, code, file) in &rows {
         let text = text_of(&root().join("certificates/invalid").join(file));
-        let Verdict::Rejected(r) = verify_text(&text, ParseLimits::default(), &[MALACHITE, NUM]) else {
-            panic!("{file} is rejected")
-        };
+        let r = rejection(&text, &[MALACHITE, NUM]).unwrap_or_else(|| panic!("{file} is rejected"));
         assert_eq!(r.code.as_str(), code, "{file}");
         // The independent oracle finds exactly this rule broken (for the content rules, after
         // evaluating every rule of the claim).

@@ -14,6 +14,7 @@ mod finder;
 mod fuzz_smoke;
 mod kernel;
 mod readme;
+mod refute;
 mod regression;
 mod simulate;
 mod spectral;

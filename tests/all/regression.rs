@@ -78,7 +78,8 @@ impl Field for Liar {
     }
 }
 
-const LIAR: Backend = Backend { name: "liar", check: check::<Liar> };
+const LIAR: Backend =
+    Backend { name: "liar", check: check::<Liar>, refute: chatter_kernel::refute::check::<Liar> };
 
 fn outcome(args: &[&str], env: &Env) -> Outcome {
     let mut argv = vec!["chatter"];

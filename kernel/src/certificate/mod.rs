@@ -12,6 +12,7 @@ pub use read::{Syntax, read, read_with};
 pub(crate) use read::{check_header, ron_error};
 pub use rejection::{Boundary, Code, Locus, Rejection};
 pub(crate) use strict::check as check_strict;
+pub(crate) use write::quoted;
 pub use write::write;
 
 use serde::de::{SeqAccess, Visitor};

@@ -11,6 +11,7 @@ pub use polygon::MAX_PCC_BOXES;
 mod region;
 mod rod;
 mod show;
+pub(crate) use show::abbreviate as abbreviated;
 
 use crate::certificate::{Body, Certificate, Claim, Code, FORMAT, Locus, Rejection, VERSIONS};
 use crate::exact::{Field, Int, NumberError, ParseLimits, parse_canonical, parse_canonical_parts};
