@@ -6,6 +6,7 @@
 //! - [`finder`], [`exactify`]: floating-point search and its exact rounding;
 //! - [`spectral`], [`bodies`], [`simulate`], [`symbolic`]: criteria, the catalogue, simulation
 //!   and the producer of the square-case proof;
+//! - [`sweep`]: the paper's maps over (rho, gamma) as data, in parallel and in shards;
 //! - [`certify`], [`verify`], `cli` (feature `cli`): the pipeline and the command line.
 
 pub mod bodies;
@@ -18,6 +19,7 @@ pub mod finder;
 pub mod model;
 pub mod simulate;
 pub mod spectral;
+pub mod sweep;
 pub mod symbolic;
 pub mod verify;
 

@@ -8,6 +8,7 @@ mod bodies_cmd;
 mod certify_cmd;
 mod check_proof_cmd;
 mod classify_cmd;
+mod map_cmd;
 mod prove_cmd;
 mod simulate_cmd;
 mod verify_cmd;
@@ -95,6 +96,8 @@ pub enum Command {
     CheckProof(check_proof_cmd::CheckProofArgs),
     /// Simulate drops event by event (f64 or exact) and classify them as CC, PCC or ICC.
     Simulate(simulate_cmd::SimulateArgs),
+    /// The paper's maps over (rho, gamma): criteria, finder, certificates, simulations per point.
+    Map(map_cmd::MapArgs),
 }
 
 /// The body as typed (raw layer), shared by certify, classify and simulate; each command
@@ -133,6 +136,7 @@ pub fn run(cli: Cli, env: &Env) -> Outcome {
         Command::Bodies(a) => bodies_cmd::run(a),
         Command::Prove(a) => prove_cmd::run(a),
         Command::CheckProof(a) => check_proof_cmd::run(a),
+        Command::Map(a) => map_cmd::run(a),
     }
 }
 
