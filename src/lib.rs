@@ -17,6 +17,8 @@ pub mod exact;
 pub mod exactify;
 pub mod finder;
 pub mod model;
+#[cfg(feature = "cli")]
+pub mod plot;
 pub mod simulate;
 pub mod spectral;
 pub mod sweep;

@@ -9,6 +9,7 @@ mod certify_cmd;
 mod check_proof_cmd;
 mod classify_cmd;
 mod map_cmd;
+mod plot_cmd;
 mod prove_cmd;
 mod simulate_cmd;
 mod verify_cmd;
@@ -98,6 +99,8 @@ pub enum Command {
     Simulate(simulate_cmd::SimulateArgs),
     /// The paper's maps over (rho, gamma): criteria, finder, certificates, simulations per point.
     Map(map_cmd::MapArgs),
+    /// Figures (SVG or PNG): map panels, simulation maps, a certificate's cone on v = -1.
+    Plot(plot_cmd::PlotArgs),
 }
 
 /// The body as typed (raw layer), shared by certify, classify and simulate; each command
@@ -137,6 +140,7 @@ pub fn run(cli: Cli, env: &Env) -> Outcome {
         Command::Prove(a) => prove_cmd::run(a),
         Command::CheckProof(a) => check_proof_cmd::run(a),
         Command::Map(a) => map_cmd::run(a),
+        Command::Plot(a) => plot_cmd::run(a),
     }
 }
 

@@ -262,19 +262,24 @@ fn cubic_discriminant<F: OrderedField>(c2: &Poly<F>, c1: &Poly<F>, c0: &Poly<F>)
         .sub(&c.pow(2).scale(&k(27)))
 }
 
-/// The CC profile of a body family: where S_1 has a real positive dominant eigenvalue.
-pub fn cc_profile<F: OrderedField>(fam: &Family<F>) -> Profile<F> {
+/// The polynomials in gamma where the kind of S_1's dominant eigenvalue can change: the
+/// discriminant, the real-complex modulus tie, the +-rho tie and a zero eigenvalue.
+pub fn dominant_candidates<F: OrderedField>(fam: &Family<F>) -> Vec<(&'static str, Poly<F>)> {
     let [c2, c1, c0] = char_coefficients(|g| step_at(fam, 1, g), 3);
     let disc = cubic_discriminant(&c2, &c1, &c0);
     let modulus_tie = c1.pow(3).sub(&c0.mul(&c2.pow(3)));
     let sign_tie = c1.mul(&c2).sub(&c0);
-    let cands = [
+    vec![
         ("discriminant", disc),
         ("real-complex modulus tie", modulus_tie),
         ("+-rho tie", sign_tie),
         ("zero eigenvalue", c0),
-    ];
-    profile(&cands, |g| cc_criterion(&fam.at(g)).0)
+    ]
+}
+
+/// The CC profile of a body family: where S_1 has a real positive dominant eigenvalue.
+pub fn cc_profile<F: OrderedField>(fam: &Family<F>) -> Profile<F> {
+    profile(&dominant_candidates(fam), |g| cc_criterion(&fam.at(g)).0)
 }
 
 /// The PCC profile: where all eigenvalues of S_{n-1} S_1 are real. The product's coefficients

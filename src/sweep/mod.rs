@@ -4,6 +4,7 @@
 //! A sweep can be split into shards (separate processes, e.g. a SLURM job array) and the shards
 //! merged into exactly the files of one run: results never depend on threads or shards.
 
+pub mod curves;
 pub mod grid;
 pub mod point;
 pub mod summary;
