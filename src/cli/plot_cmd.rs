@@ -9,8 +9,8 @@ use crate::sweep::{self, curves};
 use clap::{Args, Subcommand};
 use std::path::{Path, PathBuf};
 
-/// Columns at which the exact curves are computed.
-pub const CURVE_COLUMNS: u32 = 240;
+/// Columns (and rows) along which the exact curves are computed.
+pub const CURVE_LINES: u32 = 200;
 
 /// Raw arguments of `chatter plot`.
 #[derive(Args, Debug)]
@@ -76,7 +76,13 @@ pub fn map_figure(dir: &Path, panel: Panel) -> Result<MapFigure, String> {
             dir.display()
         ));
     }
-    let curves = curves::curves(grid.n, grid.variable, &grid.x.lo, &grid.x.hi, CURVE_COLUMNS);
+    let curves = curves::curves(
+        grid.n,
+        grid.variable,
+        (&grid.x.lo, &grid.x.hi),
+        (&grid.gamma.lo, &grid.gamma.hi),
+        CURVE_LINES,
+    );
     let what = match panel {
         Panel::Cones => "cone finder and exact eigenvalue curves".to_string(),
         Panel::Simulations => format!("{} random drops per point, 200 impacts each", computed.simulate),
