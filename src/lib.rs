@@ -7,6 +7,7 @@
 //! - [`spectral`], [`bodies`], [`simulate`], [`symbolic`]: criteria, the catalogue, simulation
 //!   and the producer of the square-case proof;
 //! - [`sweep`]: the paper's maps over (rho, gamma) as data, in parallel and in shards;
+//! - `plot`, `reproduce` (feature `cli`): the figures, and the paper's results regenerated with a report;
 //! - [`certify`], [`verify`], `cli` (feature `cli`): the pipeline and the command line.
 
 pub mod bodies;
@@ -19,6 +20,8 @@ pub mod finder;
 pub mod model;
 #[cfg(feature = "cli")]
 pub mod plot;
+#[cfg(feature = "cli")]
+pub mod reproduce;
 pub mod simulate;
 pub mod spectral;
 pub mod sweep;

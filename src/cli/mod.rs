@@ -11,6 +11,7 @@ mod classify_cmd;
 mod map_cmd;
 mod plot_cmd;
 mod prove_cmd;
+mod reproduce_cmd;
 mod simulate_cmd;
 mod verify_cmd;
 
@@ -83,6 +84,8 @@ pub struct Cli {
 
 #[derive(Subcommand, Debug)]
 pub enum Command {
+    /// Regenerate the paper's results into a folder with report.md and report.html (the main job).
+    Reproduce(reproduce_cmd::ReproduceArgs),
     /// Find, exactify and kernel-check an effectively invariant cone; write a certificate.
     Certify(certify_cmd::CertifyArgs),
     /// Check certificate files (or directories of *.ron files) with the trusted kernel.
@@ -141,6 +144,7 @@ pub fn run(cli: Cli, env: &Env) -> Outcome {
         Command::CheckProof(a) => check_proof_cmd::run(a),
         Command::Map(a) => map_cmd::run(a),
         Command::Plot(a) => plot_cmd::run(a),
+        Command::Reproduce(a) => reproduce_cmd::run(a),
     }
 }
 

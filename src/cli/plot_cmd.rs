@@ -3,7 +3,7 @@
 
 use super::{self as cli, emit};
 use crate::plot::cone::ConeFigure;
-use crate::plot::map::{MapFigure, Panel};
+use crate::plot::map::{MapFigure, Panel, body_name};
 use crate::plot::{Format, save};
 use crate::sweep::{self, curves};
 use clap::{Args, Subcommand};
@@ -54,17 +54,6 @@ pub struct ConePlotArgs {
     /// Output file: .svg or .png.
     #[arg(short = 'o', long = "out", value_name = "FILE")]
     pub out: PathBuf,
-}
-
-/// The body's name for titles.
-pub fn body_name(n: u64) -> &'static str {
-    match n {
-        3 => "triangle",
-        4 => "square",
-        5 => "pentagon",
-        6 => "hexagon",
-        _ => "polygon",
-    }
 }
 
 /// The map figure of a folder.

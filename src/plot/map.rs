@@ -137,6 +137,17 @@ fn off_frame(pts: &[(f64, f64)], [xa, xb, ya, yb]: [f64; 4]) -> Vec<Polyline> {
     pieces.into_iter().filter(|p| p.len() >= 2).collect()
 }
 
+/// The body's name for titles.
+pub fn body_name(n: u64) -> &'static str {
+    match n {
+        3 => "triangle",
+        4 => "square",
+        5 => "pentagon",
+        6 => "hexagon",
+        _ => "polygon",
+    }
+}
+
 /// Subscript digits for labels such as S₁ and C₂.
 pub fn sub(k: u64) -> String {
     k.to_string().chars().map(|c| char::from_u32(0x2080 + c.to_digit(10).unwrap_or(0)).unwrap_or(c)).collect()
