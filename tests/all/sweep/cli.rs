@@ -147,7 +147,7 @@ fn rows_hold_the_exact_criteria_and_verified_certificates() {
         let body = Polygon::new(3, r.kappa.clone(), r.gamma.clone()).unwrap();
         let (cc, _, _) = chatter::spectral::criteria::cc_criterion(&body);
         assert_eq!(r.cc_criterion, cc, "row {i}");
-        assert_eq!(r.certified.is_some(), true, "--certify fills the column");
+        assert!(r.certified.is_some(), "--certify fills the column");
         assert_eq!(r.certified == Some(true), r.claim.is_some());
         assert_eq!(r.certified == Some(true), r.certificate.is_some());
         assert_eq!(r.refuted, None, "refutations are not available yet");
