@@ -317,8 +317,17 @@ fn column_count(s: &Summary, column: &str, value: &str) -> u64 {
     s.counts.get(column).and_then(|m| m.get(value)).copied().unwrap_or(0)
 }
 
-/// One of the paper's maps (n = 3, 4, 5): the data, the two figures and three comparisons.
-pub fn map(ctx: &Context, n: u64, r: &mut Report) -> Result<(), String> {
+/// A computed map: its grid, summary, folder, figures and the command that makes it.
+struct MapRun {
+    n: u64,
+    steps: u32,
+    summary: Summary,
+    dir: PathBuf,
+    command: String,
+}
+
+/// Computes one of the paper's maps (n = 3, 4, 5) into maps/nN, with both figures.
+fn compute_map(ctx: &Context, n: u64) -> Result<(MapRun, [FigureRef; 2]), String> {
     let steps = if n == 5 { ctx.plan.grid5 } else { ctx.plan.grid };
     let axis = Axis { lo: Q::int(0), hi: Q::int(1), steps };
     let grid = Grid { n, variable: Variable::Rho, x: axis.clone(), gamma: axis };
@@ -326,85 +335,77 @@ pub fn map(ctx: &Context, n: u64, r: &mut Report) -> Result<(), String> {
     let req = SweepRequest { grid: grid.clone(), tasks, shard: Shard::ALL };
     let done = sweep::run(&req, &|| {});
     if let Some(d) = done.iter().find(|d| d.internal.is_some()) {
-        return Err(format!(
-            "map n = {n}, point {}: {}",
-            d.row.index,
-            d.internal.as_deref().unwrap_or_default()
-        ));
+        let why = d.internal.as_deref().unwrap_or_default();
+        return Err(format!("map n = {n}, point {}: {why}", d.row.index));
     }
     let dir = ctx.out.join(format!("maps/n{n}"));
-    let s = sweep::write_output(&dir, &req, &done)?.ok_or("a whole map has a summary")?;
-    let rows: Vec<_> = done.into_iter().map(|d| d.row).collect();
-    let cv = curves::curves(
-        n,
-        Variable::Rho,
-        (&grid.x.lo, &grid.x.hi),
-        (&grid.gamma.lo, &grid.gamma.hi),
-        ctx.plan.curve_lines,
-    );
+    let summary = sweep::write_output(&dir, &req, &done)?.ok_or("a whole map has a summary")?;
+    let rows = done.into_iter().map(|d| d.row).collect();
+    let (x, g) = ((&grid.x.lo, &grid.x.hi), (&grid.gamma.lo, &grid.gamma.hi));
+    let curves = curves::curves(n, Variable::Rho, x, g, ctx.plan.curve_lines);
     let name = crate::plot::map::body_name(n);
-    let mut fig = MapFigure {
-        grid: grid.clone(),
-        rows,
-        curves: cv,
-        panel: Panel::Cones,
-        title: format!("n = {n} ({name}): cone finder and exact eigenvalue curves"),
-        points: Vec::new(),
-    };
-    let f1 = figure(
-        ctx,
-        &format!("map-n{n}"),
-        &fig,
-        &format!(
-            "n = {n}: the cone finder's verdict (background), the exact curves where S₁'s dominant eigenvalue changes sign or becomes complex, the CC and PCC criteria's boundaries{}",
-            if n == 5 { "" } else { ", certified points" }
-        ),
-    )?;
+    let title = format!("n = {n} ({name}): cone finder and exact eigenvalue curves");
+    let mut fig = MapFigure { grid, rows, curves, panel: Panel::Cones, title, points: Vec::new() };
+    let certified = if n == 5 { "" } else { ", certified points" };
+    let caption = format!(
+        "n = {n}: the cone finder's verdict (background), the exact curves where S₁'s dominant eigenvalue changes sign or becomes complex, the CC and PCC criteria's boundaries{certified}"
+    );
+    let f1 = figure(ctx, &format!("map-n{n}"), &fig, &caption)?;
     fig.panel = Panel::Simulations;
     fig.title = format!("n = {n} ({name}): {} random drops per point, 200 impacts each", ctx.plan.drops);
-    let f2 = figure(
-        ctx,
-        &format!("simulations-n{n}"),
-        &fig,
-        &format!(
-            "n = {n}: level curves of the mean number of impacts of the random drops; the 200 level separates ICC"
-        ),
-    )?;
-    let g = format!("{steps} × {steps} grid over ρ, γ in (0, 1) (cell centres)");
+    let caption = format!(
+        "n = {n}: level curves of the mean number of impacts of the random drops; the 200 level separates ICC"
+    );
+    let f2 = figure(ctx, &format!("simulations-n{n}"), &fig, &caption)?;
     let command = format!(
         "chatter map --n {n} --rho 0:1:{steps} --gamma 0:1:{steps}{} --simulate {} --out map{n} && chatter plot map map{n} -o map{n}.png && chatter plot simulations map{n} -o simulations{n}.png",
         if n == 5 { "" } else { " --certify" },
         ctx.plan.drops
     );
-    let finder_off = count(&s, "finder-found-criterion-fails") + count(&s, "finder-no-cone-criterion-holds");
-    let certs = column_count(&s, "certified", "true");
-    let cert_off = count(&s, "certified-criterion-fails") + count(&s, "certified-finder-no-cone");
+    Ok((MapRun { n, steps, summary, dir, command }, [f1, f2]))
+}
+
+/// Figure "sajatertekek": the finder and the certificates against the criterion.
+fn cones_item(m: &MapRun, fig: FigureRef) -> Item {
+    let (s, n) = (&m.summary, m.n);
+    let finder_off = count(s, "finder-found-criterion-fails") + count(s, "finder-no-cone-criterion-holds");
+    let certs = column_count(s, "certified", "true");
+    let cert_off = count(s, "certified-criterion-fails") + count(s, "certified-finder-no-cone");
+    let c = |col: &str, v: &str| column_count(s, col, v);
     let mut evidence = vec![
         format!(
-            "{g}: CC criterion holds at {} points; finder found {}, no cone {}, inconclusive {}",
-            column_count(&s, "cc_criterion", "true"),
-            column_count(&s, "finder", "found"),
-            column_count(&s, "finder", "no-cone"),
-            column_count(&s, "finder", "inconclusive")
+            "{0} × {0} grid over ρ, γ in (0, 1) (cell centres): CC criterion holds at {1} points; finder found {2}, no cone {3}, inconclusive {4}",
+            m.steps,
+            c("cc_criterion", "true"),
+            c("finder", "found"),
+            c("finder", "no-cone"),
+            c("finder", "inconclusive")
         ),
         format!("finder and criterion disagree at {finder_off} points"),
     ];
-    if n == 5 {
-        evidence.push("certificates for n = 5 need the number-field kernel (not available yet): the float finder and the exact criteria only".into());
+    evidence.push(if n == 5 {
+        "certificates for n = 5 need the number-field kernel (not available yet): the float finder and the exact criteria only".into()
     } else {
-        evidence.push(format!("{certs} exact certificates (kept under maps/n{n}/certificates/), {cert_off} of them where the criterion fails or the finder saw no cone"));
-    }
+        format!("{certs} exact certificates (kept under maps/n{n}/certificates/), {cert_off} of them where the criterion fails or the finder saw no cone")
+    });
     evidence.push(format!("data: maps/n{n}/points.csv, maps/n{n}/summary.json"));
-    r.items.push(Item {
+    let certified = if n == 5 { String::new() } else { format!("; {certs} points certified exactly") };
+    Item {
         title: format!("Figure “sajatertekek”, n = {n}: effectively invariant cones and the eigenvalue criterion"),
         paper: "The cone finder finds a cone exactly where S₁'s dominant eigenvalue is real and positive (Conjecture 1 (ii) ⇔ (iii)); light grey (inconclusive) only near the bottom-right corners.".into(),
-        ours: format!("the finder's verdict and the exact criterion agree at all but {finder_off} of {} points{}", s.points, if n == 5 { String::new() } else { format!("; {certs} points certified exactly") }),
+        ours: format!("the finder's verdict and the exact criterion agree at all but {finder_off} of {} points{certified}", s.points),
         verdict: Verdict::of(finder_off == 0 && cert_off == 0),
         evidence,
-        commands: vec![command.clone()],
-        figures: vec![f1],
-    });
-    let chatter_off = count(&s, "simulated-chatter-criterion-fails");
+        commands: vec![m.command.clone()],
+        figures: vec![fig],
+    }
+}
+
+/// Figure "simulations": random drops against the criterion.
+fn simulations_item(m: &MapRun, drops: u64, fig: FigureRef) -> Item {
+    let s = &m.summary;
+    let chatter_off = count(s, "simulated-chatter-criterion-fails");
+    let icc_off = count(s, "criterion-holds-all-icc");
     let examples: Vec<String> = s
         .disagreements
         .iter()
@@ -412,27 +413,36 @@ pub fn map(ctx: &Context, n: u64, r: &mut Report) -> Result<(), String> {
         .take(6)
         .map(|d| format!("(ρ, γ) = ({}, {}): {}", d.rho, d.gamma, d.detail))
         .collect();
-    let icc_off = count(&s, "criterion-holds-all-icc");
-    r.items.push(Item {
-        title: format!("Figure “simulations”, n = {n}: random drops and the eigenvalue criterion"),
+    let outcomes = s
+        .counts
+        .get("simulated_drops")
+        .map(|m| m.iter().map(|(k, v)| format!("{k} {v}")).collect::<Vec<_>>().join(", "))
+        .unwrap_or_default();
+    Item {
+        title: format!("Figure “simulations”, n = {}: random drops and the eigenvalue criterion", m.n),
         paper: "The 200-impact level curve (CC or PCC below it) follows the curve where S₁'s dominant eigenvalue stops being real and positive (Conjecture 1 (i) ⇔ (iii)).".into(),
         ours: format!("random drops chatter where the criterion fails at {chatter_off} points, and all drops end in ICC where it holds at {icc_off} points (of {})", s.points),
         verdict: Verdict::of(chatter_off == 0 && icc_off == 0),
         evidence: vec![
-            format!("{} drops per point, 200 impacts each, seeded per point (the paper's protocol: velocity (R₁, R₂, −1), position (R₃, R₄, 1 + R₅), Rᵢ uniform on (0, 0.1))", ctx.plan.drops),
-            format!("outcomes over all points: {}", s.counts.get("simulated_drops").map(|m| m.iter().map(|(k, v)| format!("{k} {v}")).collect::<Vec<_>>().join(", ")).unwrap_or_default()),
+            format!("{drops} drops per point, 200 impacts each, seeded per point (the paper's protocol: velocity (R₁, R₂, −1), position (R₃, R₄, 1 + R₅), Rᵢ uniform on (0, 0.1))"),
+            format!("outcomes over all points: {outcomes}"),
             if examples.is_empty() {
                 "no point where drops chatter and the criterion fails".into()
             } else {
                 format!("where drops chatter and the criterion fails, e.g. {}", examples.join("; "))
             },
         ],
-        commands: vec![command.clone()],
-        figures: vec![f2],
-    });
-    let pcc_found = rows_with_pcc(&dir)?;
-    let pcc_off = count(&s, "simulated-pcc-criterion-fails");
-    let pcc_holds = column_count(&s, "pcc_criterion", "true");
+        commands: vec![m.command.clone()],
+        figures: vec![fig],
+    }
+}
+
+/// PCC in the simulations against the PCC criterion.
+fn pcc_item(m: &MapRun) -> Result<Item, String> {
+    let (s, n) = (&m.summary, m.n);
+    let pcc_found = rows_with_pcc(&m.dir)?;
+    let pcc_off = count(s, "simulated-pcc-criterion-fails");
+    let pcc_holds = column_count(s, "pcc_criterion", "true");
     let (paper, ok) = if n == 3 {
         (
             "PCC was found in simulations left of the curve “PCC found”, which fits the dashed curve of the PCC Lemma (“PCC possible”).",
@@ -444,15 +454,25 @@ pub fn map(ctx: &Context, n: u64, r: &mut Report) -> Result<(), String> {
             pcc_found == 0,
         )
     };
-    r.items.push(Item {
+    Ok(Item {
         title: format!("PCC in the simulations, n = {n}"),
         paper: paper.into(),
-        ours: format!("PCC drops at {pcc_found} points, {pcc_off} of them where the PCC criterion fails; the PCC criterion holds at {pcc_holds} points"),
+        ours: format!(
+            "PCC drops at {pcc_found} points, {pcc_off} of them where the PCC criterion fails; the PCC criterion holds at {pcc_holds} points"
+        ),
         verdict: Verdict::of(ok),
         evidence: vec![format!("maps/n{n}/points.csv columns sim_pcc and pcc_criterion")],
-        commands: vec![command],
+        commands: vec![m.command.clone()],
         figures: vec![],
-    });
+    })
+}
+
+/// One of the paper's maps (n = 3, 4, 5): the data, the two figures and three comparisons.
+pub fn map(ctx: &Context, n: u64, r: &mut Report) -> Result<(), String> {
+    let (m, [f1, f2]) = compute_map(ctx, n)?;
+    r.items.push(cones_item(&m, f1));
+    r.items.push(simulations_item(&m, ctx.plan.drops, f2));
+    r.items.push(pcc_item(&m)?);
     Ok(())
 }
 
