@@ -120,7 +120,8 @@ fn char_coefficients<F: OrderedField>(m: impl Fn(&Q) -> Mat3<F>, deg: usize) -> 
     char_coefficients_at(m, &(0..=deg as i64).map(Q::int).collect::<Vec<_>>())
 }
 
-/// As [`char_coefficients`], from exact values at the given points (one more than the degree).
+/// The coefficients (c2, c1, c0) of det(tI - M(x)) as polynomials in x, from exact values at
+/// the given points (one more than the degree).
 pub fn char_coefficients_at<F: OrderedField>(m: impl Fn(&Q) -> Mat3<F>, xs: &[Q]) -> [Poly<F>; 3] {
     let ps: Vec<Poly<F>> = xs.iter().map(|x| char_poly3(&m(x))).collect();
     let coef = |k: usize, neg: bool| {
