@@ -6,6 +6,8 @@
 //! - [`finder`], [`exactify`]: floating-point search and its exact rounding;
 //! - [`spectral`], [`bodies`], [`simulate`], [`symbolic`]: criteria, the catalogue, simulation
 //!   and the producer of the square-case proof;
+//! - [`sweep`]: the paper's maps over (rho, gamma) as data, in parallel and in shards;
+//! - `plot`, `reproduce` (feature `cli`): the figures, and the paper's results regenerated with a report;
 //! - [`certify`], [`verify`], `cli` (feature `cli`): the pipeline and the command line.
 
 pub mod bodies;
@@ -17,9 +19,14 @@ pub mod exactify;
 pub mod finder;
 pub mod model;
 pub mod oracle;
+#[cfg(feature = "cli")]
+pub mod plot;
 pub mod refute;
+#[cfg(feature = "cli")]
+pub mod reproduce;
 pub mod simulate;
 pub mod spectral;
+pub mod sweep;
 pub mod symbolic;
 pub mod verify;
 

@@ -8,8 +8,11 @@ mod bodies_cmd;
 mod certify_cmd;
 mod check_proof_cmd;
 mod classify_cmd;
+mod map_cmd;
+mod plot_cmd;
 mod prove_cmd;
 mod refute_cmd;
+mod reproduce_cmd;
 mod simulate_cmd;
 mod verify_cmd;
 
@@ -82,6 +85,8 @@ pub struct Cli {
 
 #[derive(Subcommand, Debug)]
 pub enum Command {
+    /// Regenerate the paper's results into a folder with report.md and report.html (the main job).
+    Reproduce(reproduce_cmd::ReproduceArgs),
     /// Find, exactify and kernel-check an effectively invariant cone; write a certificate.
     Certify(certify_cmd::CertifyArgs),
     /// Check certificate files (or directories of *.ron files) with the trusted kernel.
@@ -98,6 +103,10 @@ pub enum Command {
     Simulate(simulate_cmd::SimulateArgs),
     /// Derive exactly that no effectively invariant cone exists at a point; write a refutation.
     Refute(refute_cmd::RefuteArgs),
+    /// The paper's maps over (rho, gamma): criteria, finder, certificates, simulations per point.
+    Map(map_cmd::MapArgs),
+    /// Figures (SVG or PNG): map panels, simulation maps, a certificate's cone on v = -1.
+    Plot(plot_cmd::PlotArgs),
 }
 
 /// The body as typed (raw layer), shared by certify, classify and simulate; each command
@@ -161,6 +170,9 @@ pub fn run(cli: Cli, env: &Env) -> Outcome {
         Command::Prove(a) => prove_cmd::run(a),
         Command::CheckProof(a) => check_proof_cmd::run(a),
         Command::Refute(a) => refute_cmd::run(a, env),
+        Command::Map(a) => map_cmd::run(a),
+        Command::Plot(a) => plot_cmd::run(a),
+        Command::Reproduce(a) => reproduce_cmd::run(a),
     }
 }
 

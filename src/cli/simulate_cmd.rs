@@ -2,10 +2,12 @@
 
 use super::{self as cli, emit};
 use crate::exact::{Q, parse_user_number};
+use crate::plot::save;
+use crate::plot::trajectory::TrajectoryFigure;
 use crate::simulate::classify::DEFAULT_PCC_EPSILON;
 use crate::simulate::pattern::{self, find};
 use crate::simulate::{
-    Arithmetic, Brief, Decision, Initial, Model, Options, Outcome, Run, counts, given_start, plot, record,
+    Arithmetic, Brief, Decision, Initial, Model, Options, Outcome, Run, counts, given_start, record,
     simulate, simulate_many,
 };
 use chatter_kernel::model::{BodyError, Shape as ExactShape};
@@ -39,7 +41,7 @@ Numbers are read exactly: 1/6, 0.01 (= 1/100), 1e-2. Exit status 0 when the simu
 2 on bad input.\n\n\
 Examples:\n  chatter simulate --n 3 --kappa 3/20 --gamma 1/20 --seed 7\n  \
 chatter simulate --n 4 --runs 1000 --json\n  \
-chatter simulate --n 3 --kappa 1/8 --gamma 1/200 --exact --plot pcc.svg\n  \
+chatter simulate --n 3 --kappa 1/8 --gamma 1/200 --exact --plot pcc.png\n  \
 chatter simulate --n 4 --position 1/2,1/2,1 --velocity -1,-1,-1 --exact")]
 pub struct SimulateArgs {
     #[command(flatten)]
@@ -56,8 +58,10 @@ pub struct SimulateArgs {
     /// Write one CSV row per impact to this file.
     #[arg(long, value_name = "CSV")]
     pub trajectory: Option<PathBuf>,
-    /// Write an SVG plot of the contact heights against time to this file.
-    #[arg(long, value_name = "SVG")]
+    /// Write a figure (SVG or PNG, by the extension): (a) the rescaled contact heights h_k/h_c
+    /// over the last 24 impacts, (b) log10 of the centre's height and of the time between impacts
+    /// against the impact number.
+    #[arg(long, value_name = "FILE")]
     pub plot: Option<PathBuf>,
     /// Repeat with this many random drops (parallel) and print the outcome counts.
     #[arg(long, value_name = "M", allow_hyphen_values = true)]
@@ -157,6 +161,9 @@ fn validate(a: SimulateArgs) -> Result<Validated, String> {
         }
         _ => return Err("--position and --velocity go together: give both or neither".into()),
     };
+    if let Some(p) = &a.plot {
+        crate::plot::Format::of(p).map_err(|e| format!("--plot: {e}"))?;
+    }
     if runs.is_some() && (a.trajectory.is_some() || a.plot.is_some()) {
         return Err("--trajectory and --plot describe a single run: drop --runs".into());
     }
@@ -307,14 +314,19 @@ fn run_single(v: &Validated) -> cli::Outcome {
         }
     }
     if let Some(path) = &v.plot {
-        let title =
-            format!("{}: {} after {} impacts ({})", head(v), run.outcome, run.impacts, v.arithmetic.name());
-        let svg = match plot::svg(&run, &v.model.float, &title) {
-            Ok(s) => s,
-            Err(e) => return cli::Outcome::Usage(e.to_string()),
-        };
-        if let Err(e) = write_file(path, &svg) {
-            return cli::Outcome::Usage(e.to_string());
+        let title = format!(
+            "n = {}, κ = {}, γ = {}: {} after {} impacts ({}, {})",
+            v.n,
+            v.kappa,
+            v.gamma,
+            run.outcome,
+            run.impacts,
+            start_text(v),
+            v.arithmetic.name()
+        );
+        let fig = TrajectoryFigure::new(&run, &v.model.float, title);
+        if let Err(e) = save(&fig, path) {
+            return cli::Outcome::Usage(e);
         }
     }
     if v.json {

@@ -7,13 +7,14 @@
 //! - [`engine`], [`float`], [`exact`]: one interface, two arithmetics; [`snapshot`]: the
 //!   read-outs of a state they share.
 //! - [`classify`]: the driver loop and the outcome rules; [`pcc`]: the two PCC tests.
-//! - [`pattern`]: the impact sequence in words; [`record`]: CSV; [`plot`]: SVG; [`text`]: wording.
+//! - [`pattern`]: the impact sequence in words; [`record`]: CSV; [`text`]: wording (the figure of
+//!   a run is `crate::plot::trajectory`, feature `cli`).
 //!
 //! Module dependencies (acyclic): `system`, `snapshot` and `text` depend on no other module here;
 //! `drop` on `system`; `pcc` on `snapshot`, `system`; `engine` on `pcc`, `snapshot`; `float` and
 //! `exact` on `drop`, `engine`, `snapshot`, `system` (`exact` also on `pcc`); `classify` on
 //! `engine`, `pcc`, `snapshot`, `system`, `text`; `pattern` on `system`, `text`; `record` on
-//! `classify`, `snapshot`, `system`; `plot` on `classify`, `record`, `snapshot`, `system`.
+//! `classify`, `snapshot`, `system`.
 //!
 //! ```
 //! use chatter::exact::Q;
@@ -30,8 +31,6 @@ pub mod exact;
 pub mod float;
 pub mod pattern;
 pub mod pcc;
-#[cfg(feature = "cli")]
-pub mod plot;
 pub mod record;
 pub mod snapshot;
 pub mod system;

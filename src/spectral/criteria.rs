@@ -117,11 +117,16 @@ pub fn interpolate<F: OrderedField>(xs: &[Q], ys: &[F]) -> Poly<F> {
 /// The coefficients (c2, c1, c0) of det(tI - M(gamma)) = t^3 - c2 t^2 + c1 t - c0 as
 /// polynomials in gamma of degree <= `deg`, from exact values at gamma = 0, 1, ..., deg.
 fn char_coefficients<F: OrderedField>(m: impl Fn(&Q) -> Mat3<F>, deg: usize) -> [Poly<F>; 3] {
-    let xs: Vec<Q> = (0..=deg as i64).map(Q::int).collect();
+    char_coefficients_at(m, &(0..=deg as i64).map(Q::int).collect::<Vec<_>>())
+}
+
+/// The coefficients (c2, c1, c0) of det(tI - M(x)) as polynomials in x, from exact values at
+/// the given points (one more than the degree).
+pub fn char_coefficients_at<F: OrderedField>(m: impl Fn(&Q) -> Mat3<F>, xs: &[Q]) -> [Poly<F>; 3] {
     let ps: Vec<Poly<F>> = xs.iter().map(|x| char_poly3(&m(x))).collect();
     let coef = |k: usize, neg: bool| {
         let ys: Vec<F> = ps.iter().map(|p| if neg { p.coeff(k).negated() } else { p.coeff(k) }).collect();
-        interpolate(&xs, &ys)
+        interpolate(xs, &ys)
     };
     [coef(2, true), coef(1, false), coef(0, true)]
 }
@@ -211,12 +216,25 @@ pub fn profile<F: OrderedField>(
         }
     }
     roots.sort_by(|a, b| a.0.clone().compare(&mut b.0.clone()));
-    // Make neighbouring intervals disjoint so that rational samples separate them.
+    // Make neighbouring intervals disjoint, with a gap, so that every rational sample lies strictly
+    // between two roots (a sample on a shared endpoint could be an exact root of the other).
     for i in 1..roots.len() {
         let (left, right) = roots.split_at_mut(i);
         let (a, b) = (&mut left[i - 1].0, &mut right[0].0);
-        while a.hi > b.lo {
+        while a.hi >= b.lo {
             if a.width() >= b.width() { a.bisect() } else { b.bisect() }
+        }
+    }
+    // Keep the samples inside (0, 1): a criterion can differ at gamma = 0 or 1 themselves (e.g.
+    // a zero eigenvalue at gamma = 0, elastic impacts at gamma = 1).
+    if let Some((r, _, _)) = roots.first_mut() {
+        while !r.is_exact() && r.lo <= Q::int(0) {
+            r.bisect();
+        }
+    }
+    if let Some((r, _, _)) = roots.last_mut() {
+        while !r.is_exact() && r.hi >= Q::int(1) {
+            r.bisect();
         }
     }
     let mut cuts = vec![Q::int(0)];
@@ -262,19 +280,29 @@ fn cubic_discriminant<F: OrderedField>(c2: &Poly<F>, c1: &Poly<F>, c0: &Poly<F>)
         .sub(&c.pow(2).scale(&k(27)))
 }
 
-/// The CC profile of a body family: where S_1 has a real positive dominant eigenvalue.
-pub fn cc_profile<F: OrderedField>(fam: &Family<F>) -> Profile<F> {
-    let [c2, c1, c0] = char_coefficients(|g| step_at(fam, 1, g), 3);
+/// The polynomials in gamma where the kind of S_1's dominant eigenvalue can change: the
+/// discriminant, the real-complex modulus tie, the +-rho tie and a zero eigenvalue.
+pub fn dominant_candidates<F: OrderedField>(fam: &Family<F>) -> Vec<(&'static str, Poly<F>)> {
+    candidates_of(char_coefficients(|g| step_at(fam, 1, g), 3))
+}
+
+/// The candidates of [`dominant_candidates`] for any 3x3 matrix family whose characteristic
+/// coefficients (c2, c1, c0) of t^3 - c2 t^2 + c1 t - c0 are polynomials in one variable.
+pub fn candidates_of<F: OrderedField>([c2, c1, c0]: [Poly<F>; 3]) -> Vec<(&'static str, Poly<F>)> {
     let disc = cubic_discriminant(&c2, &c1, &c0);
     let modulus_tie = c1.pow(3).sub(&c0.mul(&c2.pow(3)));
     let sign_tie = c1.mul(&c2).sub(&c0);
-    let cands = [
+    vec![
         ("discriminant", disc),
         ("real-complex modulus tie", modulus_tie),
         ("+-rho tie", sign_tie),
         ("zero eigenvalue", c0),
-    ];
-    profile(&cands, |g| cc_criterion(&fam.at(g)).0)
+    ]
+}
+
+/// The CC profile of a body family: where S_1 has a real positive dominant eigenvalue.
+pub fn cc_profile<F: OrderedField>(fam: &Family<F>) -> Profile<F> {
+    profile(&dominant_candidates(fam), |g| cc_criterion(&fam.at(g)).0)
 }
 
 /// The PCC profile: where all eigenvalues of S_{n-1} S_1 are real. The product's coefficients
@@ -284,6 +312,12 @@ pub fn pcc_profile<F: OrderedField>(fam: &Family<F>) -> Profile<F> {
     let [c2, c1, c0] = char_coefficients(|g| mat_mul(&step_at(fam, last, g), &step_at(fam, 1, g)), 6);
     let disc = cubic_discriminant(&c2, &c1, &c0);
     profile(&[("discriminant", disc)], |g| pcc_criterion(&fam.at(g)).0)
+}
+
+/// The discriminant of t^3 - c2 t^2 + c1 t - c0 with polynomial coefficients (the PCC
+/// criterion's only candidate).
+pub fn discriminant_of<F: OrderedField>([c2, c1, c0]: &[Poly<F>; 3]) -> Poly<F> {
+    cubic_discriminant(c2, c1, c0)
 }
 
 /// The rod's CC profile from the 2x2 step map: candidates are its discriminant, trace and

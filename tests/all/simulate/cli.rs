@@ -119,7 +119,8 @@ fn trajectory_csv_has_one_row_per_impact_and_the_plot_is_written() {
     assert!(rows.iter().all(|r| r.split(',').count() == 14));
     assert!(rows[59].starts_with("60,"));
     let svg = std::fs::read_to_string(d.path().join("p.svg")).unwrap();
-    assert!(svg.starts_with("<svg") && svg.contains("contact 3") && svg.contains("accumulation point"));
+    assert!(svg.starts_with("<svg") && svg.contains("contact 3") && svg.contains("impact number"));
+    assert!(svg.contains("impacts 37 to 60"), "panel (a) shows the last 24 impacts");
 
     // The rod has two coordinates; an ICC run has no accumulation point.
     let o = simulate(
@@ -147,7 +148,21 @@ fn trajectory_csv_has_one_row_per_impact_and_the_plot_is_written() {
     assert!(csv.starts_with(
         "impact,contact,time,log2_dt,log2_time_to_accumulation,h0,h1,log2_q_scale,u0,u1,log2_p_scale"
     ));
-    assert!(std::fs::read_to_string(d.path().join("rod.svg")).unwrap().contains("time since the drop"));
+    let svg = std::fs::read_to_string(d.path().join("rod.svg")).unwrap();
+    assert!(svg.contains("contact 1") && !svg.contains("contact 2") && svg.contains("ICC after"));
+}
+
+#[test]
+fn the_plot_format_follows_the_extension() {
+    let d = tempfile::tempdir().unwrap();
+    let o = simulate(&["--n", "3", "--kappa", "1/8", "--gamma", "0.15", "--plot", "band.png"], d.path());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let png = std::fs::read(d.path().join("band.png")).unwrap();
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n", "a PNG file, not SVG text");
+    let o = simulate(&["--plot", "x.pdf"], d.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains(".svg or .png"), "{}", stderr(&o));
+    assert!(!d.path().join("x.pdf").exists());
 }
 
 #[test]

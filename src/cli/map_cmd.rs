@@ -1,0 +1,251 @@
+//! `chatter map`: the paper's maps over (rho, gamma) as data (issue 12), and `chatter map merge`.
+
+use super::{self as cli, emit};
+use crate::sweep::grid::{Axis, Grid, Shard, Variable};
+use crate::sweep::point::Tasks;
+use crate::sweep::summary::Summary;
+use crate::sweep::{self, Request};
+use clap::{Args, Subcommand};
+use std::io::IsTerminal;
+use std::path::PathBuf;
+
+/// Largest number of random drops per point.
+pub const MAX_RUNS: u64 = 100_000;
+
+/// Raw arguments of `chatter map`.
+#[derive(Args, Debug)]
+#[command(
+    args_conflicts_with_subcommands = true,
+    after_help = "Evaluates every point of a grid over (rho, gamma) or (kappa, gamma) in parallel: the exact CC \
+criterion (S_1 has a real, positive dominant eigenvalue) and PCC criterion (all eigenvalues of \
+S_{n-1} S_1 real), exact over Q for n = 3, 4, 6 and in Q(cos 2pi/n) for n = 5; the float cone \
+finder's verdict from the paper's seed -U_0 u_3 (found / no-cone / inconclusive); with --certify an \
+exact certificate where one can be made (n = 3, 4, 6), kept under DIR/certificates; with --simulate \
+the paper's random drops (200 impacts each, seeded per point).\n\n\
+An axis a:b:STEPS is the centres of STEPS equal cells of [a, b]: a + (i + 1/2)(b - a)/STEPS, so \
+0:1:100 gives 0.005, 0.015, ..., 0.995 and never touches 0 or 1. Numbers are exact (0.1 is 1/10).\n\n\
+Writes DIR/points.csv (one row per point, columns in docs/map.md) and DIR/summary.json (counts, \
+and every point where the finder, the certificates, the criteria and the simulations disagree). \
+The files are byte-identical for identical inputs whatever --jobs and --shard; `chatter map merge` \
+joins the folders of all shards into exactly the files of one run. Draw them with `chatter plot map`.\n\n\
+Exit status 0 when the map was written, 2 on bad input, 3 if the kernel's backends disagreed.\n\n\
+Examples:\n  chatter map --n 3 --rho 0:1:100 --gamma 0:1:100 --certify --out map3\n  \
+chatter map --n 4 --rho 0:1:40 --gamma 0:0.2:40 --simulate 20 --out map4\n  \
+chatter map --n 3 --rho 0:1:100 --gamma 0:1:100 --shard 0/4 --out part0   (and 1/4, 2/4, 3/4)\n  \
+chatter map merge part0 part1 part2 part3 --out map3"
+)]
+pub struct MapArgs {
+    #[command(subcommand)]
+    pub merge: Option<MapSub>,
+    /// Number of contacts of the regular polygon: 3, 4, 5 or 6.
+    #[arg(long, allow_hyphen_values = true)]
+    pub n: Option<String>,
+    /// Horizontal axis in rho = sqrt(kappa): a:b:STEPS (the paper's axis).
+    #[arg(long, value_name = "A:B:STEPS", conflicts_with = "kappa", allow_hyphen_values = true)]
+    pub rho: Option<String>,
+    /// Horizontal axis in kappa instead: a:b:STEPS.
+    #[arg(long, value_name = "A:B:STEPS", allow_hyphen_values = true)]
+    pub kappa: Option<String>,
+    /// Vertical axis, the coefficient of restitution: c:d:STEPS within [0, 1].
+    #[arg(long, value_name = "C:D:STEPS", allow_hyphen_values = true)]
+    pub gamma: Option<String>,
+    /// Also make an exact certificate at every point where the pipeline can (n = 3, 4, 6).
+    #[arg(long)]
+    pub certify: bool,
+    /// Exact refutations where no cone exists (not available yet: exits with status 2).
+    #[arg(long, hide = true)]
+    pub refute: bool,
+    /// Also simulate RUNS of the paper's random drops per point (200 impacts each).
+    #[arg(long, value_name = "RUNS", allow_hyphen_values = true)]
+    pub simulate: Option<String>,
+    /// Output folder.
+    #[arg(long, short = 'o', value_name = "DIR", default_value = "map")]
+    pub out: PathBuf,
+    /// Worker threads (default: all cores).
+    #[arg(long, value_name = "J", allow_hyphen_values = true)]
+    pub jobs: Option<String>,
+    /// Evaluate only part K of N (K = 0..N-1), or `auto` to read K and N from a SLURM job array.
+    #[arg(long, value_name = "K/N|auto")]
+    pub shard: Option<String>,
+}
+
+/// `chatter map merge`.
+#[derive(Subcommand, Debug)]
+pub enum MapSub {
+    /// Join the output folders of all shards of a sweep into the files of one run.
+    Merge(MergeArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct MergeArgs {
+    /// The shards' output folders.
+    #[arg(required = true, value_name = "DIR")]
+    pub dirs: Vec<PathBuf>,
+    /// Output folder.
+    #[arg(long, short = 'o', value_name = "DIR")]
+    pub out: PathBuf,
+}
+
+/// A validated `chatter map`.
+struct Validated {
+    request: Request,
+    out: PathBuf,
+    jobs: Option<usize>,
+}
+
+fn validate(a: MapArgs, env_var: impl Fn(&str) -> Option<String>) -> Result<Validated, String> {
+    if a.refute {
+        return Err(
+            "--refute: exact refutations are not available yet (they arrive with the regions work); \
+the map's `refuted` column stays empty until then"
+                .into(),
+        );
+    }
+    let n_text = a.n.ok_or("--n is required (3, 4, 5 or 6)")?;
+    let n: u64 = n_text.trim().parse().map_err(|_| format!("--n: {n_text:?} is not a positive integer"))?;
+    let (variable, x) = match (a.rho, a.kappa) {
+        (Some(r), None) => (Variable::Rho, Axis::parse(&r).map_err(|e| format!("--rho: {e}"))?),
+        (None, Some(k)) => (Variable::Kappa, Axis::parse(&k).map_err(|e| format!("--kappa: {e}"))?),
+        _ => return Err("give the horizontal axis with --rho a:b:STEPS or --kappa a:b:STEPS".into()),
+    };
+    let gamma_text = a.gamma.ok_or("--gamma c:d:STEPS is required")?;
+    let gamma = Axis::parse(&gamma_text).map_err(|e| format!("--gamma: {e}"))?;
+    let grid = Grid { n, variable, x, gamma };
+    grid.validate()?;
+    let simulate = match a.simulate {
+        None => None,
+        Some(s) => {
+            let runs: u64 =
+                s.trim().parse().map_err(|_| format!("--simulate: {s:?} is not a positive integer"))?;
+            if runs == 0 || runs > MAX_RUNS {
+                return Err(format!("--simulate: RUNS must be between 1 and {MAX_RUNS}"));
+            }
+            Some(runs)
+        }
+    };
+    let shard = match a.shard.as_deref() {
+        None => Shard::ALL,
+        Some("auto") => Shard::from_slurm(env_var).map_err(|e| format!("--shard auto: {e}"))?,
+        Some(s) => Shard::parse(s).map_err(|e| format!("--shard: {e}"))?,
+    };
+    let jobs = match a.jobs {
+        None => None,
+        Some(j) => match j.trim().parse::<usize>() {
+            Ok(j) if (1..=1024).contains(&j) => Some(j),
+            _ => return Err(format!("--jobs: {j:?} is not a number of threads in 1..=1024")),
+        },
+    };
+    if a.certify && n == 5 {
+        eprintln!(
+            "note: certificates for n = 5 need the number-field kernel (not available yet); the certified and claim columns stay empty"
+        );
+    }
+    let tasks = Tasks { certify: a.certify, simulate };
+    Ok(Validated { request: Request { grid, tasks, shard }, out: a.out, jobs })
+}
+
+/// Runs `f` on a pool of `jobs` threads (or the global pool).
+pub fn with_jobs<T: Send>(jobs: Option<usize>, f: impl FnOnce() -> T + Send) -> Result<T, String> {
+    match jobs {
+        None => Ok(f()),
+        Some(j) => rayon::ThreadPoolBuilder::new()
+            .num_threads(j)
+            .build()
+            .map(|pool| pool.install(f))
+            .map_err(|e| format!("cannot start {j} threads: {e}")),
+    }
+}
+
+/// A progress bar on stderr when it is a terminal, hidden otherwise.
+pub fn progress(len: u64, what: &str) -> indicatif::ProgressBar {
+    let bar = indicatif::ProgressBar::new(len);
+    if std::io::stderr().is_terminal() {
+        let template = format!("{{bar:40}} {{pos}}/{{len}} {what} {{elapsed}} (eta {{eta}})");
+        if let Ok(style) = indicatif::ProgressStyle::with_template(&template) {
+            bar.set_style(style);
+        }
+    } else {
+        bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
+    }
+    bar
+}
+
+/// One line per count of the summary.
+pub fn summary_lines(s: &Summary) -> Vec<String> {
+    let mut lines = Vec::new();
+    for (column, values) in &s.counts {
+        let v: Vec<String> = values.iter().map(|(k, n)| format!("{k} {n}")).collect();
+        lines.push(format!("  {column}: {}", v.join(", ")));
+    }
+    for (kind, k) in &s.disagreement_kinds {
+        if k.points > 0 {
+            lines.push(format!("  disagreement {kind}: {} points", k.points));
+        }
+    }
+    lines
+}
+
+/// Runs a validated sweep and writes its folder.
+fn sweep(v: Validated) -> cli::Outcome {
+    let req = &v.request;
+    let count = req.shard.indices(req.grid.len()).count() as u64;
+    let bar = progress(count, "points");
+    let start = std::time::Instant::now();
+    let done = match with_jobs(v.jobs, || sweep::run(req, &|| bar.inc(1))) {
+        Ok(d) => d,
+        Err(e) => return cli::Outcome::Usage(e),
+    };
+    bar.finish_and_clear();
+    let secs = start.elapsed().as_secs_f64();
+    if let Some(d) = done.iter().find(|d| d.internal.is_some()) {
+        return cli::Outcome::Internal(format!(
+            "point {} (kappa = {}, gamma = {}): {}",
+            d.row.index,
+            d.row.kappa,
+            d.row.gamma,
+            d.internal.as_deref().unwrap_or_default()
+        ));
+    }
+    let summary = match sweep::write_output(&v.out, req, &done) {
+        Ok(s) => s,
+        Err(e) => return cli::Outcome::Usage(e),
+    };
+    let g = &req.grid;
+    let part = if req.shard.count > 1 {
+        format!(" (shard {}/{})", req.shard.index, req.shard.count)
+    } else {
+        String::new()
+    };
+    emit(&format!(
+        "map n={} {}={} gamma={}: {count} points{part} in {secs:.1} s ({:.0} points/s) -> {}",
+        g.n,
+        if g.variable == Variable::Rho { "rho" } else { "kappa" },
+        g.x.text(),
+        g.gamma.text(),
+        count as f64 / secs.max(1e-9),
+        v.out.display()
+    ));
+    for l in summary.as_ref().map(summary_lines).unwrap_or_default() {
+        emit(&l);
+    }
+    cli::Outcome::Success
+}
+
+pub fn run(a: MapArgs) -> cli::Outcome {
+    if let Some(MapSub::Merge(m)) = a.merge {
+        return match sweep::merge(&m.dirs, &m.out) {
+            Ok(s) => {
+                emit(&format!("merged {} shards: {} points -> {}", m.dirs.len(), s.points, m.out.display()));
+                for l in summary_lines(&s) {
+                    emit(&l);
+                }
+                cli::Outcome::Success
+            }
+            Err(e) => cli::Outcome::Usage(e),
+        };
+    }
+    match validate(a, |k| std::env::var(k).ok()) {
+        Ok(v) => sweep(v),
+        Err(e) => cli::Outcome::Usage(e),
+    }
+}

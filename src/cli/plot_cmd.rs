@@ -1,0 +1,115 @@
+//! `chatter plot`: the paper's figures from a map's folder or a certificate (SVG or PNG by the
+//! file extension).
+
+use super::{self as cli, emit};
+use crate::plot::cone::ConeFigure;
+use crate::plot::map::{MapFigure, Panel, body_name};
+use crate::plot::{Format, save};
+use crate::sweep::{self, curves};
+use clap::{Args, Subcommand};
+use std::path::{Path, PathBuf};
+
+/// Columns (and rows) along which the exact curves are computed.
+pub const CURVE_LINES: u32 = 200;
+
+/// Raw arguments of `chatter plot`.
+#[derive(Args, Debug)]
+#[command(after_help = "Figures are SVG or PNG, chosen by the extension of -o. Text is set in DejaVu Sans \
+(Debian: fonts-dejavu-core; or set CHATTER_FONT to a .ttf file).\n\n\
+Examples:\n  chatter map --n 3 --rho 0:1:100 --gamma 0:1:100 --certify --out map3\n  \
+chatter plot map map3 -o map3.png\n  \
+chatter map --n 3 --rho 0:1:60 --gamma 0:0.3:60 --simulate 20 --out sim3\n  \
+chatter plot simulations sim3 -o sim3.svg\n  \
+chatter certify --n 4 --kappa 1/6 --gamma 1/100 -o square.ron && chatter plot cone square.ron -o cone.png")]
+pub struct PlotArgs {
+    #[command(subcommand)]
+    pub what: PlotWhat,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum PlotWhat {
+    /// A map panel (figure "sajatertekek", left): finder verdicts, exact eigenvalue curves, certified points.
+    Map(MapPlotArgs),
+    /// A simulation map (figure "simulations"): level curves of the mean impact count (needs map --simulate).
+    Simulations(MapPlotArgs),
+    /// An effectively invariant cone on the plane v = -1 (figure "sajatertekek", right).
+    Cone(ConePlotArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct MapPlotArgs {
+    /// A folder written by `chatter map` (or `chatter map merge`).
+    #[arg(value_name = "DIR")]
+    pub dir: PathBuf,
+    /// Output file: .svg or .png.
+    #[arg(short = 'o', long = "out", value_name = "FILE")]
+    pub out: PathBuf,
+}
+
+#[derive(Args, Debug)]
+pub struct ConePlotArgs {
+    /// A certificate of a regular polygon (n = 3, 4, 6).
+    #[arg(value_name = "CERT")]
+    pub cert: PathBuf,
+    /// Output file: .svg or .png.
+    #[arg(short = 'o', long = "out", value_name = "FILE")]
+    pub out: PathBuf,
+}
+
+/// The map figure of a folder.
+pub fn map_figure(dir: &Path, panel: Panel) -> Result<MapFigure, String> {
+    let (grid, computed, rows) = sweep::load(dir)?;
+    if panel == Panel::Simulations && computed.simulate == 0 {
+        return Err(format!(
+            "{}: the map has no simulations (run chatter map with --simulate RUNS)",
+            dir.display()
+        ));
+    }
+    let curves = curves::curves(
+        grid.n,
+        grid.variable,
+        (&grid.x.lo, &grid.x.hi),
+        (&grid.gamma.lo, &grid.gamma.hi),
+        CURVE_LINES,
+    );
+    let what = match panel {
+        Panel::Cones => "cone finder and exact eigenvalue curves".to_string(),
+        Panel::Simulations => format!("{} random drops per point, 200 impacts each", computed.simulate),
+    };
+    let title = format!("n = {} ({}): {what}", grid.n, body_name(grid.n));
+    Ok(MapFigure { grid, rows, curves, panel, title, points: Vec::new() })
+}
+
+fn run_inner(a: PlotArgs) -> Result<String, String> {
+    match a.what {
+        PlotWhat::Map(m) | PlotWhat::Simulations(m) if Format::of(&m.out).is_err() => {
+            Format::of(&m.out).map(|_| String::new())
+        }
+        PlotWhat::Map(m) => {
+            save(&map_figure(&m.dir, Panel::Cones)?, &m.out)?;
+            Ok(format!("wrote {}", m.out.display()))
+        }
+        PlotWhat::Simulations(m) => {
+            save(&map_figure(&m.dir, Panel::Simulations)?, &m.out)?;
+            Ok(format!("wrote {}", m.out.display()))
+        }
+        PlotWhat::Cone(c) => {
+            Format::of(&c.out)?;
+            let text = std::fs::read_to_string(&c.cert).map_err(|e| format!("{}: {e}", c.cert.display()))?;
+            let fig =
+                ConeFigure::from_certificate(&text).map_err(|e| format!("{}: {e}", c.cert.display()))?;
+            save(&fig, &c.out)?;
+            Ok(format!("wrote {}", c.out.display()))
+        }
+    }
+}
+
+pub fn run(a: PlotArgs) -> cli::Outcome {
+    match run_inner(a) {
+        Ok(line) => {
+            emit(&line);
+            cli::Outcome::Success
+        }
+        Err(e) => cli::Outcome::Usage(e),
+    }
+}

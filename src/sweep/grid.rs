@@ -1,0 +1,186 @@
+//! The parameter plane of the paper's maps (figures "sajatertekek" and "simulations"): a grid of
+//! cell centres over (rho = sqrt(kappa), gamma) or (kappa, gamma), and its split into shards.
+
+use crate::exact::{Q, parse_user_number};
+use serde::{Deserialize, Serialize};
+
+/// Largest number of steps on one axis.
+pub const MAX_STEPS: u32 = 10_000;
+
+/// The horizontal variable of a map.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Variable {
+    /// rho = sqrt(kappa), the paper's horizontal axis; kappa = rho^2 is exact.
+    Rho,
+    /// kappa itself.
+    Kappa,
+}
+
+/// One axis `a:b:STEPS`: the centres of STEPS equal cells of [a, b],
+/// a + (i + 1/2)(b - a)/STEPS for i = 0..STEPS-1 (so (0, 1) never touches 0 or 1).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Axis {
+    pub lo: Q,
+    pub hi: Q,
+    pub steps: u32,
+}
+
+impl Axis {
+    /// Reads `a:b:STEPS` (numbers exact, as everywhere: 0.1 is 1/10).
+    pub fn parse(text: &str) -> Result<Axis, String> {
+        let parts: Vec<&str> = text.split(':').collect();
+        let [a, b, s] = parts.as_slice() else {
+            return Err(format!("{text:?} is not of the form a:b:STEPS (e.g. 0:1:100)"));
+        };
+        let lo = parse_user_number(a)?;
+        let hi = parse_user_number(b)?;
+        let steps: u32 = s.trim().parse().map_err(|_| format!("STEPS {s:?} is not a positive integer"))?;
+        if steps == 0 || steps > MAX_STEPS {
+            return Err(format!("STEPS must be between 1 and {MAX_STEPS}"));
+        }
+        if lo >= hi {
+            return Err(format!("the interval {lo}:{hi} is empty (a must be below b)"));
+        }
+        Ok(Axis { lo, hi, steps })
+    }
+
+    /// The centre of cell i.
+    pub fn value(&self, i: u32) -> Q {
+        let width = &self.hi - &self.lo;
+        &self.lo + &(width * Q::new(2 * i as i64 + 1, 2 * self.steps as i64))
+    }
+
+    /// `a:b:STEPS` in canonical numbers.
+    pub fn text(&self) -> String {
+        format!("{}:{}:{}", self.lo, self.hi, self.steps)
+    }
+}
+
+/// A map's grid: the body (regular n-gon), the horizontal axis and the gamma axis.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Grid {
+    pub n: u64,
+    pub variable: Variable,
+    pub x: Axis,
+    pub gamma: Axis,
+}
+
+/// One grid point, with exact parameters.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Point {
+    /// index = ix * (gamma steps) + ig: the row of points.csv.
+    pub index: usize,
+    pub ix: u32,
+    pub ig: u32,
+    /// rho when it is the grid's variable (exact); else sqrt(kappa) is printed as a decimal.
+    pub rho: Option<Q>,
+    pub kappa: Q,
+    pub gamma: Q,
+}
+
+impl Grid {
+    /// Number of points.
+    pub fn len(&self) -> usize {
+        self.x.steps as usize * self.gamma.steps as usize
+    }
+
+    /// Whether the grid has no point (never, for a parsed grid).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The point of row `index`.
+    pub fn point(&self, index: usize) -> Point {
+        let per = self.gamma.steps as usize;
+        let (ix, ig) = ((index / per) as u32, (index % per) as u32);
+        let x = self.x.value(ix);
+        let gamma = self.gamma.value(ig);
+        match self.variable {
+            Variable::Rho => Point { index, ix, ig, kappa: &x * &x, rho: Some(x), gamma },
+            Variable::Kappa => Point { index, ix, ig, rho: None, kappa: x, gamma },
+        }
+    }
+
+    /// Checks that every point is a body: kappa > 0 and 0 <= gamma <= 1.
+    pub fn validate(&self) -> Result<(), String> {
+        if !(3..=6).contains(&self.n) {
+            return Err(format!(
+                "--n: {} is not supported by maps: use 3, 4, 5 or 6 (the simulator handles up to 6 contacts; the rod's CC region is Goyal's closed formula)",
+                self.n
+            ));
+        }
+        let zero = Q::int(0);
+        if self.x.lo < zero {
+            let name = if self.variable == Variable::Rho { "--rho" } else { "--kappa" };
+            return Err(format!("{name}: the axis must lie in [0, ...) (cell centres are then > 0)"));
+        }
+        if self.gamma.lo < zero || self.gamma.hi > Q::int(1) {
+            return Err("--gamma: the axis must lie in [0, 1]".into());
+        }
+        Ok(())
+    }
+}
+
+/// Part K of N of a sweep (K = 0..N-1): the points whose index is K modulo N, so that every
+/// shard gets a share of the slow points near the thresholds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Shard {
+    pub index: u32,
+    pub count: u32,
+}
+
+impl Shard {
+    /// The whole grid.
+    pub const ALL: Shard = Shard { index: 0, count: 1 };
+
+    /// Reads `K/N` (0 <= K < N).
+    pub fn parse(text: &str) -> Result<Shard, String> {
+        let (k, n) = text.split_once('/').ok_or_else(|| format!("{text:?} is not K/N or auto"))?;
+        let k: u32 = k.trim().parse().map_err(|_| format!("K in {text:?} is not a non-negative integer"))?;
+        let n: u32 = n.trim().parse().map_err(|_| format!("N in {text:?} is not a positive integer"))?;
+        if n == 0 || k >= n {
+            return Err(format!("shard {k}/{n}: K must satisfy 0 <= K < N"));
+        }
+        Ok(Shard { index: k, count: n })
+    }
+
+    /// K and N from a SLURM job array, counting as SLURM does: task IDs run from
+    /// SLURM_ARRAY_TASK_MIN in steps of SLURM_ARRAY_TASK_STEP, SLURM_ARRAY_TASK_COUNT of them
+    /// (`--array=0-9`, `--array=1-10` and `--array=0-18:2` all give shards 0..9 of 10).
+    pub fn from_slurm(var: impl Fn(&str) -> Option<String>) -> Result<Shard, String> {
+        let get = |name: &str, default: Option<u64>| -> Result<u64, String> {
+            match var(name) {
+                Some(v) => {
+                    v.trim().parse().map_err(|_| format!("{name}={v:?} is not a non-negative integer"))
+                }
+                None => default.ok_or_else(|| {
+                    format!(
+                        "--shard auto needs a SLURM job array ({name} is not set; submit with sbatch --array)"
+                    )
+                }),
+            }
+        };
+        let id = get("SLURM_ARRAY_TASK_ID", None)?;
+        let count = get("SLURM_ARRAY_TASK_COUNT", None)?;
+        let min = get("SLURM_ARRAY_TASK_MIN", Some(0))?;
+        let step = get("SLURM_ARRAY_TASK_STEP", Some(1))?.max(1);
+        if id < min || (id - min) % step != 0 {
+            return Err(format!(
+                "SLURM_ARRAY_TASK_ID={id} is not in the array {min}, {min}+{step}, ... (an array with gaps such as --array=1,5,9 cannot be split evenly: use a range)"
+            ));
+        }
+        let k = (id - min) / step;
+        if count == 0 || k >= count || count > u32::MAX as u64 {
+            return Err(format!(
+                "SLURM_ARRAY_TASK_ID={id} is task {k} of SLURM_ARRAY_TASK_COUNT={count}: out of range"
+            ));
+        }
+        Ok(Shard { index: k as u32, count: count as u32 })
+    }
+
+    /// The indices of this shard's points, in order.
+    pub fn indices(self, len: usize) -> impl Iterator<Item = usize> {
+        (self.index as usize..len).step_by(self.count as usize)
+    }
+}

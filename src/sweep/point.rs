@@ -1,0 +1,146 @@
+//! One point of a map: the exact CC and PCC criteria, the float finder's verdict from the paper's
+//! seed, optionally an exact certificate, and optionally the paper's random drops.
+
+use super::grid::Point;
+use crate::bodies::cosine;
+use crate::certify::{Failure, Request, certify};
+use crate::exact::{OrderedField, Q, QExt};
+use crate::finder::{FinderConfig, Seed, find_cone};
+use crate::model::FloatBody;
+use crate::simulate::{Arithmetic, Model, Options, Outcome, counts, simulate_many};
+use crate::spectral::criteria::{Family, cc_criterion, pcc_criterion};
+use chatter_kernel::certificate::write;
+use chatter_kernel::model::{Polygon, Shape};
+
+/// The paper's impact budget per simulated drop (section "Comparison with direct simulation").
+pub const PAPER_BUDGET: usize = 200;
+
+/// What to compute at every point besides the criteria and the finder.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Tasks {
+    /// Try for an exact certificate (n = 3, 4, 6).
+    pub certify: bool,
+    /// Random drops per point (the paper's protocol, 200 impacts each).
+    pub simulate: Option<u64>,
+}
+
+/// Outcome counts and mean impact count of the random drops at one point.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SimStats {
+    pub runs: u64,
+    /// In the order of [`Outcome::ALL`]: CC, PCC, ICC, undecided, simultaneous.
+    pub counts: [u64; 5],
+    /// Sum over the drops of the impacts before the drop ended, capped at the budget; a drop
+    /// classified PCC counts as the full budget (the paper's runs would have continued it).
+    pub impacts: u64,
+}
+
+impl SimStats {
+    /// Mean impact count per drop.
+    pub fn mean_impacts(&self) -> f64 {
+        self.impacts as f64 / self.runs as f64
+    }
+}
+
+/// Everything computed at one point.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Evaluation {
+    pub cc_criterion: bool,
+    pub pcc_criterion: bool,
+    /// "found", "no-cone" or "inconclusive" (the float finder from -U_0 u_3, as in the paper).
+    pub finder: &'static str,
+    /// With certify: `Some(claim name)` when a certificate was made, `Some(None)` when not; `None`
+    /// when not attempted (not asked, or n = 5 whose certificates need a number-field kernel).
+    pub certified: Option<Option<&'static str>>,
+    /// The certificate's text (RON), to be written under the output folder.
+    pub certificate: Option<String>,
+    pub sim: Option<SimStats>,
+    /// A backend disagreement inside the kernel (an internal error to report).
+    pub internal: Option<String>,
+}
+
+/// cos(2 pi/n) as an exact rational when it is one (n = 3, 4, 6), else its nearest `f64` taken as
+/// an exact dyadic: the float finder and the f64 simulator then work to f64 accuracy, as always.
+fn model_cosine(n: u64) -> (Q, bool) {
+    match cosine(n as usize).as_rational() {
+        Some(c) => (c, true),
+        None => {
+            let c = (2.0 * std::f64::consts::PI / n as f64).cos();
+            (Q::from_f64_exact(c).expect("finite cosine"), false)
+        }
+    }
+}
+
+/// The exact CC and PCC criteria (docs/model.md §6), over Q or in Q(cos 2 pi/n).
+pub fn criteria(n: u64, kappa: &Q, gamma: &Q) -> (bool, bool) {
+    let c1 = cosine(n as usize);
+    match c1.as_rational() {
+        Some(c) => at(&Family { n, c1: c, kappa: kappa.clone() }, gamma),
+        None => at(&Family { n, c1, kappa: crate::spectral::number_field::Nf::from_q(kappa) }, gamma),
+    }
+}
+
+fn at<F: OrderedField>(fam: &Family<F>, gamma: &Q) -> (bool, bool) {
+    let body = fam.at(gamma);
+    (cc_criterion(&body).0, pcc_criterion(&body).0)
+}
+
+/// The polygon the float finder and the simulator run on (exact cosine where rational).
+pub fn float_model(n: u64, kappa: &Q, gamma: &Q) -> Polygon<Q> {
+    Polygon::with_cosine(n, model_cosine(n).0, kappa.clone(), gamma.clone()).expect("a validated grid point")
+}
+
+/// The paper's random drops at one point; seeds depend on the point alone ([`point_seed`]).
+pub fn simulate_point(n: u64, p: &Point, runs: u64) -> SimStats {
+    let model = Model::from_body(&Shape::Polygon(float_model(n, &p.kappa, &p.gamma)));
+    let briefs = simulate_many(
+        &model,
+        point_seed(n, &p.kappa, &p.gamma),
+        runs,
+        Arithmetic::Float,
+        &Options::new(PAPER_BUDGET),
+        &|| {},
+    );
+    let impacts = briefs
+        .iter()
+        .map(|b| if b.outcome == Outcome::Pcc { PAPER_BUDGET } else { b.impacts.min(PAPER_BUDGET) } as u64)
+        .sum();
+    SimStats { runs, counts: counts(&briefs).map(|c| c as u64), impacts }
+}
+
+/// The first seed of a point's drops: FNV-1a of "n/kappa/gamma", so that a point gets the same
+/// drops in every grid, shard and thread count.
+pub fn point_seed(n: u64, kappa: &Q, gamma: &Q) -> u64 {
+    format!("{n}/{kappa}/{gamma}")
+        .bytes()
+        .fold(0xcbf2_9ce4_8422_2325, |h, b| (h ^ b as u64).wrapping_mul(0x0100_0000_01b3))
+}
+
+/// Evaluates one point.
+pub fn evaluate(n: u64, p: &Point, tasks: Tasks) -> Evaluation {
+    let (cc_criterion, pcc_criterion) = criteria(n, &p.kappa, &p.gamma);
+    let body = float_model(n, &p.kappa, &p.gamma);
+    let finder = find_cone(&FloatBody::new(&body), Seed::Translation, &FinderConfig::default()).label();
+    let mut e = Evaluation {
+        cc_criterion,
+        pcc_criterion,
+        finder,
+        certified: None,
+        certificate: None,
+        sim: None,
+        internal: None,
+    };
+    if tasks.certify && model_cosine(n).1 {
+        let report = certify(&Request::new(n, p.kappa.clone(), p.gamma.clone()));
+        match report.result {
+            Ok(cert) => {
+                e.certified = Some(Some(cert.claim.name()));
+                e.certificate = Some(write(&cert));
+            }
+            Err(Failure::Internal(s)) => e.internal = Some(s),
+            Err(_) => e.certified = Some(None),
+        }
+    }
+    e.sim = tasks.simulate.map(|runs| simulate_point(n, p, runs));
+    e
+}

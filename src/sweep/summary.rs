@@ -1,0 +1,181 @@
+//! summary.json: the counts of a map and every point where the float finder, the certificates,
+//! the exact criteria and the simulations disagree: the paper's Conjecture 1 ((i) CC or PCC in
+//! drops, (ii) an effectively invariant cone, (iii) S_1's dominant eigenvalue real and positive)
+//! and Conjecture 2 (PCC iff all eigenvalues of S_{n-1} S_1 are real) checked on the grid.
+
+use super::grid::Grid;
+use super::table::Row;
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+/// What was computed at every point.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, serde::Deserialize)]
+pub struct Computed {
+    pub certify: bool,
+    pub refute: bool,
+    /// Random drops per point (0: none).
+    pub simulate: u64,
+    /// Impact budget of each drop.
+    pub budget: usize,
+}
+
+/// A point where two verdicts disagree.
+#[derive(Clone, Debug, Serialize)]
+pub struct Disagreement {
+    pub index: usize,
+    pub rho: String,
+    pub kappa: String,
+    pub gamma: String,
+    /// One of [`KINDS`].
+    pub kind: &'static str,
+    pub detail: String,
+}
+
+/// The kinds of disagreement, with what each means.
+pub const KINDS: [(&str, &str); 8] = [
+    (
+        "finder-found-criterion-fails",
+        "the float finder found a cone where S_1's dominant eigenvalue is not real and positive (Conjecture 1 (ii) => (iii), numerically)",
+    ),
+    (
+        "finder-no-cone-criterion-holds",
+        "the float finder proved no cone contains the paper's seed where the CC criterion holds (Conjecture 1 (iii) => (ii), numerically)",
+    ),
+    (
+        "certified-criterion-fails",
+        "an exact certificate where the CC criterion fails: a counterexample to Conjecture 1 (ii) => (iii)",
+    ),
+    ("certified-finder-no-cone", "an exact certificate where the float finder reported no cone"),
+    (
+        "simulated-chatter-criterion-fails",
+        "random drops end in CC or PCC where the CC criterion fails: against Conjecture 1 (i) => (iii)",
+    ),
+    (
+        "criterion-holds-all-icc",
+        "the CC criterion holds but every random drop ends in ICC (the conjecture speaks of suitable initial conditions, so this contradicts the paper's figure, not the conjecture)",
+    ),
+    (
+        "certified-simulated-icc",
+        "a certificate covering every all-down drop, yet a simulated drop (all contacts moving down) ended in ICC",
+    ),
+    (
+        "simulated-pcc-criterion-fails",
+        "a random drop ended in PCC where S_{n-1} S_1 has non-real eigenvalues (against the PCC Lemma)",
+    ),
+];
+
+/// A kind of disagreement: what it means and at how many points it occurs.
+#[derive(Clone, Debug, Serialize)]
+pub struct KindCount {
+    pub meaning: &'static str,
+    pub points: u64,
+}
+
+/// summary.json.
+#[derive(Clone, Debug, Serialize)]
+pub struct Summary {
+    pub grid: Grid,
+    pub computed: Computed,
+    pub points: usize,
+    /// Counts of each column's values ("true", "false", finder verdicts, claims, outcomes).
+    pub counts: BTreeMap<&'static str, BTreeMap<String, u64>>,
+    /// Kind -> meaning and number of points.
+    pub disagreement_kinds: BTreeMap<&'static str, KindCount>,
+    pub disagreements: Vec<Disagreement>,
+}
+
+fn bump(m: &mut BTreeMap<&'static str, BTreeMap<String, u64>>, column: &'static str, value: String) {
+    *m.entry(column).or_default().entry(value).or_default() += 1;
+}
+
+/// The disagreements at one row.
+fn disagreements(r: &Row) -> Vec<(&'static str, String)> {
+    let mut out = Vec::new();
+    let cc = r.cc_criterion;
+    let claim = r.claim.clone().unwrap_or_default();
+    if r.finder == "found" && !cc {
+        out.push((KINDS[0].0, "finder found, CC criterion fails".to_string()));
+    }
+    if r.finder == "no-cone" && cc {
+        out.push((KINDS[1].0, "finder no-cone, CC criterion holds".to_string()));
+    }
+    if r.certified == Some(true) && !cc {
+        out.push((KINDS[2].0, format!("certificate {claim}, CC criterion fails")));
+    }
+    if r.certified == Some(true) && r.finder == "no-cone" {
+        out.push((KINDS[3].0, format!("certificate {claim}, finder no-cone")));
+    }
+    if let Some(s) = &r.sim {
+        let [c, p, i, _, _] = s.counts;
+        if c + p > 0 && !cc {
+            out.push((KINDS[4].0, format!("{c} CC and {p} PCC of {} drops, CC criterion fails", s.runs)));
+        }
+        if cc && i == s.runs {
+            out.push((KINDS[5].0, format!("all {i} drops ICC, CC criterion holds")));
+        }
+        if i > 0 && r.certified == Some(true) && claim != "EffectivelyInvariant" {
+            out.push((KINDS[6].0, format!("certificate {claim}, {i} of {} drops ICC", s.runs)));
+        }
+        if p > 0 && !r.pcc_criterion {
+            out.push((KINDS[7].0, format!("{p} PCC drops, PCC criterion fails")));
+        }
+    }
+    out
+}
+
+impl Summary {
+    /// The summary of a complete map (rows in index order).
+    pub fn new(grid: &Grid, computed: &Computed, rows: &[Row]) -> Summary {
+        let mut counts = BTreeMap::new();
+        let mut list = Vec::new();
+        for r in rows {
+            bump(&mut counts, "cc_criterion", r.cc_criterion.to_string());
+            bump(&mut counts, "pcc_criterion", r.pcc_criterion.to_string());
+            bump(&mut counts, "finder", r.finder.clone());
+            if let Some(c) = r.certified {
+                bump(&mut counts, "certified", c.to_string());
+            }
+            if let Some(c) = &r.claim {
+                bump(&mut counts, "claim", c.clone());
+            }
+            if let Some(s) = &r.sim {
+                for (name, k) in crate::simulate::Outcome::ALL.iter().zip(s.counts) {
+                    *counts
+                        .entry("simulated_drops")
+                        .or_default()
+                        .entry(name.name().to_string())
+                        .or_default() += k;
+                }
+            }
+            for (kind, detail) in disagreements(r) {
+                list.push(Disagreement {
+                    index: r.index,
+                    rho: r.rho.clone(),
+                    kappa: r.kappa.to_string(),
+                    gamma: r.gamma.to_string(),
+                    kind,
+                    detail,
+                });
+            }
+        }
+        let disagreement_kinds = KINDS
+            .iter()
+            .map(|(k, meaning)| {
+                (*k, KindCount { meaning, points: list.iter().filter(|d| d.kind == *k).count() as u64 })
+            })
+            .collect();
+        Summary {
+            grid: grid.clone(),
+            computed: computed.clone(),
+            points: rows.len(),
+            counts,
+            disagreement_kinds,
+            disagreements: list,
+        }
+    }
+
+    /// The JSON text written to summary.json.
+    pub fn json(&self) -> String {
+        serde_json::to_string_pretty(self).expect("serialisable") + "\n"
+    }
+}

@@ -1,0 +1,152 @@
+//! points.csv: one row per grid point (docs/map.md lists the columns). Every field is plain text
+//! without commas or quotes; empty means "not computed".
+
+use super::grid::{Grid, Point};
+use super::point::{Evaluation, SimStats};
+use crate::exact::{Q, QExt};
+
+/// The header of points.csv.
+pub const HEADER: &str = "index,n,rho,kappa,gamma,cc_criterion,pcc_criterion,finder,certified,claim,refuted,\
+sim_runs,sim_cc,sim_pcc,sim_icc,sim_undecided,sim_simultaneous,mean_impacts,certificate";
+
+/// One row of points.csv.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    pub index: usize,
+    pub n: u64,
+    /// Exact when the grid is in rho, else sqrt(kappa) as the nearest f64.
+    pub rho: String,
+    pub kappa: Q,
+    pub gamma: Q,
+    pub cc_criterion: bool,
+    pub pcc_criterion: bool,
+    pub finder: String,
+    pub certified: Option<bool>,
+    pub claim: Option<String>,
+    /// Exact refutation (not available yet: always empty).
+    pub refuted: Option<bool>,
+    pub sim: Option<SimStats>,
+    /// The certificate's path relative to the output folder.
+    pub certificate: Option<String>,
+}
+
+/// The certificate file of a point, relative to the output folder.
+pub fn certificate_path(p: &Point) -> String {
+    format!("certificates/x{:04}-g{:04}.ron", p.ix, p.ig)
+}
+
+impl Row {
+    /// The row of an evaluated point.
+    pub fn new(grid: &Grid, p: &Point, e: &Evaluation) -> Row {
+        let rho = match &p.rho {
+            Some(r) => r.to_string(),
+            None => format!("{}", p.kappa.to_f64().sqrt()),
+        };
+        Row {
+            index: p.index,
+            n: grid.n,
+            rho,
+            kappa: p.kappa.clone(),
+            gamma: p.gamma.clone(),
+            cc_criterion: e.cc_criterion,
+            pcc_criterion: e.pcc_criterion,
+            finder: e.finder.to_string(),
+            certified: e.certified.map(|c| c.is_some()),
+            claim: e.certified.flatten().map(str::to_string),
+            refuted: None,
+            sim: e.sim.clone(),
+            certificate: e.certificate.as_ref().map(|_| certificate_path(p)),
+        }
+    }
+
+    /// Whether the simulated drops (if any) include CC or PCC.
+    pub fn sim_chatter(&self) -> Option<bool> {
+        self.sim.as_ref().map(|s| s.counts[0] + s.counts[1] > 0)
+    }
+
+    /// The CSV line (without newline).
+    pub fn to_csv(&self) -> String {
+        let b = |x: Option<bool>| x.map(|v| v.to_string()).unwrap_or_default();
+        let s = self.sim.as_ref();
+        let count = |i: usize| s.map(|s| s.counts[i].to_string()).unwrap_or_default();
+        [
+            self.index.to_string(),
+            self.n.to_string(),
+            self.rho.clone(),
+            self.kappa.to_string(),
+            self.gamma.to_string(),
+            self.cc_criterion.to_string(),
+            self.pcc_criterion.to_string(),
+            self.finder.clone(),
+            b(self.certified),
+            self.claim.clone().unwrap_or_default(),
+            b(self.refuted),
+            s.map(|s| s.runs.to_string()).unwrap_or_default(),
+            count(0),
+            count(1),
+            count(2),
+            count(3),
+            count(4),
+            s.map(|s| format!("{}", s.mean_impacts())).unwrap_or_default(),
+            self.certificate.clone().unwrap_or_default(),
+        ]
+        .join(",")
+    }
+
+    /// Reads a line written by [`Row::to_csv`].
+    pub fn from_csv(line: &str) -> Result<Row, String> {
+        let f: Vec<&str> = line.split(',').collect();
+        let columns = HEADER.split(',').count();
+        if f.len() != columns {
+            return Err(format!("expected {columns} fields, found {}", f.len()));
+        }
+        let opt = |s: &str| (!s.is_empty()).then(|| s.to_string());
+        let boolean = |s: &str| s.parse::<bool>().map_err(|_| format!("{s:?} is not true/false"));
+        let optb = |s: &str| if s.is_empty() { Ok(None) } else { boolean(s).map(Some) };
+        let int = |s: &str| s.parse::<u64>().map_err(|_| format!("{s:?} is not a count"));
+        let q = |s: &str| s.parse::<Q>().map_err(|e| format!("{s:?}: {e}"));
+        let sim = if f[11].is_empty() {
+            None
+        } else {
+            let runs = int(f[11])?;
+            let counts = [int(f[12])?, int(f[13])?, int(f[14])?, int(f[15])?, int(f[16])?];
+            let mean: f64 = f[17].parse().map_err(|_| format!("{:?} is not a number", f[17]))?;
+            Some(SimStats { runs, counts, impacts: (mean * runs as f64).round() as u64 })
+        };
+        Ok(Row {
+            index: int(f[0])? as usize,
+            n: int(f[1])?,
+            rho: f[2].to_string(),
+            kappa: q(f[3])?,
+            gamma: q(f[4])?,
+            cc_criterion: boolean(f[5])?,
+            pcc_criterion: boolean(f[6])?,
+            finder: f[7].to_string(),
+            certified: optb(f[8])?,
+            claim: opt(f[9]),
+            refuted: optb(f[10])?,
+            sim,
+            certificate: opt(f[18]),
+        })
+    }
+}
+
+/// The whole file: header and rows in index order.
+pub fn csv(rows: &[Row]) -> String {
+    let mut out = String::from(HEADER);
+    out.push('\n');
+    for r in rows {
+        out.push_str(&r.to_csv());
+        out.push('\n');
+    }
+    out
+}
+
+/// Reads points.csv (the header must match).
+pub fn parse_csv(text: &str) -> Result<Vec<Row>, String> {
+    let mut lines = text.lines();
+    if lines.next() != Some(HEADER) {
+        return Err("not a points.csv of this version of chatter (header differs)".into());
+    }
+    lines.enumerate().map(|(i, l)| Row::from_csv(l).map_err(|e| format!("line {}: {e}", i + 2))).collect()
+}

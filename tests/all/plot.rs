@@ -1,0 +1,107 @@
+//! `chatter plot`: map panels, simulation maps and cones, in SVG and in PNG by the extension.
+
+use crate::common::bin;
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn chatter(args: &[&str], dir: &Path) -> Output {
+    Command::new(bin()).args(args).current_dir(dir).output().unwrap()
+}
+
+fn ok(o: &Output) {
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+/// Width and height of a PNG from its IHDR chunk.
+fn png_size(path: &Path) -> (u32, u32) {
+    let b = std::fs::read(path).unwrap();
+    assert_eq!(&b[..8], b"\x89PNG\r\n\x1a\n", "{} is not a PNG", path.display());
+    let be = |i: usize| u32::from_be_bytes([b[i], b[i + 1], b[i + 2], b[i + 3]]);
+    (be(16), be(20))
+}
+
+#[test]
+fn map_panels_and_simulation_maps_in_both_formats() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
+    ok(&chatter(
+        &[
+            "map",
+            "--n",
+            "3",
+            "--rho",
+            "0:1:12",
+            "--gamma",
+            "0:1:12",
+            "--certify",
+            "--simulate",
+            "4",
+            "--out",
+            "m",
+        ],
+        p,
+    ));
+    ok(&chatter(&["plot", "map", "m", "-o", "map.svg"], p));
+    let svg = std::fs::read_to_string(p.join("map.svg")).unwrap();
+    for s in [
+        "ρ = √κ",
+        "\nγ\n",
+        "cone finder: no cone",
+        "exact: CC criterion boundary",
+        "S₂S₁",
+        "certified: CompleteChatterFromAllDown",
+    ] {
+        assert!(svg.contains(s), "map.svg lacks {s}");
+    }
+    // The legend stands right of the data: its texts start beyond the plotting area.
+    let legend_x: u32 = svg
+        .split("cone finder: effectively")
+        .next()
+        .unwrap()
+        .rsplit("<text x=\"")
+        .next()
+        .unwrap()
+        .split('"')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(legend_x > 840, "legend at x = {legend_x}, inside the data");
+    ok(&chatter(&["plot", "map", "m", "-o", "map.png"], p));
+    assert_eq!(png_size(&p.join("map.png")), (2500, 1640), "PNG at twice the SVG size");
+    ok(&chatter(&["plot", "simulations", "m", "-o", "sim.svg"], p));
+    let svg = std::fs::read_to_string(p.join("sim.svg")).unwrap();
+    assert!(svg.contains("level 200") && svg.contains("4 random drops per point"));
+    // A map without simulations has no simulation map.
+    ok(&chatter(&["map", "--n", "4", "--rho", "0:1:3", "--gamma", "0:1:3", "--out", "nosim"], p));
+    let o = chatter(&["plot", "simulations", "nosim", "-o", "x.svg"], p);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--simulate"));
+}
+
+#[test]
+fn a_certificates_cone_on_the_plane() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
+    ok(&chatter(&["certify", "--n", "4", "--kappa", "1/6", "--gamma", "1/100", "-o", "sq.ron"], p));
+    ok(&chatter(&["plot", "cone", "sq.ron", "-o", "cone.svg"], p));
+    let svg = std::fs::read_to_string(p.join("cone.svg")).unwrap();
+    for s in ["K on the plane v = −1", "C₁", "C₃", "S₃(K ∩ C₃)", "p_max", "u₀ / (−v)"] {
+        assert!(svg.contains(s), "cone.svg lacks {s}");
+    }
+    ok(&chatter(&["plot", "cone", "sq.ron", "-o", "cone.png"], p));
+    assert_eq!(png_size(&p.join("cone.png")), (2500, 1640));
+    ok(&chatter(&["certify", "--n", "2", "--kappa", "1/3", "--gamma", "1/20", "-o", "rod.ron"], p));
+    std::fs::write(p.join("junk.ron"), "not a certificate").unwrap();
+    for (file, out, needle) in [
+        ("rod.ron", "r.svg", "rod"),
+        ("junk.ron", "j.svg", "not a readable certificate"),
+        ("none.ron", "n.svg", "none.ron"),
+        ("sq.ron", "x.jpg", ".svg or .png"),
+    ] {
+        let o = chatter(&["plot", "cone", file, "-o", out], p);
+        assert_eq!(o.status.code(), Some(2), "{file}");
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert!(e.contains(needle) && !e.contains("panicked"), "{file}: {e}");
+    }
+}
