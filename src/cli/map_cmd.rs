@@ -52,8 +52,9 @@ pub struct MapArgs {
     /// Also make an exact certificate at every point where the pipeline can (n = 3, 4, 6).
     #[arg(long)]
     pub certify: bool,
-    /// Exact refutations where no cone exists (not available yet: exits with status 2).
-    #[arg(long, hide = true)]
+    /// Also make an exact refutation (checked by the kernel) wherever no certificate was made
+    /// (n = 3, 4, 6), kept under DIR/refutations.
+    #[arg(long)]
     pub refute: bool,
     /// Also simulate RUNS of the paper's random drops per point (200 impacts each).
     #[arg(long, value_name = "RUNS", allow_hyphen_values = true)]
@@ -94,13 +95,6 @@ struct Validated {
 }
 
 fn validate(a: MapArgs, env_var: impl Fn(&str) -> Option<String>) -> Result<Validated, String> {
-    if a.refute {
-        return Err(
-            "--refute: exact refutations are not available yet (they arrive with the regions work); \
-the map's `refuted` column stays empty until then"
-                .into(),
-        );
-    }
     let n_text = a.n.ok_or("--n is required (3, 4, 5 or 6)")?;
     let n: u64 = n_text.trim().parse().map_err(|_| format!("--n: {n_text:?} is not a positive integer"))?;
     let (variable, x) = match (a.rho, a.kappa) {
@@ -140,7 +134,12 @@ the map's `refuted` column stays empty until then"
             "note: certificates for n = 5 need the number-field kernel (not available yet); the certified and claim columns stay empty"
         );
     }
-    let tasks = Tasks { certify: a.certify, simulate };
+    if a.refute && n == 5 {
+        eprintln!(
+            "note: refutations for n = 5 need the number-field kernel (not available yet); the refuted column stays empty"
+        );
+    }
+    let tasks = Tasks { certify: a.certify, refute: a.refute, simulate };
     Ok(Validated { request: Request { grid, tasks, shard }, out: a.out, jobs })
 }
 

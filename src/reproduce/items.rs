@@ -331,7 +331,7 @@ fn compute_map(ctx: &Context, n: u64) -> Result<(MapRun, [FigureRef; 2]), String
     let steps = if n == 5 { ctx.plan.grid5 } else { ctx.plan.grid };
     let axis = Axis { lo: Q::int(0), hi: Q::int(1), steps };
     let grid = Grid { n, variable: Variable::Rho, x: axis.clone(), gamma: axis };
-    let tasks = Tasks { certify: n != 5, simulate: Some(ctx.plan.drops) };
+    let tasks = Tasks { certify: n != 5, refute: false, simulate: Some(ctx.plan.drops) };
     let req = SweepRequest { grid: grid.clone(), tasks, shard: Shard::ALL };
     let done = sweep::run(&req, &|| {});
     if let Some(d) = done.iter().find(|d| d.internal.is_some()) {

@@ -30,18 +30,19 @@ impl Request {
     pub fn computed(&self) -> Computed {
         Computed {
             certify: self.tasks.certify,
-            refute: false,
+            refute: self.tasks.refute,
             simulate: self.tasks.simulate.unwrap_or(0),
             budget: PAPER_BUDGET,
         }
     }
 }
 
-/// One evaluated point: its row and its certificate text.
+/// One evaluated point: its row and its certificate and refutation texts.
 #[derive(Clone, Debug)]
 pub struct Done {
     pub row: Row,
     pub certificate: Option<String>,
+    pub refutation: Option<String>,
     pub internal: Option<String>,
 }
 
@@ -56,7 +57,8 @@ pub fn run(req: &Request, tick: &(dyn Fn() + Sync)) -> Vec<Done> {
             let p = req.grid.point(i);
             let e: Evaluation = evaluate(req.grid.n, &p, req.tasks);
             tick();
-            Done { row: Row::new(&req.grid, &p, &e), certificate: e.certificate, internal: e.internal }
+            let row = Row::new(&req.grid, &p, &e);
+            Done { row, certificate: e.certificate, refutation: e.refutation, internal: e.internal }
         })
         .collect()
 }
@@ -74,6 +76,7 @@ pub const POINTS: &str = "points.csv";
 pub const SUMMARY: &str = "summary.json";
 pub const SHARD: &str = "shard.json";
 pub const CERTIFICATES: &str = "certificates";
+pub const REFUTATIONS: &str = "refutations";
 
 fn io(path: &Path, e: std::io::Error) -> String {
     format!("{}: {e}", path.display())
@@ -96,9 +99,11 @@ pub fn prepare_dir(dir: &Path) -> Result<(), String> {
                 std::fs::remove_file(&p).map_err(|e| io(&p, e))?;
             }
         }
-        let c = dir.join(CERTIFICATES);
-        if c.exists() {
-            std::fs::remove_dir_all(&c).map_err(|e| io(&c, e))?;
+        for sub in [CERTIFICATES, REFUTATIONS] {
+            let c = dir.join(sub);
+            if c.exists() {
+                std::fs::remove_dir_all(&c).map_err(|e| io(&c, e))?;
+            }
         }
     }
     std::fs::create_dir_all(dir).map_err(|e| io(dir, e))
@@ -117,6 +122,9 @@ pub fn write_output(dir: &Path, req: &Request, done: &[Done]) -> Result<Option<S
     prepare_dir(dir)?;
     for d in done {
         if let (Some(text), Some(rel)) = (&d.certificate, &d.row.certificate) {
+            write(dir.join(rel), text)?;
+        }
+        if let (Some(text), Some(rel)) = (&d.refutation, &d.row.refutation) {
             write(dir.join(rel), text)?;
         }
     }
@@ -177,7 +185,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Summary, String> {
     rows.sort_by_key(|(r, _)| r.index);
     prepare_dir(out)?;
     for (r, d) in &rows {
-        if let Some(rel) = &r.certificate {
+        for rel in r.certificate.iter().chain(&r.refutation) {
             write(out.join(rel), &read(&d.join(rel))?)?;
         }
     }

@@ -20,6 +20,8 @@ pub const PAPER_BUDGET: usize = 200;
 pub struct Tasks {
     /// Try for an exact certificate (n = 3, 4, 6).
     pub certify: bool,
+    /// Try for an exact refutation where no certificate was made (n = 3, 4, 6).
+    pub refute: bool,
     /// Random drops per point (the paper's protocol, 200 impacts each).
     pub simulate: Option<u64>,
 }
@@ -54,6 +56,11 @@ pub struct Evaluation {
     pub certified: Option<Option<&'static str>>,
     /// The certificate's text (RON), to be written under the output folder.
     pub certificate: Option<String>,
+    /// With refute: `Some(true)` when an exact refutation was made and checked by the kernel,
+    /// `Some(false)` when not; `None` when not attempted (not asked, certified, or n = 5).
+    pub refuted: Option<bool>,
+    /// The refutation's text (RON), to be written under the output folder.
+    pub refutation: Option<String>,
     pub sim: Option<SimStats>,
     /// A backend disagreement inside the kernel (an internal error to report).
     pub internal: Option<String>,
@@ -127,6 +134,8 @@ pub fn evaluate(n: u64, p: &Point, tasks: Tasks) -> Evaluation {
         finder,
         certified: None,
         certificate: None,
+        refuted: None,
+        refutation: None,
         sim: None,
         internal: None,
     };
@@ -141,6 +150,36 @@ pub fn evaluate(n: u64, p: &Point, tasks: Tasks) -> Evaluation {
             Err(_) => e.certified = Some(None),
         }
     }
+    if tasks.refute && model_cosine(n).1 {
+        refute_point(n, p, &mut e);
+    }
     e.sim = tasks.simulate.map(|runs| simulate_point(n, p, runs));
     e
+}
+
+/// An exact refutation (the translation seed first, then the all-down seeds), kept only if the
+/// kernel accepts it on both backends.
+fn refute_point(n: u64, p: &Point, e: &mut Evaluation) {
+    use chatter_kernel::certificate::Claim;
+    use chatter_kernel::verify::{MALACHITE, NUM, Verdict, verify_refutation};
+    if matches!(e.certified, Some(Some(_))) {
+        return;
+    }
+    let cfg = crate::refute::RefuteConfig::default();
+    let made = [Claim::EffectivelyInvariant, Claim::CcOrPccFromAllDown]
+        .iter()
+        .find_map(|c| crate::refute::refute(n, &p.kappa, &p.gamma, *c, &cfg).ok());
+    e.refuted = Some(false);
+    if let Some(r) = made {
+        match verify_refutation(&r, Default::default(), &[MALACHITE, NUM]) {
+            Verdict::Accepted(_) => {
+                e.refuted = Some(true);
+                e.refutation = Some(chatter_kernel::refute::write(&r));
+            }
+            Verdict::Rejected(x) => {
+                e.internal = Some(format!("the kernel rejects a refutation chatter made: {x}"))
+            }
+            Verdict::Disagree(s) => e.internal = Some(s),
+        }
+    }
 }

@@ -32,7 +32,7 @@ pub struct Disagreement {
 }
 
 /// The kinds of disagreement, with what each means.
-pub const KINDS: [(&str, &str); 8] = [
+pub const KINDS: [(&str, &str); 10] = [
     (
         "finder-found-criterion-fails",
         "the float finder found a cone where S_1's dominant eigenvalue is not real and positive (Conjecture 1 (ii) => (iii), numerically)",
@@ -61,6 +61,14 @@ pub const KINDS: [(&str, &str); 8] = [
     (
         "simulated-pcc-criterion-fails",
         "a random drop ended in PCC where S_{n-1} S_1 has non-real eigenvalues (against the PCC Lemma)",
+    ),
+    (
+        "refuted-criterion-holds",
+        "an exact refutation where the CC criterion holds: a counterexample to Conjecture 1 (iii) => (ii)",
+    ),
+    (
+        "refuted-finder-found",
+        "an exact refutation where the float finder found a cone (the finder's tolerance let it stop early)",
     ),
 ];
 
@@ -105,6 +113,12 @@ fn disagreements(r: &Row) -> Vec<(&'static str, String)> {
     if r.certified == Some(true) && r.finder == "no-cone" {
         out.push((KINDS[3].0, format!("certificate {claim}, finder no-cone")));
     }
+    if r.refuted == Some(true) && cc {
+        out.push((KINDS[8].0, "refuted, CC criterion holds".to_string()));
+    }
+    if r.refuted == Some(true) && r.finder == "found" {
+        out.push((KINDS[9].0, "refuted, finder found".to_string()));
+    }
     if let Some(s) = &r.sim {
         let [c, p, i, _, _] = s.counts;
         if c + p > 0 && !cc {
@@ -137,6 +151,9 @@ impl Summary {
             }
             if let Some(c) = &r.claim {
                 bump(&mut counts, "claim", c.clone());
+            }
+            if let Some(c) = r.refuted {
+                bump(&mut counts, "refuted", c.to_string());
             }
             if let Some(s) = &r.sim {
                 for (name, k) in crate::simulate::Outcome::ALL.iter().zip(s.counts) {

@@ -7,7 +7,7 @@ use crate::exact::{Q, QExt};
 
 /// The header of points.csv.
 pub const HEADER: &str = "index,n,rho,kappa,gamma,cc_criterion,pcc_criterion,finder,certified,claim,refuted,\
-sim_runs,sim_cc,sim_pcc,sim_icc,sim_undecided,sim_simultaneous,mean_impacts,certificate";
+sim_runs,sim_cc,sim_pcc,sim_icc,sim_undecided,sim_simultaneous,mean_impacts,certificate,refutation";
 
 /// One row of points.csv.
 #[derive(Clone, Debug, PartialEq)]
@@ -23,11 +23,18 @@ pub struct Row {
     pub finder: String,
     pub certified: Option<bool>,
     pub claim: Option<String>,
-    /// Exact refutation (not available yet: always empty).
+    /// Exact refutation (with --refute, where no certificate was made).
     pub refuted: Option<bool>,
     pub sim: Option<SimStats>,
     /// The certificate's path relative to the output folder.
     pub certificate: Option<String>,
+    /// The refutation's path relative to the output folder.
+    pub refutation: Option<String>,
+}
+
+/// The refutation file of a point, relative to the output folder.
+pub fn refutation_path(p: &Point) -> String {
+    format!("refutations/x{:04}-g{:04}.ron", p.ix, p.ig)
 }
 
 /// The certificate file of a point, relative to the output folder.
@@ -53,9 +60,10 @@ impl Row {
             finder: e.finder.to_string(),
             certified: e.certified.map(|c| c.is_some()),
             claim: e.certified.flatten().map(str::to_string),
-            refuted: None,
+            refuted: e.refuted,
             sim: e.sim.clone(),
             certificate: e.certificate.as_ref().map(|_| certificate_path(p)),
+            refutation: e.refutation.as_ref().map(|_| refutation_path(p)),
         }
     }
 
@@ -89,6 +97,7 @@ impl Row {
             count(4),
             s.map(|s| format!("{}", s.mean_impacts())).unwrap_or_default(),
             self.certificate.clone().unwrap_or_default(),
+            self.refutation.clone().unwrap_or_default(),
         ]
         .join(",")
     }
@@ -127,6 +136,7 @@ impl Row {
             refuted: optb(f[10])?,
             sim,
             certificate: opt(f[18]),
+            refutation: opt(f[19]),
         })
     }
 }

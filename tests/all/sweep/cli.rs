@@ -150,7 +150,7 @@ fn rows_hold_the_exact_criteria_and_verified_certificates() {
         assert!(r.certified.is_some(), "--certify fills the column");
         assert_eq!(r.certified == Some(true), r.claim.is_some());
         assert_eq!(r.certified == Some(true), r.certificate.is_some());
-        assert_eq!(r.refuted, None, "refutations are not available yet");
+        assert_eq!(r.refuted, None, "no --refute");
         let s = r.sim.as_ref().unwrap();
         assert_eq!((s.runs, s.counts.iter().sum::<u64>()), (3, 3));
         certified += r.certified.unwrap_or(false) as usize;
@@ -224,13 +224,40 @@ fn the_pentagon_map_has_criteria_finder_and_simulations_but_no_certificates() {
 }
 
 #[test]
+fn refute_decides_every_point_where_no_certificate_is_made() {
+    let d = tempfile::tempdir().unwrap();
+    let args =
+        ["map", "--n", "4", "--rho", "0:1:8", "--gamma", "0:1/5:8", "--certify", "--refute", "--out", "r"];
+    let o = chatter(&args, d.path());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let rows = parse_csv(&std::fs::read_to_string(d.path().join("r/points.csv")).unwrap()).unwrap();
+    let (mut certified, mut refuted) = (0, 0);
+    for r in &rows {
+        match (r.certified, r.refuted) {
+            (Some(true), None) => certified += 1,
+            (Some(false), Some(true)) => refuted += 1,
+            other => panic!("row {}: certified and refuted {other:?}", r.index),
+        }
+        // On this grid the exact criterion decides which (no counterexample to Conjecture 1).
+        assert_eq!(r.cc_criterion, r.certified == Some(true), "row {}", r.index);
+        assert_eq!(r.refuted == Some(true), r.refutation.is_some());
+    }
+    assert!(certified > 0 && refuted > 0, "{certified} certified, {refuted} refuted");
+    let summary = std::fs::read_to_string(d.path().join("r/summary.json")).unwrap();
+    assert!(summary.contains("\"refuted-criterion-holds\""));
+    // The kernel accepts every certificate and refutation the map kept, in one run.
+    let o = chatter(&["verify", "r"], d.path());
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stdout));
+    assert!(String::from_utf8_lossy(&o.stdout).contains(&format!("{} files: {} OK", rows.len(), rows.len())));
+}
+
+#[test]
 fn bad_input_exits_2_with_a_message() {
     let d = tempfile::tempdir().unwrap();
     std::fs::create_dir(d.path().join("precious")).unwrap();
     std::fs::write(d.path().join("precious/notes.txt"), "keep").unwrap();
     let base = ["--rho", "0:1:3", "--gamma", "0:1:3"];
-    let cases: [(&[&str], &str); 13] = [
-        (&["--n", "3", "--rho", "0:1:3", "--gamma", "0:1:3", "--refute"], "not available yet"),
+    let cases: [(&[&str], &str); 12] = [
         (&base, "--n is required"),
         (&["--n", "3", "--gamma", "0:1:3"], "--rho"),
         (&["--n", "7", "--rho", "0:1:3", "--gamma", "0:1:3"], "--n"),
