@@ -5,7 +5,8 @@
 //! ([`crate::finder::rod`]). Claims are tried strongest first unless one is asked for.
 
 use crate::exact::{ParseLimits, Q};
-use crate::exactify::{ExactifyConfig, ExactifyError, exactify};
+use crate::exactify::{Exactified, ExactifyConfig, ExactifyError, exactify};
+use crate::finder::geometry::P2;
 use crate::finder::rod::{RodCone, find_rod_cone_box, s_of};
 use crate::finder::{FinderConfig, Search, Seed, find_cone};
 use crate::model::{FloatBody, translation_down};
@@ -26,6 +27,9 @@ use std::time::{Duration, Instant};
 pub enum ClaimChoice {
     /// The strongest claim that the pipeline can certify.
     Strongest,
+    /// The strongest claim about drops (`CcOrPccFromAllDown` or `CompleteChatterFromAllDown`),
+    /// never `EffectivelyInvariant` alone.
+    StrongestAboutDrops,
     Exactly(Claim),
 }
 
@@ -275,6 +279,30 @@ fn attempt_rod(req: &Request, rods: &[Rod<Q>], claim: Claim, t: &mut Timings) ->
     kernel_check(req, certificate(req, claim, gens, cone.method), cone.method, t)
 }
 
+/// The exactifier with `cfg`, then, while the offsets fail to converge (close to the threshold,
+/// where the maps barely contract, success depends on the grid in a way no single setting
+/// wins), with finer normals and grid, then with a larger slack; the first success, else the
+/// first error.
+fn exactify_ladder(
+    bodies: &[Polygon<Q>],
+    polygon: &[P2],
+    seeds: &[Vec3<Q>],
+    cfg: &ExactifyConfig,
+) -> Result<Exactified, ExactifyError> {
+    let finer = ExactifyConfig {
+        normal_bits: cfg.normal_bits + 2,
+        grid_bits: cfg.grid_bits + 8,
+        slack_bits: cfg.slack_bits + 4,
+        ..*cfg
+    };
+    let coarser = ExactifyConfig { slack_bits: cfg.slack_bits.saturating_sub(4), ..*cfg };
+    let first = exactify(bodies, polygon, seeds, cfg);
+    if !cfg.retry || !matches!(first, Err(ExactifyError::NoConvergence { .. })) {
+        return first;
+    }
+    [finer, coarser].iter().map(|c| exactify(bodies, polygon, seeds, c)).find(Result::is_ok).unwrap_or(first)
+}
+
 /// A regular polygon at every corner: float finder, exactifier, kernel.
 fn attempt_polygon(req: &Request, bodies: &[Polygon<Q>], claim: Claim, t: &mut Timings) -> Attempt {
     let seed = if claim == Claim::EffectivelyInvariant { Seed::Translation } else { Seed::AllDown };
@@ -294,7 +322,7 @@ fn attempt_polygon(req: &Request, bodies: &[Polygon<Q>], claim: Claim, t: &mut T
         return Attempt::failed(Failure::Finder(outcome.map(Vec::len)), summary);
     };
     let start = Instant::now();
-    let ex = exactify(bodies, polygon, &exact_seeds, &req.exactify);
+    let ex = exactify_ladder(bodies, polygon, &exact_seeds, &req.exactify);
     t.exactify += start.elapsed();
     let ex = match ex {
         Ok(ex) => ex,
@@ -384,7 +412,7 @@ fn claims_for(req: &Request, shapes: &[Shape<Q>], notes: &mut Vec<String>) -> Re
                 notes.push(why);
                 Ok(vec![Claim::EffectivelyInvariant])
             }
-            ClaimChoice::Exactly(_) => Err(Failure::GammaOutOfRange(why)),
+            ClaimChoice::Exactly(_) | ClaimChoice::StrongestAboutDrops => Err(Failure::GammaOutOfRange(why)),
         };
     }
     let strongest = match &shapes[0] {
@@ -397,6 +425,7 @@ fn claims_for(req: &Request, shapes: &[Shape<Q>], notes: &mut Vec<String>) -> Re
     Ok(match req.claim {
         ClaimChoice::Exactly(c) => vec![c],
         ClaimChoice::Strongest => vec![strongest, Claim::EffectivelyInvariant],
+        ClaimChoice::StrongestAboutDrops => vec![strongest],
     })
 }
 

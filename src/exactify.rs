@@ -28,11 +28,14 @@ pub struct ExactifyConfig {
     /// Slack added to a raised offset: scale * 2^-slack_bits.
     pub slack_bits: u32,
     pub max_rounds: usize,
+    /// When the offsets do not converge, retry with a finer and then a coarser grid (see
+    /// `certify`); a cover, which splits a box instead, turns this off.
+    pub retry: bool,
 }
 
 impl Default for ExactifyConfig {
     fn default() -> Self {
-        ExactifyConfig { normal_bits: 12, grid_bits: 40, slack_bits: 24, max_rounds: 60 }
+        ExactifyConfig { normal_bits: 12, grid_bits: 40, slack_bits: 24, max_rounds: 600, retry: true }
     }
 }
 
@@ -78,6 +81,26 @@ fn primitive(p: Vec3<Integer>) -> Vec3<Integer> {
 fn support(n: &(i64, i64), q: &Vec3<Integer>) -> Q {
     let num = Integer::from(n.0) * &q[0] + Integer::from(n.1) * &q[1];
     Q::from_fraction(&num, &(-&q[2]))
+}
+
+/// The plane point of q in floats (for choosing candidates only).
+fn plane_f64(q: &Vec3<Integer>) -> (f64, f64) {
+    let w = -&q[2];
+    (Q::from_fraction(&q[0], &w).to_f64(), Q::from_fraction(&q[1], &w).to_f64())
+}
+
+/// max_q n . x(q), exact: the float supports pick the candidates within a margin far above
+/// rounding error, and only those are compared exactly.
+fn max_support(n: &(i64, i64), pts: &[Vec3<Integer>], approx: &[(f64, f64)]) -> Option<Q> {
+    let f = |p: &(f64, f64)| n.0 as f64 * p.0 + n.1 as f64 * p.1;
+    let top = approx.iter().map(f).fold(f64::NEG_INFINITY, f64::max);
+    let size = approx.iter().map(|p| p.0.abs().max(p.1.abs())).fold(1.0, f64::max);
+    let margin = 1e-9 * (n.0.unsigned_abs() + n.1.unsigned_abs()) as f64 * size;
+    pts.iter()
+        .zip(approx)
+        .filter(|(_, p)| !top.is_finite() || f(p) >= top - margin)
+        .map(|(q, _)| support(n, q))
+        .max()
 }
 
 /// The exact polygon { x : n_i . x <= h_i } (non-empty, bounded by the compass normals).
@@ -223,10 +246,11 @@ pub fn exactify(
         let mut pts =
             exact_images(bodies, &poly).map_err(|step| ExactifyError::ImageAbove { round, step })?;
         pts.extend(seeds.iter().cloned());
+        let approx: Vec<(f64, f64)> = pts.iter().map(plane_f64).collect();
         let mut changed = false;
         worst_excess = 0.0;
         for (((n, hi), sl), gb) in normals.iter().zip(h.iter_mut()).zip(&slacks).zip(&grids) {
-            let Some(m) = pts.iter().map(|q| support(n, q)).max() else { continue };
+            let Some(m) = max_support(n, &pts, &approx) else { continue };
             if m > *hi {
                 // Overshoot by the excess itself: under a contraction the offsets then reach
                 // their fixed point in a few rounds instead of creeping towards it.

@@ -128,12 +128,26 @@ pub fn refute(
     cfg: &RefuteConfig,
 ) -> Result<Refutation, NoRefutation> {
     let shape = Shape::new(n, kappa.clone(), gamma.clone()).map_err(|e| NoRefutation::Body(e.to_string()))?;
+    let mut cfg = *cfg;
     if let Shape::Polygon(b) = &shape {
+        // The float iteration first: where it converges a certificate is likely; where it leaves
+        // v < 0 after k iterations the exact (inner) iteration needs about as many; where it is
+        // inconclusive the exact one would run to its budget for nothing.
         let seed = if claim == Claim::EffectivelyInvariant { Seed::Translation } else { Seed::AllDown };
-        if matches!(find_cone(&FloatBody::new(b), seed, &FinderConfig::default()), Search::Found { .. }) {
-            return Err(NoRefutation::FloatCone);
+        // Past half the budget a NoCone is declined anyway, so the float search stops there.
+        let budget = FinderConfig { max_iterations: cfg.max_iterations / 2 + 1, ..FinderConfig::default() };
+        match find_cone(&FloatBody::new(b), seed, &budget) {
+            Search::Found { .. } => return Err(NoRefutation::FloatCone),
+            Search::NoCone { iteration, .. } if 2 * iteration > cfg.max_iterations => {
+                return Err(NoRefutation::Budget { iterations: iteration });
+            }
+            Search::NoCone { iteration, .. } => {
+                cfg.max_iterations = cfg.max_iterations.min(2 * iteration + 50);
+            }
+            Search::Inconclusive { iterations, .. } => return Err(NoRefutation::Budget { iterations }),
         }
     }
+    let cfg = &cfg;
     let mut d = Derivation { steps: Vec::new(), points: Vec::new(), deps: Vec::new() };
     let last = match &shape {
         Shape::Rod(r) => rod(r, claim, cfg, &mut d)?,
@@ -222,7 +236,14 @@ fn polygon(
             }
         }
         let all: Vec<usize> = cur.iter().chain(&images).copied().collect();
-        let proj: Vec<Vec3<Q>> = all.iter().map(|&i| v3(&d.points[i])).collect();
+        // The hull on integer multiples of the points: the same rays, no gcd in every comparison.
+        let proj: Vec<Vec3<malachite::Integer>> = all
+            .iter()
+            .map(|&i| {
+                let z = crate::exact::scale_to_ints(&d.points[i]);
+                [z[0].clone(), z[1].clone(), z[2].clone()]
+            })
+            .collect();
         let next: Vec<usize> = hull(&proj).into_iter().map(|h| all[h]).collect();
         if next.iter().all(|i| cur.contains(i)) && next.len() == cur.len() && it > 0 {
             return Err(NoRefutation::Converged { iterations: it });

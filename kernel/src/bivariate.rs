@@ -35,6 +35,19 @@ impl<F: OrderedField> Bi<F> {
         (self.c.len() - 1, self.c[0].len() - 1)
     }
 
+    /// Drops the rows and columns of zero coefficients at the top degrees (keeps one of each).
+    fn trimmed(mut self) -> Self {
+        while self.c.len() > 1 && self.c.last().is_some_and(|r| r.iter().all(F::is_zero)) {
+            self.c.pop();
+        }
+        while self.c[0].len() > 1 && self.c.iter().all(|r| r.last().is_some_and(F::is_zero)) {
+            self.c.iter_mut().for_each(|r| {
+                r.pop();
+            });
+        }
+        self
+    }
+
     fn zero_of(dk: usize, dg: usize) -> Self {
         Bi { c: vec![vec![F::zero(); dg + 1]; dk + 1] }
     }
@@ -50,7 +63,7 @@ impl<F: OrderedField> Bi<F> {
                 }
             }
         }
-        r
+        r.trimmed()
     }
 
     /// `-self`.
@@ -76,7 +89,7 @@ impl<F: OrderedField> Bi<F> {
                 }
             }
         }
-        r
+        r.trimmed()
     }
 
     /// Whether every coefficient is zero.

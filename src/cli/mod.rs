@@ -8,6 +8,7 @@ mod bodies_cmd;
 mod certify_cmd;
 mod check_proof_cmd;
 mod classify_cmd;
+mod cover_cmd;
 mod map_cmd;
 mod plot_cmd;
 mod prove_cmd;
@@ -103,6 +104,8 @@ pub enum Command {
     Simulate(simulate_cmd::SimulateArgs),
     /// Derive exactly that no effectively invariant cone exists at a point; write a refutation.
     Refute(refute_cmd::RefuteArgs),
+    /// Cover a box of parameters with box certificates and refutations (adaptive subdivision).
+    Cover(cover_cmd::CoverArgs),
     /// The paper's maps over (rho, gamma): criteria, finder, certificates, simulations per point.
     Map(map_cmd::MapArgs),
     /// Figures (SVG or PNG): map panels, simulation maps, a certificate's cone on v = -1.
@@ -170,6 +173,7 @@ pub fn run(cli: Cli, env: &Env) -> Outcome {
         Command::Prove(a) => prove_cmd::run(a),
         Command::CheckProof(a) => check_proof_cmd::run(a),
         Command::Refute(a) => refute_cmd::run(a, env),
+        Command::Cover(a) => cover_cmd::run(a),
         Command::Map(a) => map_cmd::run(a),
         Command::Plot(a) => plot_cmd::run(a),
         Command::Reproduce(a) => reproduce_cmd::run(a),

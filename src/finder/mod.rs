@@ -33,7 +33,7 @@ pub struct FinderConfig {
 
 impl Default for FinderConfig {
     fn default() -> Self {
-        FinderConfig { max_iterations: 3000, max_vertices: 40, tolerance: 1e-10 }
+        FinderConfig { max_iterations: 60_000, max_vertices: 40, tolerance: 1e-10 }
     }
 }
 

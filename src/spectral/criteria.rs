@@ -189,6 +189,18 @@ impl<F: OrderedField> Profile<F> {
         )
     }
 
+    /// A rational lower bound within 2^-bits of the supremum gamma* of the criterion (when it is
+    /// a threshold in (0, 1)).
+    pub fn sup_lower_bound(&self, bits: u32) -> Option<Q> {
+        let Sup::At(t) = self.sup() else { return None };
+        let mut r = t.gamma.clone();
+        let eps = Q::from_rational(malachite::rational::Rational::from(1u32) >> i64::from(bits));
+        while &r.hi - &r.lo > eps {
+            r.bisect();
+        }
+        Some(r.lo)
+    }
+
     /// Whether the criterion holds on an initial interval (0, g*) and nowhere else.
     pub fn is_initial_interval(&self) -> bool {
         let first_false = self.samples.iter().position(|(_, v)| !*v).unwrap_or(self.samples.len());

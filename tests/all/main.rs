@@ -7,6 +7,7 @@ mod certificate;
 mod certify;
 mod cli;
 mod corpus;
+mod cover;
 mod docs;
 mod exact;
 mod exactify;
