@@ -18,7 +18,7 @@ use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::sync::Mutex;
 
-/// A box [kappa] x [gamma] with its depth of subdivision in each direction.
+/// A box of kappa x gamma with its depth of subdivision in each direction.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub struct Cell {
     pub kappa: [Q; 2],

@@ -133,7 +133,7 @@ pub enum Locus {
     },
     /// The PCC quadratic (rule R4).
     Pcc,
-    /// Rule R4 on a box: the sub-box [kappa] x [gamma] on which PCC exclusion fails or could not
+    /// Rule R4 on a box: the sub-box kappa x gamma on which PCC exclusion fails or could not
     /// be shown (a point when lo = hi).
     PccRegion {
         /// [lo, hi] of kappa, canonical text.
