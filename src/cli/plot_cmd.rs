@@ -2,9 +2,12 @@
 //! file extension).
 
 use super::{self as cli, emit};
+use crate::exact::Q;
 use crate::plot::cone::ConeFigure;
+use crate::plot::cover::{CoverFigure, read_boxes, title as cover_title};
 use crate::plot::map::{MapFigure, Panel, body_name};
 use crate::plot::{Format, save};
+use crate::sweep::grid::Variable;
 use crate::sweep::{self, curves};
 use clap::{Args, Subcommand};
 use std::path::{Path, PathBuf};
@@ -20,7 +23,8 @@ Examples:\n  chatter map --n 3 --rho 0:1:100 --gamma 0:1:100 --certify --out map
 chatter plot map map3 -o map3.png\n  \
 chatter map --n 3 --rho 0:1:60 --gamma 0:0.3:60 --simulate 20 --out sim3\n  \
 chatter plot simulations sim3 -o sim3.svg\n  \
-chatter certify --n 4 --kappa 1/6 --gamma 1/100 -o square.ron && chatter plot cone square.ron -o cone.png")]
+chatter certify --n 4 --kappa 1/6 --gamma 1/100 -o square.ron && chatter plot cone square.ron -o cone.png\n  \
+chatter cover --n 6 --kappa 1/100:8/100 --gamma 0:1 --out cover6 && chatter plot cover cover6 -o cover6.png")]
 pub struct PlotArgs {
     #[command(subcommand)]
     pub what: PlotWhat,
@@ -34,6 +38,41 @@ pub enum PlotWhat {
     Simulations(MapPlotArgs),
     /// An effectively invariant cone on the plane v = -1 (figure "sajatertekek", right).
     Cone(ConePlotArgs),
+    /// A certified cover (`chatter cover`): the boxes by status, with the exact CC boundary.
+    Cover(CoverPlotArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct CoverPlotArgs {
+    /// A folder written by `chatter cover`.
+    #[arg(value_name = "DIR")]
+    pub dir: PathBuf,
+    /// Output file: .svg or .png.
+    #[arg(short = 'o', long = "out", value_name = "FILE")]
+    pub out: PathBuf,
+}
+
+/// The cover figure of a folder: boxes.csv, and the request and ratio from summary.json.
+pub fn cover_figure(dir: &Path) -> Result<CoverFigure, String> {
+    let path = dir.join("summary.json");
+    let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let s: serde_json::Value = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+    if s["schema"] != "chatter.cover/1" {
+        return Err(format!("{}: not the summary of chatter cover (schema chatter.cover/1)", path.display()));
+    }
+    let pair = |key: &str| -> Result<[Q; 2], String> {
+        let bad = || format!("{}: {key} must be two exact numbers", path.display());
+        let a = s[key].as_array().filter(|a| a.len() == 2).ok_or_else(bad)?;
+        let q = |v: &serde_json::Value| v.as_str().and_then(|t| t.parse::<Q>().ok()).ok_or_else(bad);
+        Ok([q(&a[0])?, q(&a[1])?])
+    };
+    let (kappa, gamma) = (pair("kappa")?, pair("gamma")?);
+    let n =
+        s["n"].as_u64().filter(|n| [2, 3, 4, 6].contains(n)).ok_or(format!("{}: bad n", path.display()))?;
+    let boxes = read_boxes(dir)?;
+    let curves =
+        curves::curves(n, Variable::Kappa, (&kappa[0], &kappa[1]), (&gamma[0], &gamma[1]), CURVE_LINES);
+    Ok(CoverFigure { n, kappa, gamma, boxes, curves, title: cover_title(n, s["ratio"].as_f64()) })
 }
 
 #[derive(Args, Debug)]
@@ -92,6 +131,11 @@ fn run_inner(a: PlotArgs) -> Result<String, String> {
         PlotWhat::Simulations(m) => {
             save(&map_figure(&m.dir, Panel::Simulations)?, &m.out)?;
             Ok(format!("wrote {}", m.out.display()))
+        }
+        PlotWhat::Cover(c) => {
+            Format::of(&c.out)?;
+            save(&cover_figure(&c.dir)?, &c.out)?;
+            Ok(format!("wrote {}", c.out.display()))
         }
         PlotWhat::Cone(c) => {
             Format::of(&c.out)?;

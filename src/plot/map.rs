@@ -208,7 +208,7 @@ impl MapFigure {
     }
 }
 
-fn draw_lines<DB: DrawingBackend>(
+pub(crate) fn draw_lines<DB: DrawingBackend>(
     chart: &mut ChartContext<
         '_,
         DB,

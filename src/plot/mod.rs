@@ -6,6 +6,7 @@
 //! (Debian's fonts-dejavu-core), see docs/figures.md.
 
 pub mod cone;
+pub mod cover;
 pub mod map;
 pub mod trajectory;
 

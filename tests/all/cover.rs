@@ -206,3 +206,28 @@ fn bad_input_is_refused_with_a_message_and_exit_2() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("not empty"));
     assert_eq!(std::fs::read_to_string(d.path().join("full/keep.txt")).unwrap(), "x");
 }
+
+#[test]
+fn plot_cover_draws_the_boxes_and_refuses_other_folders() {
+    let d = tempfile::tempdir().unwrap();
+    let out = d.path().join("c");
+    assert!(small(&out, "2").status.success());
+    let svg = d.path().join("cover.svg");
+    let o = run(&["plot", "cover", out.to_str().unwrap(), "-o", svg.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(&svg).unwrap();
+    // Every box is a filled rectangle, and the title gives the ratio.
+    let boxes = std::fs::read_to_string(out.join("boxes.csv")).unwrap().lines().count() - 1;
+    assert!(
+        text.matches("<rect").count() >= boxes,
+        "{} rectangles for {boxes} boxes",
+        text.matches("<rect").count()
+    );
+    assert!(text.contains("% of the CC region"));
+    // A folder that is not a cover, and a bad extension.
+    let o = run(&["plot", "cover", d.path().to_str().unwrap(), "-o", svg.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("summary.json"));
+    let o = run(&["plot", "cover", out.to_str().unwrap(), "-o", d.path().join("x.jpg").to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+}
