@@ -1,6 +1,8 @@
 //! Untrusted helpers around the exact model of [`chatter_kernel::model`]: the body built from
 //! user numbers, kinetic energy, the paper's coordinates, and `f64` copies of the maps for the
-//! numerical search.
+//! numerical search; [`float`]: the float model of a regular n-gon for every n.
+
+pub mod float;
 
 use crate::exact::{OrderedField, Q, QExt};
 use chatter_kernel::model::Polygon as Body;
@@ -62,6 +64,20 @@ impl FloatBody {
             cones: js.map(|j| b.next_contact_cone(j).map(|l| vec_f64(&l))).collect(),
             impact0: mat_f64(&b.impact(0)),
             all_down: b.all_down_generators().iter().map(vec_f64).collect(),
+            more_impacts: Vec::new(),
+        }
+    }
+
+    /// The maps of the float model (any n from 3 to 64; issue 10 §1), so that the finder runs
+    /// where cos 2π/n is irrational.
+    pub fn from_float(b: &float::FloatPolygon) -> Self {
+        let js = 1..b.n() as i64;
+        FloatBody {
+            n: b.n(),
+            steps: js.clone().map(|j| b.step(j)).collect(),
+            cones: js.map(|j| b.next_contact_cone(j)).collect(),
+            impact0: b.impact(0),
+            all_down: b.all_down_generators(),
             more_impacts: Vec::new(),
         }
     }

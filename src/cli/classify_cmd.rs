@@ -3,10 +3,11 @@
 use super::{self as cli, emit};
 use crate::bodies::{self, Entry, Threshold};
 use crate::certify::{Request, certify};
-use crate::exact::{OrderedField, Q, Ring, parse_user_number};
+use crate::exact::{OrderedField, Q, QExt, Ring, parse_user_number};
 use crate::finder::{FinderConfig, Seed, find_cone};
 use crate::model::FloatBody;
-use crate::simulate::{Arithmetic, Model, Options, Outcome, counts, simulate_many};
+use crate::model::float::FloatPolygon;
+use crate::simulate::{Arithmetic, Model, Options, Outcome, Shape, counts, simulate_many};
 use crate::spectral::criteria::{
     Family, cc_criterion, goyal_condition, pcc_criterion, rod_cc_criterion, rod_velocity_in_cone,
 };
@@ -155,22 +156,32 @@ fn rod_report(v: &Validated, rod: &Rod<Q>, out: &mut Value, lines: &mut Vec<Stri
         json!({"velocity": [p0[0].to_string(), p0[1].to_string()], "cc": inside == Some(true)});
 }
 
-/// The float finder's verdict from both seeds (regular polygons with an exact model).
-fn finder_report(b: &Polygon<Q>, out: &mut Value, lines: &mut Vec<String>) {
-    let fb = FloatBody::new(b);
+/// The maps the float finder searches: rounded from the exact model (n = 3, 4, 6), else the
+/// float model of the n-gon (issue 10 §1).
+fn float_body(v: &Validated, exact: Option<&Polygon<Q>>) -> Option<FloatBody> {
+    match exact {
+        Some(b) => Some(FloatBody::new(b)),
+        None => {
+            FloatPolygon::new(v.n, v.kappa.to_f64(), v.gamma.to_f64()).ok().map(|b| FloatBody::from_float(&b))
+        }
+    }
+}
+
+/// The float finder's verdict from both seeds (regular polygons).
+fn finder_report(fb: &FloatBody, out: &mut Value, lines: &mut Vec<String>) {
     for (seed, name, key) in
         [(Seed::Translation, "translation seed", "translation"), (Seed::AllDown, "all-down seed", "all_down")]
     {
-        let o = find_cone(&fb, seed, &FinderConfig::default());
+        let o = find_cone(fb, seed, &FinderConfig::default());
         lines.push(format!("float finder, {name}: {}", o.map(Vec::len)));
         out[format!("finder_{key}")] = json!(o.label());
     }
 }
 
-/// A batch of the paper's random drops (f64 with renormalisation), compared with the criterion.
-fn simulation_report(shape: &ExactShape<Q>, out: &mut Value, lines: &mut Vec<String>) {
-    let model = Model::from_body(shape);
-    let briefs = simulate_many(&model, 0, SIM_RUNS, Arithmetic::Float, &Options::new(SIM_BUDGET), &|| {});
+/// A batch of the paper's random drops (f64 with renormalisation; the float model where
+/// cos 2π/n is irrational), compared with the criterion.
+fn simulation_report(model: &Model, out: &mut Value, lines: &mut Vec<String>) {
+    let briefs = simulate_many(model, 0, SIM_RUNS, Arithmetic::Float, &Options::new(SIM_BUDGET), &|| {});
     let c = counts(&briefs);
     let names = Outcome::ALL.map(Outcome::name);
     let text: Vec<String> = names.iter().zip(c).map(|(n, k)| format!("{n} {k}")).collect();
@@ -238,11 +249,20 @@ pub fn run(a: ClassifyArgs) -> cli::Outcome {
         lines.push(format!("PCC threshold for this kappa: {}", threshold_line(p)));
         out["pcc_threshold"] = json!(p);
     }
-    if let Some(shape) = &exact {
-        if let ExactShape::Polygon(b) = shape {
-            finder_report(b, &mut out, &mut lines);
+    let polygon = match &exact {
+        Some(ExactShape::Polygon(b)) => Some(b),
+        _ => None,
+    };
+    if v.n >= 3 {
+        if let Some(fb) = float_body(&v, polygon) {
+            finder_report(&fb, &mut out, &mut lines);
         }
-        simulation_report(shape, &mut out, &mut lines);
+    }
+    let shape = if v.n == 2 { Shape::Rod } else { Shape::Polygon(v.n) };
+    if let Ok(model) = Model::new(shape, v.kappa.clone(), v.gamma.clone()) {
+        simulation_report(&model, &mut out, &mut lines);
+    }
+    if exact.is_some() {
         certificate_report(&v, &mut out, &mut lines);
     } else {
         lines.push("certificate: none (certificates need n in {2, 3, 4, 6}: rational cosines)".into());

@@ -7,10 +7,10 @@ use crate::plot::trajectory::TrajectoryFigure;
 use crate::simulate::classify::DEFAULT_PCC_EPSILON;
 use crate::simulate::pattern::{self, find};
 use crate::simulate::{
-    Arithmetic, Brief, Decision, Initial, Model, Options, Outcome, Run, counts, given_start, record,
-    simulate, simulate_many,
+    Arithmetic, Brief, Decision, Initial, Model, Options, Outcome, Run, Shape, counts, record, simulate,
+    simulate_many,
 };
-use chatter_kernel::model::{BodyError, Shape as ExactShape};
+use chatter_kernel::model::BodyError;
 use clap::Args;
 use serde_json::{Value, json};
 use std::io::IsTerminal;
@@ -18,6 +18,8 @@ use std::path::PathBuf;
 
 /// Largest impact budget accepted.
 pub const MAX_IMPACTS: usize = 10_000_000;
+/// Largest number of contacts simulated (the float model's limit).
+pub const MAX_N: u64 = crate::model::float::MAX_FLOAT_CONTACTS;
 /// Largest number of runs accepted.
 pub const MAX_RUNS: u64 = 1_000_000;
 /// Longest impact sequence printed in JSON.
@@ -52,7 +54,8 @@ pub struct SimulateArgs {
     /// Impact budget.
     #[arg(long, default_value = "200", allow_hyphen_values = true)]
     pub impacts: String,
-    /// Exact rational arithmetic instead of f64 (slower; decides ties and symmetric cases exactly).
+    /// Exact rational arithmetic instead of f64 (slower; decides ties and symmetric cases exactly;
+    /// n = 2, 3, 4, 6, where cos 2pi/n is rational).
     #[arg(long)]
     pub exact: bool,
     /// Write one CSV row per impact to this file.
@@ -100,16 +103,29 @@ fn numbers(flag: &str, s: &str) -> Result<Vec<Q>, String> {
     s.split(',').map(|x| parse_user_number(x).map_err(|e| format!("{flag}: {e}"))).collect()
 }
 
-fn validate(a: SimulateArgs) -> Result<Validated, String> {
-    let (n, kappa, gamma) = a.body.parse()?;
-    let body = ExactShape::new(n, kappa.clone(), gamma.clone()).map_err(|e| match e {
+/// The model of the body: the rod (n = 2) or a regular n-gon, n ≤ 64 (exact for n = 3, 4, 6,
+/// the float model otherwise; issue 10 §1), and `--exact` only where the model is exact.
+fn model(n: u64, kappa: &Q, gamma: &Q, exact: bool) -> Result<Model, String> {
+    if !(2..=MAX_N).contains(&n) {
+        return Err(format!("--n: {n} is outside 2..={MAX_N} (2 is the rod, 3..={MAX_N} regular n-gons)"));
+    }
+    let shape = if n == 2 { Shape::Rod } else { Shape::Polygon(n) };
+    let model = Model::new(shape, kappa.clone(), gamma.clone()).map_err(|e| match e {
         BodyError::KappaNotPositive => format!("--kappa: {e}"),
         BodyError::GammaOutOfRange => format!("--gamma: {e}"),
-        BodyError::UnsupportedN(_) => {
-            format!("--n: {n} is not supported: use 2 (the rod) or 3, 4, 6 (exact cosines)")
-        }
+        BodyError::UnsupportedN(_) => format!("--n: {e}"),
     })?;
-    let model = Model::from_body(&body);
+    if exact && model.exact.is_none() {
+        return Err(format!(
+            "--exact: exact simulation for n = {n} needs the number-field arithmetic of              Q(cos 2*pi/{n}) (issue 10 §2), not yet available; exact simulation supports n = 2, 3, 4, 6              (rational cosines). Without --exact, n = {n} is simulated in f64"
+        ));
+    }
+    Ok(model)
+}
+
+fn validate(a: SimulateArgs) -> Result<Validated, String> {
+    let (n, kappa, gamma) = a.body.parse()?;
+    let model = model(n, &kappa, &gamma, a.exact)?;
     let impacts: usize = a
         .impacts
         .trim()
@@ -147,11 +163,11 @@ fn validate(a: SimulateArgs) -> Result<Validated, String> {
             }
             let q = numbers("--position", pos)?;
             let p = numbers("--velocity", vel)?;
-            let names = match body {
-                ExactShape::Rod(_) => "h0,h1 and u0,u1",
-                ExactShape::Polygon(_) => "h0,h1,hc and u0,u1,v",
+            let names = match model.shape() {
+                Shape::Rod => "h0,h1 and u0,u1",
+                Shape::Polygon(_) => "h0,h1,hc and u0,u1,v",
             };
-            let start = given_start(&model.system, &q, &p).map_err(|e| match e {
+            let start = model.given_start(&q, &p).map_err(|e| match e {
                 crate::simulate::StartError::WrongLength { .. } => {
                     format!("--position/--velocity: {e} ({names} for n = {n})")
                 }
@@ -201,7 +217,7 @@ fn start_text(v: &Validated) -> String {
     match &v.initial {
         Initial::RandomDrop { seed } => format!("random drop, seed {seed}"),
         Initial::Given(s) => {
-            let d = v.model.system.shape.dim();
+            let d = v.model.shape().dim();
             let list = |x: &[Q]| x[..d].iter().map(ToString::to_string).collect::<Vec<_>>().join(",");
             format!("position ({}), velocity ({})", list(&s.q), list(&s.p))
         }
@@ -217,7 +233,7 @@ fn contact_counts(run: &Run, n: usize) -> Vec<usize> {
 }
 
 fn single_text(v: &Validated, run: &Run) -> Vec<String> {
-    let n = v.model.system.n();
+    let n = v.model.n();
     let counts = contact_counts(run, n);
     let counts = counts.iter().enumerate().map(|(k, c)| format!("{k}: {c}")).collect::<Vec<_>>().join(", ");
     let mut lines = vec![
@@ -231,7 +247,7 @@ fn single_text(v: &Validated, run: &Run) -> Vec<String> {
         format!("outcome: {}", run.outcome),
         format!("decided by: {}", run.decision.describe()),
         format!("impacts: {} (per contact {counts})", run.impacts),
-        format!("sequence: {}", pattern::summary_for(&run.sequence, v.model.system.shape)),
+        format!("sequence: {}", pattern::summary_for(&run.sequence, v.model.shape())),
     ];
     let mut time = if run.impacts == 0 {
         "total time: 0 (no impacts)".to_string()
@@ -258,8 +274,8 @@ fn single_text(v: &Validated, run: &Run) -> Vec<String> {
 }
 
 fn single_json(v: &Validated, run: &Run) -> Value {
-    let n = v.model.system.n();
-    let d = v.model.system.shape.dim();
+    let n = v.model.n();
+    let d = v.model.shape().dim();
     let start = match &v.initial {
         Initial::RandomDrop { seed } => json!({"kind": "random-drop", "seed": seed}),
         Initial::Given(s) => json!({
@@ -286,7 +302,7 @@ fn single_json(v: &Validated, run: &Run) -> Value {
         "gamma": v.gamma.to_string(),
         "arithmetic": v.arithmetic.name(),
         "start": start,
-        "sequence_summary": pattern::summary_for(&run.sequence, v.model.system.shape),
+        "sequence_summary": pattern::summary_for(&run.sequence, v.model.shape()),
         "pattern": pat,
         "sequence": seq,
         "sequence_truncated": run.sequence.len() > JSON_SEQUENCE,
@@ -309,7 +325,7 @@ fn write_file(path: &PathBuf, text: &str) -> Result<(), String> {
 fn run_single(v: &Validated) -> cli::Outcome {
     let run = simulate(&v.model, &v.initial, v.arithmetic, &v.opts);
     if let Some(path) = &v.trajectory {
-        if let Err(e) = write_file(path, &record::csv(&run, v.model.system.shape)) {
+        if let Err(e) = write_file(path, &record::csv(&run, v.model.shape())) {
             return cli::Outcome::Usage(e.to_string());
         }
     }

@@ -30,7 +30,7 @@
 use super::engine::{Engine, Step};
 use super::pcc::{PairProof, PaperPcc, paper_criterion};
 use super::snapshot::{Scaled, Snapshot, scaled};
-use super::system::{FloatSystem, MAX_CONTACTS, Shape};
+use super::system::FloatSystem;
 // Formerly defined here; its old path keeps working.
 pub use super::text::singular;
 use crate::exact::{QExt, Ring};
@@ -386,19 +386,6 @@ impl Verdict {
     }
 }
 
-/// Which pairs of contacts are neighbours (none for the rod), as a table for the hot loop.
-fn adjacency(fs: &FloatSystem) -> [[bool; MAX_CONTACTS]; MAX_CONTACTS] {
-    let mut adjacent = [[false; MAX_CONTACTS]; MAX_CONTACTS];
-    if let Shape::Polygon(_) = fs.shape {
-        let n = fs.n;
-        for a in 0..n {
-            adjacent[a][(a + 1) % n] = true;
-            adjacent[(a + 1) % n][a] = true;
-        }
-    }
-    adjacent
-}
-
 /// log2 of the geometric tail from the last two intervals of one contact (`tail_log`: log2 of the
 /// last three intervals, newest first), when they shrink.
 fn pair_tail(tail_log: &[f64; 3]) -> Option<f64> {
@@ -411,7 +398,6 @@ struct Driver<'a, E: Engine> {
     eng: &'a mut E,
     fs: &'a FloatSystem,
     opts: Options,
-    adjacent: [[bool; MAX_CONTACTS]; MAX_CONTACTS],
     initial: Snapshot,
     seq: Vec<u8>,
     records: Vec<Record>,
@@ -442,7 +428,6 @@ impl<'a, E: Engine> Driver<'a, E> {
             eng,
             fs,
             opts: *opts,
-            adjacent: adjacency(fs),
             seq: Vec::with_capacity(opts.budget),
             records: Vec::new(),
             quarters: Quarters::new(opts.budget),
@@ -525,7 +510,7 @@ impl<'a, E: Engine> Driver<'a, E> {
     #[inline]
     fn alternation(&self, k: usize, contact: usize) -> usize {
         let seq = &self.seq;
-        if k >= 1 && self.adjacent[contact][seq[k - 1] as usize] {
+        if k >= 1 && self.fs.adjacent(contact, seq[k - 1] as usize) {
             if k >= 2 && seq[k - 2] as usize == contact { self.alt + 1 } else { 2 }
         } else {
             1

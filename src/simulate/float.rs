@@ -15,7 +15,7 @@
 use super::drop::Start;
 use super::engine::{Engine, Step};
 use super::snapshot::{Scaled, Snapshot, pow2};
-use super::system::{FloatSystem, Frame, Shape, frame_index};
+use super::system::{FloatSystem, Frame, Shape, TABLE_CONTACTS, frame_index};
 
 /// Relative difference below which two `f64` impact times count as a tie.
 pub const NEAR_TIE: f64 = 1e-12;
@@ -88,8 +88,10 @@ pub struct FloatEngine<'a> {
     p: [f64; 3],
     eq: i64,
     ep: i64,
-    /// Index of the frame in `sys.frames`.
+    /// Index of the frame in `sys.frames` (bodies with a table of frames).
     frame: usize,
+    /// The frame itself, for bodies without a table (n > 6), recomputed on a change of frame.
+    own: Option<Box<Frame>>,
     /// Slots from the least to the most recently landed contact.
     order: [u8; 3],
     last: usize,
@@ -105,16 +107,40 @@ impl<'a> FloatEngine<'a> {
     /// Starts from a state in our coordinates, in the frame of contacts 0, 1, 2.
     pub fn new(sys: &'a FloatSystem, start: &Start<f64>) -> FloatEngine<'a> {
         let frame = if sys.shape == Shape::Rod { 0 } else { frame_index([0, 1, 2]) };
-        let a = &sys.frames[frame].from_ours;
-        let (mut q, mut p) = (mat_vec(a, &start.q), mat_vec(a, &start.p));
+        let own = sys.frames.is_empty().then(|| Box::new(Frame::from_float(sys, [0, 1, 2])));
+        let a = own.as_deref().unwrap_or_else(|| &sys.frames[frame]).from_ours;
+        let (mut q, mut p) = (mat_vec(&a, &start.q), mat_vec(&a, &start.p));
         let eq = renormalise(&mut q);
         let ep = renormalise(&mut p);
-        FloatEngine { sys, q, p, eq, ep, frame, order: [0, 1, 2], last: NONE, time: 0.0 }
+        FloatEngine { sys, q, p, eq, ep, frame, own, order: [0, 1, 2], last: NONE, time: 0.0 }
     }
 
+    /// The current frame.
     #[inline(always)]
-    fn fr(&self) -> &'a Frame {
-        &self.sys.frames[self.frame]
+    fn fr(&self) -> &Frame {
+        match &self.own {
+            Some(fr) => fr,
+            None => &self.sys.frames[self.frame],
+        }
+    }
+
+    /// The current frame: its own (`OWN`, n > 6) or from the table.
+    #[inline(always)]
+    fn frame_of<const OWN: bool>(&self) -> &Frame {
+        let sys = self.sys;
+        match &self.own {
+            Some(fr) if OWN => fr,
+            _ => &sys.frames[self.frame],
+        }
+    }
+
+    /// Moves to the frame of the contacts `slots`: computed (`OWN`, n > 6) or from the table.
+    #[inline(always)]
+    fn change_frame<const OWN: bool>(&mut self, slots: [usize; 3]) {
+        match &mut self.own {
+            Some(fr) if OWN => fr.refill(self.sys, slots),
+            _ => self.frame = frame_index(slots),
+        }
     }
 
     /// Kinetic energy as m · 2^e (exact scaling: T(p·2^ep) = T(p)·4^ep).
@@ -166,19 +192,25 @@ impl<'a> FloatEngine<'a> {
 }
 
 impl FloatEngine<'_> {
-    /// One event for a body with N contacts (N = n, so the contact loop unrolls).
+    /// One event for a body with its own frame (n > 6), kept out of line.
+    #[inline(never)]
+    fn step_dynamic(&mut self, n: usize) -> Step {
+        self.step_n::<true>(n)
+    }
+
+    /// One event for a body with n contacts (inlined with a constant n for small bodies, so
+    /// that the contact loop unrolls), with the engine's own frame (`OWN`) or the table's.
     ///
     /// Times are compared as fractions h/w (w = -u > 0) by cross-multiplication; the one division
     /// is for the winner. (+∞ is 1/0.)
     #[inline(always)]
-    fn step_n<const N: usize>(&mut self) -> Step {
-        let sys = self.sys;
-        let fr = &sys.frames[self.frame];
+    fn step_n<const OWN: bool>(&mut self, n: usize) -> Step {
+        let fr = self.frame_of::<OWN>();
         let (mut q, mut p) = (self.q, self.p);
         let (mut best, mut bh, mut bw) = (NONE, 1.0, 0.0);
         let (mut sh, mut sw) = (1.0, 0.0);
-        for k in 0..N {
-            let f = &fr.f[k];
+        let covectors = if n <= TABLE_CONTACTS { &fr.inline_f[..n] } else { &fr.f[..n] };
+        for (k, f) in covectors.iter().enumerate() {
             let u = dot(f, &p);
             if u < 0.0 && k != self.last {
                 let (h, w) = (dot(f, &q).max(0.0), -u);
@@ -200,24 +232,29 @@ impl FloatEngine<'_> {
         if !bt.is_finite() {
             return Step::Breakdown;
         }
+        let (kick, best_slot) = if n <= TABLE_CONTACTS {
+            (fr.inline_kick[best], fr.inline_slot[best] as usize)
+        } else {
+            (fr.kick[best], fr.slot[best] as usize)
+        };
+        let slots = fr.slots;
         let bu = -bw;
         let dt = Scaled { m: bt, e: self.eq - self.ep };
         self.time += bt * pow2(dt.e);
-        let kick = &fr.kick[best];
         for i in 0..3 {
             q[i] += bt * p[i];
             p[i] -= bu * kick[i];
         }
         // The landing contact's coordinates: h = 0, u = -γ u⁻ (a new slot replaces the oldest).
-        let mut slot = fr.slot[best] as usize;
+        let mut slot = best_slot;
         if slot >= 3 {
             slot = self.order[0] as usize;
-            let mut slots = fr.slots;
+            let mut slots = slots;
             slots[slot] = best;
-            self.frame = frame_index(slots);
+            self.change_frame::<OWN>(slots);
         }
         q[slot] = 0.0;
-        p[slot] = -sys.gamma * bu;
+        p[slot] = -self.sys.gamma * bu;
         if self.order[2] as usize != slot {
             let o = self.order;
             self.order = if o[0] as usize == slot { [o[1], o[2], o[0]] } else { [o[0], o[2], o[1]] };
@@ -234,11 +271,12 @@ impl FloatEngine<'_> {
 impl Engine for FloatEngine<'_> {
     #[inline]
     fn step(&mut self) -> Step {
-        match self.sys.n {
-            2 => self.step_n::<2>(),
-            3 => self.step_n::<3>(),
-            4 => self.step_n::<4>(),
-            _ => self.step_n::<{ super::system::MAX_CONTACTS }>(),
+        match (self.sys.n, self.own.is_some()) {
+            (2, _) => self.step_n::<false>(2),
+            (3, _) => self.step_n::<false>(3),
+            (4, _) => self.step_n::<false>(4),
+            (n, false) => self.step_n::<false>(n),
+            (n, true) => self.step_dynamic(n),
         }
     }
 

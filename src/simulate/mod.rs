@@ -2,7 +2,9 @@
 //! simulation"): event-driven, in `f64` with renormalisation and in exact rationals, with the
 //! CC / PCC / ICC classification of [`classify`].
 //!
-//! - [`system`]: the body as covectors and impact kicks (polygons n = 3, 4, 6 and the rod).
+//! - [`system`]: the body as covectors and impact kicks (exact: polygons n = 3, 4, 6 and the
+//!   rod; `f64`: every regular n-gon up to n = 64), [`frame`]: the coordinates of the `f64` engine,
+//!   [`regular`]: n-gons with irrational cos 2π/n (the float model, exact start checks).
 //! - [`drop`](mod@drop): initial states, the paper's random-drop protocol, the seeded generator.
 //! - [`engine`], [`float`], [`exact`]: one interface, two arithmetics; [`snapshot`]: the
 //!   read-outs of a state they share.
@@ -10,8 +12,8 @@
 //! - [`pattern`]: the impact sequence in words; [`record`]: CSV; [`text`]: wording (the figure of
 //!   a run is `crate::plot::trajectory`, feature `cli`).
 //!
-//! Module dependencies (acyclic): `system`, `snapshot` and `text` depend on no other module here;
-//! `drop` on `system`; `pcc` on `snapshot`, `system`; `engine` on `pcc`, `snapshot`; `float` and
+//! Module dependencies (acyclic): `snapshot` and `text` depend on no other module here; `system`
+//! and `frame` on each other; `drop` on `system`; `regular` on `drop`, `system`; `pcc` on `snapshot`, `system`; `engine` on `pcc`, `snapshot`; `float` and
 //! `exact` on `drop`, `engine`, `snapshot`, `system` (`exact` also on `pcc`); `classify` on
 //! `engine`, `pcc`, `snapshot`, `system`, `text`; `pattern` on `system`, `text`; `record` on
 //! `classify`, `snapshot`, `system`.
@@ -29,9 +31,11 @@ pub mod drop;
 pub mod engine;
 pub mod exact;
 pub mod float;
+pub mod frame;
 pub mod pattern;
 pub mod pcc;
 pub mod record;
+pub mod regular;
 pub mod snapshot;
 pub mod system;
 pub mod text;
@@ -74,17 +78,29 @@ pub enum Initial {
     Given(Box<Start<Q>>),
 }
 
-/// A body in both arithmetics, built once and shared by many runs.
+/// A body in both arithmetics, built once and shared by many runs; `f64` only where
+/// cos 2π/n is irrational (issue 10 §1: exact simulation there needs number fields, §2).
 #[derive(Clone, Debug)]
 pub struct Model {
-    pub system: System,
+    /// The exact model (the rod, n = 3, 4, 6); `None` for the float model of other n-gons.
+    pub exact: Option<System>,
     pub float: FloatSystem,
+    /// κ and γ as given (exact).
+    pub kappa: Q,
+    pub gamma: Q,
 }
 
 impl Model {
-    /// The model of `shape` with the given kappa and gamma (validated by the kernel).
+    /// The model of `shape` with the given kappa and gamma (validated as by the kernel): exact
+    /// for the rod and n = 3, 4, 6, the float model of [`regular`] for other n up to 64.
     pub fn new(shape: Shape, kappa: Q, gamma: Q) -> Result<Model, BodyError> {
-        Ok(Model::of_system(System::new(shape, kappa, gamma)?))
+        match System::new(shape, kappa.clone(), gamma.clone()) {
+            Err(BodyError::UnsupportedN(n)) if n >= 3 => {
+                let float = regular::float_system(n, &kappa, &gamma)?;
+                Ok(Model { exact: None, float, kappa, gamma })
+            }
+            r => r.map(Model::of_system),
+        }
     }
 
     /// The model of a kernel body (`chatter_kernel::model::Shape::new(n, kappa, gamma)` decides
@@ -96,7 +112,44 @@ impl Model {
     /// The model of an exact system, with its `f64` copy.
     fn of_system(system: System) -> Model {
         let float = FloatSystem::new(&system);
-        Model { system, float }
+        let (kappa, gamma) = (system.kappa.clone(), system.gamma.clone());
+        Model { exact: Some(system), float, kappa, gamma }
+    }
+
+    /// The body's shape.
+    pub fn shape(&self) -> Shape {
+        self.float.shape
+    }
+
+    /// Number of contacts.
+    pub fn n(&self) -> usize {
+        self.float.n
+    }
+
+    /// The exact system.
+    ///
+    /// # Panics
+    /// For the float model of an n-gon with irrational cos 2π/n (`exact` is `None`).
+    pub fn system(&self) -> &System {
+        self.exact.as_ref().expect("exact simulation needs a rational cos(2 pi/n): n = 2, 3, 4, 6")
+    }
+
+    /// A start from coordinates in our convention, checked exactly ([`given_start`]; in
+    /// Q(cos 2π/n) for the float model, [`regular::check_start`]).
+    pub fn given_start(&self, position: &[Q], velocity: &[Q]) -> Result<Start<Q>, StartError> {
+        if let Some(sys) = &self.exact {
+            return given_start(sys, position, velocity);
+        }
+        let n = self.n() as u64;
+        for v in [position, velocity] {
+            if v.len() != 3 {
+                return Err(StartError::WrongLength { expected: 3, found: v.len() });
+            }
+        }
+        let three = |v: &[Q]| -> [Q; 3] { std::array::from_fn(|i| v[i].clone()) };
+        let start = Start { q: three(position), p: three(velocity) };
+        regular::check_start(n, &self.kappa, &self.gamma, &start)?;
+        Ok(start)
     }
 
     /// The exact start of `initial`.
@@ -122,11 +175,17 @@ pub fn simulate_float(fs: &FloatSystem, start: &Start<f64>, opts: &Options) -> R
 }
 
 /// Simulates one drop exactly.
+///
+/// # Panics
+/// For a model without an exact system ([`Model::system`]).
 pub fn simulate_exact(model: &Model, start: &Start<Q>, opts: &Options) -> Run {
-    drive(&mut ExactEngine::new(&model.system, start), &model.float, opts)
+    drive(&mut ExactEngine::new(model.system(), start), &model.float, opts)
 }
 
 /// Simulates one drop in the chosen arithmetic.
+///
+/// # Panics
+/// [`Arithmetic::Exact`] on a model without an exact system ([`Model::system`]).
 pub fn simulate(model: &Model, initial: &Initial, arithmetic: Arithmetic, opts: &Options) -> Run {
     match arithmetic {
         Arithmetic::Float => simulate_float(&model.float, &model.float_start(initial), opts),

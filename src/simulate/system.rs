@@ -6,7 +6,9 @@
 //! p = (u0, u1) and q = (h0, h1); its third component is 0 in every covector and kick, so it
 //! stays exactly 0 in both arithmetics and the rod never stores the redundant v = (u0 + u1)/2.
 
+pub use super::frame::{Frame, TABLE_CONTACTS, frame_index};
 use crate::exact::{Q, QExt, Ring};
+use crate::model::float::FloatPolygon;
 use chatter_kernel::exact::OrderedField;
 use chatter_kernel::model::linalg::{Vec3, dot};
 use chatter_kernel::model::{BodyError, Polygon, Rod, Shape as Body};
@@ -17,7 +19,8 @@ use chatter_kernel::model::{BodyError, Polygon, Rod, Shape as Body};
 pub enum Shape {
     /// The planar rod of docs/model.md §7: two contacts, coordinates (u0, u1).
     Rod,
-    /// A flat regular n-gon, n in {3, 4, 6} (exact cosines).
+    /// A flat regular n-gon: exact for n in {3, 4, 6} (rational cosines), the float model of
+    /// [`crate::model::float`] for every n up to [`MAX_CONTACTS`].
     Polygon(u64),
 }
 
@@ -56,8 +59,8 @@ impl Shape {
     }
 }
 
-/// Largest number of contacts of a supported body.
-pub const MAX_CONTACTS: usize = 6;
+/// Largest number of contacts of a simulated body (the float model's limit, issue 10 §1).
+pub const MAX_CONTACTS: usize = crate::model::float::MAX_FLOAT_CONTACTS as usize;
 
 /// The exact model of a falling body, over the rationals.
 #[derive(Clone, Debug)]
@@ -211,36 +214,35 @@ fn gram_of(energy: &dyn Fn(&Vec3<Q>) -> Q) -> [[Q; 3]; 3] {
     })
 }
 
-/// The `f64` copy of a [`System`], laid out for the hot loop (fixed-size arrays, no allocation).
+/// The `f64` copy of a body, laid out for the hot loop: of a [`System`] (rounded exact values),
+/// or of the float model [`FloatPolygon`] where cos 2π/n is irrational.
 #[derive(Clone, Debug)]
 pub struct FloatSystem {
     pub shape: Shape,
     pub n: usize,
-    pub f: [[f64; 3]; MAX_CONTACTS],
-    pub kick: [[f64; 3]; MAX_CONTACTS],
+    pub f: Vec<[f64; 3]>,
+    pub kick: Vec<[f64; 3]>,
     pub centre: [f64; 3],
     pub gram: [[f64; 3]; 3],
     pub gamma: f64,
     /// Unit vectors along m_{i,i+1} in the paper's coordinates (polygons only).
-    pub rest_paper: [[f64; 3]; MAX_CONTACTS],
+    pub rest_paper: Vec<[f64; 3]>,
     /// cos and sin of 2π/n (polygons; the change to the paper's coordinates, docs/model.md §2).
     pub cos1: f64,
     pub sin1: f64,
-    /// [`System::pcc_possible`].
+    /// [`System::pcc_possible`] (decided exactly, also for the float model).
     pub pcc_possible: bool,
-    /// The frames of the `f64` engine, indexed by [`frame_index`] (one frame for the rod).
+    /// Bit b of `adjacent[a]`: contacts a and b are neighbours on the polygon (none for the rod).
+    pub adjacent: Vec<u64>,
+    /// The frames of the `f64` engine, indexed by [`frame_index`], when n ≤ [`TABLE_CONTACTS`]
+    /// (one frame for the rod); empty for larger n, whose engine computes its frame on a change.
     pub frames: Vec<Frame>,
 }
 
 impl FloatSystem {
+    /// The rounded copy of an exact system; the frames are computed exactly, then rounded.
     pub fn new(sys: &System) -> FloatSystem {
         let v3 = |v: &Vec3<Q>| v.clone().map(|x| x.to_f64());
-        let mut f = [[0.0; 3]; MAX_CONTACTS];
-        let mut kick = [[0.0; 3]; MAX_CONTACTS];
-        for k in 0..sys.n() {
-            f[k] = v3(&sys.contacts[k]);
-            kick[k] = v3(&sys.kicks[k]);
-        }
         let (cos1, sin1) = match sys.shape {
             Shape::Rod => (-1.0, 0.0),
             Shape::Polygon(n) => {
@@ -251,34 +253,78 @@ impl FloatSystem {
         let mut fs = FloatSystem {
             shape: sys.shape,
             n: sys.n(),
-            f,
-            kick,
+            f: sys.contacts.iter().map(v3).collect(),
+            kick: sys.kicks.iter().map(v3).collect(),
             centre: v3(&sys.centre),
             gram: sys.gram.clone().map(|r| r.map(|x| x.to_f64())),
             gamma: sys.gamma.to_f64(),
-            rest_paper: [[0.0; 3]; MAX_CONTACTS],
+            rest_paper: Vec::new(),
             cos1,
             sin1,
             pcc_possible: sys.pcc_possible(),
+            adjacent: Vec::new(),
             frames: Vec::new(),
         };
-        for (i, m) in sys.rest_points.iter().enumerate() {
-            fs.rest_paper[i] = unit(fs.to_paper(&v3(m)));
-        }
-        let n = sys.n();
+        let rest: Vec<[f64; 3]> = sys.rest_points.iter().map(v3).collect();
+        fs.finish(&rest);
         if sys.shape == Shape::Rod {
             fs.frames.push(Frame::new(sys, [0, 1, 2]));
-        } else {
-            fs.frames = vec![Frame::default(); MAX_CONTACTS * MAX_CONTACTS * MAX_CONTACTS];
-            for a in 0..n {
-                for b in (0..n).filter(|&b| b != a) {
-                    for c in (0..n).filter(|&c| c != a && c != b) {
-                        fs.frames[frame_index([a, b, c])] = Frame::new(sys, [a, b, c]);
-                    }
-                }
-            }
+        } else if fs.n <= TABLE_CONTACTS {
+            fs.frames = Frame::table(fs.n, |slots| Frame::new(sys, slots));
         }
         fs
+    }
+
+    /// The float model of a regular n-gon (any n from 3 to [`MAX_CONTACTS`]), with the PCC
+    /// Lemma's verdict `pcc_possible` decided by the caller (exactly, in Q(cos 2π/n)).
+    pub fn regular(b: &FloatPolygon, pcc_possible: bool) -> FloatSystem {
+        let v3 = |v: nalgebra::Vector3<f64>| [v.x, v.y, v.z];
+        let n = b.n();
+        let g = b.gram();
+        let mut fs = FloatSystem {
+            shape: Shape::Polygon(n as u64),
+            n,
+            f: (0..n as i64).map(|k| v3(b.contact(k))).collect(),
+            kick: (0..n as i64).map(|k| v3(b.kick(k))).collect(),
+            centre: [0.0, 0.0, 1.0],
+            gram: std::array::from_fn(|r| std::array::from_fn(|c| g[(r, c)])),
+            gamma: b.gamma(),
+            rest_paper: Vec::new(),
+            cos1: b.cos(1),
+            sin1: b.sin(1),
+            pcc_possible,
+            adjacent: Vec::new(),
+            frames: Vec::new(),
+        };
+        let rest: Vec<[f64; 3]> = (0..n as i64)
+            .map(|i| v3(b.rest_point(i, i + 1).expect("adjacent contacts are never opposite")))
+            .collect();
+        fs.finish(&rest);
+        if n <= TABLE_CONTACTS {
+            let table = Frame::table(n, |slots| Frame::from_float(&fs, slots));
+            fs.frames = table;
+        }
+        fs
+    }
+
+    /// The paper's rest directions from m_{i,i+1} in our coordinates, and the neighbour table.
+    fn finish(&mut self, rest_points: &[[f64; 3]]) {
+        self.rest_paper = rest_points.iter().map(|m| unit(self.to_paper(m))).collect();
+        let n = self.n;
+        self.adjacent = vec![0; n];
+        if let Shape::Polygon(_) = self.shape {
+            for a in 0..n {
+                let b = (a + 1) % n;
+                self.adjacent[a] |= 1 << b;
+                self.adjacent[b] |= 1 << a;
+            }
+        }
+    }
+
+    /// Whether contacts a and b are neighbours on the polygon (never for the rod).
+    #[inline]
+    pub fn adjacent(&self, a: usize, b: usize) -> bool {
+        (self.adjacent[a] >> b) & 1 == 1
     }
 
     /// Our coordinates (h0, h1, hc) or (u0, u1, v) to the paper's (φx, φy, h) or (ωx, ωy, v)
@@ -306,98 +352,6 @@ impl FloatSystem {
         }
         0.5 * t
     }
-}
-
-/// The index of the frame with contacts (a, b, c) in [`FloatSystem::frames`].
-#[inline]
-pub fn frame_index(slots: [usize; 3]) -> usize {
-    (slots[0] * MAX_CONTACTS + slots[1]) * MAX_CONTACTS + slots[2]
-}
-
-/// Coordinates of the `f64` engine: the heights (h_s0, h_s1, h_s2) and normal velocities of three
-/// contacts (for the rod (h0, h1, 0)), with every quantity the engine needs expressed in them.
-///
-/// The engine keeps the last three distinct contacts to land as the frame. When a contact outside
-/// it lands, it replaces the one that landed longest ago: the two kept coordinates are copied
-/// unchanged and the new one is h = 0, u = -γ u⁻ exactly, so a change of frame costs nothing and
-/// loses nothing. Heights and velocities of chattering contacts are then always coordinates, not
-/// differences of O(1) numbers, and keep their relative precision however small they become
-/// next to the rest of the state (docs/model.md §10).
-#[derive(Clone, Debug, Default)]
-pub struct Frame {
-    /// The contacts whose heights are the coordinates (slot 2 unused for the rod).
-    pub slots: [usize; 3],
-    /// Contact covectors: u_k = `f[k]`·p, h_k = `f[k]`·q in this frame.
-    pub f: [[f64; 3]; MAX_CONTACTS],
-    /// Impact kicks in this frame.
-    pub kick: [[f64; 3]; MAX_CONTACTS],
-    /// Centre covector (v, hc).
-    pub centre: [f64; 3],
-    /// Energy Gram matrix.
-    pub gram: [[f64; 3]; 3],
-    /// This frame to our coordinates.
-    pub to_ours: [[f64; 3]; 3],
-    /// Our coordinates to this frame.
-    pub from_ours: [[f64; 3]; 3],
-    /// `slot[k]`: the slot holding contact k, or 3.
-    pub slot: [u8; MAX_CONTACTS],
-}
-
-impl Frame {
-    fn new(sys: &System, slots: [usize; 3]) -> Frame {
-        let v3 = |v: &Vec3<Q>| v.clone().map(|x| x.to_f64());
-        let m3 = |m: &[[Q; 3]; 3]| m.clone().map(|r| r.map(|x| x.to_f64()));
-        let a = sys.frame_matrix(slots);
-        let b = inverse3(&a).expect("three vertices of a convex polygon are not collinear");
-        let mut fr = Frame {
-            slots,
-            centre: v3(&row_times(&sys.centre, &b)),
-            gram: m3(&mat_mul3(&transpose3(&b), &mat_mul3(&sys.gram, &b))),
-            to_ours: m3(&b),
-            from_ours: m3(&a),
-            slot: [3; MAX_CONTACTS],
-            ..Frame::default()
-        };
-        let dim = sys.shape.dim();
-        for (i, &k) in slots[..dim].iter().enumerate() {
-            fr.slot[k] = i as u8;
-        }
-        for k in 0..sys.n() {
-            fr.f[k] = v3(&row_times(&sys.contacts[k], &b));
-            fr.kick[k] = v3(&mat_times(&a, &sys.kicks[k]));
-        }
-        fr
-    }
-}
-
-fn row_times(r: &Vec3<Q>, m: &[[Q; 3]; 3]) -> Vec3<Q> {
-    std::array::from_fn(|c| &(&(&r[0] * &m[0][c]) + &(&r[1] * &m[1][c])) + &(&r[2] * &m[2][c]))
-}
-
-fn mat_times(m: &[[Q; 3]; 3], x: &Vec3<Q>) -> Vec3<Q> {
-    std::array::from_fn(|r| dot(&m[r], x))
-}
-
-fn transpose3(m: &[[Q; 3]; 3]) -> [[Q; 3]; 3] {
-    std::array::from_fn(|r| std::array::from_fn(|c| m[c][r].clone()))
-}
-
-fn mat_mul3(a: &[[Q; 3]; 3], b: &[[Q; 3]; 3]) -> [[Q; 3]; 3] {
-    std::array::from_fn(|r| row_times(&a[r], b))
-}
-
-/// The exact inverse of a 3x3 matrix (adjugate over determinant), `None` if singular.
-fn inverse3(m: &[[Q; 3]; 3]) -> Option<[[Q; 3]; 3]> {
-    let det = chatter_kernel::model::linalg::det3(&m[0], &m[1], &m[2]);
-    if det.is_zero() {
-        return None;
-    }
-    let cof = |r: usize, c: usize| {
-        let (r1, r2) = ((r + 1) % 3, (r + 2) % 3);
-        let (c1, c2) = ((c + 1) % 3, (c + 2) % 3);
-        &(&m[r1][c1] * &m[r2][c2]) - &(&m[r1][c2] * &m[r2][c1])
-    };
-    Some(std::array::from_fn(|r| std::array::from_fn(|c| &cof(c, r) / &det)))
 }
 
 fn unit(x: [f64; 3]) -> [f64; 3] {

@@ -190,6 +190,37 @@ fn classify_shows_the_evidence() {
     assert!(v["certificate"].is_null());
 }
 
+/// Regression (issue 10 §1): `classify` shows the float finder's verdict and a batch of simulated
+/// drops for every n; n = 5 used to print neither.
+#[test]
+fn classify_shows_finder_and_drops_for_irrational_n() {
+    let d = tempfile::tempdir().unwrap();
+    let o = chatter(&["classify", "--n", "5", "--kappa", "1/200", "--gamma", "1/100"], d.path());
+    let (out, err) = text(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    for needle in [
+        "CC criterion (S_1 has a real, positive dominant eigenvalue): HOLDS",
+        "float finder, translation seed: found a cone",
+        "float finder, all-down seed: found a cone",
+        "simulation (20 random drops, budget 2000 impacts, f64): CC 20,",
+        "certificate: none",
+    ] {
+        assert!(out.contains(needle), "missing {needle:?} in\n{out}");
+    }
+    for n in ["7", "8", "12"] {
+        let o = chatter(&["classify", "--n", n, "--kappa", "1/50", "--gamma", "1/100", "--json"], d.path());
+        assert_eq!(o.status.code(), Some(0), "n = {n}");
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        // Here the finder, the drops and the exact CC criterion agree (n = 12 fails at this kappa).
+        let cc = v["cc"]["holds"].as_bool().unwrap();
+        assert_eq!(cc, n != "12", "n = {n}: {v}");
+        for key in ["finder_translation", "finder_all_down"] {
+            assert_eq!(v[key], if cc { "found" } else { "no-cone" }, "n = {n}: {v}");
+        }
+        assert_eq!(v["simulation"][if cc { "CC" } else { "ICC" }], 20, "n = {n}: {v}");
+    }
+}
+
 #[test]
 fn classify_the_rod_from_a_rotating_start() {
     let d = tempfile::tempdir().unwrap();

@@ -14,6 +14,7 @@ mod exactify;
 mod finder;
 mod fuzz_smoke;
 mod kernel;
+mod model;
 mod plot;
 mod readme;
 mod refute;

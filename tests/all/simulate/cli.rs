@@ -165,11 +165,77 @@ fn the_plot_format_follows_the_extension() {
     assert!(!d.path().join("x.pdf").exists());
 }
 
+/// Regression (issue 10 §1): every n from 2 to 64 simulates in f64; n = 5 used to exit 2.
+#[test]
+fn every_n_up_to_64_simulates_in_f64() {
+    let d = tempfile::tempdir().unwrap();
+    let o = simulate(&["--n", "5", "--kappa", "1/200", "--gamma", "1/100", "--seed", "3"], d.path());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    for part in [
+        "n=5 kappa=1/200 gamma=1/100",
+        "random drop, seed 3",
+        "f64 (renormalised)",
+        "outcome: CC",
+        "decided by: ",
+    ] {
+        assert!(out.contains(part), "missing {part:?} in\n{out}");
+    }
+    for n in ["7", "8", "12", "64"] {
+        let o = simulate(&["--n", n, "--runs", "4", "--json"], d.path());
+        assert_eq!(o.status.code(), Some(0), "n = {n}: {}", stderr(&o));
+        let v = json(&o);
+        assert_eq!(v["n"].as_u64(), Some(n.parse().unwrap()));
+        let total: u64 = v["counts"].as_object().unwrap().values().map(|c| c.as_u64().unwrap()).sum();
+        assert_eq!(total, 4, "n = {n}: {v}");
+    }
+    // A given start, checked exactly in Q(cos 2 pi/7), and a trajectory file with 7 contacts.
+    let o = simulate(
+        &[
+            "--n",
+            "7",
+            "--position",
+            "1/10,1/5,1",
+            "--velocity",
+            "-1,-1,-1",
+            "--trajectory",
+            "t.csv",
+            "--json",
+        ],
+        d.path(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(json(&o)["start"]["kind"], "given");
+    assert!(std::fs::read_to_string(d.path().join("t.csv")).unwrap().lines().count() > 1);
+    let o = simulate(&["--n", "7", "--position", "1,0,0", "--velocity", "-1,-1,-1"], d.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("below the floor"), "{}", stderr(&o));
+}
+
+/// `--exact` needs a rational cos 2 pi/n; elsewhere a clear exit 2 naming issue 10 §2.
+#[test]
+fn exact_simulation_of_irrational_n_is_a_clear_error() {
+    let d = tempfile::tempdir().unwrap();
+    for n in ["5", "7", "12"] {
+        let o = simulate(&["--n", n, "--exact"], d.path());
+        assert_eq!(o.status.code(), Some(2), "n = {n}: {}", stdout(&o));
+        let err = stderr(&o);
+        assert!(err.contains("--exact") && err.contains("number-field") && err.contains("issue 10"), "{err}");
+        assert!(!err.contains("panicked"), "{err}");
+    }
+    for n in ["0", "1", "65", "1000"] {
+        let o = simulate(&["--n", n], d.path());
+        assert_eq!(o.status.code(), Some(2), "n = {n}");
+        assert!(stderr(&o).contains("outside 2..=64"), "n = {n}: {}", stderr(&o));
+        assert!(!stderr(&o).contains("panicked"));
+    }
+}
+
 #[test]
 fn bad_input_exits_2_with_a_message() {
     let d = tempfile::tempdir().unwrap();
     let cases: [(&[&str], &str); 14] = [
-        (&["--n", "5"], "--n"),
+        (&["--n", "65"], "--n: 65 is outside 2..=64"),
         (&["--n", "x"], "--n"),
         (&["--kappa", "0"], "--kappa"),
         (&["--kappa", "1/0"], "--kappa"),

@@ -28,7 +28,7 @@ fn exact_energy_decreases_at_every_impact() {
         let mut impacts = 0;
         for _ in 0..3 {
             let start = random_rational_start(&m, &mut rng);
-            let mut e = ExactEngine::new(&m.system, &start);
+            let mut e = ExactEngine::new(m.system(), &start);
             let mut before = e.energy();
             for _ in 0..30 {
                 let Step::Impact { .. } = e.step() else { break };
@@ -50,7 +50,7 @@ fn exact_energy_is_conserved_when_elastic() {
         let mut rng = SplitMix64::new(n);
         for _ in 0..4 {
             let start = random_rational_start(&m, &mut rng);
-            let mut e = ExactEngine::new(&m.system, &start);
+            let mut e = ExactEngine::new(m.system(), &start);
             let e0 = e.energy();
             let mut impacts = 0;
             while let Step::Impact { .. } = e.step() {
@@ -105,7 +105,7 @@ fn float_energy_is_conserved_to_rounding_when_elastic() {
 /// The exact run's impact sequence, or `None` when two landing times come within a relative
 /// 1e-9 of each other (a near-tie that rounding may resolve either way).
 fn exact_sequence_away_from_ties(m: &Model, start: &Start<Q>, budget: usize) -> Option<Vec<usize>> {
-    let mut e = ExactEngine::new(&m.system, start);
+    let mut e = ExactEngine::new(m.system(), start);
     let mut seq = Vec::new();
     while seq.len() < budget {
         let mut times: Vec<f64> = e.candidate_times().iter().map(|(_, t)| t.to_f64()).collect();
@@ -238,7 +238,7 @@ fn many_runs_do_not_depend_on_the_number_of_threads() {
 fn drive_reports_the_same_outcome_as_the_exact_engine_step_by_step() {
     let m = model(4, "1/6", "1/100");
     let start = exact_drop(&m.float, 2);
-    let mut e = ExactEngine::new(&m.system, &start);
+    let mut e = ExactEngine::new(m.system(), &start);
     let run = drive(&mut e, &m.float, &Options::new(40));
     assert!(run.exact);
     assert_eq!(run.impacts, 40);
@@ -257,8 +257,8 @@ fn shapes_are_the_tags_of_the_kernel_bodies() {
         assert_eq!(Shape::from(&body), tag);
         assert_eq!(System::from_body(&body).shape, tag);
         let m = Model::new(tag, kappa.clone(), gamma.clone()).expect("supported body");
-        assert_eq!((m.system.shape, m.float.shape, m.system.n()), (tag, tag, n as usize));
-        assert_eq!(m.system.contacts, Model::from_body(&body).system.contacts);
+        assert_eq!((m.system().shape, m.float.shape, m.system().n()), (tag, tag, n as usize));
+        assert_eq!(m.system().contacts, Model::from_body(&body).system().contacts);
     }
     // No exact model: building a polygon tag without one fails.
     for tag in [Shape::Polygon(5), Shape::Polygon(2)] {

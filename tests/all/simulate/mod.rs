@@ -6,6 +6,7 @@ mod engines;
 mod outcomes;
 mod pattern;
 mod pcc;
+mod regular;
 
 use crate::common::q;
 use chatter::exact::{Q, Ring};
@@ -26,15 +27,15 @@ fn rational(rng: &mut SplitMix64, lo: i64, hi: i64, den: i64) -> Q {
 /// A random valid start with small rational coordinates: every contact at or above the floor,
 /// the centre of mass moving down.
 pub fn random_rational_start(m: &Model, rng: &mut SplitMix64) -> Start<Q> {
-    let dim = m.system.shape.dim();
+    let dim = m.system().shape.dim();
     loop {
         let mut s = Start { q: std::array::from_fn(|_| Q::int(0)), p: std::array::from_fn(|_| Q::int(0)) };
         for i in 0..dim {
             s.q[i] = rational(rng, 0, 2, 97);
             s.p[i] = rational(rng, -2, 1, 89);
         }
-        let v = m.system.centre.iter().zip(&s.p).fold(Q::int(0), |a, (c, x)| a + c * x);
-        if check_start(&m.system, &s).is_ok() && v.is_negative() {
+        let v = m.system().centre.iter().zip(&s.p).fold(Q::int(0), |a, (c, x)| a + c * x);
+        if check_start(m.system(), &s).is_ok() && v.is_negative() {
             return s;
         }
     }

@@ -12,7 +12,7 @@ use chatter::simulate::{
 fn start(m: &Model, position: &[&str], velocity: &[&str]) -> Start<Q> {
     let qs: Vec<Q> = position.iter().map(|s| q(s)).collect();
     let ps: Vec<Q> = velocity.iter().map(|s| q(s)).collect();
-    given_start(&m.system, &qs, &ps).expect("valid start")
+    given_start(m.system(), &qs, &ps).expect("valid start")
 }
 
 fn both(m: &Model, s: &Start<Q>, budget: usize) -> [Run; 2] {

@@ -14,7 +14,7 @@ use chatter_kernel::model::linalg::dot;
 fn the_flat_triangle_plate_shows_pcc_at_small_gamma() {
     // kappa = (1 + 2 cos^2(pi/3))/12 = 1/8; the paper reports PCC for gamma < 0.01.
     let m = model(3, "1/8", "1/200");
-    assert!(m.system.pcc_possible());
+    assert!(m.system().pcc_possible());
     for seed in 0..20 {
         let r = simulate_float(&m.float, &random_drop(&m.float, seed), &Options::new(200));
         assert_eq!(r.outcome, Outcome::Pcc, "seed {seed}: {}", r.decision.describe());
@@ -37,7 +37,7 @@ fn the_flat_triangle_plate_shows_pcc_at_small_gamma() {
 #[test]
 fn the_square_shows_no_pcc() {
     let m = model(4, "1/6", "1/100");
-    assert!(!m.system.pcc_possible(), "kappa + cos(pi/2) > 0: an impact lifts the neighbours");
+    assert!(!m.system().pcc_possible(), "kappa + cos(pi/2) > 0: an impact lifts the neighbours");
     for seed in 0..20 {
         let r = simulate_float(&m.float, &random_drop(&m.float, seed), &Options::new(200));
         assert_ne!(r.outcome, Outcome::Pcc, "seed {seed}");
@@ -54,21 +54,21 @@ fn pcc_lemma_guard_agrees_with_the_kernel_quadratic() {
                 let m = model(n, kappa, gamma);
                 let body = chatter_kernel::model::Polygon::new(n, q(kappa), q(gamma)).unwrap();
                 let quad = chatter_kernel::model::pcc_quadratic(&body).expect("1 is an eigenvalue");
-                let e = &m.system.pair_coupling;
+                let e = &m.system().pair_coupling;
                 let expected = e.is_negative() && !quad.discriminant.is_negative();
-                assert_eq!(m.system.pcc_possible(), expected, "n={n} kappa={kappa} gamma={gamma}");
+                assert_eq!(m.system().pcc_possible(), expected, "n={n} kappa={kappa} gamma={gamma}");
             }
         }
     }
     // The boundary for the triangle plate: gamma = 17 - 12 sqrt 2 = 0.02944 (E = -(1+gamma)/3).
-    assert!(model(3, "1/8", "147/5000").system.pcc_possible());
-    assert!(!model(3, "1/8", "59/2000").system.pcc_possible());
+    assert!(model(3, "1/8", "147/5000").system().pcc_possible());
+    assert!(!model(3, "1/8", "59/2000").system().pcc_possible());
 }
 
 #[test]
 fn exact_pair_proof_bounds_the_time_and_predicts_the_limit_velocity() {
     let m = model(3, "1/8", "1/50");
-    let sys = &m.system;
+    let sys = m.system();
     let mut e = ExactEngine::new(sys, &exact_drop(&m.float, 4));
     let mut seq = Vec::new();
     let proof = loop {
@@ -106,13 +106,13 @@ fn exact_pair_proof_bounds_the_time_and_predicts_the_limit_velocity() {
 #[test]
 fn exact_pair_proof_refuses_where_the_lemma_excludes_pcc() {
     let m = model(3, "1/8", "3/100");
-    let mut e = ExactEngine::new(&m.system, &exact_drop(&m.float, 0));
+    let mut e = ExactEngine::new(m.system(), &exact_drop(&m.float, 0));
     let mut prev = None;
     for _ in 0..12 {
         let Step::Impact { contact, .. } = e.step() else { panic!() };
         if let Some(o) = prev {
             let (qs, ps) = e.state();
-            let err = prove_pair_chatter(&m.system, qs, ps, contact, o).unwrap_err();
+            let err = prove_pair_chatter(m.system(), qs, ps, contact, o).unwrap_err();
             assert!(err.contains("real eigenvalues"), "{err}");
         }
         prev = Some(contact);
