@@ -70,4 +70,9 @@ done <<'REFUTATIONS'
 6 1/20 1/10 effectively-invariant refutation-n6-kappa1_20-gamma1_10.ron
 2 1/3 1/10 effectively-invariant refutation-n2-kappa1_3-gamma1_10.ron
 REFUTATIONS
+# JSON twins (docs/certificate-format.md §11) of the doc example and of a refutation.
+for name in doc-example-square refutation-n4-kappa1_6-gamma1_20; do
+  "$bin" convert "$out/$name.ron" --to json -o "$out/$name.json"
+  written=$((written + 1))
+done
 echo "$written certificates in $out"

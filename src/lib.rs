@@ -14,6 +14,7 @@ pub mod bodies;
 pub mod certify;
 #[cfg(feature = "cli")]
 pub mod cli;
+pub mod convert;
 pub mod cover;
 pub mod exact;
 pub mod exactify;

@@ -4,7 +4,7 @@
 //! says so. The crate is small and separate, and its promises are compiler checks: no unsafe
 //! code, no floating-point arithmetic, every public item documented, and no dependency on the
 //! untrusted tool (finder, exactifier, simulator, plots, command line); it depends on malachite,
-//! num-bigint/num-rational, serde and ron only.
+//! num-bigint/num-rational, serde, ron and serde_json only.
 //!
 //! - [`exact`]: exact scalars behind one ordered-field interface, on two independent bignum
 //!   backends, and the canonical `"p/q"` text of a rational.

@@ -9,7 +9,7 @@
 //! from the body, never read from the file.
 
 use crate::certificate::{Body, Claim, Code, Coordinates, Locus, Param, Rejection, check_header};
-use crate::certificate::{check_strict, ron_error};
+use crate::certificate::{Encoding, check_strict, ron_error};
 use crate::exact::{Field, OrderedField, ParseLimits, parse_canonical, to_canonical};
 use crate::model::Shape;
 use serde::{Deserialize, Serialize};
@@ -98,7 +98,16 @@ struct Header {
     version: Option<u64>,
 }
 
-/// Reads a refutation: the strict syntax, the header, then the schema with unknown fields denied.
+/// Reads a refutation in the given encoding (RON or its JSON twin).
+pub fn read_in(text: &str, encoding: Encoding) -> Result<Refutation, Rejection> {
+    match encoding {
+        Encoding::Ron => read(text),
+        Encoding::Json => crate::certificate::read_json(text, FORMAT, VERSION..=VERSION),
+    }
+}
+
+/// Reads a RON refutation: the strict syntax, the header, then the schema with unknown fields
+/// denied.
 pub fn read(text: &str) -> Result<Refutation, Rejection> {
     check_strict(text)?;
     let lenient = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
@@ -264,7 +273,10 @@ fn to_canonical_text<F: Field>(x: &F) -> String {
 pub fn write(r: &Refutation) -> String {
     use crate::certificate::quoted;
     let Body::RegularPolygon { n, kappa, gamma } = &r.body;
-    let param = |p: &Param| quoted(p.texts()[0]);
+    let param = |p: &Param| match p {
+        Param::Point(x) => quoted(x),
+        Param::Interval(a, b) => format!("[{}, {}]", quoted(a), quoted(b)),
+    };
     let mut out = String::from("Refutation(\n");
     out.push_str(&format!("    format: {},\n    version: {},\n", quoted(&r.format), r.version));
     out.push_str(&format!(

@@ -2,7 +2,7 @@
 //! num-bigint/num-rational are independent libraries, so a disagreement between their verdicts
 //! (messages included) reveals a bug in one of them or in the kernel, and is reported as such.
 
-use crate::certificate::{Certificate, read};
+use crate::certificate::{Certificate, Encoding, read_in};
 use crate::check::{Accepted, check};
 use crate::exact::{ParseLimits, Q};
 use num_rational::BigRational;
@@ -91,9 +91,15 @@ pub fn verify(cert: &Certificate, limits: ParseLimits) -> Verdict {
     verify_on(cert, limits, &[MALACHITE, NUM])
 }
 
-/// Reads certificate text and verifies it on the given backends.
+/// Reads RON certificate text and verifies it on the given backends.
 pub fn verify_text(text: &str, limits: ParseLimits, backends: &[Backend]) -> Verdict {
-    match read(text) {
+    verify_text_in(text, Encoding::Ron, limits, backends)
+}
+
+/// Reads certificate text in the given encoding (RON or its JSON twin) and verifies it on the
+/// given backends: after reading, the same checks on the same values.
+pub fn verify_text_in(text: &str, encoding: Encoding, limits: ParseLimits, backends: &[Backend]) -> Verdict {
+    match read_in(text, encoding) {
         Ok(cert) => verify_on(&cert, limits, backends),
         Err(r) => Verdict::Rejected(r),
     }
@@ -124,20 +130,39 @@ pub fn verify_refutation(
     agree(backends.iter().map(|b| (b.name, (b.refute)(r, limits))))
 }
 
-/// Reads refutation text and checks it on the given backends.
+/// Reads RON refutation text and checks it on the given backends.
 pub fn verify_refutation_text(
     text: &str,
     limits: ParseLimits,
     backends: &[Backend],
 ) -> Verdict<crate::refute::Refuted> {
-    match crate::refute::read(text) {
+    verify_refutation_text_in(text, Encoding::Ron, limits, backends)
+}
+
+/// Reads refutation text in the given encoding and checks it on the given backends.
+pub fn verify_refutation_text_in(
+    text: &str,
+    encoding: Encoding,
+    limits: ParseLimits,
+    backends: &[Backend],
+) -> Verdict<crate::refute::Refuted> {
+    match crate::refute::read_in(text, encoding) {
         Ok(r) => verify_refutation(&r, limits, backends),
         Err(r) => Verdict::Rejected(r),
     }
 }
 
-/// The `format` field of a certificate or proof file, read leniently (any struct name, unknown
-/// fields ignored), to tell the two kinds apart; `None` if the text is not RON with a `format`.
+/// The `format` field of text in the given encoding, read leniently (unknown fields ignored).
+pub fn format_of_in(text: &str, encoding: Encoding) -> Option<String> {
+    match encoding {
+        Encoding::Ron => format_of(text),
+        Encoding::Json => crate::certificate::json_format_of(text),
+    }
+}
+
+/// The `format` field of a certificate, refutation or proof file, read leniently (any struct
+/// name, unknown fields ignored), to tell the kinds apart; `None` if the text is not RON with a
+/// `format`.
 pub fn format_of(text: &str) -> Option<String> {
     #[derive(serde::Deserialize)]
     struct Header {

@@ -8,6 +8,7 @@ mod bodies_cmd;
 mod certify_cmd;
 mod check_proof_cmd;
 mod classify_cmd;
+mod convert_cmd;
 mod cover_cmd;
 mod map_cmd;
 mod plot_cmd;
@@ -90,8 +91,10 @@ pub enum Command {
     Reproduce(reproduce_cmd::ReproduceArgs),
     /// Find, exactify and kernel-check an effectively invariant cone; write a certificate.
     Certify(certify_cmd::CertifyArgs),
-    /// Check certificate files (or directories of *.ron files) with the trusted kernel.
+    /// Check certificate files (or directories of *.ron and *.json files) with the trusted kernel.
     Verify(verify_cmd::VerifyArgs),
+    /// Convert a certificate or refutation between RON and its JSON twin (lossless).
+    Convert(convert_cmd::ConvertArgs),
     /// Decide the paper's spectral criteria exactly at one body, with the evidence.
     Classify(classify_cmd::ClassifyArgs),
     /// The catalogue of bodies: kappa from geometry, exact CC and PCC thresholds in gamma.
@@ -167,6 +170,7 @@ pub fn run(cli: Cli, env: &Env) -> Outcome {
     match cli.command {
         Command::Certify(a) => certify_cmd::run(a, env),
         Command::Verify(a) => verify_cmd::run(a, env),
+        Command::Convert(a) => convert_cmd::run(a),
         Command::Simulate(a) => simulate_cmd::run(a),
         Command::Classify(a) => classify_cmd::run(a),
         Command::Bodies(a) => bodies_cmd::run(a),

@@ -25,16 +25,18 @@ pub enum BackendArg {
 #[command(
     after_help = "Prints one line per input, `PATH: OK (...)`, `PATH: REJECTED: reason` or `PATH: ERROR: reason`,\n\
 then a summary line. A directory is searched recursively for *.ron and *.ron.gz files (any letter\n\
-case); every real path is checked at most once. Limits (file size, generators, digits, time) are\n\
-reported as REJECTED with the code too-large or time-limit, naming the limit.\n\n\
+case) and for *.json and *.json.gz files that declare \"format\": \"chatter-certificate\" or\n\
+\"chatter-refutation\" (the JSON twin; manifests are skipped); every real path is checked at most\n\
+once. Limits (file size, generators, digits, time) are reported as REJECTED with the code\n\
+too-large or time-limit, naming the limit.\n\n\
 Exit status: 3 if the backends disagree on an input (a bug); else 2 if an input could not be\n\
 read; else 1 if one was rejected; else 0. With --expect: 0 if every verdict is the expected one,\n\
 1 if any differs (each mismatch is printed), 2 if the manifest cannot be read.\n\n\
 Examples:\n  chatter verify square.ron\n  chatter verify certificates/valid\n  chatter verify --expect certificates/invalid/expected.json"
 )]
 pub struct VerifyArgs {
-    /// Certificate files, or directories searched recursively (default with --expect: the
-    /// manifest's directory).
+    /// Certificate files (RON or JSON), or directories searched recursively (default with
+    /// --expect: the manifest's directory).
     #[arg(required_unless_present = "expect")]
     pub paths: Vec<PathBuf>,
     /// Compare every verdict with a manifest of expected verdicts (JSON, the form of
@@ -102,10 +104,10 @@ pub fn run(a: VerifyArgs, env: &Env) -> Outcome {
         (Some(m), true) => vec![m.dir.clone()],
         _ => a.paths.clone(),
     };
-    let listing = files::list(&paths);
+    let listing = files::list_with(&paths, a.max_file_size);
     if listing.entries.is_empty() {
         return Outcome::Usage(format!(
-            "no certificate files (*.ron, *.ron.gz) found; {}",
+            "no certificate files (*.ron, *.ron.gz, or *.json, *.json.gz declaring a certificate) found; {}",
             Summary::of(&[], listing.skipped).line()
         ));
     }

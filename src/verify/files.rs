@@ -1,6 +1,8 @@
 //! Which files `chatter verify` looks at (docs/certificate-format.md §7, "Inputs"): a file named
 //! on the command line is always checked; a directory is searched recursively for certificate
-//! files (`*.ron` and `*.ron.gz`, in any letter case), in name order. Every real path is visited
+//! files, in name order: `*.ron` and `*.ron.gz` (in any letter case), and `*.json` and
+//! `*.json.gz` files that declare a certificate's or refutation's format (so that a manifest such
+//! as `expected.json`, or a `summary.json`, is skipped). Every real path is visited
 //! at most once, so symbolic-link loops end and a file reached twice is checked once. A problem
 //! with one path (missing, unreadable directory, broken link) becomes one entry, and the others
 //! are still listed.
@@ -26,8 +28,12 @@ pub enum Entry {
 /// Files not checked, by reason (reported in the summary).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 pub struct Skipped {
-    /// Files in a searched directory whose name is not a certificate's (`*.ron`, `*.ron.gz`).
+    /// Files in a searched directory whose name is not a certificate's (`*.ron`, `*.ron.gz`,
+    /// `*.json`, `*.json.gz`).
     pub other_names: usize,
+    /// `*.json` and `*.json.gz` files in a searched directory that do not declare a certificate's
+    /// or refutation's format (manifests, summaries): see [`declares_format`].
+    pub other_json: usize,
     /// Paths whose real path was already visited (links to a file or directory seen before).
     pub seen_before: usize,
 }
@@ -35,7 +41,7 @@ pub struct Skipped {
 impl Skipped {
     /// All skipped files.
     pub fn total(&self) -> usize {
-        self.other_names + self.seen_before
+        self.other_names + self.other_json + self.seen_before
     }
 }
 
@@ -54,6 +60,44 @@ pub fn is_certificate_name(p: &Path) -> bool {
     name.ends_with(".ron") || name.ends_with(".ron.gz")
 }
 
+/// Whether a file name is a JSON file's: `*.json` or `*.json.gz`, in any letter case.
+pub fn is_json_name(p: &Path) -> bool {
+    let name = p.file_name().map(|n| n.to_string_lossy().to_lowercase()).unwrap_or_default();
+    name.ends_with(".json") || name.ends_with(".json.gz")
+}
+
+/// The encoding of a file by its name: the JSON twin for `*.json` and `*.json.gz` (any letter
+/// case), RON for every other name.
+pub fn encoding_of(p: &Path) -> chatter_kernel::certificate::Encoding {
+    use chatter_kernel::certificate::Encoding;
+    if is_json_name(p) { Encoding::Json } else { Encoding::Ron }
+}
+
+/// Whether JSON text declares a certificate's or refutation's format: it contains the key
+/// `"format"` followed, after optional whitespace, a colon and optional whitespace, by the string
+/// `"chatter-certificate"` or `"chatter-refutation"`. Textual, so that a certificate with a
+/// syntax error elsewhere is still checked (and rejected) rather than skipped.
+pub fn declares_format(text: &str) -> bool {
+    let ws = [' ', '\t', '\n', '\r'];
+    text.match_indices("\"format\"").any(|(i, key)| {
+        let rest = text[i + key.len()..].trim_start_matches(ws);
+        rest.strip_prefix(':').is_some_and(|r| {
+            let r = r.trim_start_matches(ws);
+            r.starts_with("\"chatter-certificate\"") || r.starts_with("\"chatter-refutation\"")
+        })
+    })
+}
+
+/// Whether a `*.json` file found in a directory is to be checked: it declares a certificate's or
+/// refutation's format, or it cannot be examined within `max_bytes` (too large, unreadable): then
+/// its verdict says why.
+fn json_to_check(path: &Path, max_bytes: u64) -> bool {
+    match super::read::read_input(path, max_bytes) {
+        super::read::Input::Text { text, .. } => declares_format(&text),
+        _ => true,
+    }
+}
+
 /// An I/O error in words, without the OS error number.
 pub fn describe(e: &std::io::Error) -> String {
     use std::io::ErrorKind as K;
@@ -67,9 +111,16 @@ pub fn describe(e: &std::io::Error) -> String {
     }
 }
 
-/// Lists the inputs named by `paths` (files and directories).
+/// Lists the inputs named by `paths` (files and directories), examining JSON files within the
+/// default `max-file-size`.
 pub fn list(paths: &[PathBuf]) -> Listing {
-    let mut walk = Walk::default();
+    list_with(paths, super::DEFAULT_MAX_FILE_SIZE)
+}
+
+/// Lists the inputs named by `paths`; a `*.json` file in a directory is examined (read, within
+/// `max_bytes`) to tell a certificate from a manifest.
+pub fn list_with(paths: &[PathBuf], max_bytes: u64) -> Listing {
+    let mut walk = Walk { max_bytes, ..Walk::default() };
     for p in paths {
         match std::fs::metadata(p) {
             Err(e) => walk.problem(p, describe(&e)),
@@ -95,6 +146,7 @@ struct Walk {
     seen: HashSet<PathBuf>,
     entries: Vec<Entry>,
     skipped: Skipped,
+    max_bytes: u64,
 }
 
 impl Walk {
@@ -131,7 +183,10 @@ impl Walk {
         for child in children {
             match std::fs::metadata(&child) {
                 Ok(m) if m.is_dir() => self.directory(&child),
-                _ if !is_certificate_name(&child) => self.skipped.other_names += 1,
+                Ok(_) if is_json_name(&child) && !json_to_check(&child, self.max_bytes) => {
+                    self.skipped.other_json += 1;
+                }
+                _ if !is_certificate_name(&child) && !is_json_name(&child) => self.skipped.other_names += 1,
                 Ok(_) => self.file(&child),
                 Err(e) => self.problem(&child, link_problem(&child, &e)),
             }

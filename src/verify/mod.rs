@@ -7,9 +7,9 @@ pub mod expect;
 pub mod files;
 pub mod read;
 
-use chatter_kernel::certificate::{Code, Locus, Rejection};
+use chatter_kernel::certificate::{Code, Encoding, Locus, Rejection};
 use chatter_kernel::exact::ParseLimits;
-use chatter_kernel::verify::{Backend, Verdict, format_of, verify_text};
+use chatter_kernel::verify::{Backend, Verdict, format_of_in, verify_text_in};
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -225,15 +225,20 @@ enum Kind {
 
 /// Verifies certificate or refutation text on the backends; the kind of a rejected certificate
 /// is looked up only when its format is not a certificate's.
-fn verify_any(text: &str, limits: ParseLimits, backends: &[Backend]) -> (FileVerdict, Kind) {
+fn verify_any(
+    text: &str,
+    encoding: Encoding,
+    limits: ParseLimits,
+    backends: &[Backend],
+) -> (FileVerdict, Kind) {
     let path = Path::new("");
-    let verdict = verify_text(text, limits, backends);
+    let verdict = verify_text_in(text, encoding, limits, backends);
     if !matches!(&verdict, Verdict::Rejected(r) if r.code == Code::WrongFormat || r.code == Code::Syntax) {
         return (verdict_of(path, verdict), Kind::Certificate);
     }
-    match format_of(text).as_deref() {
+    match format_of_in(text, encoding).as_deref() {
         Some(chatter_kernel::refute::FORMAT) => {
-            let v = chatter_kernel::verify::verify_refutation_text(text, limits, backends);
+            let v = chatter_kernel::verify::verify_refutation_text_in(text, encoding, limits, backends);
             (refutation_verdict_of(path, v), Kind::Refutation)
         }
         Some(chatter_kernel::proof::FORMAT) => (verdict_of(path, verdict), Kind::Proof),
@@ -316,7 +321,8 @@ pub fn verify_file(path: &Path, opts: &Options) -> FileVerdict {
         read::Input::Unreadable(why) => return unreadable(path, &why),
     };
     let (limits, backends) = (opts.limits, opts.backends.clone());
-    let run = move |deadline| verify_any(&text, ParseLimits { deadline, ..limits }, &backends);
+    let encoding = files::encoding_of(path);
+    let run = move |deadline| verify_any(&text, encoding, ParseLimits { deadline, ..limits }, &backends);
     let Some((mut v, kind)) = with_time_limit(opts.time_limit, run) else {
         return out_of_time(path, opts.time_limit.unwrap_or_default());
     };
@@ -395,8 +401,13 @@ impl Summary {
         }
         let k = self.skipped;
         if k.total() > 0 {
+            let json = if k.other_json > 0 {
+                format!(", {} JSON not a certificate or refutation", k.other_json)
+            } else {
+                String::new()
+            };
             s += &format!(
-                "; {} skipped ({} not named *.ron or *.ron.gz, {} reached again through a link)",
+                "; {} skipped ({} not named *.ron, *.ron.gz, *.json or *.json.gz{json}, {} reached again through a link)",
                 k.total(),
                 k.other_names,
                 k.seen_before

@@ -4,10 +4,10 @@
 
 use crate::common::root;
 use chatter::exact::{ParseLimits, Q};
-use chatter::verify::files::is_certificate_name;
+use chatter::verify::files::{declares_format, encoding_of, is_certificate_name, is_json_name};
 use chatter::verify::read::{Input, read_input};
 use chatter_kernel::certificate::{Claim, read};
-use chatter_kernel::verify::{MALACHITE, NUM, Verdict, verify_text};
+use chatter_kernel::verify::{MALACHITE, NUM, Verdict, verify_text, verify_text_in};
 use serde::Deserialize;
 use std::collections::BTreeSet;
 use std::path::PathBuf;
@@ -18,6 +18,18 @@ fn ron_files(dir: &str) -> Vec<PathBuf> {
         .unwrap()
         .map(|e| e.unwrap().path())
         .filter(|p| is_certificate_name(p))
+        .collect();
+    v.sort();
+    v
+}
+
+/// The certificate files of a corpus directory as `chatter verify` finds them: also the JSON
+/// twins (`*.json` declaring the format; not the manifest), sorted.
+fn corpus_files(dir: &str) -> Vec<PathBuf> {
+    let mut v: Vec<PathBuf> = std::fs::read_dir(root().join(dir))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| is_certificate_name(p) || (is_json_name(p) && declares_format(&text_of(p))))
         .collect();
     v.sort();
     v
@@ -46,20 +58,28 @@ fn is_refutation(p: &std::path::Path) -> bool {
     p.file_name().is_some_and(|n| n.to_string_lossy().starts_with("refutation-"))
 }
 
-/// The kernel's rejection of certificate or refutation text on the backends, if any.
+/// The kernel's rejection of certificate or refutation text (RON or JSON, by the file's name) on
+/// the backends, if any.
 fn rejection(
+    path: &std::path::Path,
     text: &str,
     backends: &[chatter_kernel::verify::Backend],
 ) -> Option<chatter_kernel::certificate::Rejection> {
-    let refutation =
-        chatter_kernel::verify::format_of(text).as_deref() == Some(chatter_kernel::refute::FORMAT);
+    let encoding = encoding_of(path);
+    let refutation = chatter_kernel::verify::format_of_in(text, encoding).as_deref()
+        == Some(chatter_kernel::refute::FORMAT);
     if refutation {
-        match chatter_kernel::verify::verify_refutation_text(text, ParseLimits::default(), backends) {
+        match chatter_kernel::verify::verify_refutation_text_in(
+            text,
+            encoding,
+            ParseLimits::default(),
+            backends,
+        ) {
             Verdict::Rejected(r) => Some(r),
             other => panic!("expected a rejection, got {other:?}"),
         }
     } else {
-        match verify_text(text, ParseLimits::default(), backends) {
+        match verify_text_in(text, encoding, ParseLimits::default(), backends) {
             Verdict::Rejected(r) => Some(r),
             _ => None,
         }
@@ -127,7 +147,7 @@ fn every_invalid_certificate_is_rejected_for_its_stated_reason() {
         &std::fs::read_to_string(root().join("certificates/invalid/expected.json")).unwrap(),
     )
     .unwrap();
-    let files: BTreeSet<String> = ron_files("certificates/invalid")
+    let files: BTreeSet<String> = corpus_files("certificates/invalid")
         .iter()
         .map(|p| p.file_name().unwrap().to_string_lossy().to_string())
         .collect();
@@ -137,9 +157,10 @@ fn every_invalid_certificate_is_rejected_for_its_stated_reason() {
     let reasons: BTreeSet<&str> = manifest.iter().map(|e| e.why.as_str()).collect();
     assert_eq!(reasons.len(), manifest.len(), "each file fails for a different stated reason");
     for e in &manifest {
-        let text = text_of(&root().join("certificates/invalid").join(&e.file));
+        let path = root().join("certificates/invalid").join(&e.file);
+        let text = text_of(&path);
         for b in [&[MALACHITE, NUM][..], &[MALACHITE], &[NUM]] {
-            match rejection(&text, b) {
+            match rejection(&path, &text, b) {
                 Some(r) => {
                     assert_eq!(r.code.as_str(), e.code, "{}: {}", e.file, r.message);
                     assert_eq!(serde_json::to_value(&r.locus).unwrap(), e.locus, "{}: locus", e.file);
@@ -230,8 +251,9 @@ fn every_acceptance_rule_has_a_corpus_file_that_breaks_only_it() {
         assert!(rules.contains(rule), "rule {rule} has a row");
     }
     for (rule, code, file) in &rows {
-        let text = text_of(&root().join("certificates/invalid").join(file));
-        let r = rejection(&text, &[MALACHITE, NUM]).unwrap_or_else(|| panic!("{file} is rejected"));
+        let path = root().join("certificates/invalid").join(file);
+        let text = text_of(&path);
+        let r = rejection(&path, &text, &[MALACHITE, NUM]).unwrap_or_else(|| panic!("{file} is rejected"));
         assert_eq!(r.code.as_str(), code, "{file}");
         // The independent oracle finds exactly this rule broken (for the content rules, after
         // evaluating every rule of the claim).

@@ -13,6 +13,7 @@ mod exact;
 mod exactify;
 mod finder;
 mod fuzz_smoke;
+mod json;
 mod kernel;
 mod model;
 mod plot;

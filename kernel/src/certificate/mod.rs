@@ -1,19 +1,21 @@
-//! Certificate format v1 (RON): the schema, the reader (two stages: header, then the full
-//! version-1 schema with unknown fields denied), the deterministic writer, and the rejection
-//! type shared with the kernel. The numbers stay text here; the kernel parses them with the
+//! Certificate format v1 and v2 (RON, and its JSON twin): the schema, the reader (two stages:
+//! header, then the full schema with unknown fields denied), the deterministic writer, and the
+//! rejection type shared with the kernel. The numbers stay text here; the kernel parses them with the
 //! canonical rules on each backend. See docs/certificate-format.md.
 
+mod json;
 mod read;
 mod rejection;
 mod strict;
 mod write;
 
-pub use read::{Syntax, read, read_with};
+pub(crate) use json::{format_of as json_format_of, read as read_json};
+pub use read::{Syntax, read, read_in, read_with};
 pub(crate) use read::{check_header, ron_error};
 pub use rejection::{Boundary, Code, Locus, Rejection};
+pub use strict::Encoding;
 pub(crate) use strict::check as check_strict;
-pub(crate) use write::quoted;
-pub use write::write;
+pub use write::{quoted, write};
 
 use serde::de::{SeqAccess, Visitor};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};

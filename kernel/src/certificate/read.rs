@@ -66,13 +66,21 @@ pub enum Syntax {
     Lenient,
 }
 
-/// Reads a certificate in the strict syntax: see [`read_with`].
+/// Reads a RON certificate in the strict syntax: see [`read_with`].
 pub fn read(text: &str) -> Result<Certificate, Rejection> {
     read_with(text, Syntax::Strict)
 }
 
-/// Reads a certificate: the syntax, then the header (`format`, `version`), then the full schema
-/// of that version. Every error names the field or the position.
+/// Reads a certificate in the given encoding (RON or its JSON twin) in the strict syntax.
+pub fn read_in(text: &str, encoding: super::Encoding) -> Result<Certificate, Rejection> {
+    match encoding {
+        super::Encoding::Ron => read(text),
+        super::Encoding::Json => super::read_json(text, FORMAT, VERSIONS),
+    }
+}
+
+/// Reads a RON certificate: the syntax, then the header (`format`, `version`), then the full
+/// schema of that version. Every error names the field or the position.
 pub fn read_with(text: &str, syntax: Syntax) -> Result<Certificate, Rejection> {
     if syntax == Syntax::Strict {
         super::strict::check(text)?;

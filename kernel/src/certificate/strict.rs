@@ -8,8 +8,22 @@
 //! - between tokens: spaces, tabs, line feeds and carriage returns only;
 //! - not allowed: comments, raw or byte strings, escapes, `#![enable(...)]` headers, signs, floats,
 //!   hexadecimal, octal or binary integers, a byte order mark, and an empty file.
+//!
+//! The JSON twin (docs/certificate-format.md §11) has the same tokens with `{ }` instead of
+//! `( )` and no identifiers (so no `true`, `false` or `null`); in addition, the top-level value
+//! and the value of a key that starts with an upper-case letter (an enum variant with fields)
+//! must be objects, so that a struct has one text only (never a positional array).
 
 use super::{Code, Locus, Rejection};
+
+/// The text encodings of the format: RON, or its JSON twin.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Encoding {
+    /// The RON syntax of docs/certificate-format.md §2.
+    Ron,
+    /// The JSON twin of docs/certificate-format.md §11.
+    Json,
+}
 
 fn reject(line: usize, column: usize, what: &str) -> Rejection {
     let msg = format!("line {line}, column {column}: {what} (docs/certificate-format.md §2: strict syntax)");
@@ -25,13 +39,26 @@ fn describe(c: char, next: Option<char>) -> String {
         ('-' | '+', _) => "signs outside strings are not part of the format (numbers are strings)".into(),
         ('\'', _) => "character literals are not part of the format".into(),
         ('{' | '}', _) => "maps are not part of the format".into(),
+        ('(' | ')', _) => "parentheses are not part of the JSON twin (structs are objects)".into(),
         _ if c.is_ascii_graphic() => format!("the character {c:?} is not part of the format"),
         _ => format!("the character U+{:04X} outside a string is not part of the format", c as u32),
     }
 }
 
-/// Checks that `text` uses only the strict syntax; the first offence is reported with its position.
+/// Checks that `text` uses only the strict RON syntax; the first offence is reported with its
+/// position.
 pub fn check(text: &str) -> Result<(), Rejection> {
+    check_in(text, Encoding::Ron)
+}
+
+/// Checks that `text` uses only the strict syntax of the encoding.
+pub fn check_in(text: &str, encoding: Encoding) -> Result<(), Rejection> {
+    let json = encoding == Encoding::Json;
+    let punctuation: &[char] =
+        if json { &['{', '}', '[', ']', ':', ','] } else { &['(', ')', '[', ']', ':', ','] };
+    // JSON only: whether the next value must be an object, and the first character of the last
+    // string read (of a key when a ':' follows).
+    let (mut object_next, mut last_initial) = (true, None::<char>);
     if text.trim_matches([' ', '\t', '\n', '\r']).is_empty() {
         return Err(reject(1, 1, "the file is empty"));
     }
@@ -50,9 +77,20 @@ pub fn check(text: &str) -> Result<(), Rejection> {
         let c = chars[i];
         let next = chars.get(i + 1).copied();
         let (l0, c0) = (line, col);
-        if matches!(c, ' ' | '\t' | '\n' | '\r' | '(' | ')' | '[' | ']' | ':' | ',') {
+        if matches!(c, ' ' | '\t' | '\n' | '\r') {
             advance(&mut i, &mut line, &mut col, c);
+        } else if punctuation.contains(&c) {
+            if json {
+                if object_next && c != '{' {
+                    return Err(reject(l0, c0, "a struct or a variant's fields must be a JSON object"));
+                }
+                object_next = c == ':' && last_initial.is_some_and(|d| d.is_ascii_uppercase());
+            }
+            advance(&mut i, &mut line, &mut col, c);
+        } else if json && object_next && (c == '"' || c == '-' || c.is_ascii_alphanumeric()) {
+            return Err(reject(l0, c0, "a struct or a variant's fields must be a JSON object"));
         } else if c == '"' {
+            let start = i + 1;
             advance(&mut i, &mut line, &mut col, c);
             loop {
                 let Some(&d) = chars.get(i) else { return Err(reject(l0, c0, "a string is not closed")) };
@@ -72,9 +110,16 @@ pub fn check(text: &str) -> Result<(), Rejection> {
                     _ => {}
                 }
             }
+            last_initial = chars.get(start).copied();
             if chars.get(i).is_some_and(|d| d.is_alphanumeric() || *d == '_' || *d == '"') {
                 return Err(reject(line, col, "a token must not follow a string directly"));
             }
+        } else if json && (c.is_ascii_alphabetic() || c == '_') {
+            return Err(reject(
+                l0,
+                c0,
+                "literals and names outside strings (true, false, null) are not part of the JSON twin",
+            ));
         } else if c.is_ascii_alphabetic() || c == '_' {
             while let Some(&d) = chars.get(i).filter(|d| d.is_ascii_alphanumeric() || **d == '_') {
                 advance(&mut i, &mut line, &mut col, d);

@@ -1,4 +1,4 @@
-//! The deterministic writer: one generator per line, in the strict syntax.
+//! The deterministic RON writer: one generator per line, in the strict syntax.
 
 use super::{Body, Certificate, Param};
 

@@ -1,0 +1,110 @@
+//! `chatter convert` (docs/certificate-format.md §11): a certificate or refutation from RON to
+//! its JSON twin and back, losslessly. The file is read by the kernel's reader (strict syntax,
+//! header, schema: the rules `chatter verify` applies before any arithmetic), then written by the
+//! deterministic RON writer of the kernel or by the JSON writer here, so RON -> JSON -> RON gives
+//! the kernel writer's text byte for byte. Content rules (numbers, body, cone) are not checked:
+//! an invalid certificate converts to an equally invalid one.
+
+use chatter_kernel::certificate::{Body, Certificate, Encoding, Param, quoted};
+use chatter_kernel::refute::{Refutation, Step};
+
+/// The encoding to convert to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Target {
+    /// The JSON twin (docs/certificate-format.md §11).
+    Json,
+    /// RON, as written by the kernel's writer.
+    Ron,
+}
+
+/// A parameter: `"x"` or `["lo", "hi"]`.
+fn param(p: &Param) -> String {
+    match p {
+        Param::Point(x) => quoted(x),
+        Param::Interval(a, b) => format!("[{}, {}]", quoted(a), quoted(b)),
+    }
+}
+
+/// The JSON lines of a list, one element per line (`[]` when empty).
+fn list(items: &[String]) -> String {
+    if items.is_empty() {
+        return "[]".into();
+    }
+    let lines: Vec<String> = items.iter().map(|s| format!("        {s}")).collect();
+    format!("[\n{}\n    ]", lines.join(",\n"))
+}
+
+/// The fields shared by certificates and refutations, up to and including `coordinates`.
+fn head(format: &str, version: u64, body: &Body) -> String {
+    let Body::RegularPolygon { n, kappa, gamma } = body;
+    format!(
+        "{{\n    \"format\": {},\n    \"version\": {version},\n    \"body\": {{\"RegularPolygon\": {{\"n\": {n}, \"kappa\": {}, \"gamma\": {}}}}},\n    \"coordinates\": \"ContactVelocities\",\n",
+        quoted(format),
+        param(kappa),
+        param(gamma)
+    )
+}
+
+/// Writes a certificate as its JSON twin, one generator per line (deterministic).
+pub fn certificate_to_json(c: &Certificate) -> String {
+    let cone: Vec<String> = c
+        .cone
+        .iter()
+        .map(|g| format!("[{}]", g.0.iter().map(|s| quoted(s)).collect::<Vec<_>>().join(", ")))
+        .collect();
+    format!(
+        "{}    \"claim\": \"{}\",\n    \"cone\": {},\n    \"producer\": {}\n}}\n",
+        head(&c.format, c.version, &c.body),
+        c.claim.name(),
+        list(&cone),
+        quoted(&c.producer)
+    )
+}
+
+/// Writes a refutation as its JSON twin, one point per line (deterministic).
+pub fn refutation_to_json(r: &Refutation) -> String {
+    let points: Vec<String> = r
+        .points
+        .iter()
+        .map(|s| match s {
+            Step::Seed { index } => format!("{{\"Seed\": {{\"index\": {index}}}}}"),
+            Step::Combination { terms } => {
+                let t: Vec<String> = terms.iter().map(|(i, c)| format!("[{i}, {}]", quoted(c))).collect();
+                format!("{{\"Combination\": {{\"terms\": [{}]}}}}", t.join(", "))
+            }
+            Step::Image { step, of } => format!("{{\"Image\": {{\"step\": {step}, \"of\": {of}}}}}"),
+        })
+        .collect();
+    format!(
+        "{}    \"refutes\": \"{}\",\n    \"points\": {},\n    \"producer\": {}\n}}\n",
+        head(&r.format, r.version, &r.body),
+        r.refutes.name(),
+        list(&points),
+        quoted(&r.producer)
+    )
+}
+
+/// Converts certificate or refutation text in the encoding `from` to `target`; an error in words
+/// (with the rejection code) when the text is not a readable certificate or refutation.
+pub fn convert(text: &str, from: Encoding, target: Target) -> Result<String, String> {
+    use chatter_kernel::{certificate, proof, refute};
+    let format = chatter_kernel::verify::format_of_in(text, from);
+    let unreadable = |r: certificate::Rejection| format!("not a readable certificate or refutation: {r}");
+    match format.as_deref() {
+        Some(refute::FORMAT) => {
+            let r = refute::read_in(text, from).map_err(unreadable)?;
+            Ok(match target {
+                Target::Json => refutation_to_json(&r),
+                Target::Ron => refute::write(&r),
+            })
+        }
+        Some(proof::FORMAT) => Err("a proof file (chatter-proof) has no JSON twin".into()),
+        _ => {
+            let c = certificate::read_in(text, from).map_err(unreadable)?;
+            Ok(match target {
+                Target::Json => certificate_to_json(&c),
+                Target::Ron => certificate::write(&c),
+            })
+        }
+    }
+}
