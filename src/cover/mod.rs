@@ -148,8 +148,9 @@ fn refute_corners(req: &CoverRequest, pending: &mut [Leaf], t: &Timings) {
             .collect::<std::collections::BTreeSet<_>>()
             .into_iter()
             .collect();
-        let found: Vec<Option<Refutation>> =
-            Timings::add(&t.refute, || points.par_iter().map(|(k, g)| refute_point(req.n, k, g)).collect());
+        let found: Vec<Option<Refutation>> = Timings::add(&t.refute, || {
+            points.par_iter().with_max_len(1).map(|(k, g)| refute_point(req.n, k, g)).collect()
+        });
         memo.extend(points.into_iter().zip(found));
         alive.retain(|&i| memo[&pending[i].cell.corners()[corner]].is_some());
     }
@@ -225,12 +226,10 @@ fn decide(req: &CoverRequest, c: &Cell, t: &Timings) -> Outcome {
         // A box certificate needs a cone at every corner; where the exact CC criterion fails at
         // a corner, the paper's Conjecture 1 says there is none, and trying costs the finder's
         // whole budget. Such boxes are split (or left undecided at the finest size).
-        let mut r = Request::boxed(req.n, c.kappa.clone(), c.gamma.clone());
+        // A survey's budget: near the threshold the search would run long and fail anyway, and
+        // the box is split instead.
+        let mut r = Request::boxed(req.n, c.kappa.clone(), c.gamma.clone()).survey();
         r.claim = ClaimChoice::StrongestAboutDrops;
-        // A small budget: near the threshold the search would run long and fail anyway.
-        r.finder.max_iterations = 3000;
-        r.exactify.max_rounds = 60;
-        r.exactify.retry = false;
         let r = Timings::add(&t.certify, || certify(&r));
         if let Ok(cert) = r.result {
             if cert.claim > Claim::EffectivelyInvariant {
@@ -254,7 +253,8 @@ pub fn cover(req: &CoverRequest, t: &Timings, tick: &(dyn Fn(usize) + Sync)) -> 
     let mut leaves = Vec::new();
     let mut examined = 0;
     while !generation.is_empty() {
-        let outcomes: Vec<Outcome> = generation.par_iter().map(|c| decide(req, c, t)).collect();
+        let outcomes: Vec<Outcome> =
+            generation.par_iter().with_max_len(1).map(|c| decide(req, c, t)).collect();
         examined += generation.len();
         tick(examined);
         let mut next = Vec::new();

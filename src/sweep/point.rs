@@ -140,7 +140,7 @@ pub fn evaluate(n: u64, p: &Point, tasks: Tasks) -> Evaluation {
         internal: None,
     };
     if tasks.certify && model_cosine(n).1 {
-        let report = certify(&Request::new(n, p.kappa.clone(), p.gamma.clone()));
+        let report = certify(&Request::new(n, p.kappa.clone(), p.gamma.clone()).survey());
         match report.result {
             Ok(cert) => {
                 e.certified = Some(Some(cert.claim.name()));
