@@ -111,7 +111,7 @@ pub enum Command {
     Cover(cover_cmd::CoverArgs),
     /// The paper's maps over (rho, gamma): criteria, finder, certificates, simulations per point.
     Map(map_cmd::MapArgs),
-    /// Figures (SVG or PNG): map panels, simulation maps, a certificate's cone on v = -1.
+    /// Figures (SVG or PNG): map panels, simulation maps, a certificate's cone on v = -1, a cover.
     Plot(plot_cmd::PlotArgs),
 }
 
