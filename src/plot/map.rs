@@ -26,6 +26,8 @@ pub const LEVEL: RGBColor = RGBColor(0, 100, 40);
 pub const COMPLETE: RGBColor = RGBColor(0, 150, 60);
 pub const CC_OR_PCC: RGBColor = RGBColor(240, 140, 0);
 pub const INVARIANT: RGBColor = RGBColor(140, 60, 170);
+/// Marks of refuted points (an exact refutation, `map --refute`).
+pub const REFUTED_MARK: RGBColor = RGBColor(20, 20, 20);
 
 /// What a map figure shows on top of the finder's background.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -183,6 +185,9 @@ impl MapFigure {
                         e.push(Entry::new(Sample::Dot(claim_colour(c)), format!("certified: {c}")));
                     }
                 }
+                if self.rows.iter().any(|r| r.refuted == Some(true)) {
+                    e.push(Entry::new(Sample::Star(REFUTED_MARK), "refuted: an exact refutation (no cone)"));
+                }
             }
             Panel::Simulations => {
                 e.push(Entry::new(
@@ -280,6 +285,14 @@ impl Figure for MapFigure {
                     .draw_series(self.rows.iter().filter_map(|r| {
                         r.claim.as_deref().map(|c| Circle::new(centre(r), radius, claim_colour(c).filled()))
                     }))
+                    .map_err(err)?;
+                chart
+                    .draw_series(
+                        self.rows
+                            .iter()
+                            .filter(|r| r.refuted == Some(true))
+                            .map(|r| Cross::new(centre(r), radius + 1, REFUTED_MARK.stroke_width(1))),
+                    )
                     .map_err(err)?;
             }
             Panel::Simulations => {

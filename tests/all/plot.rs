@@ -105,3 +105,22 @@ fn a_certificates_cone_on_the_plane() {
         assert!(e.contains(needle) && !e.contains("panicked"), "{file}: {e}");
     }
 }
+
+#[test]
+fn issue12_refuted_points_are_marked_on_the_map() {
+    let d = tempfile::tempdir().unwrap();
+    let dir = d.path();
+    ok(&chatter(
+        &["map", "--n", "4", "--rho", "0:1:8", "--gamma", "0:0.3:8", "--certify", "--refute", "--out", "m"],
+        dir,
+    ));
+    ok(&chatter(&["plot", "map", "m", "-o", "m.svg"], dir));
+    let svg = std::fs::read_to_string(dir.join("m.svg")).unwrap();
+    assert!(svg.contains("refuted: an exact refutation"), "the legend names refuted points");
+    let refuted = std::fs::read_to_string(dir.join("m/points.csv")).unwrap().matches(",true,").count();
+    assert!(refuted > 0);
+    // Without --refute, no mark and no legend entry.
+    ok(&chatter(&["map", "--n", "4", "--rho", "0:1:8", "--gamma", "0:0.3:8", "--out", "n"], dir));
+    ok(&chatter(&["plot", "map", "n", "-o", "n.svg"], dir));
+    assert!(!std::fs::read_to_string(dir.join("n.svg")).unwrap().contains("refuted:"));
+}
