@@ -13,7 +13,7 @@ use std::collections::BTreeSet;
 use std::path::PathBuf;
 
 /// The certificate files of a corpus directory (`*.ron`, `*.ron.gz`), sorted.
-fn ron_files(dir: &str) -> Vec<PathBuf> {
+pub(crate) fn ron_files(dir: &str) -> Vec<PathBuf> {
     let mut v: Vec<PathBuf> = std::fs::read_dir(root().join(dir))
         .unwrap()
         .map(|e| e.unwrap().path())

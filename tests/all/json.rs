@@ -4,25 +4,15 @@
 //! `chatter convert` and `chatter verify` handle JSON files.
 
 use crate::common::{bin, root};
+use crate::corpus::ron_files;
 use chatter::convert::{Target, convert};
-use chatter::verify::files::{declares_format, is_certificate_name, list};
+use chatter::verify::files::{declares_format, list};
 use chatter::verify::read::{Input, read_input};
 use chatter_kernel::certificate::{Code, Encoding, read, read_in, write};
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::verify::{MALACHITE, NUM, format_of_in, verify_refutation_text_in, verify_text_in};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
-
-/// The RON files of a corpus directory (`*.ron`, `*.ron.gz`), sorted.
-fn ron_files(dir: &str) -> Vec<PathBuf> {
-    let mut v: Vec<PathBuf> = std::fs::read_dir(root().join(dir))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| is_certificate_name(p))
-        .collect();
-    v.sort();
-    v
-}
 
 fn text_of(p: &Path) -> String {
     match read_input(p, 1 << 24) {
