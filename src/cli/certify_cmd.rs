@@ -4,7 +4,7 @@ use super::{Env, Outcome, emit};
 use crate::certify::{ClaimChoice, Failure, Report, Request, certify};
 use crate::finder::Search;
 use chatter_kernel::certificate::{Claim, write};
-use chatter_kernel::model::{BodyError, Shape};
+use chatter_kernel::model::BodyError;
 use clap::{Args, ValueEnum};
 use serde_json::json;
 use std::path::PathBuf;
@@ -60,7 +60,7 @@ struct Validated {
 fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
     let (n, kappa, gamma) = a.body.parse_ranges()?;
     for (k, g) in [(&kappa[0], &gamma[0]), (&kappa[1], &gamma[1])] {
-        if let Err(e) = Shape::new(n, k.clone(), g.clone()) {
+        if let Err(e) = crate::certify::check_body(n, k, g) {
             let flag = match e {
                 BodyError::UnsupportedN(_) => "--n",
                 BodyError::KappaNotPositive => "--kappa",

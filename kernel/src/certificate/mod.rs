@@ -24,8 +24,9 @@ use std::fmt;
 /// Value of the `format` field.
 pub const FORMAT: &str = "chatter-certificate";
 /// The newest version this build reads and writes: version 2 adds parameter intervals (box
-/// certificates); a file that uses no version-2 feature is written as version 1.
-pub const VERSION: u64 = 2;
+/// certificates), version 3 elements of the number fields Q(cos 2 pi/n); a file is written with
+/// the oldest version that can express it.
+pub const VERSION: u64 = 3;
 /// The versions this build reads.
 pub const VERSIONS: std::ops::RangeInclusive<u64> = 1..=VERSION;
 
@@ -63,6 +64,17 @@ pub enum Body {
         /// gamma: a number, or a closed interval (version 2).
         gamma: Param,
     },
+}
+
+impl Certificate {
+    /// The oldest format version that can express this certificate: 3 when a number is an element
+    /// of a number field (its text names the generator c), else that of the body.
+    pub fn version_needed(&self) -> u64 {
+        let Body::RegularPolygon { kappa, gamma, .. } = &self.body;
+        let params = kappa.texts().into_iter().chain(gamma.texts());
+        let mut texts = params.chain(self.cone.iter().flat_map(|g| g.0.iter().map(String::as_str)));
+        if texts.any(|t| t.contains(crate::exact::GENERATOR)) { 3 } else { self.body.version_needed() }
+    }
 }
 
 impl Body {

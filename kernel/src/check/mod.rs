@@ -8,8 +8,11 @@
 
 mod polygon;
 pub use polygon::MAX_PCC_BOXES;
+mod field;
+pub use field::{FIELD_VERSION, is_irrational};
 mod region;
 mod rod;
+mod scalar;
 mod show;
 pub(crate) use show::abbreviate as abbreviated;
 
@@ -50,6 +53,10 @@ pub struct Accepted {
 pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
     header(cert)?;
     size(cert, limits)?;
+    let Body::RegularPolygon { n, .. } = &cert.body;
+    if field::is_irrational(*n) {
+        return field::check::<F>(cert, limits);
+    }
     let region = region::region::<F>(cert, limits)?;
     region::claim_range(&region, cert.claim)?;
     let gens = generators::<F>(cert, region.corners[0].shape.coordinates(), limits)?;

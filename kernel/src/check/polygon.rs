@@ -3,31 +3,32 @@
 
 use super::in_time;
 use super::region::{Corner, Region};
+use super::scalar::{self, Scalar};
 use super::show;
 use super::{Accepted, Generators};
 use crate::bivariate::{NotNegative, negative_on};
 use crate::certificate::{Boundary, Claim, Code, Locus, Rejection};
-use crate::exact::{Field, ParseLimits, Ring, scale_to_ints, to_canonical};
+use crate::exact::{Field, ParseLimits, Ring, to_canonical};
 use crate::geometry::{ConvexPolygon, clip, hull};
 use crate::model::linalg::{Mat3, Vec3, is_zero, mat_vec};
 use crate::model::{PccExclusion, Polygon, Shape, pcc_polynomials, pcc_quadratic};
 
-/// A positive integer multiple of a rational matrix.
-fn int_mat<F: Field>(m: &Mat3<F>) -> Mat3<F::Int> {
-    let flat: Vec<F> = m.iter().flatten().cloned().collect();
-    let z = scale_to_ints(&flat);
+/// A positive multiple of a matrix, in the ring of scaled coordinates (integers for Q).
+fn int_mat<E: Scalar>(m: &Mat3<E>) -> Mat3<E::R> {
+    let flat: Vec<E> = m.iter().flatten().cloned().collect();
+    let z = E::scaled(&flat);
     std::array::from_fn(|r| std::array::from_fn(|c| z[3 * r + c].clone()))
 }
 
-/// A positive integer multiple of a rational vector.
-fn int_vec<F: Field>(v: &Vec3<F>) -> Vec3<F::Int> {
-    let z = scale_to_ints(v);
+/// A positive multiple of a vector, in the ring of scaled coordinates.
+fn int_vec<E: Scalar>(v: &Vec3<E>) -> Vec3<E::R> {
+    let z = E::scaled(v);
     std::array::from_fn(|i| z[i].clone())
 }
 
 /// The projection (u0, u1)/(-v) of a homogeneous point with v < 0, as text.
-fn shown<F: Field>(q: &Vec3<F::Int>) -> String {
-    show::point::<F>(&q[..2], &q[2].negated())
+fn shown<E: Scalar>(q: &Vec3<E::R>) -> String {
+    scalar::point::<E>(&q[..2], &q[2].negated())
 }
 
 /// K: its extreme generators (indices into `cone`, counter-clockwise) and the polygon.
@@ -47,12 +48,12 @@ struct Target<'a> {
 }
 
 /// Checks that `img` lies in K (or is 0).
-fn check_image<F: Field>(k: &Cone<F::Int>, img: &Vec3<F::Int>, t: &Target<'_>) -> Result<(), Rejection> {
+fn check_image<E: Scalar>(k: &Cone<E::R>, img: &Vec3<E::R>, t: &Target<'_>) -> Result<(), Rejection> {
     if is_zero(img) {
         return Ok(());
     }
     if !img[2].is_negative() {
-        let v = show::int::<F>(&img[2]);
+        let v = scalar::number(&E::lift(&img[2]));
         let msg = format!("{} to a velocity with v >= 0 (v is {v} times a positive factor)", (t.what)());
         return Err(Rejection::new(t.above, (t.locus)(None), msg));
     }
@@ -64,22 +65,22 @@ fn check_image<F: Field>(k: &Cone<F::Int>, img: &Vec3<F::Int>, t: &Target<'_>) -
     // Amount: orient2d(A, B, Q) of the projected points = facet.q / (w_A w_B w_q).
     let (a, b) = (&k.polygon.vertices[e], &k.polygon.vertices[(e + 1) % m]);
     let w = a[2].times(&b[2]).times(&img[2]).negated();
-    let by = F::from_int(&d).over(&F::from_int(&w)).expect("w > 0");
+    let by = E::lift(&d).over(&E::lift(&w)).expect("w > 0");
     let edge = Boundary::Edge { index: e, from: k.hull[e], to: k.hull[(e + 1) % m] };
     let msg = format!(
         "{} to {} outside edge {e} of K (generators {} -> {}) by {}",
         (t.what)(),
-        shown::<F>(img),
+        shown::<E>(img),
         k.hull[e],
         k.hull[(e + 1) % m],
-        show::number(&by)
+        scalar::number(&by)
     );
     Err(Rejection::new(t.outside, (t.locus)(Some(edge)), msg))
 }
 
 /// R1: generators below v = 0, and K a 3-D cone.
-fn cone<F: Field>(gens: &Generators<'_, F::Int>) -> Result<Cone<F::Int>, Rejection> {
-    let vectors: Vec<Vec3<F::Int>> =
+fn cone<E: Scalar>(gens: &Generators<'_, E::R>) -> Result<Cone<E::R>, Rejection> {
+    let vectors: Vec<Vec3<E::R>> =
         gens.vectors.iter().map(|g| [g[0].clone(), g[1].clone(), g[2].clone()]).collect();
     if let Some(i) = vectors.iter().position(|g| !g[2].is_negative()) {
         return Err(gens.not_below(i));
@@ -104,7 +105,7 @@ fn cone<F: Field>(gens: &Generators<'_, F::Int>) -> Result<Cone<F::Int>, Rejecti
 /// The pieces K ∩ C_j, j = 1..n-1, as the vertices of each clipped polygon. C_j depends only on
 /// n, not on kappa or gamma (docs/model.md §4): the pieces are computed from the first corner,
 /// and every other corner must give the same covectors (else the model contradicts itself).
-fn pieces<F: Field>(bodies: &[&Polygon<F>], k: &Cone<F::Int>) -> Result<Vec<Vec<Vec3<F::Int>>>, Rejection> {
+fn pieces<E: Scalar>(bodies: &[&Polygon<E>], k: &Cone<E::R>) -> Result<Vec<Vec<Vec3<E::R>>>, Rejection> {
     let first = bodies[0];
     let mut out = Vec::with_capacity(first.n() - 1);
     for j in 1..first.n() as i64 {
@@ -123,11 +124,11 @@ fn pieces<F: Field>(bodies: &[&Polygon<F>], k: &Cone<F::Int>) -> Result<Vec<Vec<
 }
 
 /// R2 at one corner: S_j(K ∩ C_j) ⊆ K for j = 1..n-1, on the vertices of each piece.
-fn invariance<F: Field>(
-    body: &Polygon<F>,
-    corner: &Corner<F>,
-    pieces: &[Vec<Vec3<F::Int>>],
-    k: &Cone<F::Int>,
+fn invariance<E: Scalar>(
+    body: &Polygon<E>,
+    corner: &Corner<E>,
+    pieces: &[Vec<Vec3<E::R>>],
+    k: &Cone<E::R>,
     limits: ParseLimits,
 ) -> Result<(), Rejection> {
     for (j, piece) in (1..).zip(pieces) {
@@ -135,7 +136,7 @@ fn invariance<F: Field>(
         for (i, p) in piece.iter().enumerate() {
             in_time(limits, "checking effective invariance (rule R2)")?;
             let what =
-                || corner.say(format!("vertex {i} of K∩C_{j}, at {}, maps under S_{j}", shown::<F>(p)));
+                || corner.say(format!("vertex {i} of K∩C_{j}, at {}, maps under S_{j}", shown::<E>(p)));
             let locus = |outside| Locus::Piece { piece: j, vertex: i, outside, corner: corner.index };
             let t = Target {
                 locus: &locus,
@@ -143,36 +144,36 @@ fn invariance<F: Field>(
                 outside: Code::ImageOutside,
                 above: Code::ImageNotBelow,
             };
-            check_image::<F>(k, &mat_vec(&s, p), &t)?;
+            check_image::<E>(k, &mat_vec(&s, p), &t)?;
         }
     }
     Ok(())
 }
 
 /// R3 at one corner: I_0(D) ⊆ K, on the generators -m_{k,k+1} of D.
-fn all_down<F: Field>(body: &Polygon<F>, corner: &Corner<F>, k: &Cone<F::Int>) -> Result<(), Rejection> {
+fn all_down<E: Scalar>(body: &Polygon<E>, corner: &Corner<E>, k: &Cone<E::R>) -> Result<(), Rejection> {
     let i0 = int_mat(&body.impact(0));
     for (m, g) in body.all_down_generators().iter().enumerate() {
         let g = int_vec(g);
         let what = || {
             let m1 = (m + 1) % body.n();
-            corner.say(format!("I_0 maps the all-down generator -m_({m},{m1}) = {}", shown::<F>(&g)))
+            corner.say(format!("I_0 maps the all-down generator -m_({m},{m1}) = {}", shown::<E>(&g)))
         };
         let locus = |outside| Locus::AllDown { generator: m, outside, corner: corner.index };
         let t =
             Target { locus: &locus, what: &what, outside: Code::InitialOutside, above: Code::InitialOutside };
-        check_image::<F>(k, &mat_vec(&i0, &g), &t)?;
+        check_image::<E>(k, &mat_vec(&i0, &g), &t)?;
     }
     Ok(())
 }
 
 /// R4: PCC excluded by the quadratic factor of S_{n-1} S_1; its (p, q, discriminant) as text.
-fn pcc<F: Field>(body: &Polygon<F>) -> Result<[String; 3], Rejection> {
+fn pcc<E: Scalar>(body: &Polygon<E>) -> Result<[String; 3], Rejection> {
     let quad = pcc_quadratic(body).map_err(|at_one| {
-        let msg = format!("model error: det(I - S_(n-1) S_1) = {} is not 0", show::number(&at_one));
+        let msg = format!("model error: det(I - S_(n-1) S_1) = {} is not 0", scalar::number(&at_one));
         Rejection::new(Code::Internal, Locus::Nowhere, msg)
     })?;
-    let full = [&quad.p, &quad.q, &quad.discriminant].map(to_canonical);
+    let full = [&quad.p, &quad.q, &quad.discriminant].map(Scalar::text);
     let text = full.clone().map(|t| show::abbreviate(&t));
     let why = match quad.exclusion() {
         PccExclusion::Excluded => return Ok(full),
@@ -193,7 +194,7 @@ fn pcc<F: Field>(body: &Polygon<F>) -> Result<[String; 3], Rejection> {
 /// R4 on a box: the discriminant and q - 1 of the PCC quadratic, as polynomials in (kappa,
 /// gamma) times (1 + kappa)^6, are negative on the whole box (Bernstein bounds, subdivided up to
 /// [`MAX_PCC_BOXES`] boxes). Returns the number of boxes examined.
-fn pcc_on_box<F: Field>(body: &Polygon<F>, region: &Region<F>) -> Result<usize, Rejection> {
+pub(super) fn pcc_on_box<F: Field>(body: &Polygon<F>, region: &Region<F>) -> Result<usize, Rejection> {
     let polys = pcc_polynomials(body).map_err(|_| {
         Rejection::new(
             Code::Internal,
@@ -238,7 +239,7 @@ fn pcc_box_rejection<F: Field>(e: NotNegative<F>, what: &str) -> Rejection {
 }
 
 /// The polygon model at each corner.
-fn polygons<F: Field>(region: &Region<F>) -> Vec<&Polygon<F>> {
+fn polygons<E: Scalar>(region: &Region<E>) -> Vec<&Polygon<E>> {
     region
         .corners
         .iter()
@@ -250,14 +251,14 @@ fn polygons<F: Field>(region: &Region<F>) -> Vec<&Polygon<F>> {
 }
 
 /// Rules R1 (dimension) to R4 for a regular polygon, at a point or on a box.
-pub(super) fn check<F: Field>(
-    region: &Region<F>,
-    gens: &Generators<'_, F::Int>,
+pub(super) fn check<E: Scalar>(
+    region: &Region<E>,
+    gens: &Generators<'_, E::R>,
     claim: Claim,
     limits: ParseLimits,
 ) -> Result<Accepted, Rejection> {
     let bodies = polygons(region);
-    let k = cone::<F>(gens)?;
+    let k = cone::<E>(gens)?;
     in_time(limits, "building K")?;
     let pieces = pieces(&bodies, &k)?;
     for (body, corner) in bodies.iter().zip(&region.corners) {
@@ -271,12 +272,12 @@ pub(super) fn check<F: Field>(
     let (mut pcc_text, mut pcc_boxes) = (None, None);
     if claim >= Claim::CompleteChatterFromAllDown {
         if region.is_box {
-            pcc_boxes = Some(pcc_on_box(bodies[0], region)?);
+            pcc_boxes = Some(E::pcc_on_box(bodies[0], region)?);
         } else {
             pcc_text = Some(pcc(bodies[0])?);
         }
     }
-    let down = [F::Int::from_i64(-1), F::Int::from_i64(-1), F::Int::from_i64(-1)];
+    let down = [E::R::from_i64(-1), E::R::from_i64(-1), E::R::from_i64(-1)];
     let contains_translation = bodies.iter().all(|b| {
         let t = mat_vec(&int_mat(&b.impact(0)), &down);
         t[2].is_negative() && k.polygon.contains(&t)

@@ -3,6 +3,7 @@
 //! times every map is affine in kappa and in gamma while K, the cones C_j and D do not depend on
 //! them (docs/kernel-soundness.md §2, "Boxes").
 
+use super::scalar::Scalar;
 use super::{number, show};
 use crate::bivariate::Rect;
 use crate::certificate::{Body, Certificate, Claim, Code, Param, Rejection};
@@ -91,7 +92,7 @@ pub(crate) fn region<F: Field>(cert: &Certificate, limits: ParseLimits) -> Resul
 }
 
 /// A body that cannot be modelled, at the bound that fails.
-fn body_error(e: BodyError, ki: usize, gi: usize, is_box: bool) -> Rejection {
+pub(crate) fn body_error(e: BodyError, ki: usize, gi: usize, is_box: bool) -> Rejection {
     let at = |name: &str, i: usize| if is_box { format!("body.{name}[{i}]") } else { format!("body.{name}") };
     let (code, path) = match e {
         BodyError::UnsupportedN(_) => (Code::UnsupportedBody, "body.n".to_string()),
@@ -106,9 +107,9 @@ fn body_error(e: BodyError, ki: usize, gi: usize, is_box: bool) -> Rejection {
 /// impossible; at gamma = 0 a drop can stop after finitely many impacts (an image exactly 0), which
 /// is neither CC nor PCC. `EffectivelyInvariant`, a property of the cone and the maps, holds for
 /// 0 <= gamma <= 1.
-pub(crate) fn claim_range<F: Field>(region: &Region<F>, claim: Claim) -> Result<(), Rejection> {
+pub(crate) fn claim_range<E: Scalar>(region: &Region<E>, claim: Claim) -> Result<(), Rejection> {
     let [g0, g1] = &region.rect.gamma;
-    if claim > Claim::EffectivelyInvariant && (g0.is_zero() || *g1 == F::one()) {
+    if claim > Claim::EffectivelyInvariant && (g0.is_zero() || *g1 == E::one()) {
         let g = if g0.is_zero() { g0 } else { g1 };
         let path = match (region.is_box, g0.is_zero()) {
             (false, _) => "body.gamma",
@@ -117,7 +118,7 @@ pub(crate) fn claim_range<F: Field>(region: &Region<F>, claim: Claim) -> Result<
         };
         let msg = format!(
             "gamma = {} is outside 0 < gamma < 1, which the claim {} needs (the paper's Theorem on effectively invariant cones assumes it); only EffectivelyInvariant holds for gamma = 0 or 1",
-            show::number(g),
+            super::scalar::number(g),
             claim.name()
         );
         return Err(Rejection::at_field(Code::ParameterOutOfRange, path, msg));

@@ -23,11 +23,6 @@ pub fn number<F: Field>(x: &F) -> String {
     abbreviate(&to_canonical(x))
 }
 
-/// The canonical text of an integer of the backend, abbreviated when long.
-pub fn int<F: Field>(z: &F::Int) -> String {
-    abbreviate(&z.to_string())
-}
-
 /// Text from a certificate, quoted, abbreviated when long.
 pub fn quote(s: &str) -> String {
     match s.char_indices().nth(24) {
@@ -39,11 +34,4 @@ pub fn quote(s: &str) -> String {
 /// A generator's coordinates as written in the certificate, each abbreviated.
 pub fn tuple(coords: &[String]) -> String {
     coords.iter().map(|c| abbreviate(c)).collect::<Vec<_>>().join(", ")
-}
-
-/// A point (a_0/w, ..., a_k/w) of a projection plane, from integers and a positive weight w.
-pub fn point<F: Field>(coords: &[F::Int], w: &F::Int) -> String {
-    let w = F::from_int(w);
-    let c: Vec<String> = coords.iter().map(|x| number(&F::from_int(x).over(&w).expect("w > 0"))).collect();
-    format!("({})", c.join(", "))
 }

@@ -74,6 +74,18 @@ pub enum NumberError {
         /// The canonical text of the same number.
         canonical: String,
     },
+    /// A field element not in its canonical spelling (docs/certificate-format.md §12).
+    NotCanonical {
+        /// The canonical text of the same element.
+        canonical: String,
+    },
+    /// A power of c at or above the degree of Q(c) over Q.
+    PowerTooHigh {
+        /// The power written.
+        power: usize,
+        /// The degree of the field.
+        degree: usize,
+    },
     /// More digits than the limit.
     TooLong {
         /// Digits found.
@@ -100,6 +112,13 @@ impl fmt::Display for NumberError {
             NumberError::NotReduced { canonical } => {
                 write!(f, "not in lowest terms (canonical form {canonical:?})")
             }
+            NumberError::NotCanonical { canonical } => {
+                write!(f, "not the canonical text of this field element (write {canonical:?})")
+            }
+            NumberError::PowerTooHigh { power, degree } => write!(
+                f,
+                "c^{power}: an element of a field of degree {degree} is written with powers of c below {degree}"
+            ),
             NumberError::TooLong { digits, max } => {
                 write!(f, "number has {digits} digits, more than the limit max-digits = {max}")
             }

@@ -7,10 +7,12 @@
 //! traits, so generic code needs no higher-ranked bounds and reads the same on both backends.
 
 mod canonical;
+mod cos_field;
 mod num_backend;
 mod q;
 
 pub use canonical::{NumberError, ParseLimits, parse_canonical, parse_canonical_parts, to_canonical};
+pub use cos_field::{Algebraic, CosField, GENERATOR, MAX_N, cos_minimal_polynomial};
 pub use q::Q;
 
 use std::cmp::Ordering;

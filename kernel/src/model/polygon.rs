@@ -20,7 +20,7 @@ impl std::fmt::Display for BodyError {
         match self {
             BodyError::UnsupportedN(n) => write!(
                 f,
-                "n = {n} is not supported: exact models need a rational cos(2*pi/n), i.e. n in {{3, 4, 6}} (or n = 2, the rod)"
+                "n = {n} is not supported here: this exact model needs a rational cos(2*pi/n), i.e. n in {{3, 4, 6}} (or n = 2, the rod); certificates (certify, verify) work in Q(cos 2*pi/n) for every n from 3 to 64"
             ),
             BodyError::KappaNotPositive => write!(f, "kappa must be > 0"),
             BodyError::GammaOutOfRange => write!(f, "gamma must lie in [0, 1]"),

@@ -18,7 +18,7 @@ mod file;
 mod model;
 mod poly;
 mod rules;
-mod sturm;
+pub(crate) mod sturm;
 
 pub use check::{Checked, check};
 pub use clip::{Oracle, Point, clip, parallel};

@@ -4,8 +4,10 @@
 //! Regular polygons: float finder, then exactifier. The rod: an exact search
 //! ([`crate::finder::rod`]). Claims are tried strongest first unless one is asked for.
 
-use crate::exact::{ParseLimits, Q};
-use crate::exactify::{Exactified, ExactifyConfig, ExactifyError, exactify};
+mod field;
+
+use crate::exact::{OrderedField, ParseLimits, Q};
+use crate::exactify::{Exact, Exactified, ExactifyConfig, ExactifyError, exactify};
 use crate::finder::geometry::P2;
 use crate::finder::rod::{RodCone, find_rod_cone_box, s_of};
 use crate::finder::{FinderConfig, Search, Seed, find_cone};
@@ -47,6 +49,10 @@ pub struct Request {
     pub exactify: ExactifyConfig,
     /// The two backends the kernel runs on (a disagreement is an internal error).
     pub backends: [Backend; 2],
+    /// Where cos(2 pi/n) is irrational, kappa as an element of Q(cos 2 pi/n) in canonical text
+    /// (docs/certificate-format.md §12), for bodies whose kappa is irrational; `kappa` then holds
+    /// a rational approximation, for display only.
+    pub kappa_field: Option<String>,
 }
 
 impl Request {
@@ -60,6 +66,7 @@ impl Request {
             finder: FinderConfig::default(),
             exactify: ExactifyConfig::default(),
             backends: [MALACHITE, NUM],
+            kappa_field: None,
         }
     }
 }
@@ -208,22 +215,24 @@ fn certificate(req: &Request, claim: Claim, cone: Vec<Generator>, how: &str) -> 
     let body = match &req.upper {
         None => CertBody::RegularPolygon {
             n: req.n,
-            kappa: param(&req.kappa, None),
+            kappa: req.kappa_field.clone().map_or_else(|| param(&req.kappa, None), Param::Point),
             gamma: param(&req.gamma, None),
         },
         Some(_) => {
             CertBody::RegularPolygon { n: req.n, kappa: param(&req.kappa, k1), gamma: param(&req.gamma, g1) }
         }
     };
-    Certificate {
+    let mut cert = Certificate {
         format: FORMAT.to_string(),
-        version: body.version_needed(),
+        version: 1,
         body,
         coordinates: Coordinates::ContactVelocities,
         claim,
         cone,
         producer: format!("chatter {} certify ({how})", env!("CARGO_PKG_VERSION")),
-    }
+    };
+    cert.version = cert.version_needed();
+    cert
 }
 
 fn generator(coords: &[Q]) -> Generator {
@@ -248,7 +257,7 @@ fn kernel_check(req: &Request, cert: Certificate, method: &'static str, t: &mut 
 }
 
 /// The seed velocities a claim must contain: the drops it covers, before their first impact.
-fn drops_of<const D: usize>(claim: Claim, translation: [Q; D], all_down: Vec<[Q; D]>) -> Vec<[Q; D]> {
+fn drops_of<T, const D: usize>(claim: Claim, translation: [T; D], all_down: Vec<[T; D]>) -> Vec<[T; D]> {
     if claim == Claim::EffectivelyInvariant { vec![translation] } else { all_down }
 }
 
@@ -295,10 +304,10 @@ fn attempt_rod(req: &Request, rods: &[Rod<Q>], claim: Claim, t: &mut Timings) ->
 /// where the maps barely contract, success depends on the grid in a way no single setting
 /// wins), with finer normals and grid, then with a larger slack; the first success, else the
 /// first error.
-fn exactify_ladder(
-    bodies: &[Polygon<Q>],
+fn exactify_ladder<E: Exact>(
+    bodies: &[Polygon<E>],
     polygon: &[P2],
-    seeds: &[Vec3<Q>],
+    seeds: &[Vec3<E>],
     cfg: &ExactifyConfig,
 ) -> Result<Exactified, ExactifyError> {
     let finer = ExactifyConfig {
@@ -316,14 +325,14 @@ fn exactify_ladder(
 }
 
 /// A regular polygon at every corner: float finder, exactifier, kernel.
-fn attempt_polygon(req: &Request, bodies: &[Polygon<Q>], claim: Claim, t: &mut Timings) -> Attempt {
+fn attempt_polygon<E: Exact>(req: &Request, bodies: &[Polygon<E>], claim: Claim, t: &mut Timings) -> Attempt {
     let seed = if claim == Claim::EffectivelyInvariant { Seed::Translation } else { Seed::AllDown };
-    let mut exact_seeds: Vec<Vec3<Q>> = Vec::new();
+    let mut exact_seeds: Vec<Vec3<E>> = Vec::new();
+    let down = translation_down().map(|x| E::from_q(&x));
     for b in bodies {
         let i0 = b.impact(0);
-        exact_seeds.extend(
-            drops_of(claim, translation_down(), b.all_down_generators()).iter().map(|g| mat_vec(&i0, g)),
-        );
+        exact_seeds
+            .extend(drops_of(claim, down.clone(), b.all_down_generators()).iter().map(|g| mat_vec(&i0, g)));
     }
     let fb = FloatBody::corners(bodies);
     let start = Instant::now();
@@ -348,7 +357,7 @@ fn attempt_polygon(req: &Request, bodies: &[Polygon<Q>], claim: Claim, t: &mut T
 }
 
 /// The PCC quadratic as text, e.g. for notes.
-fn pcc_text(b: &Polygon<Q>, quad: &PccQuadratic<Q>) -> String {
+fn pcc_text<E: OrderedField>(b: &Polygon<E>, quad: &PccQuadratic<E>) -> String {
     let kind = match quad.exclusion() {
         PccExclusion::Excluded => "complex roots of modulus below 1".to_string(),
         PccExclusion::RealRoots => "real roots".to_string(),
@@ -387,17 +396,21 @@ fn pcc_on_box(req: &Request, b: &Polygon<Q>) -> Result<(bool, String), Failure> 
     Ok((true, "complex roots of modulus below 1 on the whole box (Bernstein bounds)".into()))
 }
 
+/// PCC exclusion at a point (rule R4): whether it holds, its text, and whether the roots are real.
+fn pcc_at_point<E: OrderedField>(b: &Polygon<E>) -> Result<(bool, String, bool), Failure> {
+    let quad = pcc_quadratic(b)
+        .map_err(|v| Failure::Internal(format!("model error: det(I - S_(n-1) S_1) = {v}")))?;
+    Ok((quad.excludes_pcc(), pcc_text(b, &quad), quad.exclusion() == PccExclusion::RealRoots))
+}
+
 /// The strongest claim a polygon can carry by the PCC Lemma (at a point or on a box), with notes;
 /// `Err` if `CompleteChatterFromAllDown` was asked for and the Lemma does not apply.
-fn polygon_strongest(req: &Request, b: &Polygon<Q>, notes: &mut Vec<String>) -> Result<Claim, Failure> {
-    let (excluded, text, real_roots) = if req.upper.is_some() {
-        let (ok, text) = pcc_on_box(req, b)?;
-        (ok, text, false)
-    } else {
-        let quad = pcc_quadratic(b)
-            .map_err(|v| Failure::Internal(format!("model error: det(I - S_(n-1) S_1) = {v}")))?;
-        (quad.excludes_pcc(), pcc_text(b, &quad), quad.exclusion() == PccExclusion::RealRoots)
-    };
+fn polygon_strongest(
+    req: &Request,
+    n: usize,
+    (excluded, text, real_roots): (bool, String, bool),
+    notes: &mut Vec<String>,
+) -> Result<Claim, Failure> {
     if excluded {
         return Ok(Claim::CompleteChatterFromAllDown);
     }
@@ -405,15 +418,20 @@ fn polygon_strongest(req: &Request, b: &Polygon<Q>, notes: &mut Vec<String>) -> 
         return Err(Failure::PccNotExcluded(text));
     }
     notes.push(format!("the PCC Lemma does not apply: {text}"));
-    if real_roots && b.n() >= 4 {
-        notes.push(format!("this contradicts the paper, which states that the Lemma's condition (all eigenvalues real) is never met for n >= 4; here n = {}", b.n()));
+    if real_roots && n >= 4 {
+        notes.push(format!("this contradicts the paper, which states that the Lemma's condition (all eigenvalues real) is never met for n >= 4; here n = {n}"));
     }
     Ok(Claim::CcOrPccFromAllDown)
 }
 
 /// The claims to try, strongest first, with notes; `Err` if the requested claim is impossible.
-fn claims_for(req: &Request, shapes: &[Shape<Q>], notes: &mut Vec<String>) -> Result<Vec<Claim>, Failure> {
-    let (g0, g1) = (shapes[0].gamma(), shapes[shapes.len() - 1].gamma());
+/// `strongest` gives the strongest claim about drops (called only when 0 < gamma < 1).
+fn claims_for(
+    req: &Request,
+    strongest: impl FnOnce(&mut Vec<String>) -> Result<Claim, Failure>,
+    notes: &mut Vec<String>,
+) -> Result<Vec<Claim>, Failure> {
+    let (g0, g1) = (&req.gamma, req.upper.as_ref().map_or(&req.gamma, |u| &u.1));
     if *g0 == Q::int(0) || *g1 == Q::int(1) {
         let g = if *g0 == Q::int(0) { g0 } else { g1 };
         let why = format!(
@@ -427,18 +445,27 @@ fn claims_for(req: &Request, shapes: &[Shape<Q>], notes: &mut Vec<String>) -> Re
             ClaimChoice::Exactly(_) | ClaimChoice::StrongestAboutDrops => Err(Failure::GammaOutOfRange(why)),
         };
     }
-    let strongest = match &shapes[0] {
-        Shape::Rod(_) => {
-            notes.push("rod (n = 2): exact search, no float search; with two contacts PCC is CC".into());
-            Claim::CompleteChatterFromAllDown
-        }
-        Shape::Polygon(b) => polygon_strongest(req, b, notes)?,
-    };
+    let strongest = strongest(notes)?;
     Ok(match req.claim {
         ClaimChoice::Exactly(c) => vec![c],
         ClaimChoice::Strongest => vec![strongest, Claim::EffectivelyInvariant],
         ClaimChoice::StrongestAboutDrops => vec![strongest],
     })
+}
+
+/// The strongest claim about drops for the shapes at the corners of a request over Q.
+fn strongest_rational(req: &Request, shapes: &[Shape<Q>], notes: &mut Vec<String>) -> Result<Claim, Failure> {
+    match &shapes[0] {
+        Shape::Rod(_) => {
+            notes.push("rod (n = 2): exact search, no float search; with two contacts PCC is CC".into());
+            Ok(Claim::CompleteChatterFromAllDown)
+        }
+        Shape::Polygon(b) if req.upper.is_some() => {
+            let (ok, text) = pcc_on_box(req, b)?;
+            polygon_strongest(req, b.n(), (ok, text, false), notes)
+        }
+        Shape::Polygon(b) => polygon_strongest(req, b.n(), pcc_at_point(b)?, notes),
+    }
 }
 
 /// The exact models at the corners of the request (one for a point).
@@ -454,44 +481,28 @@ fn shapes(req: &Request) -> Result<Vec<Shape<Q>>, Failure> {
         .collect()
 }
 
-/// Runs the pipeline.
-pub fn certify(req: &Request) -> Report {
-    let mut timings = Timings::default();
-    let mut notes = Vec::new();
-    let report = |result, finder, method, timings, bits, notes| Report {
-        result,
-        finder,
-        method,
+fn report(a: Attempt, timings: Timings, notes: Vec<String>) -> Report {
+    Report {
+        result: a.result,
+        finder: a.finder,
+        method: a.method,
         timings,
-        max_denominator_bits: bits,
+        max_denominator_bits: a.bits,
         notes,
-    };
-    let shapes = match shapes(req) {
-        Ok(s) => s,
-        Err(f) => return report(Err(f), None, None, timings, 0, notes),
-    };
-    let claims = match claims_for(req, &shapes, &mut notes) {
-        Ok(c) => c,
-        Err(f) => return report(Err(f), None, None, timings, 0, notes),
-    };
+    }
+}
+
+/// Tries the claims in order until one is certified (or an internal error stops the run).
+fn run_claims(
+    req: &Request,
+    claims: Vec<Claim>,
+    mut attempt: impl FnMut(Claim, &mut Timings) -> Attempt,
+    mut notes: Vec<String>,
+) -> Report {
+    let mut timings = Timings::default();
     let mut last = None;
     for claim in claims {
-        let a = match &shapes[0] {
-            Shape::Rod(_) => {
-                let rods: Vec<Rod<Q>> = shapes
-                    .iter()
-                    .filter_map(|s| if let Shape::Rod(r) = s { Some(r.clone()) } else { None })
-                    .collect();
-                attempt_rod(req, &rods, claim, &mut timings)
-            }
-            Shape::Polygon(_) => {
-                let bodies: Vec<Polygon<Q>> = shapes
-                    .iter()
-                    .filter_map(|s| if let Shape::Polygon(b) = s { Some(b.clone()) } else { None })
-                    .collect();
-                attempt_polygon(req, &bodies, claim, &mut timings)
-            }
-        };
+        let a = attempt(claim, &mut timings);
         let stop = a.result.is_ok() || matches!(a.result, Err(Failure::Internal(_)));
         if !stop {
             if let (Err(e), ClaimChoice::Strongest) = (&a.result, req.claim) {
@@ -503,6 +514,48 @@ pub fn certify(req: &Request) -> Report {
             break;
         }
     }
-    let a = last.expect("at least one claim");
-    report(a.result, a.finder, a.method, timings, a.bits, notes)
+    report(last.expect("at least one claim"), timings, notes)
+}
+
+/// Whether `certify` can model the body: n from 2 to 64 (in Q(cos 2 pi/n) where cos 2 pi/n is
+/// irrational), kappa > 0, gamma in [0, 1].
+pub fn check_body(n: u64, kappa: &Q, gamma: &Q) -> Result<(), chatter_kernel::model::BodyError> {
+    if chatter_kernel::check::is_irrational(n) && n <= crate::exact::MAX_N {
+        let field = crate::exact::CosField::<Q>::new(n).expect("3 <= n <= MAX_N");
+        let (k, g) = (
+            crate::exact::Algebraic::rational(kappa.clone()),
+            crate::exact::Algebraic::rational(gamma.clone()),
+        );
+        return Polygon::with_cosine(n, field.generator(), k, g).map(|_| ());
+    }
+    Shape::new(n, kappa.clone(), gamma.clone()).map(|_| ())
+}
+
+/// Runs the pipeline.
+pub fn certify(req: &Request) -> Report {
+    if chatter_kernel::check::is_irrational(req.n) {
+        return field::certify(req);
+    }
+    let mut notes = Vec::new();
+    let failed = |f, notes| report(Attempt::failed(f, None), Timings::default(), notes);
+    let shapes = match shapes(req) {
+        Ok(s) => s,
+        Err(f) => return failed(f, notes),
+    };
+    let claims = match claims_for(req, |notes| strongest_rational(req, &shapes, notes), &mut notes) {
+        Ok(c) => c,
+        Err(f) => return failed(f, notes),
+    };
+    if let Shape::Rod(_) = &shapes[0] {
+        let rods: Vec<Rod<Q>> = shapes
+            .iter()
+            .filter_map(|s| if let Shape::Rod(r) = s { Some(r.clone()) } else { None })
+            .collect();
+        return run_claims(req, claims, |claim, t| attempt_rod(req, &rods, claim, t), notes);
+    }
+    let bodies: Vec<Polygon<Q>> = shapes
+        .iter()
+        .filter_map(|s| if let Shape::Polygon(b) = s { Some(b.clone()) } else { None })
+        .collect();
+    run_claims(req, claims, |claim, t| attempt_polygon(req, &bodies, claim, t), notes)
 }

@@ -9,13 +9,17 @@
 //! raised only as far as exact images demand, so points that the maps send onto each other with
 //! no contraction (two contacts at rest) stay exactly on K with no slack.
 
-use crate::exact::{Field, Int, Q, QExt};
+mod points;
+
+pub use points::{Exact, Nf, nf_f64};
+
+use crate::exact::{Field, Q, QExt};
 use crate::finder::geometry::P2;
 use chatter_kernel::geometry::clip;
 use chatter_kernel::model::Polygon as Body;
-use chatter_kernel::model::linalg::{Vec3, mat_vec};
+use chatter_kernel::model::linalg::Vec3;
 use malachite::Integer;
-use malachite::base::num::arithmetic::traits::Gcd;
+use points::primitive;
 use std::fmt;
 
 /// Tuning of the exactifier.
@@ -71,27 +75,9 @@ impl fmt::Display for ExactifyError {
 /// An exact polygon on the plane v = -1 as primitive integer homogeneous vectors.
 pub type HPoly = Vec<Vec3<Integer>>;
 
-/// Divides a homogeneous vector by the gcd of its entries.
-fn primitive(p: Vec3<Integer>) -> Vec3<Integer> {
-    let g = Integer::from(p[0].unsigned_abs_ref().gcd(p[1].unsigned_abs_ref()).gcd(p[2].unsigned_abs_ref()));
-    if g <= 1u32 { p } else { p.map(|c| c.div_exact(&g)) }
-}
-
-/// n . x for the plane point of q (q_v < 0).
-fn support(n: &(i64, i64), q: &Vec3<Integer>) -> Q {
-    let num = Integer::from(n.0) * &q[0] + Integer::from(n.1) * &q[1];
-    Q::from_fraction(&num, &(-&q[2]))
-}
-
-/// The plane point of q in floats (for choosing candidates only).
-fn plane_f64(q: &Vec3<Integer>) -> (f64, f64) {
-    let w = -&q[2];
-    (Q::from_fraction(&q[0], &w).to_f64(), Q::from_fraction(&q[1], &w).to_f64())
-}
-
 /// max_q n . x(q), exact: the float supports pick the candidates within a margin far above
 /// rounding error, and only those are compared exactly.
-fn max_support(n: &(i64, i64), pts: &[Vec3<Integer>], approx: &[(f64, f64)]) -> Option<Q> {
+fn max_support<E: Exact>(n: &(i64, i64), pts: &[E::P], approx: &[(f64, f64)]) -> Option<E> {
     let f = |p: &(f64, f64)| n.0 as f64 * p.0 + n.1 as f64 * p.1;
     let top = approx.iter().map(f).fold(f64::NEG_INFINITY, f64::max);
     let size = approx.iter().map(|p| p.0.abs().max(p.1.abs())).fold(1.0, f64::max);
@@ -99,7 +85,7 @@ fn max_support(n: &(i64, i64), pts: &[Vec3<Integer>], approx: &[(f64, f64)]) -> 
     pts.iter()
         .zip(approx)
         .filter(|(_, p)| !top.is_finite() || f(p) >= top - margin)
-        .map(|(q, _)| support(n, q))
+        .map(|(q, _)| E::support(n, q))
         .max()
 }
 
@@ -125,38 +111,7 @@ fn polygon_of(normals: &[(i64, i64)], h: &[Q]) -> HPoly {
 /// The exact images of the vertices of every K ∩ C_j under S_j of every body (the corners of a
 /// box of parameters share C_j), or the step j of an image with v >= 0.
 pub fn exact_images(bodies: &[Body<Q>], poly: &HPoly) -> Result<Vec<Vec3<Integer>>, usize> {
-    let mut out = Vec::new();
-    for j in 1..bodies[0].n() as i64 {
-        let mut piece = poly.clone();
-        for l in bodies[0].next_contact_cone(j) {
-            piece = clip(&piece, &int_vec(&l)).into_iter().map(primitive).collect();
-        }
-        for body in bodies {
-            let s = int_mat(&body.step(j));
-            for p in &piece {
-                let q = primitive(mat_vec(&s, p));
-                if q.iter().all(|c| *c == 0u32) {
-                    continue;
-                }
-                if q[2] >= 0u32 {
-                    return Err(j as usize);
-                }
-                out.push(q);
-            }
-        }
-    }
-    Ok(out)
-}
-
-fn int_vec(v: &Vec3<Q>) -> Vec3<Integer> {
-    let z = crate::exact::scale_to_ints(v);
-    std::array::from_fn(|i| z[i].clone())
-}
-
-fn int_mat(m: &[[Q; 3]; 3]) -> [[Integer; 3]; 3] {
-    let flat: Vec<Q> = m.iter().flatten().cloned().collect();
-    let z = crate::exact::scale_to_ints(&flat);
-    std::array::from_fn(|r| std::array::from_fn(|c| z[3 * r + c].clone()))
+    Q::images(bodies, poly)
 }
 
 /// Rounded outward normals of the float polygon's edges plus the compass directions, as
@@ -204,10 +159,10 @@ pub struct Exactified {
 /// Exactifies a float polygon for the maps of `bodies` (one body, or the corners of a box).
 /// `seeds` are exact points that K must contain (e.g. I_0 of the generators of D); every exact
 /// image is added as the rounds go.
-pub fn exactify(
-    bodies: &[Body<Q>],
+pub fn exactify<E: Exact>(
+    bodies: &[Body<E>],
     float_poly: &[P2],
-    seeds: &[Vec3<Q>],
+    seeds: &[Vec3<E>],
     cfg: &ExactifyConfig,
 ) -> Result<Exactified, ExactifyError> {
     if float_poly.len() < 2 || float_poly.iter().any(|p| !p.x.is_finite() || !p.y.is_finite()) {
@@ -224,7 +179,7 @@ pub fn exactify(
         nbits.iter().map(|b| Q::from_rational(unit.as_rational().clone() << i64::from(*b))).collect();
     let grids: Vec<u64> =
         nbits.iter().map(|b| (i64::from(cfg.grid_bits) - e - i64::from(*b)).max(0) as u64).collect();
-    let seeds: Vec<Vec3<Integer>> = seeds.iter().map(|s| primitive(int_vec(s))).collect();
+    let seeds: Vec<E::P> = seeds.iter().map(E::point).collect();
 
     // Initial offsets: support of the float polygon, rounded up, plus slack.
     let mut h: Vec<Q> = normals
@@ -243,21 +198,20 @@ pub fn exactify(
     let mut worst_excess = 0.0;
     for round in 0..cfg.max_rounds {
         let poly = polygon_of(&normals, &h);
-        let mut pts =
-            exact_images(bodies, &poly).map_err(|step| ExactifyError::ImageAbove { round, step })?;
+        let mut pts = E::images(bodies, &poly).map_err(|step| ExactifyError::ImageAbove { round, step })?;
         pts.extend(seeds.iter().cloned());
-        let approx: Vec<(f64, f64)> = pts.iter().map(plane_f64).collect();
+        let approx: Vec<(f64, f64)> = pts.iter().map(E::plane_f64).collect();
         let mut changed = false;
         worst_excess = 0.0;
         for (((n, hi), sl), gb) in normals.iter().zip(h.iter_mut()).zip(&slacks).zip(&grids) {
-            let Some(m) = max_support(n, &pts, &approx) else { continue };
-            if m > *hi {
+            let Some(m) = max_support::<E>(n, &pts, &approx) else { continue };
+            if m > E::from_q(hi) {
                 // Overshoot by the excess itself: under a contraction the offsets then reach
                 // their fixed point in a few rounds instead of creeping towards it.
-                let excess = &m - &*hi;
+                let excess = &E::upper(&m) - &*hi;
                 worst_excess = f64::max(worst_excess, excess.to_f64() / norm(n));
                 let bump = if excess > *sl { excess } else { sl.clone() };
-                *hi = (m + bump).ceil_dyadic(*gb);
+                *hi = (E::upper(&m) + bump).ceil_dyadic(*gb);
                 changed = true;
             }
         }
