@@ -52,6 +52,60 @@ impl Entry {
     }
 }
 
+impl Entry {
+    /// kappa as the canonical text of an element of Q(cos 2 pi/n) (docs/certificate-format.md
+    /// §12), when certificates can name it: a rational, or an element of the body's own field.
+    /// `None` when kappa lies in another field (the icosahedron: n = 3, kappa in Q(sqrt 5)) or the
+    /// body has more contacts than the kernel models.
+    pub fn certificate_kappa(&self) -> Option<String> {
+        if let Some(q) = self.kappa.as_rational() {
+            return Some(q.to_string());
+        }
+        let n = self.n;
+        let own = format!("c{n} = cos(2*pi/{n})");
+        if self.kappa.field_meaning()? != own {
+            return None;
+        }
+        let field = crate::exact::CosField::<Q>::new(n)?;
+        Some(field.element(self.kappa.coeffs().to_vec()).to_string())
+    }
+
+    /// Why certificates cannot name this body's kappa, if they cannot.
+    pub fn why_not_certifiable(&self) -> Option<String> {
+        if self.certificate_kappa().is_some() {
+            return None;
+        }
+        Some(format!(
+            "kappa = {} is not in Q(cos 2 pi/{}), the field of the body's contacts",
+            self.kappa_text(),
+            self.n
+        ))
+    }
+}
+
+/// The catalogue body whose name contains `name` (case-insensitive), if exactly one does.
+pub fn find(name: &str) -> Result<Entry, String> {
+    let all = catalogue()?;
+    let want = name.trim().to_lowercase();
+    let hits: Vec<&Entry> = all.iter().filter(|e| e.name.to_lowercase().contains(&want)).collect();
+    let names = || all.iter().map(|e| format!("'{}'", e.name)).collect::<Vec<_>>().join(", ");
+    match hits.as_slice() {
+        [e] => Ok((*e).clone()),
+        [] => Err(format!("no catalogue body is named {name:?}; the catalogue: {}", names())),
+        _ => {
+            let exact: Vec<&&Entry> = hits.iter().filter(|e| e.name.to_lowercase() == want).collect();
+            match exact.as_slice() {
+                [e] => Ok((**e).clone()),
+                _ => Err(format!(
+                    "{name:?} names {} catalogue bodies ({}): be more precise",
+                    hits.len(),
+                    hits.iter().map(|e| format!("'{}'", e.name)).collect::<Vec<_>>().join(", ")
+                )),
+            }
+        }
+    }
+}
+
 /// cos(2 pi/n) exactly: rational for n = 2, 3, 4, 6, else the generator of Q(cos 2 pi/n).
 pub fn cosine(n: usize) -> Nf {
     match n {

@@ -111,7 +111,10 @@ impl Request {
     /// "n=4 kappa=1/6 gamma=1/100", or with intervals for a box.
     pub fn describe(&self) -> String {
         match &self.upper {
-            None => format!("n={} kappa={} gamma={}", self.n, self.kappa, self.gamma),
+            None => {
+                let kappa = self.kappa_field.clone().unwrap_or_else(|| self.kappa.to_string());
+                format!("n={} kappa={kappa} gamma={}", self.n, self.gamma)
+            }
             Some((k1, g1)) => {
                 format!("n={} kappa=[{}, {k1}] gamma=[{}, {g1}]", self.n, self.kappa, self.gamma)
             }

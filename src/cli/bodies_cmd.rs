@@ -119,6 +119,7 @@ fn row(e: &Entry, digits: usize) -> (Value, Vec<String>) {
         "kappa_derivation": e.derivation,
         "paper": {"cc": e.paper_cc, "pcc": e.paper_pcc},
     });
+    obj["certificate_kappa"] = json!(e.certificate_kappa());
     obj["paper_agrees"] =
         json!({"cc": cmp_cc.as_ref().map(|c| c.agrees()), "pcc": cmp_pcc.as_ref().map(|c| c.agrees())});
     obj["paper_status"] =
@@ -147,7 +148,20 @@ fn row(e: &Entry, digits: usize) -> (Value, Vec<String>) {
         lines.push(format!("  PCC threshold is a root of {p}"));
     }
     lines.push(format!("  decided {}; kappa by {}", cc.method, e.derivation));
+    lines.push(certificates_line(e));
     (obj, lines)
+}
+
+/// Whether certificates can be made for the body, and how.
+fn certificates_line(e: &Entry) -> String {
+    match (e.certificate_kappa(), e.why_not_certifiable()) {
+        (Some(k), _) if e.kappa.as_rational().is_none() => format!(
+            "  certificates: kappa = \"{k}\" in Q(c), c = cos(2 pi/{}): chatter certify --body '{}' --gamma G",
+            e.n, e.name
+        ),
+        (Some(_), _) => format!("  certificates: chatter certify --body '{}' --gamma G", e.name),
+        (None, why) => format!("  certificates: none ({})", why.unwrap_or_default()),
+    }
 }
 
 pub fn run(a: BodiesArgs) -> Outcome {

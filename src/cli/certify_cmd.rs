@@ -2,6 +2,7 @@
 
 use super::{Env, Outcome, emit};
 use crate::certify::{ClaimChoice, Failure, Report, Request, certify};
+use crate::exact::Q;
 use crate::finder::Search;
 use chatter_kernel::certificate::{Claim, write};
 use chatter_kernel::model::BodyError;
@@ -27,11 +28,20 @@ pub enum ClaimArg {
 Defaults certify the flat homogeneous square plate: n = 4, kappa = 1/6, gamma = 1/100.\n\
 kappa and gamma may be closed intervals a:b: one cone then certifies every (kappa, gamma) of the\n\
 box (a box certificate, docs/certificate-format.md).\n\n\
+For n = 5 and 7 to 64 the kernel works in Q(c), c = cos(2 pi/n): --kappa may be an element of it in\n\
+canonical text (\"1/40 + 1/100*c\"), and --body NAME takes a catalogue body with its exact kappa.\n\n\
 Examples:\n  chatter certify --n 3 --kappa 3/20 --gamma 0.05 -o triangle.ron\n  \
-chatter certify --kappa 1/10:3/25 --gamma 1/100:1/50 -o box.ron")]
+chatter certify --kappa 1/10:3/25 --gamma 1/100:1/50 -o box.ron\n  \
+chatter certify --n 5 --kappa \"1/40 + 1/100*c\" --gamma 1/100 -o pentagon.ron\n  \
+chatter certify --body dodecahedron --gamma 1/100")]
 pub struct CertifyArgs {
     #[command(flatten)]
     pub body: super::BodyArgs,
+    /// A body of the catalogue (`chatter bodies`), by a unique part of its name, e.g.
+    /// "pentagon plate" or "dodecahedron": its n and its exact kappa (which may be irrational,
+    /// an element of Q(cos 2 pi/n)); give --gamma, not --n or --kappa.
+    #[arg(long = "body", value_name = "NAME", conflicts_with_all = ["n", "kappa"])]
+    pub body_name: Option<String>,
     /// The claim to certify.
     #[arg(long, value_enum, default_value = "strongest")]
     pub claim: ClaimArg,
@@ -57,8 +67,54 @@ struct Validated {
     json: bool,
 }
 
+/// n, kappa (as a rational approximation and, if irrational, as field text) of `--body NAME`.
+fn catalogue_body(name: &str) -> Result<(u64, Q, Option<String>), String> {
+    let e = crate::bodies::find(name).map_err(|e| format!("--body: {e}"))?;
+    let text = e.certificate_kappa().ok_or_else(|| {
+        format!(
+            "--body: '{}': {}; no certificate can name it",
+            e.name,
+            e.why_not_certifiable().unwrap_or_default()
+        )
+    })?;
+    let approx = crate::exact::parse_user_number(&format!("{:.12e}", crate::bodies::kappa_f64(&e)))
+        .map_err(|e| format!("--body: {e}"))?;
+    let exact = e.kappa.as_rational();
+    Ok((e.n, exact.clone().unwrap_or(approx), exact.is_none().then_some(text)))
+}
+
+/// `--kappa` written as an element of Q(cos 2 pi/n) in canonical text (e.g. "1/20 + 1/100*c"):
+/// a rational approximation, and the text.
+fn field_kappa(body: &super::BodyArgs) -> Result<Option<(Q, String)>, String> {
+    if !body.kappa.contains(crate::exact::GENERATOR) {
+        return Ok(None);
+    }
+    let (n, _, _) = super::BodyArgs { kappa: "1".into(), ..body.clone() }.parse()?;
+    let field = crate::exact::CosField::<Q>::new(n).filter(|f| f.degree() > 1).ok_or_else(|| {
+        format!("--kappa: {:?} names c = cos(2 pi/{n}), which is rational or out of range here", body.kappa)
+    })?;
+    let k = field.parse(&body.kappa, Default::default()).map_err(|e| {
+        format!("--kappa: {:?} is not the canonical text of an element of Q(cos 2 pi/{n}): {e}", body.kappa)
+    })?;
+    let (lo, _) = crate::exact::OrderedField::enclose(&k, &Q::new(1, 1 << 40));
+    Ok(Some((lo, body.kappa.clone())))
+}
+
 fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
-    let (n, kappa, gamma) = a.body.parse_ranges()?;
+    let mut kappa_field = None;
+    let (mut n, mut kappa, gamma) = match field_kappa(&a.body)? {
+        Some((k, text)) => {
+            kappa_field = Some(text);
+            let plain = super::BodyArgs { kappa: "1".into(), ..a.body.clone() };
+            let (n, _, gamma) = plain.parse_ranges()?;
+            (n, [k.clone(), k], gamma)
+        }
+        None => a.body.parse_ranges()?,
+    };
+    if let Some(name) = &a.body_name {
+        let (bn, k, text) = catalogue_body(name)?;
+        (n, kappa, kappa_field) = (bn, [k.clone(), k], text);
+    }
     for (k, g) in [(&kappa[0], &gamma[0]), (&kappa[1], &gamma[1])] {
         if let Err(e) = crate::certify::check_body(n, k, g) {
             let flag = match e {
@@ -73,6 +129,7 @@ fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
         return Err("--max-vertices must be at least 3".into());
     }
     let mut req = Request::boxed(n, kappa, gamma);
+    req.kappa_field = kappa_field;
     req.claim = match a.claim {
         ClaimArg::Strongest => ClaimChoice::Strongest,
         ClaimArg::EffectivelyInvariant => ClaimChoice::Exactly(Claim::EffectivelyInvariant),

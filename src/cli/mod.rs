@@ -119,7 +119,8 @@ pub enum Command {
 /// validates the ranges it supports.
 #[derive(Args, Debug, Clone)]
 pub struct BodyArgs {
-    /// Number of contacts: 2 (the rod) or a regular n-gon (exact models for 3, 4, 6).
+    /// Number of contacts: 2 (the rod) or a regular n-gon (certify and verify: 3 to 64, in
+    /// Q(cos 2 pi/n) where that cosine is irrational; the other exact models: 3, 4, 6).
     #[arg(long, default_value = "4", allow_hyphen_values = true)]
     pub n: String,
     /// kappa = rho^2 / R^2 (radius of gyration over circumradius, squared), > 0.

@@ -68,7 +68,7 @@ fn no_cone_above_the_threshold() {
 
 #[test]
 fn invalid_bodies_fail_cleanly() {
-    for (n, k, g) in [(5, "1/6", "1/100"), (4, "0", "1/100"), (4, "1/6", "2")] {
+    for (n, k, g) in [(65, "1/6", "1/100"), (4, "0", "1/100"), (4, "1/6", "2")] {
         let r = run(n, k, g, ClaimChoice::Strongest);
         assert!(matches!(r.result, Err(Failure::Body(_))), "n={n} kappa={k} gamma={g}");
     }

@@ -71,6 +71,15 @@ pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accept
     Ok(accepted)
 }
 
+/// The checks of [`check`] run in the number field Q(cos 2 pi/n) whatever n (3 to 64), also where
+/// cos 2 pi/n is rational (a field of degree 1): a second path for n = 3, 4, 6, against which the
+/// field path is tested. Point certificates of regular polygons only.
+pub fn check_in_field<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
+    header(cert)?;
+    size(cert, limits)?;
+    field::check::<F>(cert, limits)
+}
+
 /// The limits on the whole file, before any arithmetic: the number of generators and the
 /// digits of all numbers together (a number's length counts its sign and slash: an upper bound).
 fn size(cert: &Certificate, limits: ParseLimits) -> Result<(), Rejection> {

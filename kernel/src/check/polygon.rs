@@ -53,8 +53,10 @@ fn check_image<E: Scalar>(k: &Cone<E::R>, img: &Vec3<E::R>, t: &Target<'_>) -> R
         return Ok(());
     }
     if !img[2].is_negative() {
-        let v = scalar::number(&E::lift(&img[2]));
-        let msg = format!("{} to a velocity with v >= 0 (v is {v} times a positive factor)", (t.what)());
+        // Homogeneous coordinates are defined up to a positive factor: only the sign of v is told.
+        let v = if img[2].is_zero() { "v = 0" } else { "v > 0" };
+        let msg =
+            format!("{} to a velocity with v >= 0 (here {v}): the centre of mass stops falling", (t.what)());
         return Err(Rejection::new(t.above, (t.locus)(None), msg));
     }
     if k.polygon.contains(img) {

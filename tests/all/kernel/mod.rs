@@ -4,6 +4,7 @@ mod boxes;
 mod brute;
 mod check;
 mod cones;
+mod field;
 mod impact;
 mod pcc;
 mod polygon;
