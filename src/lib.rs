@@ -24,6 +24,7 @@ pub mod oracle;
 #[cfg(feature = "cli")]
 pub mod plot;
 pub mod refute;
+pub mod report;
 #[cfg(feature = "cli")]
 pub mod reproduce;
 pub mod simulate;
