@@ -1,12 +1,12 @@
 //! `chatter check-proof`: re-checks proof files with the trusted crate, on both backends.
 
 use super::{Outcome, emit, emit_report};
+use crate::report::prove::{CheckProofReport, ProofFileReport};
 use crate::verify::read::{Input, read_input};
 use crate::verify::{DEFAULT_MAX_FILE_SIZE, DEFAULT_TIME_LIMIT, with_time_limit};
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::verify::{Verdict, format_of, verify_proof_text};
 use clap::Args;
-use crate::report::prove::{CheckProofReport, ProofFileReport};
 use std::path::PathBuf;
 
 /// Raw arguments of `chatter check-proof`.

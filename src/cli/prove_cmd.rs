@@ -2,14 +2,14 @@
 //! kernel before the files are written to proofs/.
 
 use super::{Outcome, emit, emit_report};
+use crate::report::prove::ProveReport;
+use crate::report::{self, Report};
 use crate::symbolic::crosscheck::cross_check;
 use crate::symbolic::report::{markdown, ron};
 use crate::symbolic::square::prove;
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::verify::{Verdict, verify_proof};
 use clap::{Args, ValueEnum};
-use crate::report::prove::ProveReport;
-use crate::report::{self, Report};
 use std::path::PathBuf;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

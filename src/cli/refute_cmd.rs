@@ -3,10 +3,10 @@
 
 use super::certify_cmd::ClaimArg;
 use super::{Env, Outcome, emit, emit_report};
-use crate::report::refute::RefuteReport;
-use crate::report::{Timings, ms};
 use crate::exact::Q;
 use crate::refute::{RefuteConfig, refute};
+use crate::report::refute::RefuteReport;
+use crate::report::{Timings, ms};
 use chatter_kernel::certificate::Claim;
 use chatter_kernel::model::Shape;
 use chatter_kernel::refute::{Refutation, write};
@@ -108,8 +108,10 @@ fn checked(a: &RefuteArgs, r: Refutation, env: &Env, start: Instant, [kq, gq]: [
     let (k, g) = (kappa.texts()[0].to_string(), gamma.texts()[0].to_string());
     let v = if done.v_positive { "v > 0" } else { "v = 0" };
     if a.json {
-        let mut report = RefuteReport::refuted(kq, gq, &done, a.output.as_ref().map(|p| p.display().to_string()));
-        report.timings = a.timings.then(|| Timings { search_ms: ms(search), exactify_ms: 0.0, kernel_ms: ms(kernel) });
+        let mut report =
+            RefuteReport::refuted(kq, gq, &done, a.output.as_ref().map(|p| p.display().to_string()));
+        report.timings =
+            a.timings.then(|| Timings { search_ms: ms(search), exactify_ms: 0.0, kernel_ms: ms(kernel) });
         emit_report(&report);
     } else {
         let out =

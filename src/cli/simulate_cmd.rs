@@ -1,15 +1,13 @@
 //! `chatter simulate` (issue 4).
 
 use super::{self as cli, emit, emit_report};
-use crate::report::simulate as report;
 use crate::exact::{Q, parse_user_number};
 use crate::plot::save;
 use crate::plot::trajectory::TrajectoryFigure;
+use crate::report::simulate as report;
 use crate::simulate::classify::DEFAULT_PCC_EPSILON;
 use crate::simulate::pattern;
-use crate::simulate::{
-    Arithmetic, Decision, Initial, Model, Options, Outcome, Run, Shape, record, simulate,
-};
+use crate::simulate::{Arithmetic, Decision, Initial, Model, Options, Outcome, Run, Shape, record, simulate};
 use chatter_kernel::model::BodyError;
 use clap::Args;
 use std::io::IsTerminal;

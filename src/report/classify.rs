@@ -122,9 +122,13 @@ impl Eigenvalue {
     pub fn text(&self) -> String {
         match self {
             Eigenvalue::Real { enclosure, decimal, exact, multiplicity } => {
-                let mult = if *multiplicity > 1 { format!(" (multiplicity {multiplicity})") } else { String::new() };
-                let value =
-                    if *exact { enclosure.lo.exact.clone() } else { format!("[{}, {}]", decimal[0], decimal[1]) };
+                let mult =
+                    if *multiplicity > 1 { format!(" (multiplicity {multiplicity})") } else { String::new() };
+                let value = if *exact {
+                    enclosure.lo.exact.clone()
+                } else {
+                    format!("[{}, {}]", decimal[0], decimal[1])
+                };
                 value + &mult
             }
             Eigenvalue::ComplexPair { decimal: d, .. } => format!(
@@ -278,7 +282,9 @@ fn rod(r: &ClassifyRequest, rod: &Rod<Q>) -> (bool, Criterion, Option<FromVeloci
 fn float_body(r: &ClassifyRequest, exact: Option<&Polygon<Q>>) -> Option<FloatBody> {
     match exact {
         Some(b) => Some(FloatBody::new(b)),
-        None => FloatPolygon::new(r.n, r.kappa.to_f64(), r.gamma.to_f64()).ok().map(|b| FloatBody::from_float(&b)),
+        None => {
+            FloatPolygon::new(r.n, r.kappa.to_f64(), r.gamma.to_f64()).ok().map(|b| FloatBody::from_float(&b))
+        }
     }
 }
 
@@ -417,12 +423,21 @@ impl ClassifyReport {
     fn criteria_lines(&self, l: &mut Vec<String>) {
         let cc = &self.cc;
         if let Some(g) = self.goyal {
-            l.push(format!("Goyal's condition sqrt(kappa) <= 2/(sqrt(gamma) + 1) - 1 (decided exactly): {}", holds(g)));
-            l.push(format!("CC criterion (U_0 P has a real, positive dominant eigenvalue): {}", holds(cc.holds)));
+            l.push(format!(
+                "Goyal's condition sqrt(kappa) <= 2/(sqrt(gamma) + 1) - 1 (decided exactly): {}",
+                holds(g)
+            ));
+            l.push(format!(
+                "CC criterion (U_0 P has a real, positive dominant eigenvalue): {}",
+                holds(cc.holds)
+            ));
             l.push(format!("  det(tI - U_0 P) = {}", cc.char_poly));
             l.push(format!("  eigenvalues: {}; dominant: {}", eigen_text(cc), cc.dominant_text));
         } else {
-            l.push(format!("CC criterion (S_1 has a real, positive dominant eigenvalue): {}", holds(cc.holds)));
+            l.push(format!(
+                "CC criterion (S_1 has a real, positive dominant eigenvalue): {}",
+                holds(cc.holds)
+            ));
             l.push(format!("  det(tI - S_1) = {}", cc.char_poly));
             l.push(format!("  eigenvalues: {}", eigen_text(cc)));
             l.push(format!("  dominant: {}", cc.dominant_text));
@@ -442,7 +457,9 @@ impl ClassifyReport {
             let text = match (f.cone_exists, f.cc) {
                 (false, _) => "ICC from every initial velocity (the condition fails)".to_string(),
                 (true, true) => format!("CC: the initial velocity ({u0}, {u1}) lies in the invariant cone"),
-                (true, false) => format!("ICC: the initial velocity ({u0}, {u1}) lies outside the invariant cone"),
+                (true, false) => {
+                    format!("ICC: the initial velocity ({u0}, {u1}) lies outside the invariant cone")
+                }
             };
             l.push(format!("from the given velocity: {text}"));
         }

@@ -22,12 +22,15 @@ pub struct FinderReport {
 impl FinderReport {
     /// The report of a search whose cone is given by its number of vertices.
     pub fn of(s: &Search<usize>) -> FinderReport {
-        let base = FinderReport { outcome: s.label(), iterations: 0, vertices: None, step: None, reason: None };
+        let base =
+            FinderReport { outcome: s.label(), iterations: 0, vertices: None, step: None, reason: None };
         match s {
             Search::Found { cone, iterations } => {
                 FinderReport { iterations: *iterations, vertices: Some(*cone), ..base }
             }
-            Search::NoCone { iteration, step } => FinderReport { iterations: *iteration, step: Some(*step), ..base },
+            Search::NoCone { iteration, step } => {
+                FinderReport { iterations: *iteration, step: Some(*step), ..base }
+            }
             Search::Inconclusive { iterations, reason } => {
                 FinderReport { iterations: *iterations, reason: Some(reason.clone()), ..base }
             }

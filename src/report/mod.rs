@@ -123,7 +123,8 @@ pub fn to_line<R: Report>(report: &R) -> String {
 pub fn schema_of<R: Report>() -> serde_json::Value {
     let mut s = serde_json::to_value(schemars::schema_for!(R)).expect("a schema is JSON");
     s["title"] = serde_json::Value::String(R::SCHEMA.to_string());
-    s["properties"]["schema"] = serde_json::json!({"const": R::SCHEMA, "description": "Schema name and version."});
+    s["properties"]["schema"] =
+        serde_json::json!({"const": R::SCHEMA, "description": "Schema name and version."});
     s
 }
 

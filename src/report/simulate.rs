@@ -4,7 +4,9 @@
 
 use super::{Number, Report};
 use crate::simulate::pattern::find;
-use crate::simulate::{Arithmetic, Decision, Initial, Model, Options, Outcome, Run, counts, simulate, simulate_many};
+use crate::simulate::{
+    Arithmetic, Decision, Initial, Model, Options, Outcome, Run, counts, simulate, simulate_many,
+};
 use schemars::JsonSchema;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -132,7 +134,9 @@ pub fn contact_counts(run: &Run, n: usize) -> Vec<usize> {
 /// The report of a run made from `initial` (no files written).
 pub fn of_run(model: &Model, initial: &Initial, arithmetic: Arithmetic, run: &Run) -> SimulateReport {
     let simultaneous = match &run.decision {
-        Decision::Tie { contacts, exact, .. } => Some(TieReport { contacts: contacts.clone(), exact: *exact }),
+        Decision::Tie { contacts, exact, .. } => {
+            Some(TieReport { contacts: contacts.clone(), exact: *exact })
+        }
         _ => None,
     };
     let pattern =
@@ -165,7 +169,12 @@ pub fn of_run(model: &Model, initial: &Initial, arithmetic: Arithmetic, run: &Ru
 
 /// Simulates one drop and reports it; the run itself (with its records if `opts.record`) is
 /// returned too.
-pub fn single(model: &Model, initial: &Initial, arithmetic: Arithmetic, opts: &Options) -> (SimulateReport, Run) {
+pub fn single(
+    model: &Model,
+    initial: &Initial,
+    arithmetic: Arithmetic,
+    opts: &Options,
+) -> (SimulateReport, Run) {
     let run = simulate(model, initial, arithmetic, opts);
     (of_run(model, initial, arithmetic, &run), run)
 }
