@@ -22,6 +22,7 @@ pub mod certify;
 pub mod classify;
 pub mod error;
 pub mod finder;
+pub mod map;
 pub mod prove;
 pub mod refute;
 pub mod simulate;
@@ -148,7 +149,7 @@ pub fn schemas() -> Vec<(&'static str, serde_json::Value)> {
         one::<classify::ClassifyReport>(),
         one::<crate::cover::CoverSummary>(),
         one::<error::ErrorReport>(),
-        one::<crate::sweep::summary::Summary>(),
+        one::<map::MapSummary>(),
         one::<prove::ProveReport>(),
         one::<refute::RefuteReport>(),
         one::<simulate::SimulateReport>(),

@@ -67,7 +67,7 @@ pub fn of(verdicts: &[FileVerdict], summary: Summary, mismatches: Option<Vec<Str
 }
 
 /// Lists `paths` (files, and directories searched for certificate files) and checks every file
-/// with the kernel under `opts` (`Options::default()`: both backends, the default limits).
+/// with the kernel under `opts` (`Options::new(vec![MALACHITE, NUM])`: both backends, the default limits).
 pub fn verify(paths: &[PathBuf], opts: &Options) -> VerifyReport {
     let listing = list_with(paths, opts.max_file_size);
     let verdicts = verify_all(&listing, opts, |_| {});
