@@ -1,6 +1,6 @@
 //! `chatter.bodies/1`: the catalogue of bodies (or given bodies) with kappa from geometry, the
 //! exact CC and PCC thresholds in gamma and the paper's values beside ours. Build it with
-//! [`bodies`] or [`catalogue`].
+//! [`bodies()`] or [`catalogue`].
 
 use super::Report;
 use crate::bodies::{self, Entry, PaperValue, Threshold, compare, kappa_decimal, kappa_f64};
