@@ -54,6 +54,21 @@ fn committed_schemas_are_the_generated_ones() {
         assert!(jsonschema::validator_for(&schema).is_ok(), "{name}: not a valid JSON Schema");
         names.push(name);
     }
+    // The validator does reject: a wrong type, a wrong schema name, a missing field.
+    let v = jsonschema::validator_for(&committed("chatter.error/1")).unwrap();
+    let good =
+        serde_json::json!({"schema": "chatter.error/1", "kind": "usage", "exit_code": 2, "message": "m"});
+    assert!(v.is_valid(&good));
+    for (key, bad) in [
+        ("exit_code", Value::from("two")),
+        ("schema", Value::from("chatter.error/2")),
+        ("kind", Value::from("oops")),
+    ] {
+        let mut doc = good.clone();
+        doc[key] = bad;
+        assert!(!v.is_valid(&doc), "{doc}");
+    }
+    assert!(!v.is_valid(&serde_json::json!({"schema": "chatter.error/1", "kind": "usage"})));
     let files = std::fs::read_dir(root().join("docs/schema")).unwrap().count();
     assert_eq!(files, names.len(), "docs/schema holds a file that no report type generates");
 }
