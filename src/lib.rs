@@ -8,7 +8,8 @@
 //!   and the producer of the square-case proof;
 //! - [`sweep`]: the paper's maps over (rho, gamma) as data, in parallel and in shards;
 //! - `plot`, `reproduce` (feature `cli`): the figures, and the paper's results regenerated with a report;
-//! - [`certify`], [`verify`], `cli` (feature `cli`): the pipeline and the command line.
+//! - [`certify`], [`verify`], `cli` (feature `cli`): the pipeline and the command line;
+//! - [`report`]: the typed, versioned reports every `--json` output prints (docs/json.md).
 
 pub mod bodies;
 pub mod certify;
@@ -24,6 +25,7 @@ pub mod oracle;
 #[cfg(feature = "cli")]
 pub mod plot;
 pub mod refute;
+pub mod report;
 #[cfg(feature = "cli")]
 pub mod reproduce;
 pub mod simulate;

@@ -14,8 +14,10 @@ use serde::Serialize;
 use solids::{prism_kappa, solid_kappa};
 
 /// A value the paper states for a body: the criterion holds for gamma below `value` (given
-/// with `decimals` decimals), or never.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+/// with `decimals` decimals), or never. JSON: `{"kind": "below", "value": 0.04, "decimals": 2}`
+/// or `{"kind": "never"}`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, schemars::JsonSchema)]
+#[serde(tag = "kind", rename_all = "kebab-case")]
 pub enum PaperValue {
     Below { value: f64, decimals: u32 },
     Never,
@@ -301,14 +303,15 @@ pub fn catalogue() -> Result<Vec<Entry>, String> {
 }
 
 /// A criterion's threshold in gamma as reported: the supremum of the gammas where it holds.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, schemars::JsonSchema)]
 pub struct Threshold {
     /// "never", "below", or "up-to-one".
     pub kind: &'static str,
-    /// Exact rational enclosure [lo, hi] of the threshold (for "below").
+    /// Exact rational enclosure [lo, hi] of the threshold (for "below"), canonical `p/q` texts.
     pub interval: Option<[String; 2]>,
     /// Decimal enclosure rounded outwards (for "below").
     pub decimal: Option<[String; 2]>,
+    /// The midpoint of the enclosure as f64 (for "below").
     pub midpoint: Option<f64>,
     /// A polynomial in gamma vanishing at the threshold.
     pub polynomial: Option<String>,

@@ -1,12 +1,11 @@
 //! `chatter bodies`: the catalogue of bodies with exact thresholds in gamma.
 
-use super::{Outcome, emit};
-use crate::bodies::{self, Entry, PaperValue, Threshold, compare, kappa_decimal, kappa_f64};
+use super::{Outcome, emit, emit_report};
+use crate::bodies::{self, Entry};
 use crate::exact::{Q, Ring, parse_user_number};
+use crate::report::bodies::{BodyRow, bodies};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use rayon::prelude::*;
-use serde_json::{Value, json};
 
 /// Raw arguments of `chatter bodies`.
 #[derive(Args, Debug)]
@@ -18,7 +17,7 @@ The paper's stated values are printed beside ours and disagreements are flagged.
 Extra bodies: --n N --kappa K, --plate N, --prism N --height H (circumradius 1)."
 )]
 pub struct BodiesArgs {
-    /// Print a JSON array.
+    /// Print one JSON object (schema chatter.bodies/1, docs/json.md).
     #[arg(long)]
     pub json: bool,
     /// Decimal digits of the enclosures.
@@ -79,91 +78,6 @@ fn validate(a: &BodiesArgs) -> Result<Vec<Entry>, String> {
     Ok(all)
 }
 
-fn paper_text(p: &Option<PaperValue>) -> String {
-    match p {
-        None => "-".into(),
-        Some(PaperValue::Never) => "never".into(),
-        Some(PaperValue::Below { value, decimals }) => format!("< {value:.*}", *decimals as usize),
-    }
-}
-
-fn ours_text(t: &Threshold) -> String {
-    match (t.kind, &t.decimal) {
-        ("below", Some([lo, hi])) => format!("< [{lo}, {hi}]"),
-        ("up-to-one", _) => "all gamma".into(),
-        _ => "never".into(),
-    }
-}
-
-fn row(e: &Entry, digits: usize) -> (Value, Vec<String>) {
-    let (cc, pcc) = bodies::thresholds(e, digits);
-    let exact = |t: &Threshold| t.interval.clone().map(|[a, b]| json!([a, b])).unwrap_or(Value::Null);
-    let gmax = |t: &Threshold| match t.kind {
-        "below" => json!(t.midpoint),
-        "up-to-one" => json!(1.0),
-        _ => Value::Null,
-    };
-    let cmp_cc = compare(e.paper_cc, &cc);
-    let cmp_pcc = pcc.as_ref().and_then(|p| compare(e.paper_pcc, p));
-    let mut obj = json!({
-        "name": e.name,
-        "n": e.n,
-        "kappa": e.kappa_text(),
-        "kappa_f64": kappa_f64(e),
-        "cc_gamma_max": gmax(&cc),
-        "pcc_gamma_max": pcc.as_ref().map_or(Value::Null, gmax),
-        "cc_gamma_interval": exact(&cc),
-        "pcc_gamma_interval": pcc.as_ref().map_or(Value::Null, exact),
-        "cc": cc,
-        "pcc": pcc,
-        "kappa_derivation": e.derivation,
-        "paper": {"cc": e.paper_cc, "pcc": e.paper_pcc},
-    });
-    obj["certificate_kappa"] = json!(e.certificate_kappa());
-    obj["paper_agrees"] =
-        json!({"cc": cmp_cc.as_ref().map(|c| c.agrees()), "pcc": cmp_pcc.as_ref().map(|c| c.agrees())});
-    obj["paper_status"] =
-        json!({"cc": cmp_cc.as_ref().map(|c| c.status), "pcc": cmp_pcc.as_ref().map(|c| c.status)});
-    let flag = |c: &Option<bodies::Comparison>| match c.as_ref().map(|c| c.status) {
-        Some("agrees") => " (agrees)",
-        Some("close") => " (close: within 5%, outside the paper's rounding)",
-        Some(_) => " (DISAGREES)",
-        None => "",
-    };
-    let pcc_text = pcc.as_ref().map_or("n/a (two contacts)".to_string(), ours_text);
-    let mut lines = vec![
-        format!("{} (n = {}, kappa = {} = {})", e.name, e.n, e.kappa_text(), kappa_decimal(e, 6)),
-        format!(
-            "  CC  criterion: {:<36} paper: {}{}",
-            ours_text(&cc),
-            paper_text(&e.paper_cc),
-            flag(&cmp_cc)
-        ),
-        format!("  PCC criterion: {:<36} paper: {}{}", pcc_text, paper_text(&e.paper_pcc), flag(&cmp_pcc)),
-    ];
-    if let Some(p) = &cc.polynomial {
-        lines.push(format!("  CC threshold is a root of {p}"));
-    }
-    if let Some(p) = pcc.as_ref().and_then(|p| p.polynomial.clone()) {
-        lines.push(format!("  PCC threshold is a root of {p}"));
-    }
-    lines.push(format!("  decided {}; kappa by {}", cc.method, e.derivation));
-    lines.push(certificates_line(e));
-    (obj, lines)
-}
-
-/// Whether certificates can be made for the body, and how.
-fn certificates_line(e: &Entry) -> String {
-    match (e.certificate_kappa(), e.why_not_certifiable()) {
-        (Some(k), _) if e.kappa.as_rational().is_none() => format!(
-            "  certificates: kappa = \"{k}\" in Q(c), c = cos(2 pi/{}): chatter certify --body '{}' --gamma G",
-            e.n, e.name
-        ),
-        (Some(_), _) => format!("  certificates: chatter certify --body '{}' --gamma G", e.name),
-        (None, why) => format!("  certificates: none ({})", why.unwrap_or_default()),
-    }
-}
-
 pub fn run(a: BodiesArgs) -> Outcome {
     let entries = match validate(&a) {
         Ok(e) => e,
@@ -171,23 +85,12 @@ pub fn run(a: BodiesArgs) -> Outcome {
     };
     let bar = ProgressBar::new(entries.len() as u64);
     bar.set_style(ProgressStyle::with_template("{bar:30} {pos}/{len} bodies").expect("valid template"));
-    let rows: Vec<(Value, Vec<String>)> = entries
-        .par_iter()
-        .map(|e| {
-            let r = row(e, a.digits);
-            bar.inc(1);
-            r
-        })
-        .collect();
+    let report = bodies(&entries, a.digits, &|| bar.inc(1));
     bar.finish_and_clear();
     if a.json {
-        emit(&Value::Array(rows.into_iter().map(|(o, _)| o).collect()).to_string());
+        emit_report(&report);
     } else {
-        for (_, lines) in rows {
-            for l in lines {
-                emit(&l);
-            }
-        }
+        report.bodies.iter().flat_map(BodyRow::lines).for_each(|l| emit(&l));
     }
     Outcome::Success
 }

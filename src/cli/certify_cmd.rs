@@ -1,13 +1,11 @@
 //! `chatter certify`.
 
-use super::{Env, Outcome, emit};
+use super::{Env, Outcome, emit, emit_report};
 use crate::certify::{ClaimChoice, Failure, Report, Request, certify};
 use crate::exact::Q;
-use crate::finder::Search;
 use chatter_kernel::certificate::{Claim, write};
 use chatter_kernel::model::BodyError;
 use clap::{Args, ValueEnum};
-use serde_json::json;
 use std::path::PathBuf;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -51,6 +49,9 @@ pub struct CertifyArgs {
     /// Print one JSON object instead of the one-line summary.
     #[arg(long)]
     pub json: bool,
+    /// With --json: include the wall-clock times (then the output differs from run to run).
+    #[arg(long)]
+    pub timings: bool,
     /// Iteration budget of the float finder (near the CC threshold the cone converges slowly:
     /// at relative distance 1e-6 below it, about 10,000 to 25,000 iterations for n = 4, 6).
     #[arg(long, default_value_t = crate::finder::FinderConfig::default().max_iterations)]
@@ -65,6 +66,7 @@ struct Validated {
     req: Request,
     output: Option<PathBuf>,
     json: bool,
+    timings: bool,
 }
 
 /// n, kappa (as a rational approximation and, if irrational, as field text) of `--body NAME`.
@@ -139,26 +141,11 @@ fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
     req.finder.max_iterations = a.max_iterations;
     req.finder.max_vertices = a.max_vertices;
     req.backends = env.backends;
-    Ok(Validated { req, output: a.output, json: a.json })
+    Ok(Validated { req, output: a.output, json: a.json, timings: a.timings })
 }
 
 fn ms(d: std::time::Duration) -> f64 {
     d.as_secs_f64() * 1e3
-}
-
-fn finder_json(f: &Option<Search<usize>>) -> serde_json::Value {
-    match f {
-        None => serde_json::Value::Null,
-        Some(Search::Found { cone, iterations }) => {
-            json!({"outcome": "found", "iterations": iterations, "vertices": cone})
-        }
-        Some(Search::NoCone { iteration, step }) => {
-            json!({"outcome": "no-cone", "iteration": iteration, "step": step})
-        }
-        Some(Search::Inconclusive { iterations, reason }) => {
-            json!({"outcome": "inconclusive", "iterations": iterations, "reason": reason})
-        }
-    }
 }
 
 fn summary(v: &Validated, r: &Report) -> String {
@@ -193,14 +180,6 @@ fn summary(v: &Validated, r: &Report) -> String {
     }
 }
 
-/// A parameter in JSON: its text, or [lo, hi] for a box.
-fn param_json(lo: &crate::exact::Q, hi: Option<&crate::exact::Q>) -> serde_json::Value {
-    match hi {
-        Some(hi) => json!([lo.to_string(), hi.to_string()]),
-        None => json!(lo.to_string()),
-    }
-}
-
 pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
     let v = match validate(a, env) {
         Ok(v) => v,
@@ -213,23 +192,8 @@ pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
         }
     }
     if v.json {
-        let t = &report.timings;
-        let obj = json!({
-            "status": if report.result.is_ok() { "certified" } else { "not-certified" },
-            "n": v.req.n,
-            "kappa": param_json(&v.req.kappa, v.req.upper.as_ref().map(|u| &u.0)),
-            "gamma": param_json(&v.req.gamma, v.req.upper.as_ref().map(|u| &u.1)),
-            "claim": report.result.as_ref().ok().map(|c| c.claim.name()),
-            "generators": report.result.as_ref().ok().map(|c| c.cone.len()),
-            "max_denominator_bits": report.result.as_ref().ok().map(|_| report.max_denominator_bits),
-            "output": v.output.as_ref().filter(|_| report.result.is_ok()).map(|p| p.display().to_string()),
-            "reason": report.result.as_ref().err().map(ToString::to_string),
-            "method": report.method,
-            "finder": finder_json(&report.finder),
-            "timings_ms": {"finder": ms(t.finder), "exactify": ms(t.exactify), "kernel": ms(t.kernel)},
-            "notes": report.notes,
-        });
-        emit(&obj.to_string());
+        let output = v.output.as_ref().map(|p| p.display().to_string());
+        emit_report(&crate::report::certify::of(&v.req, &report, output, v.timings));
     } else {
         emit(&summary(&v, &report));
     }

@@ -1,12 +1,12 @@
 //! `chatter check-proof`: re-checks proof files with the trusted crate, on both backends.
 
-use super::{Outcome, emit};
+use super::{Outcome, emit, emit_report};
+use crate::report::prove::{CheckProofReport, ProofFileReport};
 use crate::verify::read::{Input, read_input};
 use crate::verify::{DEFAULT_MAX_FILE_SIZE, DEFAULT_TIME_LIMIT, with_time_limit};
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::verify::{Verdict, format_of, verify_proof_text};
 use clap::Args;
-use serde_json::json;
 use std::path::PathBuf;
 
 /// Raw arguments of `chatter check-proof`.
@@ -37,6 +37,7 @@ pub fn run(a: CheckProofArgs) -> Outcome {
     let limits = ParseLimits::digits(a.max_digits);
     let time_limit = (a.time_limit > 0).then(|| std::time::Duration::from_secs(a.time_limit));
     let mut outcome = Outcome::Success;
+    let mut reports = Vec::new();
     for path in &a.paths {
         let text = match read_input(path, a.max_file_size) {
             Input::Text { text, .. } => text,
@@ -58,7 +59,7 @@ pub fn run(a: CheckProofArgs) -> Outcome {
         match verdict {
             Verdict::Accepted(c) => {
                 if a.json {
-                    emit(&json!({"path": p.to_string(), "status": "OK", "steps": c.steps, "hypotheses": c.hypotheses, "conclusions": c.conclusions, "region_nonempty": c.nonempty}).to_string());
+                    reports.push(ProofFileReport::accepted(&p.to_string(), &c));
                 } else {
                     emit(&format!("{p}: OK ({}: {} steps, malachite + num-rational)", c.name, c.steps));
                     emit(&format!("  hypotheses: {}", c.hypotheses.join("; ")));
@@ -74,7 +75,7 @@ pub fn run(a: CheckProofArgs) -> Outcome {
             }
             Verdict::Rejected(r) => {
                 if a.json {
-                    emit(&json!({"path": p.to_string(), "status": "REJECTED", "code": r.code, "locus": r.locus, "reason": r.message}).to_string());
+                    reports.push(ProofFileReport::rejected(&p.to_string(), &r));
                 } else {
                     let hint = if format_of(&text).as_deref() == Some(chatter_kernel::certificate::FORMAT) {
                         " (this file is a certificate: use `chatter verify`)"
@@ -87,6 +88,9 @@ pub fn run(a: CheckProofArgs) -> Outcome {
             }
             Verdict::Disagree(s) => return Outcome::Internal(format!("{p}: the backends disagree: {s}")),
         }
+    }
+    if a.json {
+        emit_report(&CheckProofReport::of(reports));
     }
     outcome
 }

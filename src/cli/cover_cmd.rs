@@ -3,10 +3,9 @@
 use super::map_cmd::{progress, with_jobs};
 use super::{Outcome, emit, range};
 use crate::cover::area::cc_area;
-use crate::cover::{CoverRequest, Leaf, Status, cover, f, tally};
+use crate::cover::{CoverRequest, CoverSummary, Leaf, Status, cover};
 use crate::exact::Q;
 use clap::Args;
-use serde_json::json;
 use std::path::{Path, PathBuf};
 
 /// Raw arguments of `chatter cover`.
@@ -150,29 +149,7 @@ pub fn run(a: CoverArgs) -> Outcome {
         Err(e) => return Outcome::Usage(e),
     };
     let secs = start.elapsed().as_secs_f64();
-    let t = tally(&leaves);
-    let count = |s: &str| leaves.iter().filter(|l| l.status.name() == s).count();
-    let ratio = if area > 0.0 { f(&t.certified_area) / area } else { f64::NAN };
-    let summary = json!({
-        "schema": "chatter.cover/1",
-        "n": req.n,
-        "kappa": [req.kappa[0].to_string(), req.kappa[1].to_string()],
-        "gamma": [req.gamma[0].to_string(), req.gamma[1].to_string()],
-        "max_depth": {"kappa": req.max_depth[0], "gamma": req.max_depth[1]},
-        "boxes": {"certified": count("certified"), "refuted": count("refuted"), "undecided": count("undecided")},
-        "certified_area": f(&t.certified_area),
-        "certified_area_exact": t.certified_area.to_string(),
-        "cc_area": area,
-        "cc_area_error_estimate": error,
-        "ratio": ratio,
-        "refuted_area": f(&t.refuted_area),
-        "undecided_area": f(&t.undecided_area),
-        "undecided_band_height": f(&t.undecided_height),
-        "findings": {
-            "certified_where_criterion_fails": t.certified_criterion_fails,
-            "refuted_where_criterion_holds": t.refuted_criterion_holds,
-        },
-    });
+    let summary = CoverSummary::new(&req, &leaves, area, error);
     let text = serde_json::to_string_pretty(&summary).expect("serialisable") + "\n";
     if let Err(e) = write_leaves(&a.out, &leaves)
         .and_then(|()| std::fs::write(a.out.join("summary.json"), &text).map_err(|e| e.to_string()))
@@ -187,24 +164,25 @@ pub fn run(a: CoverArgs) -> Outcome {
         req.gamma[0],
         req.gamma[1],
         leaves.len(),
-        count("certified"),
-        count("refuted"),
-        count("undecided"),
+        summary.boxes.certified,
+        summary.boxes.refuted,
+        summary.boxes.undecided,
         a.out.display()
     ));
     emit(&format!(
         "  certified area {:.6e}, CC region area {area:.6e} (± {error:.1e}), ratio {:.4}; undecided area {:.3e}, band height {:.3e}",
-        f(&t.certified_area),
-        ratio,
-        f(&t.undecided_area),
-        f(&t.undecided_height)
+        summary.certified_area,
+        summary.ratio.unwrap_or(f64::NAN),
+        summary.undecided_area,
+        summary.undecided_band_height
     ));
     let [tc, tb, tr] = timings.seconds();
     emit(&format!("  thread time: criterion {tc:.1} s, box certification {tb:.1} s, refutation {tr:.1} s"));
-    if !t.certified_criterion_fails.is_empty() {
+    let fails = &summary.findings.certified_where_criterion_fails;
+    if !fails.is_empty() {
         emit(&format!(
             "  finding: {} certified boxes have a corner where the CC criterion fails (against Conjecture 1 (ii) => (iii)); see summary.json",
-            t.certified_criterion_fails.len()
+            fails.len()
         ));
     }
     Outcome::Success

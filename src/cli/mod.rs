@@ -15,6 +15,7 @@ mod plot_cmd;
 mod prove_cmd;
 mod refute_cmd;
 mod reproduce_cmd;
+mod schema_cmd;
 mod simulate_cmd;
 mod verify_cmd;
 
@@ -113,6 +114,30 @@ pub enum Command {
     Map(map_cmd::MapArgs),
     /// Figures (SVG or PNG): map panels, simulation maps, a certificate's cone on v = -1, a cover.
     Plot(plot_cmd::PlotArgs),
+    /// Write (or --check) the JSON Schemas of every --json output into a folder (docs/schema).
+    Schema(schema_cmd::SchemaArgs),
+}
+
+impl Command {
+    /// Whether the command was asked for JSON (`--json`): then errors are JSON too.
+    pub fn json(&self) -> bool {
+        match self {
+            Command::Certify(a) => a.json,
+            Command::Verify(a) => a.json,
+            Command::Classify(a) => a.json,
+            Command::Bodies(a) => a.json,
+            Command::Prove(a) => a.json,
+            Command::CheckProof(a) => a.json,
+            Command::Simulate(a) => a.json,
+            Command::Refute(a) => a.json,
+            Command::Reproduce(_)
+            | Command::Convert(_)
+            | Command::Cover(_)
+            | Command::Map(_)
+            | Command::Plot(_)
+            | Command::Schema(_) => false,
+        }
+    }
 }
 
 /// The body as typed (raw layer), shared by certify, classify and simulate; each command
@@ -182,19 +207,47 @@ pub fn run(cli: Cli, env: &Env) -> Outcome {
         Command::Map(a) => map_cmd::run(a),
         Command::Plot(a) => plot_cmd::run(a),
         Command::Reproduce(a) => reproduce_cmd::run(a),
+        Command::Schema(a) => schema_cmd::run(a),
     }
 }
 
 /// Parses the process arguments, runs the command, reports errors and maps the outcome to the
 /// exit status.
 pub fn main() -> ExitCode {
-    let outcome = run(Cli::parse(), &Env::default());
-    match &outcome {
-        Outcome::Usage(m) => eprintln!("error: {m}"),
-        Outcome::Internal(m) => eprintln!("internal error (a bug in chatter, please report it): {m}"),
-        Outcome::Success | Outcome::Negative => {}
-    }
+    let cli = Cli::parse();
+    let json = cli.command.json();
+    let outcome = run(cli, &Env::default());
+    report_error(&outcome, json);
     ExitCode::from(outcome.exit_code())
+}
+
+/// Reports a usage or internal error: under `--json`, as a `chatter.error/1` object on stdout
+/// unless the command already printed its JSON report (`verify` with an unreadable input: the
+/// report lists it); otherwise as text on stderr.
+pub fn report_error(outcome: &Outcome, json: bool) {
+    use crate::report::error::{ErrorKind, ErrorReport};
+    let (kind, message) = match outcome {
+        Outcome::Usage(m) => (ErrorKind::Usage, m),
+        Outcome::Internal(m) => (ErrorKind::Internal, m),
+        Outcome::Success | Outcome::Negative => return,
+    };
+    if json && !JSON_EMITTED.load(std::sync::atomic::Ordering::SeqCst) {
+        emit_report(&ErrorReport::new(kind, outcome.exit_code(), message));
+        return;
+    }
+    match kind {
+        ErrorKind::Usage => eprintln!("error: {message}"),
+        ErrorKind::Internal => eprintln!("internal error (a bug in chatter, please report it): {message}"),
+    }
+}
+
+/// Whether a JSON report has been printed on stdout by this process.
+static JSON_EMITTED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Prints a report as one line of JSON on stdout (see [`emit`]).
+pub(crate) fn emit_report<R: crate::report::Report>(report: &R) {
+    JSON_EMITTED.store(true, std::sync::atomic::Ordering::SeqCst);
+    emit(&crate::report::to_line(report));
 }
 
 /// Exit status when stdout is closed early (as if killed by SIGPIPE: 128 + 13).

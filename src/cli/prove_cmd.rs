@@ -1,14 +1,15 @@
 //! `chatter prove square`: the square-case lemmas written as a proof object, re-checked by the
 //! kernel before the files are written to proofs/.
 
-use super::{Outcome, emit};
+use super::{Outcome, emit, emit_report};
+use crate::report::prove::ProveReport;
+use crate::report::{self, Report};
 use crate::symbolic::crosscheck::cross_check;
 use crate::symbolic::report::{markdown, ron};
 use crate::symbolic::square::prove;
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::verify::{Verdict, verify_proof};
 use clap::{Args, ValueEnum};
-use serde_json::json;
 use std::path::PathBuf;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -85,9 +86,16 @@ pub fn run(a: ProveArgs) -> Outcome {
     };
     let conclusions = checked.as_ref().map(|c| c.conclusions.len()).unwrap_or(0);
     if a.json {
-        let obj = json!({"steps": file.steps.len(), "checked": checked.is_ok(), "failure": checked.as_ref().err(),
-            "producer_problems": builder.problems, "conclusions": conclusions, "cross_check": cross, "stale": stale});
-        emit(&obj.to_string());
+        emit_report(&ProveReport {
+            schema: ProveReport::SCHEMA,
+            verdict: if checked.is_ok() { report::Verdict::Accepted } else { report::Verdict::Rejected },
+            steps: file.steps.len(),
+            failure: checked.as_ref().err().cloned(),
+            producer_problems: builder.problems.clone(),
+            conclusions,
+            cross_check: cross.clone(),
+            stale: stale.clone(),
+        });
     } else {
         for (id, why) in &builder.problems {
             emit(&format!("producer problem at `{id}`: {why}"));

@@ -2,15 +2,16 @@
 //! backends before it is written (docs/certificate-format.md §10).
 
 use super::certify_cmd::ClaimArg;
-use super::{Env, Outcome, emit};
+use super::{Env, Outcome, emit, emit_report};
 use crate::exact::Q;
 use crate::refute::{RefuteConfig, refute};
+use crate::report::refute::RefuteReport;
+use crate::report::{Timings, ms};
 use chatter_kernel::certificate::Claim;
 use chatter_kernel::model::Shape;
 use chatter_kernel::refute::{Refutation, write};
 use chatter_kernel::verify::{Verdict, verify_refutation};
 use clap::Args;
-use serde_json::json;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -38,6 +39,9 @@ pub struct RefuteArgs {
     /// Print one JSON object instead of the one-line summary.
     #[arg(long)]
     pub json: bool,
+    /// With --json: include the wall-clock times (then the output differs from run to run).
+    #[arg(long)]
+    pub timings: bool,
     /// Iteration budget of the exact cone iteration.
     #[arg(long, default_value_t = RefuteConfig::default().max_iterations)]
     pub max_iterations: usize,
@@ -65,13 +69,13 @@ pub fn run(a: RefuteArgs, env: &Env) -> Outcome {
     let mut why = Vec::new();
     for claim in claims(a.claim) {
         match refute(n, &kappa, &gamma, claim, &cfg) {
-            Ok(r) => return checked(&a, r, env, start),
+            Ok(r) => return checked(&a, r, env, start, [&kappa, &gamma]),
             Err(e) => why.push(format!("{}: {e}", claim.name())),
         }
     }
     let head = head(n, &kappa, &gamma);
     if a.json {
-        emit(&json!({"status": "not-refuted", "n": n, "kappa": kappa.to_string(), "gamma": gamma.to_string(), "reasons": why}).to_string());
+        emit_report(&RefuteReport::not_refuted(n, &kappa, &gamma, why));
     } else {
         emit(&format!("NOT REFUTED {head}: {}", why.join("; ")));
     }
@@ -83,7 +87,7 @@ fn head(n: u64, kappa: &Q, gamma: &Q) -> String {
 }
 
 /// Checks the refutation with the kernel, then writes and reports it.
-fn checked(a: &RefuteArgs, r: Refutation, env: &Env, start: Instant) -> Outcome {
+fn checked(a: &RefuteArgs, r: Refutation, env: &Env, start: Instant, [kq, gq]: [&Q; 2]) -> Outcome {
     let search = start.elapsed();
     let t = Instant::now();
     let verdict = verify_refutation(&r, Default::default(), &env.backends);
@@ -104,7 +108,11 @@ fn checked(a: &RefuteArgs, r: Refutation, env: &Env, start: Instant) -> Outcome 
     let (k, g) = (kappa.texts()[0].to_string(), gamma.texts()[0].to_string());
     let v = if done.v_positive { "v > 0" } else { "v = 0" };
     if a.json {
-        emit(&json!({"status": "refuted", "n": n, "kappa": k, "gamma": g, "refutes": done.claim.name(), "points": done.points, "last": done.last, "v_positive": done.v_positive, "output": a.output.as_ref().map(|p| p.display().to_string())}).to_string());
+        let mut report =
+            RefuteReport::refuted(kq, gq, &done, a.output.as_ref().map(|p| p.display().to_string()));
+        report.timings =
+            a.timings.then(|| Timings { search_ms: ms(search), exactify_ms: 0.0, kernel_ms: ms(kernel) });
+        emit_report(&report);
     } else {
         let out =
             a.output.as_ref().map_or(" (no -o: not written)".to_string(), |p| format!(" -> {}", p.display()));

@@ -1,18 +1,15 @@
 //! `chatter simulate` (issue 4).
 
-use super::{self as cli, emit};
+use super::{self as cli, emit, emit_report};
 use crate::exact::{Q, parse_user_number};
 use crate::plot::save;
 use crate::plot::trajectory::TrajectoryFigure;
+use crate::report::simulate as report;
 use crate::simulate::classify::DEFAULT_PCC_EPSILON;
-use crate::simulate::pattern::{self, find};
-use crate::simulate::{
-    Arithmetic, Brief, Decision, Initial, Model, Options, Outcome, Run, Shape, counts, record, simulate,
-    simulate_many,
-};
+use crate::simulate::pattern;
+use crate::simulate::{Arithmetic, Decision, Initial, Model, Options, Outcome, Run, Shape, record, simulate};
 use chatter_kernel::model::BodyError;
 use clap::Args;
-use serde_json::{Value, json};
 use std::io::IsTerminal;
 use std::path::PathBuf;
 
@@ -22,8 +19,6 @@ pub const MAX_IMPACTS: usize = 10_000_000;
 pub const MAX_N: u64 = crate::model::float::MAX_FLOAT_CONTACTS;
 /// Largest number of runs accepted.
 pub const MAX_RUNS: u64 = 1_000_000;
-/// Longest impact sequence printed in JSON.
-const JSON_SEQUENCE: usize = 1000;
 
 /// Raw arguments of `chatter simulate`.
 #[derive(Args, Debug)]
@@ -224,17 +219,9 @@ fn start_text(v: &Validated) -> String {
     }
 }
 
-fn contact_counts(run: &Run, n: usize) -> Vec<usize> {
-    let mut c = vec![0; n];
-    for &k in &run.sequence {
-        c[k as usize] += 1;
-    }
-    c
-}
-
 fn single_text(v: &Validated, run: &Run) -> Vec<String> {
     let n = v.model.n();
-    let counts = contact_counts(run, n);
+    let counts = report::contact_counts(run, n);
     let counts = counts.iter().enumerate().map(|(k, c)| format!("{k}: {c}")).collect::<Vec<_>>().join(", ");
     let mut lines = vec![
         format!(
@@ -273,51 +260,6 @@ fn single_text(v: &Validated, run: &Run) -> Vec<String> {
     lines
 }
 
-fn single_json(v: &Validated, run: &Run) -> Value {
-    let n = v.model.n();
-    let d = v.model.shape().dim();
-    let start = match &v.initial {
-        Initial::RandomDrop { seed } => json!({"kind": "random-drop", "seed": seed}),
-        Initial::Given(s) => json!({
-            "kind": "given",
-            "position": s.q[..d].iter().map(ToString::to_string).collect::<Vec<_>>(),
-            "velocity": s.p[..d].iter().map(ToString::to_string).collect::<Vec<_>>(),
-        }),
-    };
-    let pat =
-        find(&run.sequence).map(|p| json!({"transient": p.transient, "cycle": p.cycle, "tail": p.tail}));
-    let tie = match &run.decision {
-        Decision::Tie { contacts, exact, .. } => json!({"contacts": contacts, "exact": exact}),
-        _ => Value::Null,
-    };
-    let seq = &run.sequence[..run.sequence.len().min(JSON_SEQUENCE)];
-    json!({
-        "outcome": run.outcome.name(),
-        "decided_by": run.decision.key(),
-        "decided_by_text": run.decision.describe(),
-        "impacts": run.impacts,
-        "budget": run.budget,
-        "n": v.n,
-        "kappa": v.kappa.to_string(),
-        "gamma": v.gamma.to_string(),
-        "arithmetic": v.arithmetic.name(),
-        "start": start,
-        "sequence_summary": pattern::summary_for(&run.sequence, v.model.shape()),
-        "pattern": pat,
-        "sequence": seq,
-        "sequence_truncated": run.sequence.len() > JSON_SEQUENCE,
-        "contact_counts": contact_counts(run, n),
-        "total_time": run.time,
-        "accumulation_time": run.accumulation,
-        "log2_time_left_after_last_impact": run.tail_log2,
-        "contraction_bits_per_impact": run.contraction,
-        "simultaneous": tie,
-        "pcc_criterion_overruled": run.pcc_overruled,
-        "trajectory": v.trajectory.as_ref().map(|p| p.display().to_string()),
-        "plot": v.plot.as_ref().map(|p| p.display().to_string()),
-    })
-}
-
 fn write_file(path: &PathBuf, text: &str) -> Result<(), String> {
     std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))
 }
@@ -346,7 +288,10 @@ fn run_single(v: &Validated) -> cli::Outcome {
         }
     }
     if v.json {
-        emit(&single_json(v, &run).to_string());
+        let mut report = report::of_run(&v.model, &v.initial, v.arithmetic, &run);
+        report.trajectory = v.trajectory.as_ref().map(|p| p.display().to_string());
+        report.plot = v.plot.as_ref().map(|p| p.display().to_string());
+        emit_report(&report);
     } else {
         for line in single_text(v, &run) {
             emit(&line);
@@ -370,45 +315,25 @@ fn run_many(v: &Validated, runs: u64) -> cli::Outcome {
     } else {
         bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
     }
-    let tick = || bar.inc(1);
-    let briefs: Vec<Brief> = simulate_many(&v.model, v.seed, runs, v.arithmetic, &v.opts, &tick);
+    let r = report::batch(&v.model, v.seed, runs, v.arithmetic, &v.opts, &|| bar.inc(1));
     bar.finish_and_clear();
-    let c = counts(&briefs);
-    let mut by: std::collections::BTreeMap<&str, usize> = std::collections::BTreeMap::new();
-    for b in &briefs {
-        *by.entry(b.decided_by).or_default() += 1;
-    }
-    let mean = briefs.iter().map(|b| b.impacts as f64).sum::<f64>() / briefs.len() as f64;
-    let last_seed = v.seed.wrapping_add(runs - 1);
     if v.json {
-        let counts: serde_json::Map<String, Value> =
-            Outcome::ALL.iter().zip(c).map(|(o, k)| (o.name().to_string(), json!(k))).collect();
-        let obj = json!({
-            "runs": runs,
-            "seeds": [v.seed, last_seed],
-            "n": v.n,
-            "kappa": v.kappa.to_string(),
-            "gamma": v.gamma.to_string(),
-            "arithmetic": v.arithmetic.name(),
-            "budget": v.opts.budget,
-            "counts": counts,
-            "decided_by": by,
-            "mean_impacts": mean,
-        });
-        emit(&obj.to_string());
+        emit_report(&r);
     } else {
         emit(&format!(
-            "{}, {runs} random drops (seeds {}..={last_seed}), {}, budget {} impacts",
+            "{}, {runs} random drops (seeds {}..={}), {}, budget {} impacts",
             head(v),
-            v.seed,
+            r.seeds[0],
+            r.seeds[1],
             arithmetic_text(v.arithmetic),
-            v.opts.budget
+            r.budget
         ));
-        let list = Outcome::ALL.iter().zip(c).map(|(o, k)| format!("{o} {k}")).collect::<Vec<_>>().join(", ");
+        let count = |o: &Outcome| r.counts.get(o.name()).copied().unwrap_or(0);
+        let list = Outcome::ALL.iter().map(|o| format!("{o} {}", count(o))).collect::<Vec<_>>().join(", ");
         emit(&format!("outcomes: {list}"));
-        let by = by.iter().map(|(k, c)| format!("{k} {c}")).collect::<Vec<_>>().join(", ");
+        let by = r.decided_by.iter().map(|(k, c)| format!("{k} {c}")).collect::<Vec<_>>().join(", ");
         emit(&format!("decided by: {by}"));
-        emit(&format!("mean impacts: {mean:.1}"));
+        emit(&format!("mean impacts: {:.1}", r.mean_impacts));
     }
     cli::Outcome::Success
 }

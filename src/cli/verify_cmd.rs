@@ -1,6 +1,6 @@
 //! `chatter verify`.
 
-use super::{Env, Outcome, emit};
+use super::{Env, Outcome, emit, emit_report};
 use crate::verify::expect::Manifest;
 use crate::verify::files;
 use crate::verify::{DEFAULT_MAX_FILE_SIZE, DEFAULT_TIME_LIMIT, Options, Summary, verify_all};
@@ -8,7 +8,6 @@ use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::verify::Backend;
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
-use serde_json::json;
 use std::path::PathBuf;
 use std::time::Duration;
 
@@ -123,7 +122,7 @@ pub fn run(a: VerifyArgs, env: &Env) -> Outcome {
     let summary = Summary::of(&verdicts, listing.skipped);
     let mismatches = manifest.as_ref().map(|m| m.mismatches(&verdicts));
     if a.json {
-        emit(&json!({"files": verdicts, "summary": summary, "mismatches": mismatches}).to_string());
+        emit_report(&crate::report::verify::of(&verdicts, summary, mismatches.clone()));
     } else {
         emit(&summary.line());
         if let Some(ms) = &mismatches {

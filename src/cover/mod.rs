@@ -5,6 +5,8 @@
 //! pure function of the box, so the output does not depend on the number of threads.
 
 pub mod area;
+pub mod summary;
+pub use summary::CoverSummary;
 
 use crate::certify::{ClaimChoice, Request, certify};
 use crate::exact::{Q, QExt};

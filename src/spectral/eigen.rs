@@ -64,6 +64,21 @@ impl Dominant {
         }
     }
 
+    /// A stable key for reports: `positive`, `negative`, `plus-minus`, `non-real`,
+    /// `positive-and-non-real`, `negative-and-non-real` or `zero`.
+    pub fn key(self) -> &'static str {
+        match self {
+            Dominant::Positive => "positive",
+            Dominant::Negative => "negative",
+            Dominant::PlusMinus { .. } => "plus-minus",
+            Dominant::NonReal => "non-real",
+            Dominant::RealAndNonReal { real_positive: true } => "positive-and-non-real",
+            Dominant::RealAndNonReal { real_positive: false } => "negative-and-non-real",
+            Dominant::Zero => "zero",
+        }
+    }
+
+    /// The dominant eigenvalue(s) in words, for the text output.
     pub fn describe(self) -> &'static str {
         match self {
             Dominant::Positive => "real and positive",
@@ -170,12 +185,13 @@ impl<F: OrderedField> Spectrum<F> {
         out
     }
 
-    /// The complex pair a +- bi: enclosures of a and of |z|^2.
-    fn non_real_pair(&mut self, digits: usize) -> String {
+    /// The complex pair a +- bi: exact rational enclosures (lo, hi) of a and of |z|^2, of
+    /// width about 10^-(digits+2) (the squared modulus is (0, 0) if it cannot be bounded).
+    pub fn non_real_enclosure(&mut self, digits: usize) -> ((Q, Q), (Q, Q)) {
         let p = &self.char_poly;
         let w = Q::pow10(-(digits as i64) - 2);
         let enc = |x: &F| x.enclose(&w);
-        let (re, modsq) = if p.degree() == Some(2) {
+        if p.degree() == Some(2) {
             // t^2 + a1 t + a0: Re = -a1/2, |z|^2 = a0.
             let (l, h) = enc(&p.coeff(1));
             ((-h / Q::int(2), -l / Q::int(2)), enc(&p.coeff(0)))
@@ -192,7 +208,12 @@ impl<F: OrderedField> Spectrum<F> {
                 (Q::int(0), Q::int(0))
             };
             (re, modsq)
-        };
+        }
+    }
+
+    /// The complex pair a +- bi as text: enclosures of a and of |z|^2.
+    fn non_real_pair(&mut self, digits: usize) -> String {
+        let (re, modsq) = self.non_real_enclosure(digits);
         let d = |x: &Q, r| x.decimal(digits, r);
         use crate::exact::Rounding::{Down, Up};
         format!(

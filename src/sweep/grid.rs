@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 pub const MAX_STEPS: u32 = 10_000;
 
 /// The horizontal variable of a map.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum Variable {
     /// rho = sqrt(kappa), the paper's horizontal axis; kappa = rho^2 is exact.
@@ -19,9 +19,13 @@ pub enum Variable {
 
 /// One axis `a:b:STEPS`: the centres of STEPS equal cells of [a, b],
 /// a + (i + 1/2)(b - a)/STEPS for i = 0..STEPS-1 (so (0, 1) never touches 0 or 1).
-#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct Axis {
+    /// Canonical `p/q`.
+    #[schemars(with = "String")]
     pub lo: Q,
+    /// Canonical `p/q`.
+    #[schemars(with = "String")]
     pub hi: Q,
     pub steps: u32,
 }
@@ -58,7 +62,7 @@ impl Axis {
 }
 
 /// A map's grid: the body (regular n-gon), the horizontal axis and the gamma axis.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct Grid {
     pub n: u64,
     pub variable: Variable,

@@ -9,7 +9,7 @@ use serde::Serialize;
 use std::collections::BTreeMap;
 
 /// What was computed at every point.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize, serde::Deserialize)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, serde::Deserialize, schemars::JsonSchema)]
 pub struct Computed {
     pub certify: bool,
     pub refute: bool,
@@ -20,7 +20,7 @@ pub struct Computed {
 }
 
 /// A point where two verdicts disagree.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, schemars::JsonSchema)]
 pub struct Disagreement {
     pub index: usize,
     pub rho: String,
@@ -73,15 +73,17 @@ pub const KINDS: [(&str, &str); 10] = [
 ];
 
 /// A kind of disagreement: what it means and at how many points it occurs.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, schemars::JsonSchema)]
 pub struct KindCount {
     pub meaning: &'static str,
     pub points: u64,
 }
 
 /// summary.json.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, schemars::JsonSchema)]
 pub struct Summary {
+    /// `chatter.map/1` (docs/json.md).
+    pub schema: &'static str,
     pub grid: Grid,
     pub computed: Computed,
     pub points: usize,
@@ -182,6 +184,7 @@ impl Summary {
             })
             .collect();
         Summary {
+            schema: <Summary as crate::report::Report>::SCHEMA,
             grid: grid.clone(),
             computed: computed.clone(),
             points: rows.len(),
@@ -195,4 +198,8 @@ impl Summary {
     pub fn json(&self) -> String {
         serde_json::to_string_pretty(self).expect("serialisable") + "\n"
     }
+}
+
+impl crate::report::Report for Summary {
+    const SCHEMA: &'static str = "chatter.map/1";
 }

@@ -19,7 +19,7 @@ use serde::Serialize;
 use std::cmp::Ordering;
 
 /// One sampled point.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, schemars::JsonSchema)]
 pub struct PointCheck {
     pub gamma: String,
     pub kappa: String,
@@ -39,7 +39,7 @@ pub struct PointCheck {
 }
 
 /// The summary of the cross-check.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, schemars::JsonSchema)]
 pub struct CrossCheck {
     pub seed: u64,
     pub points: usize,

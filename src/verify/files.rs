@@ -26,7 +26,7 @@ pub enum Entry {
 }
 
 /// Files not checked, by reason (reported in the summary).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, schemars::JsonSchema)]
 pub struct Skipped {
     /// Files in a searched directory whose name is not a certificate's (`*.ron`, `*.ron.gz`,
     /// `*.json`, `*.json.gz`).

@@ -40,9 +40,13 @@ impl Status {
 }
 
 /// One line of `chatter verify` output.
-#[derive(Clone, Debug, Serialize)]
+/// In JSON (`chatter.verify/1`, see [`crate::report::verify`]) the status is the report's
+/// `verdict`; the kernel's code and locus are described loosely in the schema (their types live
+/// in the trusted crate, which does not depend on schemars).
+#[derive(Clone, Debug, Serialize, schemars::JsonSchema)]
 pub struct FileVerdict {
     pub path: String,
+    #[serde(skip)]
     pub status: Status,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub claim: Option<&'static str>,
@@ -57,9 +61,13 @@ pub struct FileVerdict {
     /// Whether K contains the post-impact velocity of a pure downward translation.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub contains_translation: Option<bool>,
+    /// The rejection's code (kebab-case, docs/certificate-format.md).
     #[serde(skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<String>")]
     pub code: Option<Code>,
+    /// Where the first failing check is (an object with a `kind`).
     #[serde(skip_serializing_if = "Option::is_none")]
+    #[schemars(with = "Option<serde_json::Map<String, serde_json::Value>>")]
     pub locus: Option<Locus>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub reason: Option<String>,
@@ -78,7 +86,7 @@ pub struct FileVerdict {
 }
 
 /// What an accepted refutation shows.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, schemars::JsonSchema)]
 pub struct RefutationReport {
     /// The claim refuted (every stronger claim is refuted too).
     pub refutes: &'static str,
@@ -355,7 +363,7 @@ pub fn verify_all(
 }
 
 /// Counts of verdicts, and the exit rule over all of them.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, schemars::JsonSchema)]
 pub struct Summary {
     /// Inputs checked (files and problems).
     pub inputs: usize,

@@ -21,6 +21,7 @@ mod readme;
 mod refute;
 mod regression;
 mod reproduce;
+mod schema;
 mod simulate;
 mod spectral;
 mod sweep;

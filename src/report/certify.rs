@@ -1,0 +1,85 @@
+//! `chatter.certify/1`: a certificate made (or not) at a point or on a box of parameters.
+//! Build it with [`certify`] (runs the pipeline) or [`of`] (from a pipeline report).
+
+use super::finder::FinderReport;
+use super::{Interval, Report, Timings, Verdict, ms};
+use crate::certify::{self as pipeline, Request};
+use schemars::JsonSchema;
+use serde::Serialize;
+
+/// `chatter certify --json`.
+#[derive(Clone, Debug, Serialize, JsonSchema)]
+pub struct CertifyReport {
+    /// `chatter.certify/1`.
+    pub schema: &'static str,
+    /// `certified` or `not-certified`.
+    pub verdict: Verdict,
+    pub n: u64,
+    /// kappa: [lo, hi], equal ends for a point certificate (for an irrational kappa, a rational
+    /// within 2^-40 below it, see `kappa_field`).
+    pub kappa: Interval,
+    /// kappa as an element of Q(cos 2 pi/n) in canonical text (docs/certificate-format.md §12),
+    /// when it is irrational (`--kappa "1/40 + 1/100*c"`, `--body NAME`); null otherwise.
+    pub kappa_field: Option<String>,
+    /// gamma: [lo, hi], equal ends for a point certificate.
+    pub gamma: Interval,
+    /// The claim certified (`EffectivelyInvariant`, `CcOrPccFromAllDown`, `CompleteChatterFromAllDown`).
+    pub claim: Option<&'static str>,
+    /// Generators of the cone.
+    pub generators: Option<usize>,
+    /// The largest denominator of the certificate's numbers, in bits.
+    pub max_denominator_bits: Option<u64>,
+    /// The file written (certified with `-o`).
+    pub output: Option<String>,
+    /// Why no certificate was made.
+    pub reason: Option<String>,
+    /// How the cone was found.
+    pub method: Option<&'static str>,
+    /// The float finder's verdict (when it ran).
+    pub finder: Option<FinderReport>,
+    /// Notes on the claims not certified.
+    pub notes: Vec<String>,
+    /// Only with `--timings`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub timings: Option<Timings>,
+}
+
+impl Report for CertifyReport {
+    const SCHEMA: &'static str = "chatter.certify/1";
+}
+
+/// The report of a pipeline run on `req`; `output` is the file written, if any; `timings`
+/// includes the wall-clock times.
+pub fn of(req: &Request, r: &pipeline::Report, output: Option<String>, timings: bool) -> CertifyReport {
+    let cert = r.result.as_ref().ok();
+    let (kappa_hi, gamma_hi) = req.upper.as_ref().map_or((&req.kappa, &req.gamma), |(k, g)| (k, g));
+    let t = &r.timings;
+    CertifyReport {
+        schema: CertifyReport::SCHEMA,
+        verdict: if cert.is_some() { Verdict::Certified } else { Verdict::NotCertified },
+        n: req.n,
+        kappa: Interval::of(&req.kappa, kappa_hi),
+        kappa_field: req.kappa_field.clone(),
+        gamma: Interval::of(&req.gamma, gamma_hi),
+        claim: cert.map(|c| c.claim.name()),
+        generators: cert.map(|c| c.cone.len()),
+        max_denominator_bits: cert.map(|_| r.max_denominator_bits),
+        output: output.filter(|_| cert.is_some()),
+        reason: r.result.as_ref().err().map(ToString::to_string),
+        method: r.method,
+        finder: r.finder.as_ref().map(FinderReport::of),
+        notes: r.notes.clone(),
+        timings: timings.then(|| Timings {
+            search_ms: ms(t.finder),
+            exactify_ms: ms(t.exactify),
+            kernel_ms: ms(t.kernel),
+        }),
+    }
+}
+
+/// Runs the pipeline on `req` (nothing is written) and reports it without timings; the
+/// pipeline's report holds the certificate itself.
+pub fn certify(req: &Request) -> (CertifyReport, pipeline::Report) {
+    let r = pipeline::certify(req);
+    (of(req, &r, None, false), r)
+}
