@@ -2,6 +2,8 @@
 
 from fractions import Fraction as F
 
+import pytest
+
 import chatter
 
 
@@ -73,3 +75,11 @@ def test_map_kappa_axis_rho_is_float():
     m = chatter.map(4, kappa="0:1/2:3", gamma=(0, F(1, 5), 2))
     assert len(m["kappa"]) == 6 and isinstance(m["rho"][0], float)
     assert m["certified"] == [None] * 6  # not asked
+
+
+def test_map_as_numpy_arrays():
+    np = pytest.importorskip("numpy")
+    m = chatter.map(3, rho=(0, 1, 3), gamma=(0, 1, 3), numpy=True)
+    assert isinstance(m["gamma"], np.ndarray) and m["gamma"].dtype == np.float64
+    assert np.allclose(m["kappa"], m["rho"] ** 2)
+    assert m["cc_criterion"].dtype == np.bool_ and m["index"].tolist() == list(range(9))
