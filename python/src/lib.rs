@@ -2,7 +2,7 @@
 //! it; docs/python.md describes the API). Every function takes exact numbers as text (the
 //! package turns `Fraction` and `int` into canonical text), runs without the GIL, and returns
 //! JSON text that the package turns into Python objects, canonical rationals into `Fraction`s.
-//! Each result is one `serde_json::Value` made by one function per command ([`reports`]).
+//! Each result is one `serde_json::Value` made by one function per command (module `reports`).
 //! Errors become the exception classes of `chatter._errors`, with the rejection code.
 
 mod check;
