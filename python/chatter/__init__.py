@@ -40,8 +40,8 @@ __all__ = [
 def _n(n):
     if isinstance(n, bool) or not isinstance(n, int):
         raise UsageError(f"n: {n!r} is not an int", "invalid-input")
-    if n < 0:
-        raise UsageError(f"n: {n} is negative", "invalid-input")
+    if not 0 <= n < 2**64:
+        raise UsageError(f"n: {n} is outside 0..2**64", "invalid-input")
     return n
 
 

@@ -24,6 +24,12 @@ BAD = [
     (chatter.simulate, (5, F(1, 6), F(1, 100), 0, 200, True), "unsupported-n"),
     (chatter.map, (3, (0, 1, 0), (0, 1, 3)), "invalid-input"),
     (chatter.map, (3, (1, 0, 3), (0, 1, 3)), "invalid-input"),
+    (chatter.map, (3, (0, 1, 10**6), (0, 1, 3)), "invalid-input"),
+    (chatter.certify, (2**70, 1, 0), "invalid-input"),
+    (chatter.certify, (-3, 1, 0), "invalid-input"),
+    (chatter.certify, (4, "1" * 5000, F(1, 100)), "invalid-number"),
+    (chatter.certify, (4, F(1, 6), F(1, 100), "everything"), "invalid-claim"),
+    (chatter.verify, ("",), "unreadable"),
 ]
 
 
@@ -33,6 +39,11 @@ def test_bad_input_raises_usage_error(fn, args, code):
         fn(*args)
     assert e.value.code == code and e.value.exit_code == 2
     assert isinstance(e.value, ValueError) and isinstance(e.value, chatter.ChatterError)
+
+
+def test_malformed_certificate_text_is_rejected_not_raised():
+    v = chatter.verify("(format: 1")
+    assert not v.ok and v.code == "syntax" and "line 1" in v.message
 
 
 def test_simulate_impacts_and_runs_limits():
