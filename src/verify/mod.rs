@@ -6,6 +6,7 @@
 pub mod expect;
 pub mod files;
 pub mod read;
+pub mod text;
 
 use chatter_kernel::certificate::{Code, Encoding, Locus, Rejection};
 use chatter_kernel::exact::ParseLimits;

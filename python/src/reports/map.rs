@@ -1,0 +1,87 @@
+//! `map`: the grid of `chatter map` evaluated in memory, as columns named as in points.csv
+//! (docs/map.md), with the certificate and refutation texts in place of their paths.
+
+use crate::fail::Fail;
+use chatter::sweep::grid::{Axis, Grid, Shard, Variable};
+use chatter::sweep::point::Tasks;
+use chatter::sweep::table::Row;
+use chatter::sweep::{self, Done, Request};
+use serde_json::{Map, Value, json};
+
+/// Largest number of simulated drops per point (as the command line).
+const MAX_RUNS: u64 = 100_000;
+
+/// The arguments as the package passes them: the axes as `a:b:STEPS`.
+pub struct Args {
+    pub n: u64,
+    pub variable: String,
+    pub x: String,
+    pub gamma: String,
+    pub certify: bool,
+    pub refute: bool,
+    pub simulate: Option<u64>,
+}
+
+fn request(a: &Args) -> Result<Request, Fail> {
+    let bad = |m: String| Fail::usage("invalid-input", m);
+    let variable = match a.variable.as_str() {
+        "rho" => Variable::Rho,
+        "kappa" => Variable::Kappa,
+        v => return Err(bad(format!("the horizontal variable {v:?} is not rho or kappa"))),
+    };
+    let x = Axis::parse(&a.x).map_err(|e| bad(format!("{}: {e}", a.variable)))?;
+    let gamma = Axis::parse(&a.gamma).map_err(|e| bad(format!("gamma: {e}")))?;
+    let grid = Grid { n: a.n, variable, x, gamma };
+    grid.validate().map_err(bad)?;
+    if a.simulate.is_some_and(|r| !(1..=MAX_RUNS).contains(&r)) {
+        return Err(bad(format!("simulate: runs must be between 1 and {MAX_RUNS}")));
+    }
+    let tasks = Tasks { certify: a.certify, refute: a.refute, simulate: a.simulate };
+    Ok(Request { grid, tasks, shard: Shard::ALL })
+}
+
+/// One point as a JSON object with the columns of points.csv.
+fn point(row: &Row, done: &Done, variable: Variable) -> Map<String, Value> {
+    let sim = row.sim.as_ref();
+    let count = |i: usize| sim.map(|s| s.counts[i]);
+    let rho = match variable {
+        Variable::Rho => json!(row.rho),
+        Variable::Kappa => json!(row.rho.parse::<f64>().ok()),
+    };
+    let obj = json!({
+        "index": row.index, "n": row.n, "rho": rho,
+        "kappa": row.kappa.to_string(), "gamma": row.gamma.to_string(),
+        "cc_criterion": row.cc_criterion, "pcc_criterion": row.pcc_criterion,
+        "finder": row.finder, "certified": row.certified, "claim": row.claim, "refuted": row.refuted,
+        "sim_runs": sim.map(|s| s.runs), "sim_cc": count(0), "sim_pcc": count(1), "sim_icc": count(2),
+        "sim_undecided": count(3), "sim_simultaneous": count(4),
+        "mean_impacts": sim.map(|s| s.mean_impacts()),
+        "certificate": done.certificate, "refutation": done.refutation,
+    });
+    match obj {
+        Value::Object(m) => m,
+        _ => Map::new(),
+    }
+}
+
+/// Rows to columns, one per column of points.csv (keys in JSON order, i.e. sorted).
+fn columns(rows: Vec<Map<String, Value>>) -> Value {
+    let header = chatter::sweep::table::HEADER.split(',');
+    let cols = header.map(|k| {
+        let col: Vec<Value> = rows.iter().map(|r| r.get(k).cloned().unwrap_or(Value::Null)).collect();
+        (k.to_string(), Value::Array(col))
+    });
+    Value::Object(cols.collect())
+}
+
+/// Evaluates every point of the grid (in parallel, on rayon's pool) and returns the columns.
+pub fn value(a: &Args) -> Result<Value, Fail> {
+    let req = request(a)?;
+    let done = sweep::run(&req, &|| {});
+    if let Some(d) = done.iter().find(|d| d.internal.is_some()) {
+        let why = d.internal.clone().unwrap_or_default();
+        return Err(Fail::internal("internal", format!("point {}: {why}", d.row.index)));
+    }
+    let rows = done.iter().map(|d| point(&d.row, d, req.grid.variable)).collect();
+    Ok(columns(rows))
+}
