@@ -11,7 +11,9 @@ use chatter::exact::{
     Algebraic, CosField, MAX_N, NumberError, OrderedField, ParseLimits, Q, Ring, cos_minimal_polynomial,
     parse_canonical, to_canonical,
 };
-use chatter::spectral::number_field::{Nf, NumberField, cos_minimal_polynomial as spectral_minimal_polynomial};
+use chatter::spectral::number_field::{
+    Nf, NumberField, cos_minimal_polynomial as spectral_minimal_polynomial,
+};
 use malachite::Integer;
 use malachite::base::num::arithmetic::traits::{Ceiling, Floor, PowerOf2};
 use malachite::rational::Rational;
@@ -377,7 +379,10 @@ fn generator_is_cos_2pi_over_n() {
         let (lo, hi) = g.enclose(&w);
         assert!(&hi - &lo <= w, "n = {n}");
         let r = cos_ref(1, n);
-        assert!(Iv { lo: q_to_rat(&lo), hi: q_to_rat(&hi) }.meets(&r), "generator of n = {n} is not cos(2 pi/{n})");
+        assert!(
+            Iv { lo: q_to_rat(&lo), hi: q_to_rat(&hi) }.meets(&r),
+            "generator of n = {n} is not cos(2 pi/{n})"
+        );
         if k.degree() > 1 {
             assert_eq!(g.to_string(), "c");
             assert_eq!(g.coeffs(), &[Q::zero(), Q::one()]);
@@ -537,7 +542,8 @@ proptest! {
 /// and hi while they agree), denominators up to 2^max_bits.
 fn convergents(iv: &Iv, max_bits: u64) -> Vec<Rational> {
     let (mut a, mut b) = (iv.lo.clone(), iv.hi.clone());
-    let (mut p0, mut q0, mut p1, mut q1) = (Integer::from(0), Integer::from(1), Integer::from(1), Integer::from(0));
+    let (mut p0, mut q0, mut p1, mut q1) =
+        (Integer::from(0), Integer::from(1), Integer::from(1), Integer::from(0));
     let mut out = Vec::new();
     loop {
         let (fa, fb) = (Floor::floor(&a), Floor::floor(&b));
@@ -547,7 +553,7 @@ fn convergents(iv: &Iv, max_bits: u64) -> Vec<Rational> {
         let p = &fa * &p1 + &p0;
         let q = &fa * &q1 + &q0;
         out.push(Rational::from_integers(p.clone(), q.clone()));
-        if Rational::from(q.clone()) > pow2(max_bits as i64) {
+        if q > Integer::power_of_2(max_bits) {
             return out;
         }
         (p0, q0, p1, q1) = (p1, q1, p, q);
@@ -572,7 +578,8 @@ fn generator_minus_convergents() {
         let mut prev: Option<Algebraic<Q>> = None;
         for (i, pq) in conv.iter().enumerate() {
             let d = c.minus(&rational(pq));
-            let want = r.sub(&Iv::exact(pq.clone())).sign().expect("reference separates c from its convergents");
+            let want =
+                r.sub(&Iv::exact(pq.clone())).sign().expect("reference separates c from its convergents");
             // Even convergents lie below, odd ones above.
             assert_eq!(want, if i % 2 == 0 { Ordering::Greater } else { Ordering::Less }, "n = {n}, i = {i}");
             assert_eq!(d.sign(), want, "sign of c - {pq} for n = {n}");
@@ -623,7 +630,8 @@ fn zero_elements_have_sign_equal() {
         }
         let kb = field_big(n);
         let cb = kb.generator();
-        let psib: Vec<Algebraic<BigRational>> = kb.minimal_polynomial().iter().map(|a| Algebraic::rational(a.clone())).collect();
+        let psib: Vec<Algebraic<BigRational>> =
+            kb.minimal_polynomial().iter().map(|a| Algebraic::rational(a.clone())).collect();
         assert_eq!(horner(&psib, &cb).sign(), Ordering::Equal, "n = {n}, num backend");
     }
 }
@@ -778,15 +786,46 @@ fn non_canonical_spellings_are_rejected() {
     assert_eq!(e("1/2 + c^7"), NumberError::PowerTooHigh { power: 7, degree: 2 });
     assert_eq!(e("-0"), NumberError::NegativeZero);
     assert_eq!(e(""), NumberError::Empty);
-    for s in ["1/2+c", "1/2 +c", "1/2+ c", "+c", "1/2 - -c", "1/2 + -c", " c", "c ", "c  ", "1/2  + c", "2c", "c*2",
-        "c^", "c^x", "c^-1", "c^100", "1/2 + ", "- c", "--c", "c c", "cc", "c^2^1", "1/2 + c +", "C", "c\n", "\tc",
-        "1/2 + (c)", "c/2", "1/2*c*c"]
-    {
+    for s in [
+        "1/2+c",
+        "1/2 +c",
+        "1/2+ c",
+        "+c",
+        "1/2 - -c",
+        "1/2 + -c",
+        " c",
+        "c ",
+        "c  ",
+        "1/2  + c",
+        "2c",
+        "c*2",
+        "c^",
+        "c^x",
+        "c^-1",
+        "c^100",
+        "1/2 + ",
+        "- c",
+        "--c",
+        "c c",
+        "cc",
+        "c^2^1",
+        "1/2 + c +",
+        "C",
+        "c\n",
+        "\tc",
+        "1/2 + (c)",
+        "c/2",
+        "1/2*c*c",
+    ] {
         assert!(parse(5, s).is_err(), "{s:?} accepted");
     }
     // Degree-1 fields: c is rational and has no power in the text.
     for n in [3u64, 4, 6] {
-        assert_eq!(parse(n, "c").expect_err("c"), NumberError::PowerTooHigh { power: 1, degree: 1 }, "n = {n}");
+        assert_eq!(
+            parse(n, "c").expect_err("c"),
+            NumberError::PowerTooHigh { power: 1, degree: 1 },
+            "n = {n}"
+        );
         assert!(parse(n, "1/2 + c").is_err());
     }
     // Degree-3 field: c^2 fine, c^3 not.
