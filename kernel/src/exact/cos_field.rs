@@ -230,7 +230,7 @@ fn parse_terms<F: Field>(s: &str, degree: usize, limits: ParseLimits) -> Result<
 fn parse_term<F: Field>(t: &str, limits: ParseLimits) -> Result<(F, usize), NumberError> {
     let (coeff, power) = match t.split_once(GENERATOR) {
         None => (t, None),
-        Some((r, p)) => (r.strip_suffix('*').unwrap_or(if r.is_empty() { "1" } else { "?" }), Some(p)),
+        Some((r, p)) => (r.strip_suffix('*').unwrap_or(if r.is_empty() { "1" } else { r }), Some(p)),
     };
     if coeff.starts_with('-') {
         return Err(NumberError::InvalidCharacter('-'));
