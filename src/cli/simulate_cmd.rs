@@ -112,7 +112,9 @@ fn model(n: u64, kappa: &Q, gamma: &Q, exact: bool) -> Result<Model, String> {
     })?;
     if exact && model.exact.is_none() {
         return Err(format!(
-            "--exact: exact simulation for n = {n} needs the number-field arithmetic of              Q(cos 2*pi/{n}) (issue 10 §2), not yet available; exact simulation supports n = 2, 3, 4, 6              (rational cosines). Without --exact, n = {n} is simulated in f64"
+            "--exact: exact simulation supports n = 2, 3, 4, 6 (rational cosines); the simulator has no \
+             Q(cos 2*pi/{n}) arithmetic yet (certificates do: chatter certify --n {n}). Without --exact, \
+             n = {n} is simulated in f64"
         ));
     }
     Ok(model)

@@ -184,13 +184,14 @@ fn classify_shows_the_evidence() {
     ] {
         assert!(out.contains(needle), "missing {needle:?} in\n{out}");
     }
-    // An irrational body is decided exactly in its number field; no certificate format exists.
+    // An irrational body is decided exactly in its number field, and certified there (issue 10
+    // §2): the PCC criterion holds (real roots), so the claim is CC or PCC.
     let o = chatter(&["classify", "--n", "5", "--kappa", "1/20", "--gamma", "1/100", "--json"], d.path());
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert!(v["field"].as_str().unwrap().contains("cos(2*pi/5)"));
-    assert!(v["cc"]["holds"].is_boolean() && v["pcc"]["holds"].is_boolean());
-    assert_eq!(v["certificate"]["verdict"], "not-certified");
-    assert!(v["certificate"]["claim"].is_null());
+    assert_eq!((v["cc"]["holds"].as_bool(), v["pcc"]["holds"].as_bool()), (Some(true), Some(true)), "{v}");
+    assert_eq!(v["certificate"]["verdict"], "certified");
+    assert_eq!(v["certificate"]["claim"], "CcOrPccFromAllDown");
 }
 
 /// Regression (issue 10 §1): `classify` shows the float finder's verdict and a batch of simulated
@@ -206,7 +207,7 @@ fn classify_shows_finder_and_drops_for_irrational_n() {
         "float finder, translation seed: found a cone",
         "float finder, all-down seed: found a cone",
         "simulation (20 random drops, budget 2000 impacts, f64): CC 20,",
-        "certificate: none",
+        "certificate: CcOrPccFromAllDown",
     ] {
         assert!(out.contains(needle), "missing {needle:?} in\n{out}");
     }

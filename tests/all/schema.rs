@@ -189,7 +189,7 @@ fn default_json_is_byte_stable_and_timings_are_opt_in() {
 fn errors_under_json_are_json_on_stdout_with_the_same_exit_status() {
     let d = tempfile::tempdir().unwrap();
     for (args, code) in [
-        (&["certify", "--n", "5", "--json"][..], 2),
+        (&["certify", "--n", "65", "--json"][..], 2),
         (&["classify", "--n", "3", "--velocity", "1,2", "--json"], 2),
         (&["bodies", "--prism", "4", "--json"], 2),
         (&["check-proof", "missing.ron", "--json"], 2),

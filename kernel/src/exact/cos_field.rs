@@ -167,9 +167,14 @@ impl<F: Field> CosField<F> {
         Ok(x)
     }
 
-    /// The isolating interval halved `steps` times (by the sign of Psi_n at the midpoint).
-    fn refined(&self, steps: usize) -> (F, F) {
-        let (mut lo, mut hi) = (self.lo.clone(), self.hi.clone());
+    /// The isolating interval.
+    fn interval(&self) -> (F, F) {
+        (self.lo.clone(), self.hi.clone())
+    }
+
+    /// An interval around c halved `steps` times (by the sign of Psi_n at the midpoint; Psi_n
+    /// changes sign at its simple root c, so c stays inside).
+    fn halved(&self, (mut lo, mut hi): (F, F), steps: usize) -> (F, F) {
         let at_lo = eval(&self.minpoly, &lo).sign();
         for _ in 0..steps {
             let mid = lo.plus(&hi).over(&F::from_i64(2)).expect("2 != 0");
@@ -193,12 +198,17 @@ fn isolate_largest<F: Field>(p: &[F]) -> (F, F) {
     let p = p.to_vec();
     let seq = sturm_sequence(&p);
     let count = |a: &F, b: &F| count_roots(&p, &seq, a, b).expect("no root at a rational");
-    let (mut lo, hi) = (F::from_i64(-1), F::one());
-    let width = F::from_ratio(1, 1 << 62).over(&F::from_i64(4)).expect("4 != 0");
-    let mut top = hi.clone();
-    while count(&lo, &top) > 1 || top.minus(&lo) > width {
+    let (mut lo, mut top) = (F::from_i64(-1), F::one());
+    while count(&lo, &top) > 1 {
         let mid = lo.plus(&top).over(&F::from_i64(2)).expect("2 != 0");
         if count(&mid, &top) >= 1 { lo = mid } else { top = mid }
+    }
+    // One root in (lo, top], simple, and p(lo), p(top) != 0: bisect by the sign change.
+    let width = F::from_ratio(1, 1 << 62).over(&F::from_i64(4)).expect("4 != 0");
+    let at_lo = eval(&p, &lo).sign();
+    while top.minus(&lo) > width {
+        let mid = lo.plus(&top).over(&F::from_i64(2)).expect("2 != 0");
+        if eval(&p, &mid).sign() == at_lo { lo = mid } else { top = mid }
     }
     (lo, top)
 }
@@ -314,14 +324,13 @@ impl<F: Field> Algebraic<F> {
             let x = self.as_rational().expect("rational");
             return (x.clone(), x);
         };
-        let mut steps = 0;
+        let mut around = k.interval();
         loop {
-            let (lo, hi) = k.refined(steps);
-            let (a, b) = self.bounds_on(&lo, &hi);
+            let (a, b) = self.bounds_on(&around.0, &around.1);
             if b.minus(&a) <= *width {
                 return (a, b);
             }
-            steps += 16;
+            around = k.halved(around, 16);
         }
     }
 }
@@ -408,17 +417,16 @@ impl<F: Field> Ring for Algebraic<F> {
     }
     fn sign(&self) -> Ordering {
         let Some(k) = &self.field else { return self.c.first().map_or(Ordering::Equal, Ring::sign) };
-        let mut steps = 0;
+        let mut around = k.interval();
         loop {
-            let (lo, hi) = k.refined(steps);
-            let (a, b) = self.bounds_on(&lo, &hi);
+            let (a, b) = self.bounds_on(&around.0, &around.1);
             if a.is_positive() {
                 return Ordering::Greater;
             }
             if b.is_negative() {
                 return Ordering::Less;
             }
-            steps += 16;
+            around = k.halved(around, 16);
         }
     }
 }

@@ -2,5 +2,6 @@
 
 mod backends;
 mod canonical;
+mod cos_field;
 mod q;
 mod user;

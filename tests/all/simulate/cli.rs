@@ -216,7 +216,7 @@ fn every_n_up_to_64_simulates_in_f64() {
     assert!(stderr(&o).contains("below the floor"), "{}", stderr(&o));
 }
 
-/// `--exact` needs a rational cos 2 pi/n; elsewhere a clear exit 2 naming issue 10 §2.
+/// `--exact` needs a rational cos 2 pi/n; elsewhere a clear exit 2 (certificates work there).
 #[test]
 fn exact_simulation_of_irrational_n_is_a_clear_error() {
     let d = tempfile::tempdir().unwrap();
@@ -224,7 +224,10 @@ fn exact_simulation_of_irrational_n_is_a_clear_error() {
         let o = simulate(&["--n", n, "--exact"], d.path());
         assert_eq!(o.status.code(), Some(2), "n = {n}: {}", stdout(&o));
         let err = stderr(&o);
-        assert!(err.contains("--exact") && err.contains("number-field") && err.contains("issue 10"), "{err}");
+        assert!(
+            err.contains("--exact") && err.contains("Q(cos 2*pi/") && err.contains("chatter certify"),
+            "{err}"
+        );
         assert!(!err.contains("panicked"), "{err}");
     }
     for n in ["0", "1", "65", "1000"] {
