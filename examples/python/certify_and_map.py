@@ -48,9 +48,11 @@ def point_class(claim, cc):
 def grid():
     """The map over (rho, gamma) in [0, 1]^2, certificates attempted at every point."""
     m = chatter.map(N, rho=(0, 1, STEPS), gamma=(0, 1, STEPS), certify=True)
+    print(f"map: {m['points']} points ({m['schema']}), {len(m['disagreements'])} disagreements")
+    cols = m["columns"]
     classes = [[0] * STEPS for _ in range(STEPS)]
-    for i, (claim, cc) in enumerate(zip(m["claim"], m["cc_criterion"])):
-        ix, ig = divmod(m["index"][i], STEPS)  # gamma varies fastest
+    for i, (claim, cc) in enumerate(zip(cols["claim"], cols["cc_criterion"])):
+        ix, ig = divmod(cols["index"][i], STEPS)  # gamma varies fastest
         classes[ig][ix] = point_class(claim, cc)
     return classes
 

@@ -48,9 +48,11 @@ def _n(n):
 def certify(n, kappa, gamma, claim=None):
     """Find, exactify and kernel-check an effectively invariant cone; return a Certificate.
 
-    n: the number of contacts: 2 (the rod) or a regular n-gon with rational cos(2 pi/n)
-    (3, 4, 6). kappa > 0 and gamma in [0, 1]: exact numbers (Fraction, int or text), or
-    intervals (lo, hi) for a box certificate valid on the whole box.
+    n: the number of contacts: 2 (the rod) or a regular n-gon, 3..64 (for n = 5, 7, 8, ...
+    decided in Q(cos 2 pi/n)). kappa > 0 and gamma in [0, 1]: exact numbers (Fraction, int or
+    text), or intervals (lo, hi) for a box certificate valid on the whole box. For n = 5, 7,
+    8, ... kappa may also be the canonical text of an element of Q(c), c = cos(2 pi/n), e.g.
+    "1/40 + 1/100*c" (docs/certificate-format.md §12); the certificate's kappa is that text.
     claim: None or "strongest" (default: the strongest that certifies),
     "effectively-invariant", "cc-or-pcc-from-all-down" or "complete-chatter-from-all-down".
 
@@ -97,12 +99,14 @@ def verify(path_or_text):
 def classify(n, kappa, gamma, velocity=None, digits=12):
     """Every exact spectral criterion at one body, with its evidence, as a dict.
 
-    Keys (as ``chatter classify --json``): "n", "kappa", "gamma", "method", "cc" and "pcc"
-    ({"holds", "evidence": {"char_poly", "eigenvalues", "all_real"}, ...}; the rod has "goyal"
-    and no "pcc"), "cc_threshold" and "pcc_threshold" (the thresholds in gamma for this
-    kappa, exact enclosures as Fractions), "finder_translation" and "finder_all_down" (the
-    float finder), "simulation" (outcome counts of 20 random drops), "certificate" (the claim
-    that certifies, or None). n is 2..64 (5, 7, 8, ... decided in Q(cos 2 pi/n)).
+    The report ``chatter.classify/1`` of ``chatter classify --json`` (docs/json.md,
+    docs/schema/chatter.classify.v1.schema.json): "schema", "n", "kappa" and "gamma"
+    ({"exact": Fraction, "f64": float}), "field" (None over Q), "cc" and "pcc" ({"holds",
+    "matrix", "char_poly", "eigenvalues", "all_real", "dominant", ...}; the rod has "goyal"
+    and "pcc" None), "cc_threshold" and "pcc_threshold" ("kind", "interval" as Fractions,
+    "decimal", "midpoint", ...), "finder" ({"translation", "all_down"}, each with "outcome"),
+    "drops" (counts of 20 random drops), "certificate" ({"verdict", "claim", ...}).
+    n is 2..64 (5, 7, 8, ... decided in Q(cos 2 pi/n)).
     velocity: for the rod, (u0, u1) to decide CC from that start ("from_velocity").
     """
     vel = numbers(velocity, "velocity")
@@ -118,9 +122,11 @@ def simulate(n, kappa, gamma, seed=0, impacts=200, exact=False, runs=None, posit
     budget. exact: exact rationals (n = 2, 3, 4, 6) instead of f64. position, velocity: a
     given start in chatter's coordinates ((h0, h1, hc), (u0, u1, v); the rod two numbers).
 
-    Returns a dict as ``chatter simulate --json``: "outcome" ("CC", "PCC", "ICC", ...),
-    "decided_by", "impacts", "sequence", "total_time", "accumulation_time", ...; with runs:
-    "counts", "decided_by", "mean_impacts".
+    Returns the report of ``chatter simulate --json`` (docs/json.md): ``chatter.simulate/1``
+    with "outcome" ("CC", "PCC", "ICC", ...), "decided_by", "impacts", "start", "sequence",
+    "total_time", "accumulation_time", ...; with runs ``chatter.simulate-batch/1`` with
+    "counts", "decided_by", "mean_impacts". "kappa", "gamma" (and a given start's numbers) are
+    {"exact": Fraction, "f64": float}.
     """
     if runs is not None and (isinstance(runs, bool) or not isinstance(runs, int) or runs < 1):
         raise UsageError(f"runs: {runs!r} is not a positive int", "invalid-input")
@@ -136,9 +142,10 @@ def simulate(n, kappa, gamma, seed=0, impacts=200, exact=False, runs=None, posit
 
 
 def bodies(digits=12):
-    """The catalogue of bodies as a list of dicts (as ``chatter bodies --json``): "name", "n",
-    "kappa" (Fraction where exact), the CC and PCC thresholds in gamma ("cc", "pcc",
-    "cc_gamma_interval" as Fractions), and the paper's values with "paper_agrees"."""
+    """The catalogue of bodies: the report ``chatter.bodies/1`` of ``chatter bodies --json``,
+    {"schema": ..., "bodies": [row, ...]}, each row with "name", "n", "kappa" (Fraction where
+    rational, else the text of the number), the CC and PCC thresholds in gamma ("cc", "pcc",
+    "cc_gamma_interval" as Fractions), and the paper's values with "paper_status"."""
     if isinstance(digits, bool) or not isinstance(digits, int) or digits < 1:
         raise UsageError(f"digits: {digits!r} is not a positive int", "invalid-input")
     return python(json.loads(_native.bodies(digits)))
@@ -153,11 +160,13 @@ def map(n, gamma, rho=None, kappa=None, certify=False, refute=False, simulate=No
     made (n = 3, 4, 6), refute=True an exact refutation where not, simulate=RUNS the paper's
     random drops (200 impacts each).
 
-    Columns (docs/map.md, as points.csv): "index", "n", "rho", "kappa", "gamma",
-    "cc_criterion", "pcc_criterion", "finder", "certified", "claim", "refuted", "sim_runs",
-    "sim_cc", ..., "mean_impacts", and "certificate"/"refutation" (RON text or None).
-    Exact columns hold Fractions. numpy=True gives numpy arrays instead, exact columns as
-    float64.
+    Returns the summary ``chatter.map/1`` (as ``summary.json``, docs/map.md: "schema",
+    "grid", "computed", "points", "counts", "disagreement_kinds", "disagreements") with the
+    points under "columns": a dict of lists named as the columns of points.csv: "index",
+    "n", "rho", "kappa", "gamma", "cc_criterion", "pcc_criterion", "finder", "certified",
+    "claim", "refuted", "sim_runs", "sim_cc", ..., "mean_impacts", and
+    "certificate"/"refutation" (RON text or None). Exact columns hold Fractions.
+    numpy=True makes the columns numpy arrays instead, exact columns as float64.
     """
     if (rho is None) == (kappa is None):
         raise UsageError("map: give exactly one horizontal axis, rho=... or kappa=...", "invalid-input")
@@ -168,8 +177,10 @@ def map(n, gamma, rho=None, kappa=None, certify=False, refute=False, simulate=No
     out = _native.map(
         _n(n), variable, axis(x, variable), axis(gamma, "gamma"), bool(certify), bool(refute), sims
     )
-    cols = python(json.loads(out))
-    return _numpy(cols) if numpy else cols
+    result = python(json.loads(out))
+    if numpy:
+        result["columns"] = _numpy(result["columns"])
+    return result
 
 
 def _numpy(cols):

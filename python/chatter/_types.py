@@ -71,7 +71,7 @@ class Verdict:
     def __init__(self, raw):
         self.raw = raw
         self.path = raw.get("path")
-        self.ok = raw["status"] == "OK"
+        self.ok = raw["verdict"] == "accepted"
         self.claim = raw.get("claim")
         self.n = raw.get("n")
         self.generators = raw.get("generators")

@@ -1,7 +1,9 @@
 //! `verify`: a file or text through chatter's verifier (bounded reading, both backends, the
-//! time limit), the verdict as the JSON of `chatter verify --json`.
+//! time limit), the verdict as the entry of `files` of `chatter verify --json`
+//! (`chatter::report::verify::FileReport`: `"verdict"` and the file's fields).
 
 use crate::fail::Fail;
+use chatter::report::verify::FileReport;
 use chatter::verify::{FileVerdict, Options, Status, text, verify_file};
 use chatter_kernel::certificate::Encoding;
 use chatter_kernel::verify::{MALACHITE, NUM};
@@ -22,7 +24,7 @@ fn verdict(v: FileVerdict) -> Result<Value, Fail> {
     if v.status == Status::Error {
         return Err(Fail::usage("unreadable", format!("{}: {reason}", v.path)));
     }
-    serde_json::to_value(&v).map_err(|e| Fail::internal("internal", e.to_string()))
+    serde_json::to_value(FileReport::of(&v)).map_err(|e| Fail::internal("internal", e.to_string()))
 }
 
 /// Verifies a file (RON or JSON by its name, gzip'd or not).

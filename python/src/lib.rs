@@ -2,7 +2,8 @@
 //! it; docs/python.md describes the API). Every function takes exact numbers as text (the
 //! package turns `Fraction` and `int` into canonical text), runs without the GIL, and returns
 //! JSON text that the package turns into Python objects, canonical rationals into `Fraction`s.
-//! Each result is one `serde_json::Value` made by one function per command (module `reports`).
+//! Each result is one `serde_json::Value`: the library's typed report of the command (module
+//! `reports`, docs/json.md), or for `certify`/`verify` the certificate and the verdict.
 //! Errors become the exception classes of `chatter._errors`, with the rejection code.
 
 mod check;

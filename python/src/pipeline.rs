@@ -3,17 +3,42 @@
 
 use crate::fail::Fail;
 use crate::inputs;
-use chatter::certify::{Failure, Report, Request};
+use chatter::certify::{Failure, Report, Request, check_body};
+use chatter::exact::{CosField, GENERATOR, OrderedField, Q};
 use chatter::finder::Search;
-use chatter_kernel::model::{BodyError, Shape};
+use chatter_kernel::model::BodyError;
 use serde_json::{Value, json};
 
-/// The request: validated as `chatter certify` does (every corner of a box is a valid body).
+/// kappa as the canonical text of an element of Q(cos 2 pi/n) (docs/certificate-format.md §12),
+/// as `chatter certify --kappa`: `None` when the text does not name the generator `c`, else a
+/// rational lower bound (for validation and display) and the text, which the certificate carries.
+fn field_kappa(n: u64, text: &str) -> Result<Option<(Q, String)>, Fail> {
+    if !text.contains(GENERATOR) {
+        return Ok(None);
+    }
+    let field = CosField::<Q>::new(n).filter(|f| f.degree() > 1).ok_or_else(|| {
+        let msg = format!("kappa: {text:?} names c = cos(2 pi/{n}), which is rational or out of range here");
+        Fail::usage("invalid-number", msg)
+    })?;
+    let k = field.parse(text, Default::default()).map_err(|e| {
+        let msg = format!("kappa: {text:?} is not the canonical text of an element of Q(cos 2 pi/{n}): {e}");
+        Fail::usage("invalid-number", msg)
+    })?;
+    let (lo, _) = OrderedField::enclose(&k, &Q::new(1, 1 << 40));
+    Ok(Some((lo, text.to_string())))
+}
+
+/// The request: validated as `chatter certify` does (every corner of a box is a valid body;
+/// n = 5, 7, 8, ... in Q(cos 2 pi/n), where kappa may be an element of that field).
 fn request(n: u64, kappa: &str, gamma: &str, claim: Option<&str>) -> Result<Request, Fail> {
-    let kappa = inputs::range("kappa", kappa)?;
+    let field = field_kappa(n, kappa)?;
+    let kappa = match &field {
+        Some((k, _)) => [k.clone(), k.clone()],
+        None => inputs::range("kappa", kappa)?,
+    };
     let gamma = inputs::range("gamma", gamma)?;
     for (k, g) in [(&kappa[0], &gamma[0]), (&kappa[1], &gamma[1])] {
-        if let Err(e) = Shape::new(n, k.clone(), g.clone()) {
+        if let Err(e) = check_body(n, k, g) {
             let code = match e {
                 BodyError::UnsupportedN(_) => "unsupported-n",
                 BodyError::KappaNotPositive => "kappa-not-positive",
@@ -23,6 +48,7 @@ fn request(n: u64, kappa: &str, gamma: &str, claim: Option<&str>) -> Result<Requ
         }
     }
     let mut req = Request::boxed(n, kappa, gamma);
+    req.kappa_field = field.map(|(_, text)| text);
     req.claim = inputs::claim(claim)?;
     Ok(req)
 }

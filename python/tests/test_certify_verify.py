@@ -87,3 +87,30 @@ def test_unreadable_input_raises():
     assert e.value.code == "unreadable" and e.value.exit_code == 2
     with pytest.raises(chatter.UsageError):
         chatter.verify(12)
+
+
+def test_certify_kappa_in_the_cosine_field():
+    """n = 5 with kappa an element of Q(cos 2 pi/5) as canonical text (certificate-format §12)."""
+    cert = chatter.certify(5, "1/40 + 1/100*c", F(1, 100))
+    assert cert.claim == "CcOrPccFromAllDown"
+    assert cert.n == 5 and cert.kappa == "1/40 + 1/100*c" and cert.gamma == F(1, 100)
+    assert 'kappa: "1/40 + 1/100*c"' in cert.to_ron()
+    for text in (cert.to_ron(), cert.to_json()):
+        v = chatter.verify(text)
+        assert v.ok and v.claim == "CcOrPccFromAllDown" and v.n == 5
+    # the same as the corpus certificate written by the command line
+    corpus = ROOT / "certificates" / "valid" / "n5-kappa-field-gamma1_100-cc-or-pcc-from-all-down.ron"
+    if corpus.exists():
+        assert chatter.verify(corpus).claim == cert.claim
+
+
+def test_certify_field_kappa_errors():
+    with pytest.raises(chatter.UsageError) as e:
+        chatter.certify(4, "1/40 + 1/100*c", F(1, 100))  # cos(2 pi/4) = 0 is rational
+    assert e.value.code == "invalid-number"
+    with pytest.raises(chatter.UsageError) as e:
+        chatter.certify(5, "1/40 + 1/100*c*c*", F(1, 100))
+    assert e.value.code == "invalid-number"
+    with pytest.raises(chatter.UsageError) as e:
+        chatter.certify(5, "-1/40 + 1/100*c", F(1, 100))
+    assert e.value.code == "kappa-not-positive"

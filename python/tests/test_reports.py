@@ -1,52 +1,82 @@
-"""classify, simulate, bodies and map: plain dicts with Fractions for exact values."""
+"""classify, simulate, bodies and map: the library's typed reports (docs/json.md) as plain
+dicts, canonical exact texts as Fractions."""
 
+import json
+import pathlib
 from fractions import Fraction as F
 
 import pytest
 
 import chatter
 
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+SCHEMAS = ROOT / "docs" / "schema"
+
+
+def exact(number):
+    """The exact value of a Number {"exact": Fraction, "f64": float}, checking both halves."""
+    assert set(number) == {"exact", "f64"}
+    assert isinstance(number["exact"], F) and number["f64"] == float(number["exact"])
+    return number["exact"]
+
 
 def test_classify_triangle():
     d = chatter.classify(3, F(3, 20), F(1, 20))
-    assert (d["n"], d["kappa"], d["gamma"]) == (3, F(3, 20), F(1, 20))
-    assert d["method"] == "exact over Q"
+    assert d["schema"] == "chatter.classify/1"
+    assert (d["n"], exact(d["kappa"]), exact(d["gamma"])) == (3, F(3, 20), F(1, 20))
+    assert d["field"] is None  # decided over Q
     assert d["cc"]["holds"] is True and d["pcc"]["holds"] is False
-    assert d["cc"]["evidence"]["char_poly"].startswith("t^3")
+    assert d["cc"]["dominant"] == "positive" and d["cc"]["all_real"] in (True, False)
+    assert d["cc"]["char_poly"].startswith("t^3")
+    assert len(d["cc"]["eigenvalues"]) >= 1
+    assert all(e["kind"] in ("real", "complex-pair") for e in d["cc"]["eigenvalues"])
+    assert d["cc_threshold"]["kind"] == "below"
     lo, hi = d["cc_threshold"]["interval"]
     assert isinstance(lo, F) and lo < hi and lo > F(1, 20)  # gamma = 1/20 is below the threshold
-    assert d["finder_all_down"] == "found"
-    assert sum(d["simulation"].values()) == 20
-    assert d["certificate"] == "CompleteChatterFromAllDown"
+    assert d["finder"]["all_down"]["outcome"] == "found"
+    assert d["drops"]["runs"] == 20 and sum(d["drops"]["counts"].values()) == 20
+    assert d["certificate"]["verdict"] == "certified"
+    assert d["certificate"]["claim"] == "CompleteChatterFromAllDown"
 
 
 def test_classify_rod_velocity_and_pentagon():
     rod = chatter.classify(2, F(1, 3), "0.05", velocity=(F(1, 10), F(-1, 2)))
-    assert "goyal" in rod and "pcc" not in rod
-    assert rod["from_velocity"]["velocity"] == [F(1, 10), F(-1, 2)]
+    assert rod["goyal"] in (True, False) and rod["pcc"] is None and rod["finder"] is None
+    assert [exact(u) for u in rod["from_velocity"]["velocity"]] == [F(1, 10), F(-1, 2)]
+    assert rod["from_velocity"]["cc"] in (True, False)
+    assert exact(rod["gamma"]) == F(1, 20)  # "0.05" is read exactly
     pent = chatter.classify(5, F(1, 5), F(1, 100))
-    assert pent["method"].startswith("exact in Q(") and pent["certificate"] is None
+    assert "cos(2*pi/5)" in pent["field"]  # decided in Q(cos 2 pi/5)
+    assert pent["pcc"] is not None and pent["certificate"]["verdict"] in ("certified", "not-certified")
 
 
 def test_simulate_single_drop_is_classified():
     s = chatter.simulate(3, F(3, 20), F(1, 20), seed=7)
+    assert s["schema"] == "chatter.simulate/1"
     assert s["outcome"] == "CC" and s["impacts"] == 200 and s["budget"] == 200
     assert s["start"] == {"kind": "random-drop", "seed": 7}
     assert sum(s["contact_counts"]) == s["impacts"] == len(s["sequence"])
-    assert isinstance(s["total_time"], float) and s["kappa"] == F(3, 20)
+    assert isinstance(s["total_time"], float) and exact(s["kappa"]) == F(3, 20)
+    assert s["arithmetic"] == "f64" and s["trajectory"] is None and s["plot"] is None
 
 
 def test_simulate_batch_and_exact_and_given_start():
     b = chatter.simulate(4, F(1, 6), F(1, 100), runs=30)
+    assert b["schema"] == "chatter.simulate-batch/1"
     assert b["runs"] == 30 and sum(b["counts"].values()) == 30 and b["seeds"] == [0, 29]
+    assert sum(b["decided_by"].values()) == 30 and b["mean_impacts"] > 0
     e = chatter.simulate(4, F(1, 6), F(1, 100), exact=True, impacts=50)
     assert e["arithmetic"] == "exact"
     g = chatter.simulate(4, F(1, 6), F(1, 100), position=("1/2", "1/2", 1), velocity=(-1, -1, -1), exact=True)
-    assert g["start"]["kind"] == "given" and g["start"]["velocity"] == [F(-1)] * 3
+    assert g["start"]["kind"] == "given"
+    assert [exact(v) for v in g["start"]["velocity"]] == [F(-1)] * 3
+    assert [exact(q) for q in g["start"]["position"]] == [F(1, 2), F(1, 2), F(1)]
 
 
 def test_bodies_catalogue():
-    rows = chatter.bodies()
+    report = chatter.bodies()
+    assert report["schema"] == "chatter.bodies/1"
+    rows = report["bodies"]
     names = [r["name"] for r in rows]
     assert "uniform rod" in names and len(rows) >= 10
     rod = rows[names.index("uniform rod")]
@@ -54,32 +84,82 @@ def test_bodies_catalogue():
     lo, hi = rod["cc_gamma_interval"]
     goyal = 7 - 4 * 3**0.5  # 7 - 4 sqrt(3) = 0.0717967...
     assert lo < hi and hi - lo < F(1, 10**9) and abs(float(lo) - goyal) < 1e-9
+    assert rod["paper_status"]["cc"] in ("agrees", "close", "disagrees", None)
 
 
 def test_map_columns():
     m = chatter.map(3, gamma=(0, 1, 4), rho=(0, 1, 5), certify=True, simulate=3)
-    assert all(len(col) == 20 for col in m.values())
-    assert m["index"] == list(range(20))
-    assert m["rho"][:5] == [F(1, 10)] * 4 + [F(3, 10)]  # gamma varies fastest
-    assert m["gamma"][:4] == [F(1, 8), F(3, 8), F(5, 8), F(7, 8)]
-    assert all(k == r * r for k, r in zip(m["kappa"], m["rho"]))
-    assert set(m["finder"]) <= {"found", "no-cone", "inconclusive"}
-    for cert, ok in zip(m["certificate"], m["certified"]):
+    assert m["schema"] == "chatter.map/1" and m["points"] == 20
+    assert m["grid"]["n"] == 3 and m["computed"]["certify"] is True and m["computed"]["simulate"] == 3
+    cols = m["columns"]
+    assert all(len(col) == 20 for col in cols.values())
+    assert cols["index"] == list(range(20))
+    assert cols["rho"][:5] == [F(1, 10)] * 4 + [F(3, 10)]  # gamma varies fastest
+    assert cols["gamma"][:4] == [F(1, 8), F(3, 8), F(5, 8), F(7, 8)]
+    assert all(k == r * r for k, r in zip(cols["kappa"], cols["rho"]))
+    assert set(cols["finder"]) <= {"found", "no-cone", "inconclusive"}
+    for cert, ok in zip(cols["certificate"], cols["certified"]):
         assert (cert is not None) == ok
         if cert:
             assert chatter.verify(cert).ok
-    assert all(r == 3 for r in m["sim_runs"])
+    assert all(r == 3 for r in cols["sim_runs"])
+    # the summary counts the columns' values
+    assert sum(m["counts"]["finder"].values()) == 20
+    assert m["counts"]["finder"].get("found", 0) == cols["finder"].count("found")
 
 
 def test_map_kappa_axis_rho_is_float():
     m = chatter.map(4, kappa="0:1/2:3", gamma=(0, F(1, 5), 2))
-    assert len(m["kappa"]) == 6 and isinstance(m["rho"][0], float)
-    assert m["certified"] == [None] * 6  # not asked
+    cols = m["columns"]
+    assert len(cols["kappa"]) == 6 and isinstance(cols["rho"][0], float)
+    assert cols["certified"] == [None] * 6  # not asked
+    assert m["grid"]["variable"] == "kappa"
 
 
 def test_map_as_numpy_arrays():
     np = pytest.importorskip("numpy")
     m = chatter.map(3, rho=(0, 1, 3), gamma=(0, 1, 3), numpy=True)
-    assert isinstance(m["gamma"], np.ndarray) and m["gamma"].dtype == np.float64
-    assert np.allclose(m["kappa"], m["rho"] ** 2)
-    assert m["cc_criterion"].dtype == np.bool_ and m["index"].tolist() == list(range(9))
+    cols = m["columns"]
+    assert isinstance(cols["gamma"], np.ndarray) and cols["gamma"].dtype == np.float64
+    assert np.allclose(cols["kappa"], cols["rho"] ** 2)
+    assert cols["cc_criterion"].dtype == np.bool_ and cols["index"].tolist() == list(range(9))
+    assert m["schema"] == "chatter.map/1"
+
+
+def plain(value):
+    """The JSON data of a result: Fractions back to canonical text (the inverse of the
+    package's conversion), so that it can be checked against the JSON Schema."""
+    if isinstance(value, F):
+        return str(value.numerator) if value.denominator == 1 else f"{value.numerator}/{value.denominator}"
+    if isinstance(value, list):
+        return [plain(v) for v in value]
+    if isinstance(value, dict):
+        return {k: plain(v) for k, v in value.items()}
+    return value
+
+
+REPORTS = [
+    ("chatter.classify/1", lambda: chatter.classify(3, F(3, 20), F(1, 20))),
+    ("chatter.classify/1", lambda: chatter.classify(2, F(1, 3), F(1, 20), velocity=(F(1, 10), F(-1, 2)))),
+    ("chatter.classify/1", lambda: chatter.classify(5, F(1, 5), F(1, 100))),
+    ("chatter.simulate/1", lambda: chatter.simulate(3, F(3, 20), F(1, 20), seed=7)),
+    ("chatter.simulate/1", lambda: chatter.simulate(4, F(1, 6), F(1, 100), position=(1, 1, 1), velocity=(-1, -1, -1))),
+    ("chatter.simulate-batch/1", lambda: chatter.simulate(4, F(1, 6), F(1, 100), runs=5)),
+    ("chatter.bodies/1", lambda: chatter.bodies()),
+    ("chatter.map/1", lambda: chatter.map(3, rho=(0, 1, 2), gamma=(0, 1, 2), certify=True, refute=True, simulate=2)),
+]
+
+
+@pytest.mark.parametrize("schema,make", REPORTS, ids=[f"{s}-{i}" for i, (s, _) in enumerate(REPORTS)])
+def test_report_has_its_schema_and_validates(schema, make):
+    d = make()
+    assert d["schema"] == schema
+    name, version = schema.split("/")
+    path = SCHEMAS / f"{name}.v{version}.schema.json"
+    doc = json.loads(path.read_text())
+    assert doc["properties"]["schema"]["const"] == schema
+    data = plain(d)
+    assert json.loads(json.dumps(data)) == data  # plain JSON again
+    assert set(doc.get("required", [])) <= set(data)
+    jsonschema = pytest.importorskip("jsonschema")
+    jsonschema.Draft202012Validator(doc).validate(data)

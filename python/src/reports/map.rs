@@ -1,7 +1,10 @@
-//! `map`: the grid of `chatter map` evaluated in memory, as columns named as in points.csv
-//! (docs/map.md), with the certificate and refutation texts in place of their paths.
+//! `map`: the grid of `chatter map` evaluated in memory: the summary `chatter.map/1` (as
+//! `summary.json`, `chatter::report::map::MapSummary`) with the points as columns named as in
+//! points.csv (docs/map.md) under `"columns"`, the certificate and refutation texts in place of
+//! their paths.
 
 use crate::fail::Fail;
+use chatter::report::{self, map::MapSummary};
 use chatter::sweep::grid::{Axis, Grid, Shard, Variable};
 use chatter::sweep::point::Tasks;
 use chatter::sweep::table::Row;
@@ -74,7 +77,9 @@ fn columns(rows: Vec<Map<String, Value>>) -> Value {
     Value::Object(cols.collect())
 }
 
-/// Evaluates every point of the grid (in parallel, on rayon's pool) and returns the columns.
+/// Evaluates every point of the grid (in parallel, on rayon's pool) and returns the summary
+/// with the columns. This is `report::map::map` keeping each point's certificate and refutation
+/// texts (that function returns the rows only, whose `certificate` is a path in a folder).
 pub fn value(a: &Args) -> Result<Value, Fail> {
     let req = request(a)?;
     let done = sweep::run(&req, &|| {});
@@ -82,6 +87,9 @@ pub fn value(a: &Args) -> Result<Value, Fail> {
         let why = d.internal.clone().unwrap_or_default();
         return Err(Fail::internal("internal", format!("point {}: {why}", d.row.index)));
     }
-    let rows = done.iter().map(|d| point(&d.row, d, req.grid.variable)).collect();
-    Ok(columns(rows))
+    let rows: Vec<Row> = done.iter().map(|d| d.row.clone()).collect();
+    let summary = MapSummary::new(&req.grid, &req.computed(), &rows);
+    let mut out = report::to_value(&summary);
+    out["columns"] = columns(done.iter().map(|d| point(&d.row, d, req.grid.variable)).collect());
+    Ok(out)
 }

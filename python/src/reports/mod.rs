@@ -1,8 +1,7 @@
-//! The dicts of `classify`, `simulate`, `bodies` and `map`: each is one `serde_json::Value` made
-//! by one function (`value`), the fields of the command's `--json` output. Until the library has
-//! typed reports of these commands, the values are built here from library calls, as the
-//! command line builds them; switching to a typed report is then one line per command
-//! (`serde_json::to_value(report)`).
+//! The dicts of `classify`, `simulate`, `bodies` and `map`: each is the library's typed report
+//! (`chatter::report`, docs/json.md) as a `serde_json::Value` (`report::to_value`), made by one
+//! function per command (`value`) after checking the arguments as the command line does. `map`
+//! adds the points as columns (`"columns"`) to its summary.
 
 pub mod bodies;
 pub mod classify;
