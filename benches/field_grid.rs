@@ -74,9 +74,10 @@ fn main() {
         let good = pts.iter().filter(|p| p.cc && p.certified.is_some()).count();
         let bad = pts.iter().filter(|p| !p.cc && p.certified.is_some()).count();
         let cm = median(pts.iter().map(|p| p.certify_ms).collect());
+        let cc_ms = median(pts.iter().filter(|p| p.certified.is_some()).map(|p| p.certify_ms).collect());
         let vm = median(pts.iter().filter_map(|p| p.verify_ms).collect());
         println!(
-            "{n:<2} {:>6}  {holds:>8}  {good:>21}  {bad:>21}  {cm:>17.1}  {vm:>16.1}  {:>6.1}",
+            "{n:<2} {:>6}  {holds:>8}  {good:>21}  {bad:>21}  {cm:>17.1} / {cc_ms:>9.1}  {vm:>16.1}  {:>6.1}",
             pts.len(),
             t.elapsed().as_secs_f64()
         );
