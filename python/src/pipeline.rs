@@ -4,28 +4,14 @@
 use crate::fail::Fail;
 use crate::inputs;
 use chatter::certify::{Failure, Report, Request, check_body};
-use chatter::exact::{CosField, GENERATOR, OrderedField, Q};
+use chatter::exact::Q;
 use chatter::finder::Search;
 use chatter_kernel::model::BodyError;
 use serde_json::{Value, json};
 
-/// kappa as the canonical text of an element of Q(cos 2 pi/n) (docs/certificate-format.md §12),
-/// as `chatter certify --kappa`: `None` when the text does not name the generator `c`, else a
-/// rational lower bound (for validation and display) and the text, which the certificate carries.
+/// kappa as an element of Q(cos 2 pi/n) in canonical text, as `chatter certify --kappa`.
 fn field_kappa(n: u64, text: &str) -> Result<Option<(Q, String)>, Fail> {
-    if !text.contains(GENERATOR) {
-        return Ok(None);
-    }
-    let field = CosField::<Q>::new(n).filter(|f| f.degree() > 1).ok_or_else(|| {
-        let msg = format!("kappa: {text:?} names c = cos(2 pi/{n}), which is rational or out of range here");
-        Fail::usage("invalid-number", msg)
-    })?;
-    let k = field.parse(text, Default::default()).map_err(|e| {
-        let msg = format!("kappa: {text:?} is not the canonical text of an element of Q(cos 2 pi/{n}): {e}");
-        Fail::usage("invalid-number", msg)
-    })?;
-    let (lo, _) = OrderedField::enclose(&k, &Q::new(1, 1 << 40));
-    Ok(Some((lo, text.to_string())))
+    chatter::certify::field_kappa(n, text).map_err(|m| Fail::usage("invalid-number", format!("kappa: {m}")))
 }
 
 /// The request: validated as `chatter certify` does (every corner of a box is a valid body;

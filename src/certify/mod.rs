@@ -534,6 +534,24 @@ pub fn check_body(n: u64, kappa: &Q, gamma: &Q) -> Result<(), chatter_kernel::mo
     Shape::new(n, kappa.clone(), gamma.clone()).map(|_| ())
 }
 
+/// kappa given as the canonical text of an element of Q(cos 2 pi/n) (docs/certificate-format.md
+/// §12, e.g. "1/40 + 1/100*c"): `None` when the text does not name the generator `c`, else a
+/// rational within 2^-40 below it (for validation and display) and the text, which
+/// [`Request::kappa_field`] carries into the certificate. Errors are messages without a prefix.
+pub fn field_kappa(n: u64, text: &str) -> Result<Option<(Q, String)>, String> {
+    if !text.contains(crate::exact::GENERATOR) {
+        return Ok(None);
+    }
+    let field = crate::exact::CosField::<Q>::new(n)
+        .filter(|f| f.degree() > 1)
+        .ok_or_else(|| format!("{text:?} names c = cos(2 pi/{n}), which is rational or out of range here"))?;
+    let k = field
+        .parse(text, ParseLimits::default())
+        .map_err(|e| format!("{text:?} is not the canonical text of an element of Q(cos 2 pi/{n}): {e}"))?;
+    let (lo, _) = k.enclose(&Q::new(1, 1 << 40));
+    Ok(Some((lo, text.to_string())))
+}
+
 /// Runs the pipeline.
 pub fn certify(req: &Request) -> Report {
     if chatter_kernel::check::is_irrational(req.n) {

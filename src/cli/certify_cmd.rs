@@ -73,33 +73,22 @@ struct Validated {
 fn catalogue_body(name: &str) -> Result<(u64, Q, Option<String>), String> {
     let e = crate::bodies::find(name).map_err(|e| format!("--body: {e}"))?;
     let text = e.certificate_kappa().ok_or_else(|| {
-        format!(
-            "--body: '{}': {}; no certificate can name it",
-            e.name,
-            e.why_not_certifiable().unwrap_or_default()
-        )
+        let why = e.why_not_certifiable().unwrap_or_default();
+        format!("--body: '{}': {why}; no certificate can name it", e.name)
     })?;
-    let approx = crate::exact::parse_user_number(&format!("{:.12e}", crate::bodies::kappa_f64(&e)))
-        .map_err(|e| format!("--body: {e}"))?;
-    let exact = e.kappa.as_rational();
-    Ok((e.n, exact.clone().unwrap_or(approx), exact.is_none().then_some(text)))
+    match crate::certify::field_kappa(e.n, &text).map_err(|m| format!("--body: {m}"))? {
+        Some((approx, text)) => Ok((e.n, approx, Some(text))),
+        None => Ok((e.n, e.kappa.as_rational().expect("a rational kappa"), None)),
+    }
 }
 
-/// `--kappa` written as an element of Q(cos 2 pi/n) in canonical text (e.g. "1/20 + 1/100*c"):
-/// a rational approximation, and the text.
+/// `--kappa` as an element of Q(cos 2 pi/n) in canonical text, if it is one.
 fn field_kappa(body: &super::BodyArgs) -> Result<Option<(Q, String)>, String> {
     if !body.kappa.contains(crate::exact::GENERATOR) {
         return Ok(None);
     }
     let (n, _, _) = super::BodyArgs { kappa: "1".into(), ..body.clone() }.parse()?;
-    let field = crate::exact::CosField::<Q>::new(n).filter(|f| f.degree() > 1).ok_or_else(|| {
-        format!("--kappa: {:?} names c = cos(2 pi/{n}), which is rational or out of range here", body.kappa)
-    })?;
-    let k = field.parse(&body.kappa, Default::default()).map_err(|e| {
-        format!("--kappa: {:?} is not the canonical text of an element of Q(cos 2 pi/{n}): {e}", body.kappa)
-    })?;
-    let (lo, _) = crate::exact::OrderedField::enclose(&k, &Q::new(1, 1 << 40));
-    Ok(Some((lo, body.kappa.clone())))
+    crate::certify::field_kappa(n, &body.kappa).map_err(|m| format!("--kappa: {m}"))
 }
 
 fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {

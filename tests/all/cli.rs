@@ -320,3 +320,22 @@ fn prove_square_writes_and_checks_the_proof_files() {
     assert_eq!(o.status.code(), Some(1));
     assert!(text(&o).0.contains("stale: p/square.md"));
 }
+
+/// Issue 10 §2: `certify --body NAME` takes a catalogue body with its exact kappa, rational or in
+/// Q(cos 2 pi/n); a body whose kappa no certificate can name is a usage error.
+#[test]
+fn certify_a_catalogue_body_by_name() {
+    let d = tempfile::tempdir().unwrap();
+    let o = chatter(&["certify", "--body", "square plate", "--gamma", "1/100", "--json"], d.path());
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!((o.status.code(), &v["verdict"]), (Some(0), &serde_json::json!("certified")), "{v}");
+    assert_eq!((v["n"].as_u64(), v["kappa_field"].is_null()), (Some(4), true), "{v}");
+    let o = chatter(&["certify", "--body", "dodecahedron", "--gamma", "1/100", "--json"], d.path());
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!((v["n"].as_u64(), &v["kappa_field"]), (Some(5), &serde_json::json!("19/30 + 2/3*c")), "{v}");
+    assert_eq!(v["verdict"], "not-certified", "the dodecahedron's CC criterion never holds: {v}");
+    let o = chatter(&["certify", "--body", "icosahedron", "--gamma", "1/100"], d.path());
+    let (_, err) = text(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("no certificate can name it"), "{err}");
+}
