@@ -9,7 +9,7 @@ use super::scalar::SimField;
 pub use super::snapshot::scaled; // formerly defined here
 use super::snapshot::{Scaled, Snapshot};
 use super::system::System;
-use crate::exact::{Q, Ring};
+use crate::exact::Q;
 use chatter_kernel::model::linalg::Vec3;
 
 /// An exact vector as (v_m, e) with v = v_m · 2^e and the largest |component| of v_m in [1, 2).
@@ -36,7 +36,7 @@ fn dot<F: SimField>(f: &Vec3<F>, x: &Vec3<F>) -> F {
     let (one, minus_one) = (F::one(), F::from_i64(-1));
     let mut acc: Option<F> = None;
     for (a, b) in f.iter().zip(x) {
-        if a.is_zero() || b.is_zero() {
+        if a.is_exactly_zero() || b.is_exactly_zero() {
             continue;
         }
         let term = if *a == one {
@@ -83,7 +83,7 @@ impl<'a, F: SimField> ExactEngine<'a, F> {
     fn approaching(&self) -> impl Iterator<Item = (usize, F, F)> + '_ {
         (0..self.sys.n()).filter(|&k| Some(k) != self.last).filter_map(|k| {
             let u = dot(&self.sys.contacts[k], &self.p);
-            u.is_negative().then(|| (k, dot(&self.sys.contacts[k], &self.q), u.negated()))
+            u.below_zero().then(|| (k, dot(&self.sys.contacts[k], &self.q), u.negated()))
         })
     }
 
@@ -103,7 +103,7 @@ impl<'a, F: SimField> ExactEngine<'a, F> {
         let mut best: Option<(Vec<usize>, F, F)> = None;
         for (k, h, w) in self.approaching() {
             match &mut best {
-                Some((at, bh, bw)) => match h.times(bw).cmp(&bh.times(&w)) {
+                Some((at, bh, bw)) => match h.times(bw).minus(&bh.times(&w)).fast_sign() {
                     std::cmp::Ordering::Greater => {}
                     std::cmp::Ordering::Equal => at.push(k),
                     std::cmp::Ordering::Less => best = Some((vec![k], h, w)),
@@ -117,10 +117,10 @@ impl<'a, F: SimField> ExactEngine<'a, F> {
     /// Moves for time t and applies the impact at k with pre-impact normal velocity -w.
     fn apply(&mut self, k: usize, t: &F, w: &F) {
         for ((q, p), kick) in self.q.iter_mut().zip(self.p.iter_mut()).zip(&self.sys.kicks[k]) {
-            if !p.is_zero() {
+            if !p.is_exactly_zero() {
                 *q = q.plus(&t.times(p));
             }
-            if !kick.is_zero() {
+            if !kick.is_exactly_zero() {
                 *p = p.plus(&w.times(kick));
             }
         }
@@ -142,11 +142,11 @@ impl<F: SimField> Engine for ExactEngine<'_, F> {
     }
 
     fn v_positive(&self) -> bool {
-        dot(&self.sys.centre, &self.p).is_positive()
+        dot(&self.sys.centre, &self.p).fast_sign() == std::cmp::Ordering::Greater
     }
 
     fn at_rest(&self) -> bool {
-        self.p.iter().all(Ring::is_zero)
+        self.p.iter().all(SimField::is_exactly_zero)
     }
 
     fn time(&self) -> f64 {

@@ -244,7 +244,8 @@ impl<'a, F: SimField> Pair<'a, F> {
         if x.is_positive() || y.is_positive() {
             return Err("impulses of the wrong sign (model error)".into());
         }
-        let limit_velocity: Vec3<F> = std::array::from_fn(|i| p[i].minus(&x.times(&kh[i])).minus(&y.times(&ko[i])));
+        let limit_velocity: Vec3<F> =
+            std::array::from_fn(|i| p[i].minus(&x.times(&kh[i])).minus(&y.times(&ko[i])));
         if !dot(fh, &limit_velocity).is_zero() || !dot(fo, &limit_velocity).is_zero() {
             return Err("limit velocity does not rest the pair (model error)".into());
         }

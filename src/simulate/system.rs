@@ -181,7 +181,7 @@ impl<F: SimField> System<F> {
         let mut t = F::zero();
         for (r, row) in self.gram.iter().enumerate() {
             for (c, g) in row.iter().enumerate() {
-                if !g.is_zero() {
+                if !g.is_exactly_zero() {
                     t = t.plus(&g.times(&p[r].times(&p[c])));
                 }
             }

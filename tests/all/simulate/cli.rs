@@ -226,7 +226,10 @@ fn exact_simulation_runs_in_the_number_field_for_every_n() {
         let o = simulate(&[&args[..], &["--exact"]].concat(), d.path());
         assert_eq!(o.status.code(), Some(0), "n = {n}: {}", stderr(&o));
         let text = stdout(&o);
-        assert!(text.contains(&format!("exact, in Q(cos 2pi/{n})")) && text.contains("outcome: CC"), "{text}");
+        assert!(
+            text.contains(&format!("exact, in Q(cos 2pi/{n})")) && text.contains("outcome: CC"),
+            "{text}"
+        );
         let e = json(&simulate(&[&args[..], &["--exact", "--json"]].concat(), d.path()));
         let f = json(&simulate(&[&args[..], &["--json"]].concat(), d.path()));
         assert_eq!((e["arithmetic"].as_str(), f["arithmetic"].as_str()), (Some("exact"), Some("f64")));

@@ -4,7 +4,7 @@
 
 use super::{model as rational_model, random_rational_start};
 use crate::common::q;
-use chatter::exact::{Q, Ring};
+use chatter::exact::{Q, QExt, Ring};
 use chatter::simulate::{
     Arithmetic, Engine, ExactEngine, Initial, Model, Nf, Options, Outcome, Shape, SplitMix64, Start, Step,
     System, exact_drop, simulate, simulate_exact,
@@ -60,13 +60,19 @@ fn pair_proofs<E: Engine>(e: &mut E, k: usize) -> Vec<String> {
 /// type) and the rational engine follow the same impacts with the same exact times and energies.
 #[test]
 fn the_field_engine_equals_the_rational_engine_where_the_cosine_is_rational() {
-    for (n, kappa, gamma) in [(3, "3/20", "1/20"), (4, "1/40", "1/100"), (6, "1/40", "1/100"), (4, "1", "3/10")] {
+    for (n, kappa, gamma) in
+        [(3, "3/20", "1/20"), (4, "1/40", "1/100"), (6, "1/40", "1/100"), (4, "1", "3/10")]
+    {
         let m = rational_model(n, kappa, gamma);
         let fs = field_system(n, kappa, gamma);
-        assert_eq!(fs.contacts.iter().map(|f| f.clone().map(|x| x.as_rational().unwrap())).collect::<Vec<_>>(), m.system().contacts);
+        assert_eq!(
+            fs.contacts.iter().map(|f| f.clone().map(|x| x.as_rational().unwrap())).collect::<Vec<_>>(),
+            m.system().contacts
+        );
         let (mut impacts, mut rng) = (0, SplitMix64::new(n));
         for seed in 0..8 {
-            let start = if seed < 4 { exact_drop(&m.float, seed) } else { random_rational_start(&m, &mut rng) };
+            let start =
+                if seed < 4 { exact_drop(&m.float, seed) } else { random_rational_start(&m, &mut rng) };
             let a = trace(&mut ExactEngine::new(m.system(), &start), 40);
             let b = trace(&mut ExactEngine::new(&fs, &start), 40);
             assert_eq!(a, b, "n={n} kappa={kappa} gamma={gamma} seed={seed}");
@@ -125,7 +131,9 @@ fn exact_energy_balance_in_the_number_field() {
 /// in the same order, with times equal to about 1e-9.
 #[test]
 fn field_and_float_runs_agree_on_random_starts() {
-    for (n, kappa, gamma) in [(5, "1/20", "1/10"), (7, "1/200", "1/50"), (8, "1/6", "1/100"), (12, "1/40", "1/20")] {
+    for (n, kappa, gamma) in
+        [(5, "1/20", "1/10"), (7, "1/200", "1/50"), (8, "1/6", "1/100"), (12, "1/40", "1/20")]
+    {
         let m = model(n, kappa, gamma);
         let sys = m.field_system().expect("irrational cosine");
         let mut rng = SplitMix64::new(100 + n);
@@ -149,7 +157,11 @@ fn field_and_float_runs_agree_on_random_starts() {
 /// ICC where it fails), and the exact report says which field it ran in.
 #[test]
 fn exact_field_runs_classify_like_f64() {
-    for (n, kappa, gamma, expected) in [(5, "1/200", "1/100", Outcome::Cc), (7, "1/6", "1/100", Outcome::Icc), (8, "1/200", "1/20", Outcome::Cc)] {
+    for (n, kappa, gamma, expected) in [
+        (5, "1/200", "1/100", Outcome::Cc),
+        (7, "1/6", "1/100", Outcome::Icc),
+        (8, "1/200", "1/20", Outcome::Cc),
+    ] {
         let m = model(n, kappa, gamma);
         for seed in 0..3 {
             let opts = Options::new(200);
@@ -175,5 +187,31 @@ fn mirror_symmetric_starts_give_exact_ties_in_the_field() {
         let run = simulate_exact(&m, &start, &Options::new(200));
         assert_eq!(run.outcome, Outcome::Simultaneous, "n={n}: {:?}", run.decision);
         assert_eq!(run.decision.key(), "exact-tie", "n={n}");
+    }
+}
+
+/// The simulator's own reading of field elements (cached enclosures of c, `simulate::scalar`)
+/// agrees with the kernel: signs of elements built to be tiny (a + b·c with a/b a convergent of
+/// -c, down to about 2^-200) and their magnitudes to a relative 2^-50.
+#[test]
+fn fast_signs_and_magnitudes_agree_with_the_kernel_on_tiny_elements() {
+    use chatter::exact::{CosField, OrderedField};
+    use chatter::simulate::SimField;
+    for n in [5u64, 7, 8, 9, 11, 12, 16, 64] {
+        let field = CosField::<Q>::new(n).unwrap();
+        let c = field.generator();
+        for bits in [8i64, 40, 100, 200] {
+            let (lo, _) = c.enclose(&Q::from_f64_exact(2f64.powi(-bits as i32)).unwrap());
+            for (a, b) in [(lo.clone(), 1), (lo.clone() * Q::int(3), 3), (-lo.clone(), -1)] {
+                // x = b·c - a·(b-scaled) is within about 2^-bits of 0, never 0.
+                let x = c.times(&Nf::from_q(&Q::int(b))).minus(&Nf::from_q(&a));
+                assert_eq!(x.fast_sign(), x.sign(), "n={n} bits={bits}");
+                let (klo, khi) = x.enclose(&(x.rational_below().abs() * Q::new(1, 1 << 40)));
+                let m = x.magnitude().to_f64();
+                let k = ((klo + khi) * Q::new(1, 2)).to_f64().abs();
+                assert!((m - k).abs() <= k * 1e-12, "n={n} bits={bits}: {m} vs {k}");
+                assert!(x.rational_below() <= x.rational_above());
+            }
+        }
     }
 }
