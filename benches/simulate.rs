@@ -3,7 +3,7 @@
 
 use chatter::exact::Q;
 use chatter::simulate::{
-    Engine, FloatEngine, Model, Options, Step, random_drop, simulate_exact, simulate_float,
+    Engine, FloatEngine, Model, Options, Shape, Step, random_drop, simulate_exact, simulate_float,
 };
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
@@ -59,6 +59,19 @@ fn bench(c: &mut Criterion) {
         let s = chatter::simulate::exact_drop(fs, 1);
         b.iter(|| simulate_exact(&square, black_box(&s), &opts).outcome)
     });
+    g.finish();
+
+    // Exact simulation in Q(cos 2 pi/n) (issue 10 §1): one CC drop of 200 impacts per n.
+    let mut g = c.benchmark_group("field-exact-200-impacts");
+    g.sample_size(10);
+    for n in [5u64, 7, 8, 12] {
+        let m = Model::new(Shape::Polygon(n), Q::new(1, 200), Q::new(1, 100)).expect("valid body");
+        let s = chatter::simulate::exact_drop(&m.float, 1);
+        let _ = m.field_system();
+        g.bench_function(format!("n{n}-kappa-1/200-gamma-1/100"), |b| {
+            b.iter(|| simulate_exact(&m, black_box(&s), &opts).outcome)
+        });
+    }
     g.finish();
 }
 

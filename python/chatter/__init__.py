@@ -119,8 +119,8 @@ def simulate(n, kappa, gamma, seed=0, impacts=200, exact=False, runs=None, posit
 
     Without position/velocity the body is dropped as in the paper from ``seed``; ``runs=M``
     simulates M drops from seeds seed..seed+M-1 and returns their counts. impacts: the impact
-    budget. exact: exact rationals (n = 2, 3, 4, 6) instead of f64. position, velocity: a
-    given start in chatter's coordinates ((h0, h1, hc), (u0, u1, v); the rod two numbers).
+    budget. exact: exact arithmetic instead of f64 (rationals for n = 2, 3, 4, 6, the field
+    Q(cos 2π/n) for other n). position, velocity: a given start in chatter's coordinates ((h0, h1, hc), (u0, u1, v); the rod two numbers).
 
     Returns the report of ``chatter simulate --json`` (docs/json.md): ``chatter.simulate/1``
     with "outcome" ("CC", "PCC", "ICC", ...), "decided_by", "impacts", "start", "sequence",

@@ -21,7 +21,7 @@ BAD = [
     (chatter.classify, (65, F(1, 6), F(1, 100)), "invalid-input"),
     (chatter.classify, (4, F(1, 6), F(1, 100), (1, 2)), "invalid-input"),
     (chatter.simulate, (0, F(1, 6), F(1, 100)), "invalid-input"),
-    (chatter.simulate, (5, F(1, 6), F(1, 100), 0, 200, True), "unsupported-n"),
+    (chatter.simulate, (65, F(1, 6), F(1, 100), 0, 200, True), "invalid-input"),
     (chatter.map, (3, (0, 1, 0), (0, 1, 3)), "invalid-input"),
     (chatter.map, (3, (1, 0, 3), (0, 1, 3)), "invalid-input"),
     (chatter.map, (3, (0, 1, 10**6), (0, 1, 3)), "invalid-input"),

@@ -73,6 +73,15 @@ def test_simulate_batch_and_exact_and_given_start():
     assert [exact(q) for q in g["start"]["position"]] == [F(1, 2), F(1, 2), F(1)]
 
 
+def test_exact_simulation_in_a_number_field_agrees_with_f64():
+    # n = 5: cos(2 pi/5) is irrational, the exact run is in Q(cos 2 pi/5) (issue 10).
+    e = chatter.simulate(5, F(1, 20), F(1, 10), seed=3, exact=True, impacts=60)
+    f = chatter.simulate(5, F(1, 20), F(1, 10), seed=3, impacts=60)
+    assert e["arithmetic"] == "exact" and f["arithmetic"] == "f64"
+    assert e["outcome"] == f["outcome"]
+    assert e["sequence"][:20] == f["sequence"][:20]
+
+
 def test_bodies_catalogue():
     report = chatter.bodies()
     assert report["schema"] == "chatter.bodies/1"

@@ -39,6 +39,7 @@ Numbers are read exactly: 1/6, 0.01 (= 1/100), 1e-2. Exit status 0 when the simu
 Examples:\n  chatter simulate --n 3 --kappa 3/20 --gamma 1/20 --seed 7\n  \
 chatter simulate --n 4 --runs 1000 --json\n  \
 chatter simulate --n 3 --kappa 1/8 --gamma 1/200 --exact --plot pcc.png\n  \
+chatter simulate --n 5 --kappa 1/20 --gamma 1/10 --exact\n  \
 chatter simulate --n 4 --position 1/2,1/2,1 --velocity -1,-1,-1 --exact")]
 pub struct SimulateArgs {
     #[command(flatten)]
@@ -49,8 +50,8 @@ pub struct SimulateArgs {
     /// Impact budget.
     #[arg(long, default_value = "200", allow_hyphen_values = true)]
     pub impacts: String,
-    /// Exact rational arithmetic instead of f64 (slower; decides ties and symmetric cases exactly;
-    /// n = 2, 3, 4, 6, where cos 2pi/n is rational).
+    /// Exact arithmetic instead of f64 (slower; decides ties and symmetric cases exactly): rationals
+    /// for n = 2, 3, 4, 6, the number field Q(cos 2pi/n) for every other n.
     #[arg(long)]
     pub exact: bool,
     /// Write one CSV row per impact to this file.
@@ -98,9 +99,9 @@ fn numbers(flag: &str, s: &str) -> Result<Vec<Q>, String> {
     s.split(',').map(|x| parse_user_number(x).map_err(|e| format!("{flag}: {e}"))).collect()
 }
 
-/// The model of the body: the rod (n = 2) or a regular n-gon, n ≤ 64 (exact for n = 3, 4, 6,
-/// the float model otherwise; issue 10 §1), and `--exact` only where the model is exact.
-fn model(n: u64, kappa: &Q, gamma: &Q, exact: bool) -> Result<Model, String> {
+/// The model of the body: the rod (n = 2) or a regular n-gon, n ≤ 64 (exact over Q for n = 3, 4,
+/// 6, over Q(cos 2π/n) and the float model otherwise; issue 10 §1).
+fn model(n: u64, kappa: &Q, gamma: &Q) -> Result<Model, String> {
     if !(2..=MAX_N).contains(&n) {
         return Err(format!("--n: {n} is outside 2..={MAX_N} (2 is the rod, 3..={MAX_N} regular n-gons)"));
     }
@@ -110,19 +111,12 @@ fn model(n: u64, kappa: &Q, gamma: &Q, exact: bool) -> Result<Model, String> {
         BodyError::GammaOutOfRange => format!("--gamma: {e}"),
         BodyError::UnsupportedN(_) => format!("--n: {e}"),
     })?;
-    if exact && model.exact.is_none() {
-        return Err(format!(
-            "--exact: exact simulation supports n = 2, 3, 4, 6 (rational cosines); the simulator has no \
-             Q(cos 2*pi/{n}) arithmetic yet (certificates do: chatter certify --n {n}). Without --exact, \
-             n = {n} is simulated in f64"
-        ));
-    }
     Ok(model)
 }
 
 fn validate(a: SimulateArgs) -> Result<Validated, String> {
     let (n, kappa, gamma) = a.body.parse()?;
-    let model = model(n, &kappa, &gamma, a.exact)?;
+    let model = model(n, &kappa, &gamma)?;
     let impacts: usize = a
         .impacts
         .trim()
@@ -199,10 +193,11 @@ fn validate(a: SimulateArgs) -> Result<Validated, String> {
     })
 }
 
-fn arithmetic_text(a: Arithmetic) -> &'static str {
-    match a {
-        Arithmetic::Float => "f64 (renormalised)",
-        Arithmetic::Exact => "exact rationals",
+fn arithmetic_text(a: Arithmetic, model: &Model) -> String {
+    match (a, &model.exact) {
+        (Arithmetic::Float, _) => "f64 (renormalised)".into(),
+        (Arithmetic::Exact, Some(_)) => "exact rationals".into(),
+        (Arithmetic::Exact, None) => format!("exact, in Q(cos 2pi/{})", model.n()),
     }
 }
 
@@ -230,7 +225,7 @@ fn single_text(v: &Validated, run: &Run) -> Vec<String> {
             "{}, {}, {}, budget {} impacts",
             head(v),
             start_text(v),
-            arithmetic_text(v.arithmetic),
+            arithmetic_text(v.arithmetic, &v.model),
             run.budget
         ),
         format!("outcome: {}", run.outcome),
@@ -327,7 +322,7 @@ fn run_many(v: &Validated, runs: u64) -> cli::Outcome {
             head(v),
             r.seeds[0],
             r.seeds[1],
-            arithmetic_text(v.arithmetic),
+            arithmetic_text(v.arithmetic, &v.model),
             r.budget
         ));
         let count = |o: &Outcome| r.counts.get(o.name()).copied().unwrap_or(0);

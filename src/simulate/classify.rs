@@ -28,12 +28,11 @@
 //!      too close to 1 to tell within the budget) or when N < [`MIN_BUDGET_FOR_CC`].
 
 use super::engine::{Engine, Step};
-use super::pcc::{PairProof, PaperPcc, paper_criterion};
-use super::snapshot::{Scaled, Snapshot, scaled};
+use super::pcc::{PairSummary, PaperPcc, paper_criterion};
+use super::snapshot::{Scaled, Snapshot};
 use super::system::FloatSystem;
 // Formerly defined here; its old path keeps working.
 pub use super::text::singular;
-use crate::exact::{QExt, Ring};
 
 /// Minimal alternation length before the PCC tests run (then after every impact).
 pub const PCC_MIN_RUN: usize = 6;
@@ -374,15 +373,15 @@ impl Verdict {
     }
 
     /// Rule 4, exact: the pair-chatter proof holds; CC when the limit velocity is 0, else PCC.
-    fn exact_pair(after: usize, pr: &PairProof) -> Verdict {
+    fn exact_pair(after: usize, pr: &PairSummary) -> Verdict {
         let decision = Decision::ExactPair {
             after,
             pair: pr.pair,
             time_bound: pr.time_bound.to_f64(),
-            v_limit: pr.v_limit.to_f64(),
+            v_limit: pr.v_limit,
         };
-        let outcome = if pr.v_limit.is_zero() { Outcome::Cc } else { Outcome::Pcc };
-        Verdict::new(outcome, decision).with_tail(Some(scaled(&pr.time_bound).log2()))
+        let outcome = if pr.at_rest { Outcome::Cc } else { Outcome::Pcc };
+        Verdict::new(outcome, decision).with_tail(Some(pr.time_bound.log2()))
     }
 }
 

@@ -1,6 +1,7 @@
 //! Initial states: user-given states in our coordinates, and the paper's random-drop protocol
 //! (section "Comparison with direct simulation") with a seeded, portable generator.
 
+use super::scalar::SimField;
 use super::system::{FloatSystem, Shape, System};
 use crate::exact::{Q, QExt, Ring};
 use chatter_kernel::model::linalg::Vec3;
@@ -49,7 +50,11 @@ impl std::error::Error for StartError {}
 
 /// Builds a start from coordinates in our convention (3 for polygons, 2 for the rod) and checks
 /// that no contact is below the floor and that the body moves.
-pub fn given_start(sys: &System, position: &[Q], velocity: &[Q]) -> Result<Start<Q>, StartError> {
+pub fn given_start<F: SimField>(
+    sys: &System<F>,
+    position: &[Q],
+    velocity: &[Q],
+) -> Result<Start<Q>, StartError> {
     let dim = sys.shape.dim();
     for v in [position, velocity] {
         if v.len() != dim {
@@ -62,10 +67,11 @@ pub fn given_start(sys: &System, position: &[Q], velocity: &[Q]) -> Result<Start
     Ok(start)
 }
 
-/// Checks h_k >= 0 for every contact and p != 0.
-pub fn check_start(sys: &System, s: &Start<Q>) -> Result<(), StartError> {
+/// Checks h_k >= 0 for every contact (exactly, in the body's field) and p != 0.
+pub fn check_start<F: SimField>(sys: &System<F>, s: &Start<Q>) -> Result<(), StartError> {
+    let q = s.q.clone().map(|x| F::from_q(&x));
     for k in 0..sys.n() {
-        let h = sys.along(k, &s.q);
+        let h = sys.along(k, &q);
         if h.is_negative() {
             return Err(StartError::BelowFloor { contact: k, height: h.to_string() });
         }

@@ -2,7 +2,7 @@
 //! state for classification and recording (the types of [`super::snapshot`], re-exported here
 //! under their former paths).
 
-use super::pcc::PairProof;
+use super::pcc::PairSummary;
 pub use super::snapshot::{LOG2_ZERO, Scaled, Snapshot, pow2};
 
 /// What happened at one event.
@@ -32,7 +32,7 @@ pub trait Engine {
     /// The current state, normalised.
     fn snapshot(&self) -> Snapshot;
     /// The exact pair-chatter test of [`super::pcc::prove_pair_chatter`] (exact engines only).
-    fn prove_pair(&self, _hit: usize, _other: usize) -> Option<Result<PairProof, String>> {
+    fn prove_pair(&self, _hit: usize, _other: usize) -> Option<Result<PairSummary, String>> {
         None
     }
     /// Whether this engine computes exactly.

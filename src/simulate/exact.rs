@@ -1,19 +1,20 @@
-//! The exact engine: rational states and rational impact times (every impact time is
-//! h_k / (-u_k) with rational h_k, u_k), so ties are decided exactly and symmetric data keep
-//! their symmetry (docs/model.md §10).
+//! The exact engine: states and impact times in the body's field (every impact time is
+//! h_k / (-u_k) with h_k, u_k in Q, or in Q(cos 2π/n) for the other n-gons, issue 10 §1), so
+//! ties are decided exactly and symmetric data keep their symmetry (docs/model.md §10).
 
 use super::drop::Start;
 use super::engine::{Engine, Step};
-use super::pcc::{PairProof, prove_pair_chatter};
+use super::pcc::{PairSummary, prove_pair_chatter};
+use super::scalar::SimField;
 pub use super::snapshot::scaled; // formerly defined here
 use super::snapshot::{Scaled, Snapshot};
 use super::system::System;
-use crate::exact::{Q, Ring};
+use crate::exact::Q;
 use chatter_kernel::model::linalg::Vec3;
 
-/// A rational vector as (v_m, e) with v = v_m · 2^e and the largest |component| of v_m in [1, 2).
-pub fn normalised(v: &Vec3<Q>) -> ([f64; 3], i64) {
-    let parts = v.clone().map(|x| (x.sign(), scaled(&x)));
+/// An exact vector as (v_m, e) with v = v_m · 2^e and the largest |component| of v_m in [1, 2).
+pub fn normalised<F: SimField>(v: &Vec3<F>) -> ([f64; 3], i64) {
+    let parts = v.clone().map(|x| (x.sign(), x.magnitude()));
     let Some(e) = parts.iter().filter(|(_, s)| s.m > 0.0).map(|(_, s)| s.e).max() else {
         return ([0.0; 3], 0);
     };
@@ -31,117 +32,121 @@ pub fn normalised(v: &Vec3<Q>) -> ([f64; 3], i64) {
 }
 
 /// f·x, skipping the zero and unit coefficients that dominate the covectors.
-fn dot(f: &Vec3<Q>, x: &Vec3<Q>) -> Q {
-    let mut acc: Option<Q> = None;
+fn dot<F: SimField>(f: &Vec3<F>, x: &Vec3<F>) -> F {
+    let (one, minus_one) = (F::one(), F::from_i64(-1));
+    let mut acc: Option<F> = None;
     for (a, b) in f.iter().zip(x) {
-        if a.is_zero() || b.is_zero() {
+        if a.is_exactly_zero() || b.is_exactly_zero() {
             continue;
         }
-        let term = if *a == Q::int(1) {
+        let term = if *a == one {
             b.clone()
-        } else if *a == Q::int(-1) {
-            -b
+        } else if *a == minus_one {
+            b.negated()
         } else {
-            a * b
+            a.times(b)
         };
         acc = Some(match acc {
             None => term,
-            Some(s) => s + term,
+            Some(s) => s.plus(&term),
         });
     }
-    acc.unwrap_or_else(|| Q::int(0))
+    acc.unwrap_or_else(F::zero)
 }
 
 /// The exact event-driven simulation of one drop.
 #[derive(Clone, Debug)]
-pub struct ExactEngine<'a> {
-    sys: &'a System,
-    q: Vec3<Q>,
-    p: Vec3<Q>,
+pub struct ExactEngine<'a, F: SimField = Q> {
+    sys: &'a System<F>,
+    q: Vec3<F>,
+    p: Vec3<F>,
     last: Option<usize>,
     /// Time of the last impact: the sum of the exact intervals, each rounded to `f64` (an exact
     /// sum would carry the product of all denominators).
     time: f64,
 }
 
-impl<'a> ExactEngine<'a> {
-    pub fn new(sys: &'a System, start: &Start<Q>) -> ExactEngine<'a> {
-        ExactEngine { sys, q: start.q.clone(), p: start.p.clone(), last: None, time: 0.0 }
+impl<'a, F: SimField> ExactEngine<'a, F> {
+    /// The engine at a start given in rationals (also for a system over Q(cos 2π/n)).
+    pub fn new(sys: &'a System<F>, start: &Start<Q>) -> ExactEngine<'a, F> {
+        let (q, p) = (start.q.clone().map(|x| F::from_q(&x)), start.p.clone().map(|x| F::from_q(&x)));
+        ExactEngine { sys, q, p, last: None, time: 0.0 }
     }
 
     /// The exact state (q, p).
-    pub fn state(&self) -> (&Vec3<Q>, &Vec3<Q>) {
+    pub fn state(&self) -> (&Vec3<F>, &Vec3<F>) {
         (&self.q, &self.p)
     }
 
+    /// (h_k, -u_k) of every approaching contact k (except the last to land): it lands after
+    /// h_k / (-u_k).
+    fn approaching(&self) -> impl Iterator<Item = (usize, F, F)> + '_ {
+        (0..self.sys.n()).filter(|&k| Some(k) != self.last).filter_map(|k| {
+            let u = dot(&self.sys.contacts[k], &self.p);
+            u.below_zero().then(|| (k, dot(&self.sys.contacts[k], &self.q), u.negated()))
+        })
+    }
+
     /// The landing time of every approaching contact (except the last to land), exactly.
-    pub fn candidate_times(&self) -> Vec<(usize, Q)> {
-        (0..self.sys.n())
-            .filter(|&k| Some(k) != self.last)
-            .filter_map(|k| {
-                let u = dot(&self.sys.contacts[k], &self.p);
-                u.is_negative().then(|| (k, dot(&self.sys.contacts[k], &self.q) / (-&u)))
-            })
-            .collect()
+    pub fn candidate_times(&self) -> Vec<(usize, F)> {
+        self.approaching().map(|(k, h, w)| (k, h.over(&w).expect("w > 0"))).collect()
     }
 
     /// The exact kinetic energy.
-    pub fn energy(&self) -> Q {
+    pub fn energy(&self) -> F {
         self.sys.energy(&self.p)
     }
-}
 
-impl Engine for ExactEngine<'_> {
-    fn step(&mut self) -> Step {
-        let sys = self.sys;
-        // (time, u_k) of the earliest approaching contacts; ties collected.
-        let mut best: Option<(Q, Q)> = None;
-        let mut at: Vec<usize> = Vec::new();
-        for k in 0..sys.n() {
-            if Some(k) == self.last {
-                continue;
-            }
-            let u = dot(&sys.contacts[k], &self.p);
-            if !u.is_negative() {
-                continue;
-            }
-            let t = dot(&sys.contacts[k], &self.q) / (-&u);
-            match &best {
-                Some((bt, _)) if t > *bt => {}
-                Some((bt, _)) if t == *bt => at.push(k),
-                _ => {
-                    best = Some((t, u));
-                    at.clear();
-                    at.push(k);
-                }
+    /// The earliest approaching contacts (ties collected) with the h and -u of the first; times
+    /// h/w are compared as h w' against h' w, with no division.
+    fn earliest(&self) -> Option<(Vec<usize>, F, F)> {
+        let mut best: Option<(Vec<usize>, F, F)> = None;
+        for (k, h, w) in self.approaching() {
+            match &mut best {
+                Some((at, bh, bw)) => match h.times(bw).minus(&bh.times(&w)).fast_sign() {
+                    std::cmp::Ordering::Greater => {}
+                    std::cmp::Ordering::Equal => at.push(k),
+                    std::cmp::Ordering::Less => best = Some((vec![k], h, w)),
+                },
+                None => best = Some((vec![k], h, w)),
             }
         }
-        let Some((t, u)) = best else { return Step::NoApproach };
-        let dt = scaled(&t);
-        if at.len() > 1 {
-            return Step::Tie { contacts: at, dt, exact: true };
-        }
-        let k = at[0];
-        self.time += dt.to_f64();
-        let kick = &sys.kicks[k];
-        for ((q, p), k) in self.q.iter_mut().zip(self.p.iter_mut()).zip(kick) {
-            if !p.is_zero() {
-                *q = &*q + &(&t * &*p);
+        best
+    }
+
+    /// Moves for time t and applies the impact at k with pre-impact normal velocity -w.
+    fn apply(&mut self, k: usize, t: &F, w: &F) {
+        for ((q, p), kick) in self.q.iter_mut().zip(self.p.iter_mut()).zip(&self.sys.kicks[k]) {
+            if !p.is_exactly_zero() {
+                *q = q.plus(&t.times(p));
             }
-            if !k.is_zero() {
-                *p = &*p - &(&u * k);
+            if !kick.is_exactly_zero() {
+                *p = p.plus(&w.times(kick));
             }
         }
         self.last = Some(k);
-        Step::Impact { contact: k, dt }
+    }
+}
+
+impl<F: SimField> Engine for ExactEngine<'_, F> {
+    fn step(&mut self) -> Step {
+        let Some((at, h, w)) = self.earliest() else { return Step::NoApproach };
+        let t = h.over(&w).expect("w > 0");
+        let dt = t.magnitude();
+        if at.len() > 1 {
+            return Step::Tie { contacts: at, dt, exact: true };
+        }
+        self.time += dt.to_f64();
+        self.apply(at[0], &t, &w);
+        Step::Impact { contact: at[0], dt }
     }
 
     fn v_positive(&self) -> bool {
-        dot(&self.sys.centre, &self.p).is_positive()
+        dot(&self.sys.centre, &self.p).fast_sign() == std::cmp::Ordering::Greater
     }
 
     fn at_rest(&self) -> bool {
-        self.p.iter().all(Ring::is_zero)
+        self.p.iter().all(SimField::is_exactly_zero)
     }
 
     fn time(&self) -> f64 {
@@ -151,11 +156,11 @@ impl Engine for ExactEngine<'_> {
     fn snapshot(&self) -> Snapshot {
         let (q, q_exp) = normalised(&self.q);
         let (p, p_exp) = normalised(&self.p);
-        Snapshot { q, q_exp, p, p_exp, energy: scaled(&self.energy()) }
+        Snapshot { q, q_exp, p, p_exp, energy: self.energy().magnitude() }
     }
 
-    fn prove_pair(&self, hit: usize, other: usize) -> Option<Result<PairProof, String>> {
-        Some(prove_pair_chatter(self.sys, &self.q, &self.p, hit, other))
+    fn prove_pair(&self, hit: usize, other: usize) -> Option<Result<PairSummary, String>> {
+        Some(prove_pair_chatter(self.sys, &self.q, &self.p, hit, other).map(|pr| pr.summary()))
     }
 
     fn is_exact(&self) -> bool {

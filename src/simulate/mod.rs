@@ -2,9 +2,10 @@
 //! simulation"): event-driven, in `f64` with renormalisation and in exact rationals, with the
 //! CC / PCC / ICC classification of [`classify`].
 //!
-//! - [`system`]: the body as covectors and impact kicks (exact: polygons n = 3, 4, 6 and the
-//!   rod; `f64`: every regular n-gon up to n = 64), [`frame`]: the coordinates of the `f64` engine,
-//!   [`regular`]: n-gons with irrational cos 2π/n (the float model, exact start checks).
+//! - [`system`]: the body as covectors and impact kicks (exact: over Q for the rod and n = 3, 4,
+//!   6, over Q(cos 2π/n) for the other n-gons; `f64`: every regular n-gon up to n = 64),
+//!   [`scalar`]: the two exact fields, [`frame`]: the coordinates of the `f64` engine,
+//!   [`regular`]: the float model of n-gons with irrational cos 2π/n.
 //! - [`drop`](mod@drop): initial states, the paper's random-drop protocol, the seeded generator.
 //! - [`engine`], [`float`], [`exact`]: one interface, two arithmetics; [`snapshot`]: the
 //!   read-outs of a state they share.
@@ -12,9 +13,11 @@
 //! - [`pattern`]: the impact sequence in words; [`record`]: CSV; [`text`]: wording (the figure of
 //!   a run is `crate::plot::trajectory`, feature `cli`).
 //!
-//! Module dependencies (acyclic): `snapshot` and `text` depend on no other module here; `system`
-//! and `frame` on each other; `drop` on `system`; `regular` on `drop`, `system`; `pcc` on `snapshot`, `system`; `engine` on `pcc`, `snapshot`; `float` and
-//! `exact` on `drop`, `engine`, `snapshot`, `system` (`exact` also on `pcc`); `classify` on
+//! Module dependencies (acyclic): `snapshot` and `text` depend on no other module here, `scalar`
+//! on `snapshot`; `system` and `frame` on each other and `scalar`; `drop` on `scalar`, `system`;
+//! `regular` on `system`; `pcc` on `scalar`, `snapshot`, `system`; `engine` on `pcc`,
+//! `snapshot`; `float` and `exact` on `drop`, `engine`, `snapshot`, `system` (`exact` also on
+//! `pcc`, `scalar`); `classify` on
 //! `engine`, `pcc`, `snapshot`, `system`, `text`; `pattern` on `system`, `text`; `record` on
 //! `classify`, `snapshot`, `system`.
 //!
@@ -36,6 +39,7 @@ pub mod pattern;
 pub mod pcc;
 pub mod record;
 pub mod regular;
+pub mod scalar;
 pub mod snapshot;
 pub mod system;
 pub mod text;
@@ -45,6 +49,7 @@ pub use drop::{SplitMix64, Start, StartError, exact_drop, given_start, random_dr
 pub use engine::{Engine, Step};
 pub use exact::ExactEngine;
 pub use float::FloatEngine;
+pub use scalar::{Nf, SimField};
 pub use snapshot::{Scaled, Snapshot};
 pub use system::{FloatSystem, Shape, System};
 
@@ -56,7 +61,7 @@ use chatter_kernel::model::BodyError;
 pub enum Arithmetic {
     /// `f64` with renormalisation after every impact.
     Float,
-    /// Exact rationals.
+    /// Exact: rationals, or Q(cos 2π/n) where the cosine is irrational.
     Exact,
 }
 
@@ -69,6 +74,15 @@ impl Arithmetic {
     }
 }
 
+/// The exact system of a [`Model`], in the smallest field that holds it.
+#[derive(Clone, Copy, Debug)]
+pub enum ExactSystem<'a> {
+    /// Over Q: the rod and n = 3, 4, 6.
+    Rational(&'a System),
+    /// Over Q(cos 2π/n): the other regular n-gons.
+    Field(&'a System<Nf>),
+}
+
 /// Where a simulation starts.
 #[derive(Clone, Debug)]
 pub enum Initial {
@@ -78,12 +92,15 @@ pub enum Initial {
     Given(Box<Start<Q>>),
 }
 
-/// A body in both arithmetics, built once and shared by many runs; `f64` only where
-/// cos 2π/n is irrational (issue 10 §1: exact simulation there needs number fields, §2).
+/// A body in both arithmetics, built once and shared by many runs. Where cos 2π/n is irrational
+/// the `f64` engine runs on the float model and the exact engine in Q(cos 2π/n) (issue 10 §1),
+/// whose system is built on first use ([`Model::field_system`]).
 #[derive(Clone, Debug)]
 pub struct Model {
-    /// The exact model (the rod, n = 3, 4, 6); `None` for the float model of other n-gons.
+    /// The exact model over Q (the rod, n = 3, 4, 6); `None` for other n-gons.
     pub exact: Option<System>,
+    /// The exact model over Q(cos 2π/n) of an n-gon without `exact`, built on first use.
+    field: std::sync::OnceLock<System<Nf>>,
     pub float: FloatSystem,
     /// κ and γ as given (exact).
     pub kappa: Q,
@@ -97,7 +114,7 @@ impl Model {
         match System::new(shape, kappa.clone(), gamma.clone()) {
             Err(BodyError::UnsupportedN(n)) if n >= 3 => {
                 let float = regular::float_system(n, &kappa, &gamma)?;
-                Ok(Model { exact: None, float, kappa, gamma })
+                Ok(Model { exact: None, field: std::sync::OnceLock::new(), float, kappa, gamma })
             }
             r => r.map(Model::of_system),
         }
@@ -113,7 +130,27 @@ impl Model {
     fn of_system(system: System) -> Model {
         let float = FloatSystem::new(&system);
         let (kappa, gamma) = (system.kappa.clone(), system.gamma.clone());
-        Model { exact: Some(system), float, kappa, gamma }
+        Model { exact: Some(system), field: std::sync::OnceLock::new(), float, kappa, gamma }
+    }
+
+    /// The exact model in Q(cos 2π/n) of an n-gon whose cosine is irrational (`None` where the
+    /// rational [`Model::exact`] exists).
+    pub fn field_system(&self) -> Option<&System<Nf>> {
+        match self.exact_system() {
+            ExactSystem::Field(sys) => Some(sys),
+            ExactSystem::Rational(_) => None,
+        }
+    }
+
+    /// The exact system: over Q where it exists, else over Q(cos 2π/n) (built on first use).
+    pub fn exact_system(&self) -> ExactSystem<'_> {
+        if let Some(sys) = &self.exact {
+            return ExactSystem::Rational(sys);
+        }
+        let n = self.n() as u64;
+        ExactSystem::Field(self.field.get_or_init(|| {
+            System::in_field(n, &self.kappa, &self.gamma).expect("validated by the float model")
+        }))
     }
 
     /// The body's shape.
@@ -126,30 +163,21 @@ impl Model {
         self.float.n
     }
 
-    /// The exact system.
+    /// The exact system over Q.
     ///
     /// # Panics
-    /// For the float model of an n-gon with irrational cos 2π/n (`exact` is `None`).
+    /// For an n-gon with irrational cos 2π/n (`exact` is `None`; see [`Model::field_system`]).
     pub fn system(&self) -> &System {
-        self.exact.as_ref().expect("exact simulation needs a rational cos(2 pi/n): n = 2, 3, 4, 6")
+        self.exact.as_ref().expect("a rational exact system needs a rational cos(2 pi/n): n = 2, 3, 4, 6")
     }
 
-    /// A start from coordinates in our convention, checked exactly ([`given_start`]; in
-    /// Q(cos 2π/n) for the float model, [`regular::check_start`]).
+    /// A start from coordinates in our convention, checked exactly ([`given_start`], in
+    /// Q(cos 2π/n) where the cosine is irrational).
     pub fn given_start(&self, position: &[Q], velocity: &[Q]) -> Result<Start<Q>, StartError> {
-        if let Some(sys) = &self.exact {
-            return given_start(sys, position, velocity);
+        match self.exact_system() {
+            ExactSystem::Rational(sys) => given_start(sys, position, velocity),
+            ExactSystem::Field(sys) => given_start(sys, position, velocity),
         }
-        let n = self.n() as u64;
-        for v in [position, velocity] {
-            if v.len() != 3 {
-                return Err(StartError::WrongLength { expected: 3, found: v.len() });
-            }
-        }
-        let three = |v: &[Q]| -> [Q; 3] { std::array::from_fn(|i| v[i].clone()) };
-        let start = Start { q: three(position), p: three(velocity) };
-        regular::check_start(n, &self.kappa, &self.gamma, &start)?;
-        Ok(start)
     }
 
     /// The exact start of `initial`.
@@ -174,18 +202,15 @@ pub fn simulate_float(fs: &FloatSystem, start: &Start<f64>, opts: &Options) -> R
     drive(&mut FloatEngine::new(fs, start), fs, opts)
 }
 
-/// Simulates one drop exactly.
-///
-/// # Panics
-/// For a model without an exact system ([`Model::system`]).
+/// Simulates one drop exactly: in Q, or in Q(cos 2π/n) where the cosine is irrational.
 pub fn simulate_exact(model: &Model, start: &Start<Q>, opts: &Options) -> Run {
-    drive(&mut ExactEngine::new(model.system(), start), &model.float, opts)
+    match model.exact_system() {
+        ExactSystem::Rational(sys) => drive(&mut ExactEngine::new(sys, start), &model.float, opts),
+        ExactSystem::Field(sys) => drive(&mut ExactEngine::new(sys, start), &model.float, opts),
+    }
 }
 
 /// Simulates one drop in the chosen arithmetic.
-///
-/// # Panics
-/// [`Arithmetic::Exact`] on a model without an exact system ([`Model::system`]).
 pub fn simulate(model: &Model, initial: &Initial, arithmetic: Arithmetic, opts: &Options) -> Run {
     match arithmetic {
         Arithmetic::Float => simulate_float(&model.float, &model.float_start(initial), opts),

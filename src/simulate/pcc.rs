@@ -22,7 +22,8 @@
 //!    followed by all contacts landing at once (undecidable in this model); p* = 0 is complete
 //!    chatter; v* > 0 means ICC and is not reported here.
 
-use super::snapshot::Snapshot;
+use super::scalar::SimField;
+use super::snapshot::{Scaled, Snapshot};
 use super::system::{FloatSystem, System};
 use crate::exact::{Q, QExt, Ring};
 use chatter_kernel::model::linalg::{Vec3, dot};
@@ -61,21 +62,50 @@ pub fn paper_criterion(fs: &FloatSystem, s: &Snapshot, a: usize, b: usize) -> Pa
     PaperPcc { pair: (i, (i + 1) % n), q_defect: (1.0 - c(&cq)).abs(), p_defect: (1.0 + c(&cp)).abs() }
 }
 
-/// What the exact pair-chatter test established.
+/// What the exact pair-chatter test established, in the body's field.
 #[derive(Clone, Debug, PartialEq)]
-pub struct PairProof {
+pub struct PairProof<F = Q> {
     /// The chattering pair (the contact just hit, the other).
     pub pair: (usize, usize),
-    /// A rational upper bound on the time until the pair's impacts accumulate.
-    pub time_bound: Q,
+    /// An upper bound on the time until the pair's impacts accumulate.
+    pub time_bound: F,
     /// The velocity at the accumulation point, p* = v*·m_{i,j}.
-    pub limit_velocity: Vec3<Q>,
+    pub limit_velocity: Vec3<F>,
     /// v* (< 0: PCC then a simultaneous landing; 0: the body comes to rest, CC).
-    pub v_limit: Q,
+    pub v_limit: F,
 }
 
-fn min0(x: Q) -> Q {
-    if x.is_negative() { x } else { Q::int(0) }
+/// A [`PairProof`] as the classification reads it, in any field.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PairSummary {
+    /// The chattering pair (the contact just hit, the other).
+    pub pair: (usize, usize),
+    /// The time bound, to `f64` precision.
+    pub time_bound: Scaled,
+    /// v*, to `f64` precision.
+    pub v_limit: f64,
+    /// Whether v* = 0 exactly (the body comes to rest: CC).
+    pub at_rest: bool,
+}
+
+impl<F: SimField> PairProof<F> {
+    /// The read-out for the classification.
+    pub fn summary(&self) -> PairSummary {
+        PairSummary {
+            pair: self.pair,
+            time_bound: self.time_bound.magnitude(),
+            v_limit: self.v_limit.approx(),
+            at_rest: self.v_limit.is_zero(),
+        }
+    }
+}
+
+fn min0<F: SimField>(x: F) -> F {
+    if x.is_negative() { x } else { F::zero() }
+}
+
+fn half<F: SimField>() -> F {
+    F::from_ratio(1, 2)
 }
 
 /// A rational d with 0 < d ≤ √x (x > 0), from the `f64` square root, checked exactly.
@@ -92,13 +122,13 @@ fn sqrt_lower(x: &Q) -> Option<Q> {
 }
 
 /// The exact PCC test, right after an impact at `hit` with `other` its neighbour (module doc).
-pub fn prove_pair_chatter(
-    sys: &System,
-    q: &Vec3<Q>,
-    p: &Vec3<Q>,
+pub fn prove_pair_chatter<F: SimField>(
+    sys: &System<F>,
+    q: &Vec3<F>,
+    p: &Vec3<F>,
     hit: usize,
     other: usize,
-) -> Result<PairProof, String> {
+) -> Result<PairProof<F>, String> {
     let pair = Pair::after_impact(sys, q, p, hit, other)?;
     let disc = pair.basin(&sys.gamma)?;
     let time_bound = pair.time_bound(&sys.gamma, &disc)?;
@@ -113,26 +143,26 @@ pub fn prove_pair_chatter(
 
 /// The closed two-contact system right after an impact at `hit`: a = u_hit ≥ 0, b = u_other < 0,
 /// h = h_other ≥ 0, and the coupling E = f_other·kick_hit = f_hit·kick_other < 0.
-struct Pair<'a> {
+struct Pair<'a, F> {
     hit: usize,
     other: usize,
-    kicks: (&'a Vec3<Q>, &'a Vec3<Q>),
-    a: Q,
-    b: Q,
-    h: Q,
-    e: Q,
+    kicks: (&'a Vec3<F>, &'a Vec3<F>),
+    a: F,
+    b: F,
+    h: F,
+    e: F,
 }
 
-impl<'a> Pair<'a> {
+impl<'a, F: SimField> Pair<'a, F> {
     /// The pair if its preconditions hold: neighbours, `hit` on the floor, `other` approaching,
     /// a symmetric and negative coupling.
     fn after_impact(
-        sys: &'a System,
-        q: &Vec3<Q>,
-        p: &Vec3<Q>,
+        sys: &'a System<F>,
+        q: &Vec3<F>,
+        p: &Vec3<F>,
         hit: usize,
         other: usize,
-    ) -> Result<Pair<'a>, String> {
+    ) -> Result<Pair<'a, F>, String> {
         if !sys.adjacent(hit, other) {
             return Err(format!("contacts {hit} and {other} are not neighbours"));
         }
@@ -157,41 +187,42 @@ impl<'a> Pair<'a> {
 
     /// The rod theorem's basin: D = E² - 4γ > 0 and s = a/(-b) < s₊ (2s - |E| < 0 or
     /// (2s - |E|)² < D); returns D.
-    fn basin(&self, gamma: &Q) -> Result<Q, String> {
-        let disc = &self.e * &self.e - Q::int(4) * gamma;
+    fn basin(&self, gamma: &F) -> Result<F, String> {
+        let disc = self.e.times(&self.e).minus(&F::from_i64(4).times(gamma));
         if !disc.is_positive() {
             return Err(format!("E^2 - 4 gamma = {disc} <= 0: the pair's step map has no real eigenvalues"));
         }
-        let s = &self.a / &(-&self.b);
-        let w = Q::int(2) * &s - &(-&self.e);
-        if !(w.is_negative() || &w * &w < disc) {
-            return Err(format!("velocity ratio {} is outside the pair's basin s < s+", s.to_f64()));
+        let s = self.a.over(&self.b.negated()).expect("b < 0");
+        let w = F::from_i64(2).times(&s).plus(&self.e);
+        if !(w.is_negative() || w.times(&w) < disc) {
+            return Err(format!("velocity ratio {} is outside the pair's basin s < s+", s.approx()));
         }
         Ok(disc)
     }
 
-    /// A rational bound on the time until the pair's impacts accumulate: exact steps until
-    /// s_m < |E|/2, then a geometric tail with ratio s_m/(|E| - s_m) (s_m at least r ≥ s₋).
-    fn time_bound(&self, gamma: &Q, disc: &Q) -> Result<Q, String> {
-        let e_abs = -&self.e;
-        let half_e = &e_abs * &Q::new(1, 2);
-        let d = sqrt_lower(disc).ok_or("no rational lower bound of sqrt(D) found")?;
-        let r = (&e_abs - &d) * Q::new(1, 2); // >= s-, < |E|/2
+    /// An upper bound on the time until the pair's impacts accumulate: exact steps until
+    /// s_m < |E|/2, then a geometric tail with ratio s_m/(|E| - s_m) (s_m at least r ≥ s₋, with
+    /// r from a rational d ≤ √D).
+    fn time_bound(&self, gamma: &F, disc: &F) -> Result<F, String> {
+        let e_abs = self.e.negated();
+        let half_e = e_abs.times(&half());
+        let d = sqrt_lower(&disc.rational_below()).ok_or("no rational lower bound of sqrt(D) found")?;
+        let r = e_abs.minus(&F::from_q(&d)).times(&half()); // >= s-, < |E|/2
         let (mut am, mut bm, mut hm) = (self.a.clone(), self.b.clone(), self.h.clone());
-        let mut t_sum = Q::int(0);
+        let mut t_sum = F::zero();
         for _ in 0..64 {
-            let bm_abs = -&bm;
-            let sm = &am / &bm_abs;
-            let tau = &hm / &bm_abs;
+            let bm_abs = bm.negated();
+            let sm = am.over(&bm_abs).expect("b_m < 0");
+            let tau = hm.over(&bm_abs).expect("b_m < 0");
             if sm < half_e {
                 let sigma = if sm > r { sm } else { r.clone() };
-                let rho = &sigma / &(&e_abs - &sigma);
-                return Ok(&t_sum + &(&tau / &(Q::int(1) - rho)));
+                let rho = sigma.over(&e_abs.minus(&sigma)).expect("sigma < |E|/2");
+                return Ok(t_sum.plus(&tau.over(&F::one().minus(&rho)).expect("rho < 1")));
             }
-            t_sum = t_sum + &tau;
-            let next_b = &am - &(&bm_abs * &e_abs);
-            hm = &am * &tau;
-            am = gamma * &bm_abs;
+            t_sum = t_sum.plus(&tau);
+            let next_b = am.minus(&bm_abs.times(&e_abs));
+            hm = am.times(&tau);
+            am = gamma.times(&bm_abs);
             bm = next_b;
             if !bm.is_negative() {
                 return Err("the pair stops alternating (model error)".into());
@@ -202,18 +233,19 @@ impl<'a> Pair<'a> {
 
     /// The limit velocity from momentum, p* = p - x·kick_i - y·kick_j with u_i(p*) = u_j(p*) = 0:
     /// [[A, E], [E, A]] (x, y) = (a, b), A = f_i·kick_i = 1 + γ; returns (x, y, p*).
-    fn limit(&self, sys: &System, p: &Vec3<Q>) -> Result<(Q, Q, Vec3<Q>), String> {
+    fn limit(&self, sys: &System<F>, p: &Vec3<F>) -> Result<(F, F, Vec3<F>), String> {
         let (fh, fo) = (&sys.contacts[self.hit], &sys.contacts[self.other]);
         let (kh, ko) = self.kicks;
         let (a, b, e) = (&self.a, &self.b, &self.e);
         let big_a = dot(fh, kh);
-        let det = &big_a * &big_a - e * e;
-        let x = (a * &big_a - e * b) / det.clone();
-        let y = (&big_a * b - e * a) / det;
+        let det = big_a.times(&big_a).minus(&e.times(e));
+        let x = a.times(&big_a).minus(&e.times(b)).over(&det).ok_or("singular pair (model error)")?;
+        let y = big_a.times(b).minus(&e.times(a)).over(&det).ok_or("singular pair (model error)")?;
         if x.is_positive() || y.is_positive() {
             return Err("impulses of the wrong sign (model error)".into());
         }
-        let limit_velocity: Vec3<Q> = std::array::from_fn(|i| &p[i] - &(&x * &kh[i]) - &y * &ko[i]);
+        let limit_velocity: Vec3<F> =
+            std::array::from_fn(|i| p[i].minus(&x.times(&kh[i])).minus(&y.times(&ko[i])));
         if !dot(fh, &limit_velocity).is_zero() || !dot(fo, &limit_velocity).is_zero() {
             return Err("limit velocity does not rest the pair (model error)".into());
         }
@@ -224,16 +256,17 @@ impl<'a> Pair<'a> {
     /// U_k = u_k(p) + min(0, -x f_k·kick_i) + min(0, -y f_k·kick_j).
     fn others_stay_up(
         &self,
-        sys: &System,
-        (q, p): (&Vec3<Q>, &Vec3<Q>),
-        (x, y): (&Q, &Q),
-        time_bound: &Q,
+        sys: &System<F>,
+        (q, p): (&Vec3<F>, &Vec3<F>),
+        (x, y): (&F, &F),
+        time_bound: &F,
     ) -> Result<(), String> {
         let (kh, ko) = self.kicks;
         for k in (0..sys.n()).filter(|&k| k != self.hit && k != self.other) {
             let fk = &sys.contacts[k];
-            let lower_u = dot(fk, p) + min0(-(x * &dot(fk, kh))) + min0(-(y * &dot(fk, ko)));
-            let lowest_h = dot(fk, q) + time_bound * &min0(lower_u);
+            let pushes = min0(x.times(&dot(fk, kh)).negated()).plus(&min0(y.times(&dot(fk, ko)).negated()));
+            let lower_u = dot(fk, p).plus(&pushes);
+            let lowest_h = dot(fk, q).plus(&time_bound.times(&min0(lower_u)));
             if !lowest_h.is_positive() {
                 return Err(format!("contact {k} may land before the pair comes to rest"));
             }

@@ -7,7 +7,8 @@
 //! stays exactly 0 in both arithmetics and the rod never stores the redundant v = (u0 + u1)/2.
 
 pub use super::frame::{Frame, TABLE_CONTACTS, frame_index};
-use crate::exact::{Q, QExt, Ring};
+use super::scalar::{Nf, SimField};
+use crate::exact::{CosField, Q, QExt};
 use crate::model::float::FloatPolygon;
 use chatter_kernel::exact::OrderedField;
 use chatter_kernel::model::linalg::{Vec3, dot};
@@ -19,8 +20,9 @@ use chatter_kernel::model::{BodyError, Polygon, Rod, Shape as Body};
 pub enum Shape {
     /// The planar rod of docs/model.md §7: two contacts, coordinates (u0, u1).
     Rod,
-    /// A flat regular n-gon: exact for n in {3, 4, 6} (rational cosines), the float model of
-    /// [`crate::model::float`] for every n up to [`MAX_CONTACTS`].
+    /// A flat regular n-gon: exact over Q for n in {3, 4, 6} (rational cosines), over
+    /// Q(cos 2π/n) and the float model of [`crate::model::float`] for every n up to
+    /// [`MAX_CONTACTS`].
     Polygon(u64),
 }
 
@@ -62,29 +64,41 @@ impl Shape {
 /// Largest number of contacts of a simulated body (the float model's limit, issue 10 §1).
 pub const MAX_CONTACTS: usize = crate::model::float::MAX_FLOAT_CONTACTS as usize;
 
-/// The exact model of a falling body, over the rationals.
+/// The exact model of a falling body, over the rationals (the rod, n = 3, 4, 6) or over
+/// Q(cos 2π/n) ([`System::in_field`], issue 10 §1).
 #[derive(Clone, Debug)]
-pub struct System {
+pub struct System<F = Q> {
     pub shape: Shape,
-    pub kappa: Q,
-    pub gamma: Q,
+    pub kappa: F,
+    pub gamma: F,
     /// f_k, k = 0..n-1: u_k = f_k·p, h_k = f_k·q.
-    pub contacts: Vec<Vec3<Q>>,
+    pub contacts: Vec<Vec3<F>>,
     /// kick_k = beta d_k (docs/model.md §3): an impact at k maps p to p - u_k kick_k.
-    pub kicks: Vec<Vec3<Q>>,
+    pub kicks: Vec<Vec3<F>>,
     /// c with v = c·p (centre-of-mass velocity) and hc = c·q.
-    pub centre: Vec3<Q>,
+    pub centre: Vec3<F>,
     /// Kinetic energy as the quadratic form T(p) = pᵀ G p / 2 (exact).
-    pub gram: [[Q; 3]; 3],
+    pub gram: [[F; 3]; 3],
     /// For polygons, m_{i,i+1} (i = 0..n-1) in our coordinates (docs/model.md §4); empty for the rod.
-    pub rest_points: Vec<Vec3<Q>>,
+    pub rest_points: Vec<Vec3<F>>,
     /// E = f_1·kick_0 = (1+γ)(κ + cos 2π/n)/(1+κ): how an impact at one contact changes the
     /// normal velocity of its neighbour, per unit of its own (polygons; 0 for the rod).
-    pub pair_coupling: Q,
+    pub pair_coupling: F,
 }
 
 fn z() -> Q {
     Q::int(0)
+}
+
+impl System<Nf> {
+    /// The exact model of the regular n-gon in Q(cos 2π/n), 3 ≤ n ≤ 64 (every n, also those
+    /// with a rational cosine), with rational κ and γ validated by the kernel.
+    pub fn in_field(n: u64, kappa: &Q, gamma: &Q) -> Result<System<Nf>, BodyError> {
+        let field = CosField::<Q>::new(n).ok_or(BodyError::UnsupportedN(n))?;
+        let c1 = field.generator();
+        let body = Polygon::with_cosine(n, c1, Nf::from_q(kappa), Nf::from_q(gamma))?;
+        Ok(System::polygon(&body))
+    }
 }
 
 impl System {
@@ -127,14 +141,27 @@ impl System {
         System { shape, kappa, gamma, contacts, kicks, centre, gram, rest_points, pair_coupling }
     }
 
-    /// A regular polygon (docs/model.md §2-4) from the kernel's covectors, impact directions and rest points.
-    fn polygon(body: &Polygon<Q>) -> System {
+    /// The frame with the contacts `slots`: the matrix A = [f_s0; f_s1; f_s2] taking our
+    /// coordinates to (h_s0, h_s1, h_s2). Three distinct vertices of a convex polygon are never
+    /// collinear, so A is invertible. The rod has one frame, the identity.
+    pub fn frame_matrix(&self, slots: [usize; 3]) -> [[Q; 3]; 3] {
+        match self.shape {
+            Shape::Rod => std::array::from_fn(|r| std::array::from_fn(|c| Q::int(i64::from(r == c)))),
+            Shape::Polygon(_) => slots.map(|k| self.contacts[k].clone()),
+        }
+    }
+}
+
+impl<F: SimField> System<F> {
+    /// A regular polygon (docs/model.md §2-4) from the kernel's covectors, impact directions and
+    /// rest points, in the kernel body's field.
+    fn polygon(body: &Polygon<F>) -> System<F> {
         let n = body.n() as i64;
         let beta = body.beta();
-        let contacts: Vec<Vec3<Q>> = (0..n).map(|k| body.contact(k).clone()).collect();
-        let kicks: Vec<Vec3<Q>> = (0..n).map(|k| body.impact_direction(k).map(|d| beta.times(&d))).collect();
-        let centre = [z(), z(), Q::int(1)];
-        let gram = gram_of(&|p: &Vec3<Q>| crate::model::kinetic_energy(body, p));
+        let contacts: Vec<Vec3<F>> = (0..n).map(|k| body.contact(k).clone()).collect();
+        let kicks: Vec<Vec3<F>> = (0..n).map(|k| body.impact_direction(k).map(|d| beta.times(&d))).collect();
+        let centre = [F::zero(), F::zero(), F::one()];
+        let gram = gram_of(&|p: &Vec3<F>| crate::model::kinetic_energy(body, p));
         let rest_points = (0..n)
             .map(|i| body.rest_point(i, i + 1).expect("adjacent contacts are never opposite"))
             .collect();
@@ -150,20 +177,20 @@ impl System {
     }
 
     /// Kinetic energy T = pᵀ G p / 2 (docs/model.md §2; the rod: (v² + κω²)/2).
-    pub fn energy(&self, p: &Vec3<Q>) -> Q {
-        let mut t = z();
+    pub fn energy(&self, p: &Vec3<F>) -> F {
+        let mut t = F::zero();
         for (r, row) in self.gram.iter().enumerate() {
             for (c, g) in row.iter().enumerate() {
-                if !g.is_zero() {
-                    t = t + g * &(&p[r] * &p[c]);
+                if !g.is_exactly_zero() {
+                    t = t.plus(&g.times(&p[r].times(&p[c])));
                 }
             }
         }
-        t * Q::new(1, 2)
+        t.times(&F::from_ratio(1, 2))
     }
 
     /// Height h_k = f_k·q (or normal velocity u_k = f_k·p) of contact k.
-    pub fn along(&self, k: usize, x: &Vec3<Q>) -> Q {
+    pub fn along(&self, k: usize, x: &Vec3<F>) -> F {
         dot(&self.contacts[k], x)
     }
 
@@ -174,17 +201,8 @@ impl System {
     /// the rod.
     pub fn pcc_possible(&self) -> bool {
         let e = &self.pair_coupling;
-        self.is_polygon() && e.is_negative() && !(e * e - Q::int(4) * &self.gamma).is_negative()
-    }
-
-    /// The frame with the contacts `slots`: the matrix A = [f_s0; f_s1; f_s2] taking our
-    /// coordinates to (h_s0, h_s1, h_s2). Three distinct vertices of a convex polygon are never
-    /// collinear, so A is invertible. The rod has one frame, the identity.
-    pub fn frame_matrix(&self, slots: [usize; 3]) -> [[Q; 3]; 3] {
-        match self.shape {
-            Shape::Rod => std::array::from_fn(|r| std::array::from_fn(|c| Q::int(i64::from(r == c)))),
-            Shape::Polygon(_) => slots.map(|k| self.contacts[k].clone()),
-        }
+        let disc = e.times(e).minus(&F::from_i64(4).times(&self.gamma));
+        self.is_polygon() && e.is_negative() && !disc.is_negative()
     }
 
     /// Whether contacts a and b are neighbours on the polygon (never for the rod).
@@ -200,15 +218,15 @@ impl System {
 }
 
 /// The symmetric matrix G with T(p) = pᵀ G p / 2, by polarisation of an exact quadratic form.
-fn gram_of(energy: &dyn Fn(&Vec3<Q>) -> Q) -> [[Q; 3]; 3] {
-    let e = |i: usize| -> Vec3<Q> { std::array::from_fn(|k| Q::int(i64::from(k == i))) };
+fn gram_of<F: OrderedField>(energy: &dyn Fn(&Vec3<F>) -> F) -> [[F; 3]; 3] {
+    let e = |i: usize| -> Vec3<F> { std::array::from_fn(|k| F::from_i64(i64::from(k == i))) };
     std::array::from_fn(|r| {
         std::array::from_fn(|c| {
             if r == c {
-                energy(&e(r)) * Q::int(2)
+                energy(&e(r)).times(&F::from_i64(2))
             } else {
-                let s: Vec3<Q> = std::array::from_fn(|k| Q::int(i64::from(k == r || k == c)));
-                energy(&s) - energy(&e(r)) - energy(&e(c))
+                let s: Vec3<F> = std::array::from_fn(|k| F::from_i64(i64::from(k == r || k == c)));
+                energy(&s).minus(&energy(&e(r))).minus(&energy(&e(c)))
             }
         })
     })

@@ -291,6 +291,11 @@ impl<F: Field> Algebraic<F> {
         &self.c
     }
 
+    /// The n of the field Q(cos 2 pi/n) the element lives in (`None` for a rational).
+    pub fn field_n(&self) -> Option<u64> {
+        self.field.as_ref().map(|k| k.n)
+    }
+
     /// The rational value, when the element is rational.
     pub fn as_rational(&self) -> Option<F> {
         (self.c.len() <= 1).then(|| self.c.first().cloned().unwrap_or_else(F::zero))

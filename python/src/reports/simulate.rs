@@ -37,7 +37,7 @@ fn bad(m: impl Into<String>) -> Fail {
     Fail::usage("invalid-input", m)
 }
 
-/// The rod or a regular n-gon, n <= 64; exact arithmetic only where the model is exact.
+/// The rod or a regular n-gon, n <= 64 (exact arithmetic in Q or in Q(cos 2 pi/n)).
 fn model(a: &Args, kappa: &Q, gamma: &Q) -> Result<Model, Fail> {
     let max = chatter::model::float::MAX_FLOAT_CONTACTS;
     if !(2..=max).contains(&a.n) {
@@ -52,9 +52,6 @@ fn model(a: &Args, kappa: &Q, gamma: &Q) -> Result<Model, Fail> {
         };
         Fail::usage(code, format!("invalid body: {e}"))
     })?;
-    if a.exact && model.exact.is_none() {
-        return Err(Fail::usage("unsupported-n", "exact simulation supports n = 2, 3, 4, 6 only"));
-    }
     Ok(model)
 }
 

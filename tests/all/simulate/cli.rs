@@ -216,19 +216,25 @@ fn every_n_up_to_64_simulates_in_f64() {
     assert!(stderr(&o).contains("below the floor"), "{}", stderr(&o));
 }
 
-/// `--exact` needs a rational cos 2 pi/n; elsewhere a clear exit 2 (certificates work there).
+/// `--exact` works for every n (issue 10 §1; it was exit 2 for irrational cos 2 pi/n): the text
+/// names the field, the JSON report says `exact`, and the outcome is the `f64` one on these drops.
 #[test]
-fn exact_simulation_of_irrational_n_is_a_clear_error() {
+fn exact_simulation_runs_in_the_number_field_for_every_n() {
     let d = tempfile::tempdir().unwrap();
     for n in ["5", "7", "12"] {
-        let o = simulate(&["--n", n, "--exact"], d.path());
-        assert_eq!(o.status.code(), Some(2), "n = {n}: {}", stdout(&o));
-        let err = stderr(&o);
+        let args = ["--n", n, "--kappa", "1/200", "--gamma", "1/100", "--impacts", "300"];
+        let o = simulate(&[&args[..], &["--exact"]].concat(), d.path());
+        assert_eq!(o.status.code(), Some(0), "n = {n}: {}", stderr(&o));
+        let text = stdout(&o);
         assert!(
-            err.contains("--exact") && err.contains("Q(cos 2*pi/") && err.contains("chatter certify"),
-            "{err}"
+            text.contains(&format!("exact, in Q(cos 2pi/{n})")) && text.contains("outcome: CC"),
+            "{text}"
         );
-        assert!(!err.contains("panicked"), "{err}");
+        let e = json(&simulate(&[&args[..], &["--exact", "--json"]].concat(), d.path()));
+        let f = json(&simulate(&[&args[..], &["--json"]].concat(), d.path()));
+        assert_eq!((e["arithmetic"].as_str(), f["arithmetic"].as_str()), (Some("exact"), Some("f64")));
+        assert_eq!(e["outcome"], f["outcome"], "n = {n}");
+        assert_eq!(e["sequence"].as_array().unwrap()[..40], f["sequence"].as_array().unwrap()[..40]);
     }
     for n in ["0", "1", "65", "1000"] {
         let o = simulate(&["--n", n], d.path());

@@ -3,6 +3,7 @@
 mod cli;
 mod criterion;
 mod engines;
+mod field;
 mod outcomes;
 mod pattern;
 mod pcc;
