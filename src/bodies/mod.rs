@@ -4,6 +4,7 @@
 //! polygons) as exact data for the model of docs/model.md §11.
 
 pub mod convex;
+pub mod file;
 pub mod solids;
 
 use crate::exact::{OrderedField, Q, QExt, Ring, Rounding};

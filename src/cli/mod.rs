@@ -9,6 +9,7 @@ mod certify_cmd;
 mod check_proof_cmd;
 mod classify_cmd;
 mod convert_cmd;
+mod convex_args;
 mod cover_cmd;
 mod map_cmd;
 mod plot_cmd;

@@ -33,17 +33,22 @@ R_i uniform on (0, 0.1) from --seed (SplitMix64: the same on every machine); the
 (omega, v) = (R1, -1) and (phi, h) = (R3, 1 + R5). --position and \
 --velocity take our coordinates instead: (h0, h1, hc) and (u0, u1, v), heights and normal \
 velocities of contacts 0 and 1 and of the centre of mass; for the rod (--n 2) two numbers \
-(h0, h1) and (u0, u1).\n\n\
+(h0, h1) and (u0, u1). General bodies (--rectangle, --box, --polygon, --body; docs/model.md §11) are dropped the same way, and --position/--velocity take the paper's coordinates for them: (phi_x, phi_y, h) and (omega_x, omega_y, v).\n\n\
 Numbers are read exactly: 1/6, 0.01 (= 1/100), 1e-2. Exit status 0 when the simulation ran, \
 2 on bad input.\n\n\
 Examples:\n  chatter simulate --n 3 --kappa 3/20 --gamma 1/20 --seed 7\n  \
 chatter simulate --n 4 --runs 1000 --json\n  \
 chatter simulate --n 3 --kappa 1/8 --gamma 1/200 --exact --plot pcc.png\n  \
 chatter simulate --n 5 --kappa 1/20 --gamma 1/10 --exact\n  \
-chatter simulate --n 4 --position 1/2,1/2,1 --velocity -1,-1,-1 --exact")]
+chatter simulate --n 4 --position 1/2,1/2,1 --velocity -1,-1,-1 --exact\n  \
+chatter simulate --rectangle 2,1 --gamma 1/20 --exact\n  \
+chatter simulate --box 150,75,8 --runs 100\n  \
+chatter simulate --polygon \"0,0 4,0 0,3\" --plate --seed 3")]
 pub struct SimulateArgs {
     #[command(flatten)]
     pub body: super::BodyArgs,
+    #[command(flatten)]
+    pub general: super::convex_args::ConvexArgs,
     /// Seed of the random drop (default 0); with --runs, run i uses seed + i.
     #[arg(long, allow_hyphen_values = true)]
     pub seed: Option<String>,
@@ -82,6 +87,8 @@ pub struct SimulateArgs {
 /// Validated arguments.
 struct Validated {
     model: Model,
+    /// A general body (docs/model.md §11) and its description.
+    general: Option<super::convex_args::GeneralBody>,
     n: u64,
     kappa: Q,
     gamma: Q,
@@ -116,7 +123,12 @@ fn model(n: u64, kappa: &Q, gamma: &Q) -> Result<Model, String> {
 
 fn validate(a: SimulateArgs) -> Result<Validated, String> {
     let (n, kappa, gamma) = a.body.parse()?;
-    let model = model(n, &kappa, &gamma)?;
+    let general = a.general.parse(&gamma)?;
+    let (model, n) = match &general {
+        Some(g) => (Model::convex(&g.body), g.body.n() as u64),
+        None => (model(n, &kappa, &gamma)?, n),
+    };
+    let gamma = model.gamma.clone();
     let impacts: usize = a
         .impacts
         .trim()
@@ -157,6 +169,7 @@ fn validate(a: SimulateArgs) -> Result<Validated, String> {
             let names = match model.shape() {
                 Shape::Rod => "h0,h1 and u0,u1",
                 Shape::Polygon(_) => "h0,h1,hc and u0,u1,v",
+                Shape::Convex(_) => "phix,phiy,h and wx,wy,v (the paper's coordinates)",
             };
             let start = model.given_start(&q, &p).map_err(|e| match e {
                 crate::simulate::StartError::WrongLength { .. } => {
@@ -179,6 +192,7 @@ fn validate(a: SimulateArgs) -> Result<Validated, String> {
     opts.record = a.trajectory.is_some() || a.plot.is_some();
     Ok(Validated {
         model,
+        general,
         n,
         kappa,
         gamma,
@@ -202,6 +216,9 @@ fn arithmetic_text(a: Arithmetic, model: &Model) -> String {
 }
 
 fn head(v: &Validated) -> String {
+    if let Some(g) = &v.general {
+        return format!("{}, n={} gamma={}", g.description, v.n, v.gamma);
+    }
     format!("n={} kappa={} gamma={}", v.n, v.kappa, v.gamma)
 }
 
@@ -257,6 +274,10 @@ fn single_text(v: &Validated, run: &Run) -> Vec<String> {
     lines
 }
 
+fn general_report(v: &Validated) -> Option<crate::report::convex::GeneralBodyReport> {
+    v.general.as_ref().map(|g| crate::report::convex::GeneralBodyReport::of(&g.description, &g.body))
+}
+
 fn write_file(path: &PathBuf, text: &str) -> Result<(), String> {
     std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))
 }
@@ -270,10 +291,8 @@ fn run_single(v: &Validated) -> cli::Outcome {
     }
     if let Some(path) = &v.plot {
         let title = format!(
-            "n = {}, κ = {}, γ = {}: {} after {} impacts ({}, {})",
-            v.n,
-            v.kappa,
-            v.gamma,
+            "{}: {} after {} impacts ({}, {})",
+            head(v),
             run.outcome,
             run.impacts,
             start_text(v),
@@ -286,6 +305,7 @@ fn run_single(v: &Validated) -> cli::Outcome {
     }
     if v.json {
         let mut report = report::of_run(&v.model, &v.initial, v.arithmetic, &run);
+        report.general_body = general_report(v);
         report.trajectory = v.trajectory.as_ref().map(|p| p.display().to_string());
         report.plot = v.plot.as_ref().map(|p| p.display().to_string());
         emit_report(&report);
@@ -312,7 +332,8 @@ fn run_many(v: &Validated, runs: u64) -> cli::Outcome {
     } else {
         bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
     }
-    let r = report::batch(&v.model, v.seed, runs, v.arithmetic, &v.opts, &|| bar.inc(1));
+    let mut r = report::batch(&v.model, v.seed, runs, v.arithmetic, &v.opts, &|| bar.inc(1));
+    r.general_body = general_report(v);
     bar.finish_and_clear();
     if v.json {
         emit_report(&r);

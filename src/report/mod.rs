@@ -20,6 +20,7 @@
 pub mod bodies;
 pub mod certify;
 pub mod classify;
+pub mod convex;
 pub mod error;
 pub mod finder;
 pub mod map;

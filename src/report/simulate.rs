@@ -56,6 +56,9 @@ pub struct SimulateReport {
     /// The impact budget.
     pub budget: usize,
     pub n: u64,
+    /// A general convex body (docs/model.md §11), else `null`.
+    pub general_body: Option<super::convex::GeneralBodyReport>,
+    /// 0 for a general body (`general_body`).
     pub kappa: Number,
     pub gamma: Number,
     /// `f64` or `exact`.
@@ -95,6 +98,9 @@ pub struct SimulateBatchReport {
     /// First and last seed.
     pub seeds: [u64; 2],
     pub n: u64,
+    /// A general convex body (docs/model.md §11), else `null`.
+    pub general_body: Option<super::convex::GeneralBodyReport>,
+    /// 0 for a general body (`general_body`).
     pub kappa: Number,
     pub gamma: Number,
     /// `f64` or `exact`.
@@ -148,6 +154,7 @@ pub fn of_run(model: &Model, initial: &Initial, arithmetic: Arithmetic, run: &Ru
         impacts: run.impacts,
         budget: run.budget,
         n: model.n() as u64,
+        general_body: None,
         kappa: Number::of(&model.kappa),
         gamma: Number::of(&model.gamma),
         arithmetic: arithmetic.name(),
@@ -200,6 +207,7 @@ pub fn batch(
         runs,
         seeds: [seed, seed.wrapping_add(runs.saturating_sub(1))],
         n: model.n() as u64,
+        general_body: None,
         kappa: Number::of(&model.kappa),
         gamma: Number::of(&model.gamma),
         arithmetic: arithmetic.name(),

@@ -112,7 +112,10 @@ impl SplitMix64 {
 
 /// The paper's random drop with seed `seed`: R_1..R_5 uniform on (0, 0.1), velocity
 /// (ω_x, ω_y, v) = (R1, R2, -1) and position (φ_x, φ_y, h) = (R3, R4, 1 + R5) in the paper's
-/// coordinates, converted to ours (docs/model.md §2) in `f64`.
+/// coordinates, converted to ours (docs/model.md §2) in `f64`. General bodies (docs/model.md
+/// §11.10) are in the paper's coordinates already; their rotation and tilt are divided by the
+/// body's length scale R ([`FloatSystem::drop_scale`], a power of two: exact), which drops the
+/// body scaled to size about 1 as the paper drops its unit polygons (R = 1 for those).
 ///
 /// The rod uses (ω, v) = (R1, -1) and (φ, h) = (R3, 1 + R5) with contacts at x = -1 (contact 0)
 /// and x = +1: u0 = v - ω, u1 = v + ω, h0 = h - φ, h1 = h + φ.
@@ -126,6 +129,10 @@ pub fn random_drop(fs: &FloatSystem, seed: u64) -> Start<f64> {
         Shape::Rod => {
             let (w, v, phi, h) = (r[0], -1.0, r[2], 1.0 + r[4]);
             Start { q: [h - phi, h + phi, 0.0], p: [v - w, v + w, 0.0] }
+        }
+        Shape::Convex(_) => {
+            let s = fs.drop_scale;
+            Start { q: [r[2] / s, r[3] / s, 1.0 + r[4]], p: [r[0] / s, r[1] / s, -1.0] }
         }
         Shape::Polygon(_) => {
             Start { q: fs.from_paper(&[r[2], r[3], 1.0 + r[4]]), p: fs.from_paper(&[r[0], r[1], -1.0]) }

@@ -159,7 +159,12 @@ impl<F: SimField> Engine for ExactEngine<'_, F> {
         Snapshot { q, q_exp, p, p_exp, energy: self.energy().magnitude() }
     }
 
+    /// The exact pair proof assumes a symmetric pair coupling, which general bodies
+    /// (docs/model.md §11) lack: for them the paper's criterion decides (`None`).
     fn prove_pair(&self, hit: usize, other: usize) -> Option<Result<PairSummary, String>> {
+        if self.sys.shape.is_convex() {
+            return None;
+        }
         Some(prove_pair_chatter(self.sys, &self.q, &self.p, hit, other).map(|pr| pr.summary()))
     }
 

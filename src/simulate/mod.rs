@@ -9,6 +9,7 @@
 //! - [`drop`](mod@drop): initial states, the paper's random-drop protocol, the seeded generator.
 //! - [`engine`], [`float`], [`exact`]: one interface, two arithmetics; [`snapshot`]: the
 //!   read-outs of a state they share.
+//! - [`convex`](mod@convex): general convex bodies (docs/model.md §11), in the paper's coordinates.
 //! - [`classify`]: the driver loop and the outcome rules; [`pcc`]: the two PCC tests.
 //! - [`pattern`]: the impact sequence in words; [`record`]: CSV; [`text`]: wording (the figure of
 //!   a run is `crate::plot::trajectory`, feature `cli`).
@@ -17,7 +18,8 @@
 //! on `snapshot`; `system` and `frame` on each other and `scalar`; `drop` on `scalar`, `system`;
 //! `regular` on `system`; `pcc` on `scalar`, `snapshot`, `system`; `engine` on `pcc`,
 //! `snapshot`; `float` and `exact` on `drop`, `engine`, `snapshot`, `system` (`exact` also on
-//! `pcc`, `scalar`); `classify` on
+//! `pcc`, `scalar`); `convex` on `scalar`, `system` (and `system` on it for the square);
+//! `classify` on
 //! `engine`, `pcc`, `snapshot`, `system`, `text`; `pattern` on `system`, `text`; `record` on
 //! `classify`, `snapshot`, `system`.
 //!
@@ -30,6 +32,7 @@
 //! ```
 
 pub mod classify;
+pub mod convex;
 pub mod drop;
 pub mod engine;
 pub mod exact;
@@ -124,6 +127,12 @@ impl Model {
     /// between the rod and a polygon).
     pub fn from_body(body: &chatter_kernel::model::Shape<Q>) -> Model {
         Model::of_system(System::from_body(body))
+    }
+
+    /// The model of a general convex body (docs/model.md §11): exact over Q, states in the
+    /// paper's coordinates (φx, φy, h) and (ωx, ωy, v); `kappa` is 0 (not a parameter of it).
+    pub fn convex(body: &chatter_kernel::model::ConvexBody<Q>) -> Model {
+        Model::of_system(System::convex(body))
     }
 
     /// The model of an exact system, with its `f64` copy.

@@ -61,8 +61,10 @@ impl Pattern {
             let (a, b) = (c[0] as usize, c[1] as usize);
             return match shape {
                 Shape::Rod => Kind::RodEnds,
-                Shape::Polygon(_) if (a + 1) % n == b || (b + 1) % n == a => Kind::AdjacentPair,
-                Shape::Polygon(_) => Kind::DistantPair,
+                Shape::Polygon(_) | Shape::Convex(_) if (a + 1) % n == b || (b + 1) % n == a => {
+                    Kind::AdjacentPair
+                }
+                Shape::Polygon(_) | Shape::Convex(_) => Kind::DistantPair,
             };
         }
         let s = steps(c, n);

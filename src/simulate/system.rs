@@ -24,6 +24,9 @@ pub enum Shape {
     /// Q(cos 2π/n) and the float model of [`crate::model::float`] for every n up to
     /// [`MAX_CONTACTS`].
     Polygon(u64),
+    /// A general convex body with n contacts (docs/model.md §11, [`super::convex`]): exact over
+    /// its field, coordinates already the paper's q = (φx, φy, h), p = (ωx, ωy, v).
+    Convex(u64),
 }
 
 impl<F: OrderedField> From<&Body<F>> for Shape {
@@ -40,16 +43,21 @@ impl Shape {
     pub fn n(self) -> usize {
         match self {
             Shape::Rod => 2,
-            Shape::Polygon(n) => n as usize,
+            Shape::Polygon(n) | Shape::Convex(n) => n as usize,
         }
     }
 
-    /// Number of generalised coordinates (3 for polygons, 2 for the rod).
+    /// Number of generalised coordinates (3 for polygons and general bodies, 2 for the rod).
     pub fn dim(self) -> usize {
         match self {
             Shape::Rod => 2,
-            Shape::Polygon(_) => 3,
+            Shape::Polygon(_) | Shape::Convex(_) => 3,
         }
+    }
+
+    /// Whether states are in the paper's coordinates already (general bodies, docs/model.md §11).
+    pub fn is_convex(self) -> bool {
+        matches!(self, Shape::Convex(_))
     }
 
     /// Names of the generalised coordinates (positions, then velocities).
@@ -57,6 +65,7 @@ impl Shape {
         match self {
             Shape::Rod => (&["h0", "h1"], &["u0", "u1"]),
             Shape::Polygon(_) => (&["h0", "h1", "hc"], &["u0", "u1", "v"]),
+            Shape::Convex(_) => (&["phix", "phiy", "h"], &["wx", "wy", "v"]),
         }
     }
 }
@@ -84,6 +93,9 @@ pub struct System<F = Q> {
     /// E = f_1·kick_0 = (1+γ)(κ + cos 2π/n)/(1+κ): how an impact at one contact changes the
     /// normal velocity of its neighbour, per unit of its own (polygons; 0 for the rod).
     pub pair_coupling: F,
+    /// General bodies (docs/model.md §11.6, [`super::convex`]): whether some adjacent pair can
+    /// chatter on its own; `None` for the rod and regular polygons (decided by `pair_coupling`).
+    pub pair_pcc: Option<bool>,
 }
 
 fn z() -> Q {
@@ -103,10 +115,15 @@ impl System<Nf> {
 
 impl System {
     /// Builds the model of `shape` with the given kappa and gamma (validated by the kernel).
+    /// [`Shape::Convex`] is the regular n-gon given as a general body (docs/model.md §11, J = κ I),
+    /// rational only for n = 4; other general bodies come from [`System::convex`].
     pub fn new(shape: Shape, kappa: Q, gamma: Q) -> Result<System, BodyError> {
         let body = match shape {
             Shape::Rod => Body::Rod(Rod::new(kappa, gamma)?),
             Shape::Polygon(n) => Body::Polygon(Polygon::new(n, kappa, gamma)?),
+            Shape::Convex(n) => {
+                return super::convex::regular_rational(n, kappa, gamma).map(|b| System::convex(&b));
+            }
         };
         Ok(System::from_body(&body))
     }
@@ -138,7 +155,18 @@ impl System {
         let gram = gram_of(&energy);
         let (rest_points, pair_coupling) = (vec![], z());
         let shape = Shape::Rod;
-        System { shape, kappa, gamma, contacts, kicks, centre, gram, rest_points, pair_coupling }
+        System {
+            shape,
+            kappa,
+            gamma,
+            contacts,
+            kicks,
+            centre,
+            gram,
+            rest_points,
+            pair_coupling,
+            pair_pcc: None,
+        }
     }
 
     /// The frame with the contacts `slots`: the matrix A = [f_s0; f_s1; f_s2] taking our
@@ -147,7 +175,7 @@ impl System {
     pub fn frame_matrix(&self, slots: [usize; 3]) -> [[Q; 3]; 3] {
         match self.shape {
             Shape::Rod => std::array::from_fn(|r| std::array::from_fn(|c| Q::int(i64::from(r == c)))),
-            Shape::Polygon(_) => slots.map(|k| self.contacts[k].clone()),
+            Shape::Polygon(_) | Shape::Convex(_) => slots.map(|k| self.contacts[k].clone()),
         }
     }
 }
@@ -168,7 +196,18 @@ impl<F: SimField> System<F> {
         let pair_coupling = dot(&contacts[1], &kicks[0]);
         let (kappa, gamma) = (body.kappa().clone(), body.gamma().clone());
         let shape = Shape::Polygon(n as u64);
-        System { shape, kappa, gamma, contacts, kicks, centre, gram, rest_points, pair_coupling }
+        System {
+            shape,
+            kappa,
+            gamma,
+            contacts,
+            kicks,
+            centre,
+            gram,
+            rest_points,
+            pair_coupling,
+            pair_pcc: None,
+        }
     }
 
     /// Number of contacts.
@@ -200,6 +239,9 @@ impl<F: SimField> System<F> {
     /// of the quadratic factor of S_(n-1) S_1 (whose roots are the squares of these). False for
     /// the rod.
     pub fn pcc_possible(&self) -> bool {
+        if let Some(possible) = self.pair_pcc {
+            return possible;
+        }
         let e = &self.pair_coupling;
         let disc = e.times(e).minus(&F::from_i64(4).times(&self.gamma));
         self.is_polygon() && e.is_negative() && !disc.is_negative()
@@ -213,7 +255,7 @@ impl<F: SimField> System<F> {
 
     /// Whether the body is a polygon (contacts have neighbours), not the rod.
     pub fn is_polygon(&self) -> bool {
-        matches!(self.shape, Shape::Polygon(_))
+        matches!(self.shape, Shape::Polygon(_) | Shape::Convex(_))
     }
 }
 
@@ -250,6 +292,10 @@ pub struct FloatSystem {
     pub sin1: f64,
     /// [`System::pcc_possible`] (decided exactly, also for the float model).
     pub pcc_possible: bool,
+    /// The length scale of the random drop (docs/model.md §11.10): 1 for the rod and regular
+    /// polygons (circumradius 1), the power of two nearest to the largest contact distance for
+    /// general bodies ([`super::convex::drop_scale`]).
+    pub drop_scale: f64,
     /// Bit b of `adjacent[a]`: contacts a and b are neighbours on the polygon (none for the rod).
     pub adjacent: Vec<u64>,
     /// The frames of the `f64` engine, indexed by [`frame_index`], when n ≤ [`TABLE_CONTACTS`]
@@ -263,6 +309,7 @@ impl FloatSystem {
         let v3 = |v: &Vec3<Q>| v.clone().map(|x| x.to_f64());
         let (cos1, sin1) = match sys.shape {
             Shape::Rod => (-1.0, 0.0),
+            Shape::Convex(_) => (1.0, 0.0),
             Shape::Polygon(n) => {
                 let th = 2.0 * std::f64::consts::PI / n as f64;
                 (th.cos(), th.sin())
@@ -280,6 +327,7 @@ impl FloatSystem {
             cos1,
             sin1,
             pcc_possible: sys.pcc_possible(),
+            drop_scale: super::convex::drop_scale(&sys.contacts),
             adjacent: Vec::new(),
             frames: Vec::new(),
         };
@@ -311,6 +359,7 @@ impl FloatSystem {
             cos1: b.cos(1),
             sin1: b.sin(1),
             pcc_possible,
+            drop_scale: 1.0,
             adjacent: Vec::new(),
             frames: Vec::new(),
         };
@@ -326,11 +375,11 @@ impl FloatSystem {
     }
 
     /// The paper's rest directions from m_{i,i+1} in our coordinates, and the neighbour table.
-    fn finish(&mut self, rest_points: &[[f64; 3]]) {
+    pub(super) fn finish(&mut self, rest_points: &[[f64; 3]]) {
         self.rest_paper = rest_points.iter().map(|m| unit(self.to_paper(m))).collect();
         let n = self.n;
         self.adjacent = vec![0; n];
-        if let Shape::Polygon(_) = self.shape {
+        if let Shape::Polygon(_) | Shape::Convex(_) = self.shape {
             for a in 0..n {
                 let b = (a + 1) % n;
                 self.adjacent[a] |= 1 << b;
@@ -346,16 +395,23 @@ impl FloatSystem {
     }
 
     /// Our coordinates (h0, h1, hc) or (u0, u1, v) to the paper's (φx, φy, h) or (ωx, ωy, v)
-    /// (docs/model.md §2: ω_y = v - u0, ω_x = (u1 - v + c ω_y)/s). Polygons only.
+    /// (docs/model.md §2: ω_y = v - u0, ω_x = (u1 - v + c ω_y)/s). Polygons only; the identity
+    /// for general bodies, whose states are in the paper's coordinates (docs/model.md §11).
     pub fn to_paper(&self, x: &[f64; 3]) -> [f64; 3] {
+        if self.shape.is_convex() {
+            return *x;
+        }
         let wy = x[2] - x[0];
         let wx = (x[1] - x[2] + self.cos1 * wy) / self.sin1;
         [wx, wy, x[2]]
     }
 
     /// The paper's coordinates to ours: u0 = f_0·p = -ω_y + v, u1 = s ω_x - c ω_y + v (the
-    /// paper's f_k = (y_k, -x_k, 1), R = 1). Polygons only.
+    /// paper's f_k = (y_k, -x_k, 1), R = 1). Polygons only; the identity for general bodies.
     pub fn from_paper(&self, x: &[f64; 3]) -> [f64; 3] {
+        if self.shape.is_convex() {
+            return *x;
+        }
         [x[2] - x[1], self.sin1 * x[0] - self.cos1 * x[1] + x[2], x[2]]
     }
 

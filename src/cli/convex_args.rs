@@ -1,0 +1,170 @@
+//! The general-body options of `simulate` and `classify` (docs/model.md §11, docs/bodies.md):
+//! `--rectangle A,B`, `--box A,B,C`, `--polygon "x0,y0 x1,y1 ..."` with `--plate` or with
+//! `--inertia Jxx,Jxy,Jyy` (and `--centre X,Y`), and `--body FILE`. The raw strings are read
+//! exactly here; the body itself is validated by the kernel ([`ConvexBody::new`]), whose typed
+//! errors become messages naming the option.
+
+use crate::bodies::convex::{polygon_plate, rectangle_plate, uniform_box};
+use crate::bodies::file::BodyFile;
+use crate::exact::{Q, Ring, parse_user_number};
+use chatter_kernel::model::{ConvexBody, ConvexBodyError, Vec2};
+use clap::Args;
+use std::path::PathBuf;
+
+/// Raw general-body options.
+#[derive(Args, Debug, Clone, Default)]
+pub struct ConvexArgs {
+    /// A uniform rectangular plate A x B (general body, docs/model.md §11).
+    #[arg(long, value_name = "A,B", allow_hyphen_values = true, conflicts_with_all = ["n", "kappa"])]
+    pub rectangle: Option<String>,
+    /// A uniform box A x B x C standing on its A x B face (a phone, a brick).
+    #[arg(long = "box", value_name = "A,B,C", allow_hyphen_values = true, conflicts_with_all = ["n", "kappa"])]
+    pub box_: Option<String>,
+    /// Contacts of a convex polygon, counter-clockwise, "x0,y0 x1,y1 ..."; needs --plate or --inertia.
+    #[arg(long, value_name = "\"X0,Y0 X1,Y1 ...\"", allow_hyphen_values = true, conflicts_with_all = ["n", "kappa"])]
+    pub polygon: Option<String>,
+    /// With --polygon: the uniform flat plate of that polygon (shifted to its centroid).
+    #[arg(long)]
+    pub plate: bool,
+    /// With --polygon: the horizontal inertia tensor per unit mass about the centre of mass.
+    #[arg(long, value_name = "JXX,JXY,JYY", allow_hyphen_values = true)]
+    pub inertia: Option<String>,
+    /// With --polygon --inertia: the centre of mass's projection in the polygon's frame (default 0,0).
+    #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+    pub centre: Option<String>,
+    /// A body file (RON, docs/bodies.md): contacts, inertia, optional centre and gamma.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["n", "kappa"])]
+    pub body: Option<PathBuf>,
+}
+
+/// A general body and how it was given.
+#[derive(Clone, Debug)]
+pub struct GeneralBody {
+    pub body: ConvexBody<Q>,
+    /// E.g. "rectangle 2 x 1 (uniform plate)".
+    pub description: String,
+}
+
+fn numbers(flag: &str, s: &str, count: usize) -> Result<Vec<Q>, String> {
+    let v: Vec<Q> = s
+        .split(',')
+        .map(|x| parse_user_number(x).map_err(|e| format!("{flag}: {e}")))
+        .collect::<Result<_, _>>()?;
+    if v.len() != count {
+        return Err(format!("{flag}: expected {count} comma-separated numbers, found {}", v.len()));
+    }
+    Ok(v)
+}
+
+fn positive(flag: &str, v: &[Q]) -> Result<(), String> {
+    match v.iter().find(|x| !x.is_positive()) {
+        Some(x) => Err(format!("{flag}: every side must be > 0 (found {x})")),
+        None => Ok(()),
+    }
+}
+
+fn points(s: &str) -> Result<Vec<Vec2<Q>>, String> {
+    s.split_whitespace().map(|pt| numbers("--polygon", pt, 2).map(|v| [v[0].clone(), v[1].clone()])).collect()
+}
+
+/// The kernel's verdict on a body as a message naming the option.
+fn body_error(flag: &str, e: ConvexBodyError) -> String {
+    let hint = match e {
+        ConvexBodyError::OriginOutside { .. } | ConvexBodyError::OriginOnEdge { .. } => {
+            " (the contact polygon must contain the centre of mass strictly inside)"
+        }
+        _ => "",
+    };
+    format!("{flag}: {e}{hint}")
+}
+
+fn flags_given(a: &ConvexArgs) -> Vec<&'static str> {
+    let mut f = vec![];
+    if a.rectangle.is_some() {
+        f.push("--rectangle");
+    }
+    if a.box_.is_some() {
+        f.push("--box");
+    }
+    if a.polygon.is_some() {
+        f.push("--polygon");
+    }
+    if a.body.is_some() {
+        f.push("--body");
+    }
+    f
+}
+
+impl ConvexArgs {
+    /// Whether a general body was asked for.
+    pub fn given(&self) -> bool {
+        !flags_given(self).is_empty() || self.plate || self.inertia.is_some() || self.centre.is_some()
+    }
+
+    /// The general body, if one was asked for, with restitution `gamma` (a body file's own gamma
+    /// wins). Errors are messages for exit status 2.
+    pub fn parse(&self, gamma: &Q) -> Result<Option<GeneralBody>, String> {
+        let given = flags_given(self);
+        if given.len() > 1 {
+            return Err(format!("{} describe different bodies: give one", given.join(" and ")));
+        }
+        if self.polygon.is_none() && (self.plate || self.inertia.is_some() || self.centre.is_some()) {
+            return Err("--plate, --inertia and --centre go with --polygon".into());
+        }
+        let g = || gamma.clone();
+        if let Some(s) = &self.rectangle {
+            let v = numbers("--rectangle", s, 2)?;
+            positive("--rectangle", &v)?;
+            let body = rectangle_plate(&v[0], &v[1], g()).map_err(|e| body_error("--rectangle", e))?;
+            let description = format!("rectangle {} x {} (uniform plate)", v[0], v[1]);
+            return Ok(Some(GeneralBody { body, description }));
+        }
+        if let Some(s) = &self.box_ {
+            let v = numbers("--box", s, 3)?;
+            positive("--box", &v)?;
+            let body = uniform_box(&v[0], &v[1], &v[2], g()).map_err(|e| body_error("--box", e))?;
+            let description =
+                format!("box {} x {} x {} (uniform, on its {} x {} face)", v[0], v[1], v[2], v[0], v[1]);
+            return Ok(Some(GeneralBody { body, description }));
+        }
+        if let Some(s) = &self.polygon {
+            let pts = points(s)?;
+            return match (self.plate, &self.inertia) {
+                (true, Some(_)) => Err("--plate computes the inertia: drop --inertia (or --plate)".into()),
+                (true, None) if self.centre.is_some() => {
+                    Err("--plate puts the centre at the centroid: drop --centre".into())
+                }
+                (true, None) => {
+                    let body = polygon_plate(&pts, g()).map_err(|e| body_error("--polygon", e))?;
+                    let description = format!("uniform plate of a polygon with {} corners", pts.len());
+                    Ok(Some(GeneralBody { body, description }))
+                }
+                (false, None) => Err("--polygon needs --plate or --inertia JXX,JXY,JYY".into()),
+                (false, Some(j)) => {
+                    let j = numbers("--inertia", j, 3)?;
+                    let c = match &self.centre {
+                        None => vec![Q::int(0), Q::int(0)],
+                        Some(c) => numbers("--centre", c, 2)?,
+                    };
+                    let pts = pts.into_iter().map(|p| [&p[0] - &c[0], &p[1] - &c[1]]).collect();
+                    let inertia = [[j[0].clone(), j[1].clone()], [j[1].clone(), j[2].clone()]];
+                    let body = ConvexBody::new(pts, inertia, g())
+                        .map_err(|e| body_error("--polygon/--inertia", e))?;
+                    let description = format!("polygon with {} contacts, given inertia", body.n());
+                    Ok(Some(GeneralBody { body, description }))
+                }
+            };
+        }
+        if let Some(path) = &self.body {
+            let flag = format!("--body {}", path.display());
+            let text = std::fs::read_to_string(path).map_err(|e| format!("{flag}: cannot read: {e}"))?;
+            let data = BodyFile::parse(&text).and_then(|f| f.data()).map_err(|e| format!("{flag}: {e}"))?;
+            let gamma = data.gamma.unwrap_or_else(g);
+            let body =
+                ConvexBody::new(data.contacts, data.inertia, gamma).map_err(|e| body_error(&flag, e))?;
+            let description = format!("body file {} ({} contacts)", path.display(), body.n());
+            return Ok(Some(GeneralBody { body, description }));
+        }
+        Ok(None)
+    }
+}
