@@ -1,6 +1,7 @@
 //! Tests of `chatter::simulate`: engines, outcomes, PCC tests, patterns and the CLI.
 
 mod cli;
+mod convex;
 mod criterion;
 mod engines;
 mod field;
