@@ -2,6 +2,7 @@
 
 mod cli;
 mod convex;
+mod convex_cli;
 mod criterion;
 mod engines;
 mod field;
