@@ -1,7 +1,9 @@
 //! The catalogue of bodies: kappa from geometry and mass distribution (never typed in), the
 //! exact CC and PCC thresholds in gamma, the rod's Goyal threshold, and the paper's stated
-//! values beside ours.
+//! values beside ours; [`convex`]: general convex bodies (plates, rectangles, boxes, regular
+//! polygons) as exact data for the model of docs/model.md §11.
 
+pub mod convex;
 pub mod solids;
 
 use crate::exact::{OrderedField, Q, QExt, Ring, Rounding};

@@ -1,4 +1,7 @@
-//! Tests of `bodies`: kappa derived from geometry, the catalogue's thresholds and comparisons.
+//! Tests of `bodies`: kappa derived from geometry, the catalogue's thresholds and comparisons;
+//! [`convex`]: the general convex bodies of `bodies::convex`.
+
+mod convex;
 
 use chatter::bodies::{self, PaperValue, catalogue, platonic, prism, thresholds, uniform_rod};
 use chatter::exact::{OrderedField, Q, Ring};

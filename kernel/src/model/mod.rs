@@ -1,12 +1,16 @@
 //! The exact impact model (docs/model.md): 3-vectors and matrices, the regular-polygon body with
-//! its impact, relabelling and step maps, the cones C_j and D, the PCC quadratic, and the rod.
+//! its impact, relabelling and step maps, the cones C_j and D, the PCC quadratic, the rod, and
+//! general convex bodies (docs/model.md §11) with their impact maps, cones C_{ij}, pair PCC
+//! quadratics and affine images.
 
 mod cones;
+mod convex;
 pub mod linalg;
 mod pcc;
 mod polygon;
 mod rod;
 
+pub use convex::{AffineImage, ConvexBody, ConvexBodyError, MAX_CONTACTS, check_convex_polygon};
 pub use pcc::{PccExclusion, PccPolynomials, PccQuadratic, pcc_polynomials, pcc_quadratic};
 pub use polygon::{BodyError, Polygon, rational_cos};
 pub use rod::{Mat2, Rod, Vec2, mat2_mul, mat2_vec};

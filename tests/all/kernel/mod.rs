@@ -4,6 +4,7 @@ mod boxes;
 mod brute;
 mod check;
 mod cones;
+pub(crate) mod convex;
 mod field;
 mod impact;
 mod pcc;
