@@ -40,7 +40,7 @@ pub fn pcc_possible<F: SimField>(body: &ConvexBody<F>) -> bool {
 pub fn drop_scale<F: SimField>(contacts: &[Vec3<F>]) -> f64 {
     let is_general = contacts.iter().all(|f| f[2] == F::one());
     let r2 = contacts.iter().map(|f| f[0].approx().powi(2) + f[1].approx().powi(2)).fold(0.0, f64::max);
-    if !is_general || !(r2.is_finite() && r2 > 0.0) {
+    if !(is_general && r2.is_finite() && r2 > 0.0) {
         return 1.0;
     }
     (0.5 * r2.log2()).round().exp2()

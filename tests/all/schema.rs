@@ -137,7 +137,8 @@ fn every_command_output_validates_against_its_schema() {
         (vec!["prove", "square", "--out", "p", "--points", "5", "--json"], 0, "chatter.prove/1"),
         (vec!["check-proof", "p/square.ron", "c.ron", "--json"], 1, "chatter.check-proof/1"),
         (vec!["certify", "--gamma", "3/2", "--json"], 2, "chatter.error/1"),
-        (vec!["simulate", "--n", "5", "--exact", "--json"], 2, "chatter.error/1"),
+        (vec!["simulate", "--n", "5", "--exact", "--json"], 0, "chatter.simulate/1"),
+        (vec!["simulate", "--n", "65", "--json"], 2, "chatter.error/1"),
         (vec!["verify", "no-such-file.ron", "--json"], 2, "chatter.verify/1"),
     ];
     for (args, code, want) in cases {
