@@ -5,6 +5,7 @@
 
 pub mod convex;
 pub mod file;
+pub mod general;
 pub mod solids;
 
 use crate::exact::{OrderedField, Q, QExt, Ring, Rounding};

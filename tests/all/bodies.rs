@@ -1,7 +1,8 @@
 //! Tests of `bodies`: kappa derived from geometry, the catalogue's thresholds and comparisons;
-//! [`convex`]: the general convex bodies of `bodies::convex`.
+//! [`convex`]: the general convex bodies of `bodies::convex`; [`general`]: the named ones.
 
 mod convex;
+mod general;
 
 use chatter::bodies::{self, PaperValue, catalogue, platonic, prism, thresholds, uniform_rod};
 use chatter::exact::{OrderedField, Q, Ring};
