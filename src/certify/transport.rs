@@ -1,4 +1,4 @@
-//! Certificates for general convex bodies (format version 4, docs/certificate-format.md §12) by
+//! Certificates for general convex bodies (format version 4, docs/certificate-format.md §13) by
 //! transport from a regular n-gon certificate (untrusted: the kernel re-checks every output).
 //!
 //! A regular n-gon certificate gives one cone K in contact coordinates (u0, u1, v) relabelled at

@@ -1,4 +1,4 @@
-//! Certificates of general convex bodies (format version 4, docs/certificate-format.md §12):
+//! Certificates of general convex bodies (format version 4, docs/certificate-format.md §13):
 //! regular-polygon certificates transported to affine images (docs/model.md §11.7) verify on both
 //! backends exactly where the regular ones do; raised gamma and shrunk cones are rejected; the
 //! kernel's rules K1-K4 give typed rejections with a locus; versions 1-3 are unchanged.
@@ -329,4 +329,54 @@ fn versions_one_to_three_are_unchanged() {
         }
     }
     assert!(old >= 30);
+}
+
+/// Writes the version-4 corpus files (run with `--ignored` to regenerate; the corpus tests check
+/// them) and prints each invalid file's rejection.
+#[test]
+#[ignore]
+fn write_convex_corpus() {
+    let file = |dir: &str, name: &str| root().join("certificates").join(dir).join(name);
+    let read_old = |name: &str| {
+        chatter_kernel::certificate::read(&std::fs::read_to_string(file("invalid", name)).unwrap()).unwrap()
+    };
+    let square = regular(4, "1/6", "1/50");
+    let triangle = regular(3, "1/8", "1/20");
+    let rect = |g: &str| plates(&q(g)).remove(0).2;
+    let tri = |g: &str| plates(&q(g)).remove(3).2;
+    let valid = [
+        ("convex-rectangle-2x1-gamma1_50.ron", transport(&rect("1/50"), &square).unwrap()),
+        ("convex-triangle-irregular-gamma1_20.ron", transport(&tri("1/20"), &triangle).unwrap()),
+    ];
+    for (name, c) in &valid {
+        assert!(matches!(both(c), Verdict::Accepted(_)), "{name}");
+        std::fs::write(file("valid", name), write_convex(c)).unwrap();
+    }
+    let good = &valid[0].1;
+    let mut below = good.clone();
+    below.cones[2][1].0[2] = "0".into();
+    let mut flat = good.clone();
+    flat.cones[3].truncate(2);
+    let mut clockwise = good.clone();
+    let ConvexBodyText::ConvexPolygon { contacts, .. } = &mut clockwise.body;
+    contacts.reverse();
+    let invalid = [
+        ("convex-generator-v-zero.ron", below),
+        ("convex-flat-cone.ron", flat),
+        ("convex-clockwise-contacts.ron", clockwise),
+        ("convex-gamma-raised.ron", transport(&rect("1/5"), &square).unwrap()),
+        (
+            "convex-vacuous-cones-all-down-claim.ron",
+            transport(&rect("1/100"), &read_old("vacuous-cone-all-down-claim.ron")).unwrap(),
+        ),
+        (
+            "convex-pcc-not-excluded.ron",
+            transport(&rect("1/1000"), &read_old("pcc-square-tiny-gamma.ron")).unwrap(),
+        ),
+    ];
+    for (name, c) in &invalid {
+        let Verdict::Rejected(r) = both(c) else { panic!("{name} is accepted") };
+        std::fs::write(file("invalid", name), write_convex(c)).unwrap();
+        println!("{name}\t{}\t{}\t{}", r.code.as_str(), serde_json::to_string(&r.locus).unwrap(), r.message);
+    }
 }

@@ -1,7 +1,7 @@
 //! Certificate format version 4: a general convex body (`ConvexPolygon`: contacts anywhere in
 //! strictly convex position around the centre of mass, any horizontal inertia tensor) with a
 //! family of cones K_0, ..., K_{n-1}, one per last contact (docs/model.md §11.5,
-//! docs/certificate-format.md §12). The numbers stay text here, as in versions 1-3; the kernel
+//! docs/certificate-format.md §13). The numbers stay text here, as in versions 1-3; the kernel
 //! parses them with the canonical rules on each backend (`crate::check::convex`).
 
 use super::write::quoted;

@@ -1,6 +1,6 @@
 //! The acceptance rules of a `ConvexPolygon` certificate (format version 4): a general convex
 //! body and a family of cones K_0, ..., K_{n-1} (docs/model.md §11.5, docs/certificate-format.md
-//! §12, docs/kernel-soundness.md §7). Rules, in the order they are checked:
+//! §13, docs/kernel-soundness.md §6). Rules, in the order they are checked:
 //!
 //! - K1: each K_i is a 3-D cone with every generator in v < 0 (so K_i is pointed and lies in
 //!   v <= 0: condition 1 of the Definition in docs/model.md §11.5);
