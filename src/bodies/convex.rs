@@ -8,7 +8,7 @@
 //! a flat body has J = P S P^T with S = int r r^T dm / m and P = [[0, 1], [-1, 0]].
 
 use crate::exact::{Algebraic, CosField, OrderedField, Q};
-use chatter_kernel::model::{ConvexBody, ConvexBodyError, Mat2, Vec2, check_convex_polygon};
+use chatter_kernel::model::{ConvexBody, ConvexBodyError, MAX_CONTACTS, Mat2, Vec2, check_convex_polygon};
 
 /// Twice the signed area of the triangle (0, a, b): a_x b_y - b_x a_y.
 fn cross<F: OrderedField>(a: &Vec2<F>, b: &Vec2<F>) -> F {
@@ -130,8 +130,8 @@ pub fn regular_polygon<F: OrderedField>(
     gamma: F,
 ) -> Result<ConvexBody<F>, String> {
     let unit = cos1.times(cos1).plus(&sin1.times(sin1)) == F::one();
-    if n < 3 || !unit || !sin1.is_positive() {
-        return Err(format!("(cos1, sin1) is not (cos, sin)(2 pi/{n}) with n >= 3"));
+    if !(3..=MAX_CONTACTS).contains(&n) || !unit || !sin1.is_positive() {
+        return Err(format!("(cos1, sin1) is not (cos, sin)(2 pi/{n}) with 3 <= n <= {MAX_CONTACTS}"));
     }
     // T_m(c) and U_{m-1}(c) for m = 0..n: cos and sin / sin1 of 2 pi m / n.
     let two_c = cos1.times(&F::from_i64(2));

@@ -6,7 +6,7 @@
 //! h_k = f_k . q), and every map is rational when the contacts and J are.
 //!
 //! - this file: the body, its covectors f_k and the impact maps I_k (§11.2);
-//! - [`shape`](self::shape): validation of the data (§11.1);
+//! - `shape`: validation of the data (§11.1);
 //! - `cones`: the rest points m_{k,l}, the cones C_{ij} and the all-down cone D (§11.3-11.5);
 //! - `pcc`: the PCC quadratic of an adjacent pair (§11.6);
 //! - `affine`: the transport of a body by a linear map of the plane (§11.7).

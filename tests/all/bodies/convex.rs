@@ -231,4 +231,5 @@ fn regular_polygons_need_the_true_cosine_and_sine() {
     );
     assert!(regular_polygon(3, &c, &s, Algebraic::rational(q(1, 6)), Algebraic::rational(half)).is_ok());
     assert!(regular_polygon(4, &Q::int(0), &Q::int(1), q(-1, 6), q(1, 2)).is_err(), "kappa <= 0");
+    assert!(regular_polygon(usize::MAX, &Q::int(0), &Q::int(1), q(1, 6), q(1, 2)).is_err(), "n too large");
 }

@@ -7,7 +7,7 @@
 use super::ConvexBody;
 use crate::exact::OrderedField;
 use crate::model::linalg::{Mat3, Vec3, mat_vec};
-use crate::model::rod::{Mat2, mat2_mul};
+use crate::model::rod::{Mat2, mat2_mul, mat2_vec};
 
 /// A body's image under a linear map L of the plane, with the maps that carry its velocities,
 /// configurations and covectors along.
@@ -61,13 +61,7 @@ impl<F: OrderedField> ConvexBody<F> {
         if !det.is_positive() {
             return None;
         }
-        let map = |r: &[F; 2]| {
-            [
-                l[0][0].times(&r[0]).plus(&l[0][1].times(&r[1])),
-                l[1][0].times(&r[0]).plus(&l[1][1].times(&r[1])),
-            ]
-        };
-        let contacts = self.contacts().iter().map(map).collect();
+        let contacts = self.contacts().iter().map(|r| mat2_vec(l, r)).collect();
         let b = cofactor(l);
         let inertia = mat2_mul(&mat2_mul(&b, self.inertia()), &transpose(&b));
         let body = ConvexBody::new(contacts, inertia, self.gamma().clone()).ok()?;
