@@ -2,13 +2,19 @@
 //! num-bigint/num-rational are independent libraries, so a disagreement between their verdicts
 //! (messages included) reveals a bug in one of them or in the kernel, and is reported as such.
 
-use crate::certificate::{Certificate, Encoding, read_in};
-use crate::check::{Accepted, check};
+use crate::certificate::{
+    CONVEX_VERSION, Certificate, ConvexCertificate, Encoding, read_convex, read_in, version_of,
+};
+use crate::check::{Accepted, check, check_convex};
 use crate::exact::{ParseLimits, Q};
 use num_rational::BigRational;
 
 /// A kernel run on one backend: `check::<F>` for some backend `F`.
 pub type Checker = fn(&Certificate, ParseLimits) -> Result<Accepted, crate::certificate::Rejection>;
+
+/// The kernel on a version-4 (`ConvexPolygon`) certificate on one backend: `check_convex::<F>`.
+pub type ConvexChecker =
+    fn(&ConvexCertificate, ParseLimits) -> Result<Accepted, crate::certificate::Rejection>;
 
 /// The refutation checker on one backend: `refute::check::<F>` for some backend `F`.
 pub type RefutationChecker = fn(
@@ -25,16 +31,23 @@ pub struct Backend {
     pub check: Checker,
     /// The refutation checker on it.
     pub refute: RefutationChecker,
+    /// The kernel on version-4 (`ConvexPolygon`) certificates on it.
+    pub convex: ConvexChecker,
 }
 
 /// malachite, the main backend.
-pub const MALACHITE: Backend =
-    Backend { name: "malachite", check: check::<Q>, refute: crate::refute::check::<Q> };
+pub const MALACHITE: Backend = Backend {
+    name: "malachite",
+    check: check::<Q>,
+    refute: crate::refute::check::<Q>,
+    convex: check_convex::<Q>,
+};
 /// num-bigint/num-rational, the independent second backend.
 pub const NUM: Backend = Backend {
     name: "num-rational",
     check: check::<BigRational>,
     refute: crate::refute::check::<BigRational>,
+    convex: check_convex::<BigRational>,
 };
 
 /// The kernel's verdict, possibly over two backends (on a certificate, `T` = [`Accepted`]; on a
@@ -86,6 +99,17 @@ pub fn verify_on(cert: &Certificate, limits: ParseLimits, backends: &[Backend]) 
     agree(backends.iter().map(|b| (b.name, (b.check)(cert, limits))))
 }
 
+/// Runs the kernel on a version-4 (`ConvexPolygon`) certificate on each backend and compares the
+/// verdicts.
+pub fn verify_convex_on(cert: &ConvexCertificate, limits: ParseLimits, backends: &[Backend]) -> Verdict {
+    agree(backends.iter().map(|b| (b.name, (b.convex)(cert, limits))))
+}
+
+/// Runs the kernel on a version-4 certificate on both backends (malachite and num-rational).
+pub fn verify_convex(cert: &ConvexCertificate, limits: ParseLimits) -> Verdict {
+    verify_convex_on(cert, limits, &[MALACHITE, NUM])
+}
+
 /// Runs the kernel on both backends (malachite and num-rational).
 pub fn verify(cert: &Certificate, limits: ParseLimits) -> Verdict {
     verify_on(cert, limits, &[MALACHITE, NUM])
@@ -99,6 +123,12 @@ pub fn verify_text(text: &str, limits: ParseLimits, backends: &[Backend]) -> Ver
 /// Reads certificate text in the given encoding (RON or its JSON twin) and verifies it on the
 /// given backends: after reading, the same checks on the same values.
 pub fn verify_text_in(text: &str, encoding: Encoding, limits: ParseLimits, backends: &[Backend]) -> Verdict {
+    if version_of(text, encoding) == Some(CONVEX_VERSION) {
+        return match read_convex(text, encoding) {
+            Ok(cert) => verify_convex_on(&cert, limits, backends),
+            Err(r) => Verdict::Rejected(r),
+        };
+    }
     match read_in(text, encoding) {
         Ok(cert) => verify_on(&cert, limits, backends),
         Err(r) => Verdict::Rejected(r),

@@ -5,6 +5,7 @@
 //! ([`crate::finder::rod`]). Claims are tried strongest first unless one is asked for.
 
 mod field;
+pub mod transport;
 
 use crate::exact::{OrderedField, ParseLimits, Q};
 use crate::exactify::{Exact, Exactified, ExactifyConfig, ExactifyError, exactify};

@@ -26,4 +26,5 @@ mod simulate;
 mod spectral;
 mod sweep;
 mod symbolic;
+mod transport;
 mod verify;

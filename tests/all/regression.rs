@@ -78,8 +78,12 @@ impl Field for Liar {
     }
 }
 
-const LIAR: Backend =
-    Backend { name: "liar", check: check::<Liar>, refute: chatter_kernel::refute::check::<Liar> };
+const LIAR: Backend = Backend {
+    name: "liar",
+    check: check::<Liar>,
+    refute: chatter_kernel::refute::check::<Liar>,
+    convex: chatter_kernel::check::check_convex::<Liar>,
+};
 
 fn outcome(args: &[&str], env: &Env) -> Outcome {
     let mut argv = vec!["chatter"];

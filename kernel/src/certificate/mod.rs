@@ -3,12 +3,17 @@
 //! rejection type shared with the kernel. The numbers stay text here; the kernel parses them with the
 //! canonical rules on each backend. See docs/certificate-format.md.
 
+pub mod convex;
 mod json;
 mod read;
 mod rejection;
 mod strict;
 mod write;
 
+pub use convex::{
+    CONVEX_VERSION, ConvexBodyText, ConvexCertificate, ConvexCoordinates, read_convex, version_of,
+    write_convex,
+};
 pub(crate) use json::{format_of as json_format_of, read as read_json};
 pub use read::{Syntax, read, read_in, read_with};
 pub(crate) use read::{check_header, ron_error};

@@ -75,8 +75,25 @@ pub fn read(text: &str) -> Result<Certificate, Rejection> {
 pub fn read_in(text: &str, encoding: super::Encoding) -> Result<Certificate, Rejection> {
     match encoding {
         super::Encoding::Ron => read(text),
-        super::Encoding::Json => super::read_json(text, FORMAT, VERSIONS),
+        super::Encoding::Json => {
+            super::read_json::<super::convex::VersionOnly>(text, FORMAT, ALL_VERSIONS)
+                .and_then(not_convex)?;
+            super::read_json(text, FORMAT, VERSIONS)
+        }
     }
+}
+
+/// Every version this build reads: 1-3 here, 4 (`ConvexPolygon` bodies) with
+/// [`super::read_convex`]. A header with version 4 is told where to go, not "unsupported".
+const ALL_VERSIONS: RangeInclusive<u64> = 1..=super::CONVEX_VERSION;
+
+/// Rejects version 4 in the reader of versions 1-3 (`chatter verify` dispatches on the version).
+fn not_convex(h: super::convex::VersionOnly) -> Result<(), Rejection> {
+    if h.version == Some(super::CONVEX_VERSION) {
+        let msg = "version 4 certificates have a ConvexPolygon body and are read by read_convex (chatter verify reads both)";
+        return Err(Rejection::at_field(Code::UnsupportedVersion, "version", msg));
+    }
+    Ok(())
 }
 
 /// Reads a RON certificate: the syntax, then the header (`format`, `version`), then the full
@@ -87,7 +104,8 @@ pub fn read_with(text: &str, syntax: Syntax) -> Result<Certificate, Rejection> {
     }
     let lenient = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
     let header: Header = lenient.from_str(text).map_err(ron_error)?;
-    check_header(header.format.as_deref(), header.version, FORMAT, VERSIONS)?;
+    check_header(header.format.as_deref(), header.version, FORMAT, ALL_VERSIONS)?;
+    not_convex(super::convex::VersionOnly { version: header.version })?;
     ron::Options::default().from_str(text).map_err(ron_error)
 }
 

@@ -141,6 +141,45 @@ pub enum Locus {
         /// [lo, hi] of gamma, canonical text.
         gamma: Box<[String; 2]>,
     },
+    /// Generator `index` of the cone K_`cone` of a `ConvexPolygon` certificate (rule K1).
+    ConvexGenerator {
+        /// i of K_i (an index into `cones`).
+        cone: usize,
+        /// The index into `cones[cone]`.
+        index: usize,
+    },
+    /// The cone K_`cone` of a `ConvexPolygon` certificate as a whole (rule K1).
+    ConvexCone {
+        /// i of K_i.
+        cone: usize,
+    },
+    /// The image under I_`to` of vertex `vertex` of K_`from` ∩ C_(`from`,`to`) (rule K2).
+    Transition {
+        /// i: the contact of the last impact, K_i.
+        from: usize,
+        /// j: the next contact, C_ij, I_j and K_j.
+        to: usize,
+        /// The vertex of K_i ∩ C_ij, in the order the clipping produces them.
+        vertex: usize,
+        /// The part of K_j's boundary the image violates (`None` when its v is >= 0); its
+        /// generator indices are into `cones[to]`.
+        outside: Option<Boundary>,
+    },
+    /// The image under I_`cone` of generator `generator` (-m_{k,k+1}, k = `generator`) of the
+    /// all-down cone D (rule K3).
+    ConvexAllDown {
+        /// i of I_i and K_i.
+        cone: usize,
+        /// k of -m_{k,k+1}.
+        generator: usize,
+        /// The part of K_i's boundary the image violates (`None` when its v is >= 0).
+        outside: Option<Boundary>,
+    },
+    /// The PCC quadratic of the adjacent pair (`pair`, `pair` + 1 mod n) (rule K4).
+    PccPair {
+        /// k of the pair (k, k+1).
+        pair: usize,
+    },
     /// Step `index` (from 0) of a proof, with its id.
     Step {
         /// Position in the list of steps.

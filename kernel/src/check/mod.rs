@@ -6,6 +6,8 @@
 //! effective invariance is a property of cones, so scaling a generator, a covector or a map by a
 //! positive number changes nothing.
 
+mod convex;
+pub use convex::check_convex;
 mod polygon;
 pub use polygon::MAX_PCC_BOXES;
 mod field;

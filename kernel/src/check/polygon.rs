@@ -14,14 +14,14 @@ use crate::model::linalg::{Mat3, Vec3, is_zero, mat_vec};
 use crate::model::{PccExclusion, Polygon, Shape, pcc_polynomials, pcc_quadratic};
 
 /// A positive multiple of a matrix, in the ring of scaled coordinates (integers for Q).
-fn int_mat<E: Scalar>(m: &Mat3<E>) -> Mat3<E::R> {
+pub(super) fn int_mat<E: Scalar>(m: &Mat3<E>) -> Mat3<E::R> {
     let flat: Vec<E> = m.iter().flatten().cloned().collect();
     let z = E::scaled(&flat);
     std::array::from_fn(|r| std::array::from_fn(|c| z[3 * r + c].clone()))
 }
 
 /// A positive multiple of a vector, in the ring of scaled coordinates.
-fn int_vec<E: Scalar>(v: &Vec3<E>) -> Vec3<E::R> {
+pub(super) fn int_vec<E: Scalar>(v: &Vec3<E>) -> Vec3<E::R> {
     let z = E::scaled(v);
     std::array::from_fn(|i| z[i].clone())
 }
@@ -32,23 +32,27 @@ fn shown<E: Scalar>(q: &Vec3<E::R>) -> String {
 }
 
 /// K: its extreme generators (indices into `cone`, counter-clockwise) and the polygon.
-struct Cone<Z> {
-    hull: Vec<usize>,
-    polygon: ConvexPolygon<Z>,
+pub(super) struct Cone<Z> {
+    pub(super) hull: Vec<usize>,
+    pub(super) polygon: ConvexPolygon<Z>,
 }
 
 /// Where an image is checked, and how a failure is reported.
-struct Target<'a> {
+pub(super) struct Target<'a> {
     /// Builds the locus from the violated boundary (`None`: the image has v >= 0).
-    locus: &'a dyn Fn(Option<Boundary>) -> Locus,
+    pub(super) locus: &'a dyn Fn(Option<Boundary>) -> Locus,
     /// Describes the point and its map, e.g. "vertex 0 of K∩C_1, at (0, -1), maps under S_1".
-    what: &'a dyn Fn() -> String,
-    outside: Code,
-    above: Code,
+    pub(super) what: &'a dyn Fn() -> String,
+    pub(super) outside: Code,
+    pub(super) above: Code,
 }
 
 /// Checks that `img` lies in K (or is 0).
-fn check_image<E: Scalar>(k: &Cone<E::R>, img: &Vec3<E::R>, t: &Target<'_>) -> Result<(), Rejection> {
+pub(super) fn check_image<E: Scalar>(
+    k: &Cone<E::R>,
+    img: &Vec3<E::R>,
+    t: &Target<'_>,
+) -> Result<(), Rejection> {
     if is_zero(img) {
         return Ok(());
     }
