@@ -4,6 +4,7 @@
 //! Regular polygons: float finder, then exactifier. The rod: an exact search
 //! ([`crate::finder::rod`]). Claims are tried strongest first unless one is asked for.
 
+pub mod convex;
 mod field;
 pub mod transport;
 
@@ -149,6 +150,9 @@ pub enum Failure {
     /// The search found no cone or ran out of budget (Found carries the number of rays).
     Finder(Search<usize>),
     Exactify(ExactifyError),
+    /// The family search of a general body (docs/model.md §11.9) found a vertex of
+    /// K_from ∩ C_(from,to) whose image under I_to has v >= 0: no family contains the seeds.
+    NoFamily { iteration: usize, from: usize, to: usize },
     /// The kernel rejected the exact cone (a bug in the untrusted side).
     Kernel(Rejection),
     /// The backends disagree: a bug in chatter or a bignum library.
@@ -176,6 +180,10 @@ impl std::fmt::Display for Failure {
             }
             Failure::Finder(Search::Found { .. }) => write!(f, "search succeeded"),
             Failure::Exactify(e) => write!(f, "exactifier failed: {e}"),
+            Failure::NoFamily { iteration, from, to } => write!(
+                f,
+                "no family of effectively invariant cones contains the seeds (a vertex of K_{from} ∩ C_({from},{to}) maps under I_{to} to v >= 0 at iteration {iteration})"
+            ),
             Failure::Kernel(r) => write!(f, "kernel rejected the exact cone: {r}"),
             Failure::Internal(s) => write!(f, "internal error: {s}"),
         }
@@ -196,15 +204,15 @@ pub struct Report {
     pub notes: Vec<String>,
 }
 
-/// One claim's attempt.
-struct Attempt {
-    result: Result<Certificate, Failure>,
+/// One claim's attempt (a regular-polygon certificate, or `C`).
+struct Attempt<C = Certificate> {
+    result: Result<C, Failure>,
     finder: Option<Search<usize>>,
     method: Option<&'static str>,
     bits: u64,
 }
 
-impl Attempt {
+impl<C> Attempt<C> {
     fn failed(f: Failure, finder: Option<Search<usize>>) -> Self {
         Attempt { result: Err(f), finder, method: None, bits: 0 }
     }
@@ -314,6 +322,14 @@ fn exactify_ladder<E: Exact>(
     seeds: &[Vec3<E>],
     cfg: &ExactifyConfig,
 ) -> Result<Exactified, ExactifyError> {
+    ladder(cfg, |c| exactify(bodies, polygon, seeds, c))
+}
+
+/// The retries of [`exactify_ladder`] for any exactifier `run`.
+fn ladder<T>(
+    cfg: &ExactifyConfig,
+    run: impl Fn(&ExactifyConfig) -> Result<T, ExactifyError>,
+) -> Result<T, ExactifyError> {
     let finer = ExactifyConfig {
         normal_bits: cfg.normal_bits + 2,
         grid_bits: cfg.grid_bits + 8,
@@ -321,11 +337,11 @@ fn exactify_ladder<E: Exact>(
         ..*cfg
     };
     let coarser = ExactifyConfig { slack_bits: cfg.slack_bits.saturating_sub(4), ..*cfg };
-    let first = exactify(bodies, polygon, seeds, cfg);
+    let first = run(cfg);
     if !cfg.retry || !matches!(first, Err(ExactifyError::NoConvergence { .. })) {
         return first;
     }
-    [finer, coarser].iter().map(|c| exactify(bodies, polygon, seeds, c)).find(Result::is_ok).unwrap_or(first)
+    [finer, coarser].iter().map(run).find(Result::is_ok).unwrap_or(first)
 }
 
 /// A regular polygon at every corner: float finder, exactifier, kernel.
@@ -435,13 +451,23 @@ fn claims_for(
     strongest: impl FnOnce(&mut Vec<String>) -> Result<Claim, Failure>,
     notes: &mut Vec<String>,
 ) -> Result<Vec<Claim>, Failure> {
-    let (g0, g1) = (&req.gamma, req.upper.as_ref().map_or(&req.gamma, |u| &u.1));
+    let g1 = req.upper.as_ref().map_or(&req.gamma, |u| &u.1);
+    claims_in(req.claim, [&req.gamma, g1], strongest, notes)
+}
+
+/// [`claims_for`] for a claim choice and gamma in [g0, g1].
+fn claims_in(
+    choice: ClaimChoice,
+    [g0, g1]: [&Q; 2],
+    strongest: impl FnOnce(&mut Vec<String>) -> Result<Claim, Failure>,
+    notes: &mut Vec<String>,
+) -> Result<Vec<Claim>, Failure> {
     if *g0 == Q::int(0) || *g1 == Q::int(1) {
         let g = if *g0 == Q::int(0) { g0 } else { g1 };
         let why = format!(
             "gamma = {g}: the claims about drops need 0 < gamma < 1 (the paper's Theorem on effectively invariant cones); only EffectivelyInvariant can be certified"
         );
-        return match req.claim {
+        return match choice {
             ClaimChoice::Exactly(Claim::EffectivelyInvariant) | ClaimChoice::Strongest => {
                 notes.push(why);
                 Ok(vec![Claim::EffectivelyInvariant])
@@ -450,7 +476,7 @@ fn claims_for(
         };
     }
     let strongest = strongest(notes)?;
-    Ok(match req.claim {
+    Ok(match choice {
         ClaimChoice::Exactly(c) => vec![c],
         ClaimChoice::Strongest => vec![strongest, Claim::EffectivelyInvariant],
         ClaimChoice::StrongestAboutDrops => vec![strongest],
@@ -496,20 +522,32 @@ fn report(a: Attempt, timings: Timings, notes: Vec<String>) -> Report {
     }
 }
 
-/// Tries the claims in order until one is certified (or an internal error stops the run).
+/// The report of [`try_claims`].
 fn run_claims(
     req: &Request,
     claims: Vec<Claim>,
-    mut attempt: impl FnMut(Claim, &mut Timings) -> Attempt,
-    mut notes: Vec<String>,
+    attempt: impl FnMut(Claim, &mut Timings) -> Attempt,
+    notes: Vec<String>,
 ) -> Report {
+    let (a, timings, notes) = try_claims(req.claim, claims, attempt, notes);
+    report(a, timings, notes)
+}
+
+/// Tries the claims in order until one is certified (or an internal error stops the run): the
+/// last attempt, the time spent and the notes.
+fn try_claims<C>(
+    choice: ClaimChoice,
+    claims: Vec<Claim>,
+    mut attempt: impl FnMut(Claim, &mut Timings) -> Attempt<C>,
+    mut notes: Vec<String>,
+) -> (Attempt<C>, Timings, Vec<String>) {
     let mut timings = Timings::default();
     let mut last = None;
     for claim in claims {
         let a = attempt(claim, &mut timings);
         let stop = a.result.is_ok() || matches!(a.result, Err(Failure::Internal(_)));
         if !stop {
-            if let (Err(e), ClaimChoice::Strongest) = (&a.result, req.claim) {
+            if let (Err(e), ClaimChoice::Strongest) = (&a.result, choice) {
                 notes.push(format!("{} not certified: {e}", claim.name()));
             }
         }
@@ -518,7 +556,7 @@ fn run_claims(
             break;
         }
     }
-    report(last.expect("at least one claim"), timings, notes)
+    (last.expect("at least one claim"), timings, notes)
 }
 
 /// Whether `certify` can model the body: n from 2 to 64 (in Q(cos 2 pi/n) where cos 2 pi/n is

@@ -20,6 +20,18 @@ pub enum ClaimArg {
     CompleteChatterFromAllDown,
 }
 
+impl ClaimArg {
+    /// The pipeline's claim choice.
+    pub fn choice(self) -> ClaimChoice {
+        match self {
+            ClaimArg::Strongest => ClaimChoice::Strongest,
+            ClaimArg::EffectivelyInvariant => ClaimChoice::Exactly(Claim::EffectivelyInvariant),
+            ClaimArg::CcOrPccFromAllDown => ClaimChoice::Exactly(Claim::CcOrPccFromAllDown),
+            ClaimArg::CompleteChatterFromAllDown => ClaimChoice::Exactly(Claim::CompleteChatterFromAllDown),
+        }
+    }
+}
+
 /// Raw arguments of `chatter certify`.
 #[derive(Args, Debug)]
 #[command(after_help = "Numbers are read exactly: 1/6, 0.01 (= 1/100), 1e-2.\n\
@@ -35,11 +47,12 @@ chatter certify --body dodecahedron --gamma 1/100")]
 pub struct CertifyArgs {
     #[command(flatten)]
     pub body: super::BodyArgs,
-    /// A body of the catalogue (`chatter bodies`), by a unique part of its name, e.g.
-    /// "pentagon plate" or "dodecahedron": its n and its exact kappa (which may be irrational,
-    /// an element of Q(cos 2 pi/n)); give --gamma, not --n or --kappa.
-    #[arg(long = "body", value_name = "NAME", conflicts_with_all = ["n", "kappa"])]
-    pub body_name: Option<String>,
+    /// A general convex body (docs/model.md §11): --rectangle, --box, --polygon, or --body NAME|FILE.
+    /// --body also takes a regular body of the catalogue (`chatter bodies`) by a unique part of
+    /// its name, e.g. "pentagon plate" or "dodecahedron": its n and its exact kappa (which may be
+    /// irrational, an element of Q(cos 2 pi/n)); give --gamma, not --n or --kappa.
+    #[command(flatten)]
+    pub general: super::convex_args::ConvexArgs,
     /// The claim to certify.
     #[arg(long, value_enum, default_value = "strongest")]
     pub claim: ClaimArg,
@@ -102,7 +115,7 @@ fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
         }
         None => a.body.parse_ranges()?,
     };
-    if let Some(name) = &a.body_name {
+    if let Some(name) = &a.general.body {
         let (bn, k, text) = catalogue_body(name)?;
         (n, kappa, kappa_field) = (bn, [k.clone(), k], text);
     }
@@ -121,19 +134,14 @@ fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
     }
     let mut req = Request::boxed(n, kappa, gamma);
     req.kappa_field = kappa_field;
-    req.claim = match a.claim {
-        ClaimArg::Strongest => ClaimChoice::Strongest,
-        ClaimArg::EffectivelyInvariant => ClaimChoice::Exactly(Claim::EffectivelyInvariant),
-        ClaimArg::CcOrPccFromAllDown => ClaimChoice::Exactly(Claim::CcOrPccFromAllDown),
-        ClaimArg::CompleteChatterFromAllDown => ClaimChoice::Exactly(Claim::CompleteChatterFromAllDown),
-    };
+    req.claim = a.claim.choice();
     req.finder.max_iterations = a.max_iterations;
     req.finder.max_vertices = a.max_vertices;
     req.backends = env.backends;
     Ok(Validated { req, output: a.output, json: a.json, timings: a.timings })
 }
 
-fn ms(d: std::time::Duration) -> f64 {
+pub(super) fn ms(d: std::time::Duration) -> f64 {
     d.as_secs_f64() * 1e3
 }
 
@@ -169,7 +177,18 @@ fn summary(v: &Validated, r: &Report) -> String {
     }
 }
 
+/// Whether the arguments describe a general body (docs/model.md §11) rather than a regular one.
+fn is_general(a: &CertifyArgs) -> bool {
+    match &a.general.body {
+        Some(value) => super::convex_args::names_general_body(value),
+        None => a.general.given(),
+    }
+}
+
 pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
+    if is_general(&a) {
+        return super::certify_general::run(a, env);
+    }
     let v = match validate(a, env) {
         Ok(v) => v,
         Err(e) => return Outcome::Usage(e),

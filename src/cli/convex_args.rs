@@ -6,10 +6,11 @@
 
 use crate::bodies::convex::{polygon_plate, rectangle_plate, uniform_box};
 use crate::bodies::file::BodyFile;
+use crate::bodies::general::{GeneralEntry, general_catalogue};
 use crate::exact::{Q, Ring, parse_user_number};
 use chatter_kernel::model::{ConvexBody, ConvexBodyError, Vec2};
 use clap::Args;
-use std::path::PathBuf;
+use std::path::Path;
 
 /// Raw general-body options.
 #[derive(Args, Debug, Clone, Default)]
@@ -32,9 +33,23 @@ pub struct ConvexArgs {
     /// With --polygon --inertia: the centre of mass's projection in the polygon's frame (default 0,0).
     #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
     pub centre: Option<String>,
-    /// A body file (RON, docs/bodies.md): contacts, inertia, optional centre and gamma.
-    #[arg(long, value_name = "FILE", conflicts_with_all = ["n", "kappa"])]
-    pub body: Option<PathBuf>,
+    /// A general body of the catalogue (phone, brick, table, lander; `chatter bodies`) or a body
+    /// file (RON, docs/bodies.md: contacts, inertia, optional centre and gamma).
+    #[arg(long, value_name = "NAME|FILE", conflicts_with_all = ["n", "kappa"])]
+    pub body: Option<String>,
+}
+
+/// The general catalogue's body named `name` (exactly, ignoring case), with restitution `gamma`.
+fn general_entry(name: &str, gamma: &Q) -> Result<Option<GeneralEntry>, String> {
+    let all = general_catalogue(gamma).map_err(|e| format!("--body: {e}"))?;
+    Ok(all.into_iter().find(|e| e.name.eq_ignore_ascii_case(name.trim())))
+}
+
+/// Whether `--body VALUE` names a general body: a name of the general catalogue or an existing
+/// file (`certify` otherwise looks the name up in the regular catalogue).
+pub fn names_general_body(value: &str) -> bool {
+    let named = general_catalogue(&Q::int(0)).is_ok_and(|all| all.iter().any(|e| e.name.eq_ignore_ascii_case(value.trim())));
+    named || Path::new(value).is_file()
 }
 
 /// A general body and how it was given.
@@ -155,7 +170,12 @@ impl ConvexArgs {
                 }
             };
         }
-        if let Some(path) = &self.body {
+        if let Some(value) = &self.body {
+            if let Some(entry) = general_entry(value, gamma)? {
+                let description = format!("{} (general catalogue)", entry.name);
+                return Ok(Some(GeneralBody { body: entry.body, description }));
+            }
+            let path = Path::new(value);
             let flag = format!("--body {}", path.display());
             let text = std::fs::read_to_string(path).map_err(|e| format!("{flag}: cannot read: {e}"))?;
             let data = BodyFile::parse(&text).and_then(|f| f.data()).map_err(|e| format!("{flag}: {e}"))?;

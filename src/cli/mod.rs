@@ -6,6 +6,7 @@
 
 mod bodies_cmd;
 mod certify_cmd;
+mod certify_general;
 mod check_proof_cmd;
 mod classify_cmd;
 mod convert_cmd;

@@ -9,9 +9,11 @@
 //! raised only as far as exact images demand, so points that the maps send onto each other with
 //! no contraction (two contacts at rest) stay exactly on K with no slack.
 
+pub mod family;
 mod points;
 
 pub use points::{Exact, Nf, nf_f64};
+pub(crate) use points::{int_mat, int_vec, primitive};
 
 use crate::exact::{Field, Q, QExt};
 use crate::finder::geometry::P2;
@@ -19,7 +21,6 @@ use chatter_kernel::geometry::clip;
 use chatter_kernel::model::Polygon as Body;
 use chatter_kernel::model::linalg::Vec3;
 use malachite::Integer;
-use points::primitive;
 use std::fmt;
 
 /// Tuning of the exactifier.
@@ -50,6 +51,9 @@ pub enum ExactifyError {
     BadInput(String),
     /// An exact image of a vertex of K ∩ C_j has v >= 0.
     ImageAbove { round: usize, step: usize },
+    /// An exact image of a vertex of K_from ∩ C_(from,to) under I_to has v >= 0 (a family of
+    /// cones of a general body).
+    TransitionAbove { round: usize, from: usize, to: usize },
     /// Offsets kept growing.
     NoConvergence { rounds: usize, worst_excess: f64 },
 }
@@ -64,6 +68,10 @@ impl fmt::Display for ExactifyError {
                     "round {round}: an exact image under S_{step} has v >= 0 (the rational cone grew too large)"
                 )
             }
+            ExactifyError::TransitionAbove { round, from, to } => write!(
+                f,
+                "round {round}: an exact image of K_{from} ∩ C_({from},{to}) under I_{to} has v >= 0 (the rational cones grew too large)"
+            ),
             ExactifyError::NoConvergence { rounds, worst_excess } => write!(
                 f,
                 "offsets still growing after {rounds} rounds (largest excess {worst_excess:.3e}): the maps barely contract here"
@@ -156,6 +164,83 @@ pub struct Exactified {
     pub rounds: usize,
 }
 
+/// The outer approximation { x : n_l . x <= h_l } of one float polygon: rounded normals, dyadic
+/// offsets, and each normal's slack and grid.
+pub(crate) struct Offsets {
+    normals: Vec<(i64, i64)>,
+    h: Vec<Q>,
+    slacks: Vec<Q>,
+    grids: Vec<u64>,
+}
+
+impl Offsets {
+    /// The offsets of `float_poly`'s support, rounded up, plus slack.
+    pub(crate) fn new(float_poly: &[P2], cfg: &ExactifyConfig) -> Result<Offsets, ExactifyError> {
+        if float_poly.is_empty() || float_poly.iter().any(|p| !p.x.is_finite() || !p.y.is_finite()) {
+            return Err(ExactifyError::BadInput(format!("{} vertices", float_poly.len())));
+        }
+        let normals = normals_of(float_poly, cfg.normal_bits);
+        let size = float_poly.iter().map(|p| p.x.abs().max(p.y.abs())).fold(1.0, f64::max);
+        let e = size.log2().ceil() as i64;
+        let unit = Q::from_rational(malachite::rational::Rational::from(1u32) >> (i64::from(cfg.slack_bits) - e));
+        // Slack and grid in units of |n|, so that every edge moves by about the same distance.
+        let nbits: Vec<u32> =
+            normals.iter().map(|n| 63 - (n.0.unsigned_abs().max(n.1.unsigned_abs())).leading_zeros()).collect();
+        let slacks: Vec<Q> =
+            nbits.iter().map(|b| Q::from_rational(unit.as_rational().clone() << i64::from(*b))).collect();
+        let grids: Vec<u64> =
+            nbits.iter().map(|b| (i64::from(cfg.grid_bits) - e - i64::from(*b)).max(0) as u64).collect();
+        let h = normals
+            .iter()
+            .zip(slacks.iter().zip(&grids))
+            .map(|(n, (sl, gb))| {
+                let m = float_poly
+                    .iter()
+                    .map(|p| n.0 as f64 * p.x + n.1 as f64 * p.y)
+                    .fold(f64::NEG_INFINITY, f64::max);
+                (Q::from_f64_exact(m).expect("finite") + sl).ceil_dyadic(*gb)
+            })
+            .collect();
+        Ok(Offsets { normals, h, slacks, grids })
+    }
+
+    /// The exact polygon of the current offsets.
+    pub(crate) fn polygon(&self) -> HPoly {
+        polygon_of(&self.normals, &self.h)
+    }
+
+    /// Raises every offset that an exact point exceeds; whether one changed, and the largest
+    /// excess (in distance).
+    pub(crate) fn raise<E: Exact>(&mut self, pts: &[E::P]) -> (bool, f64) {
+        let approx: Vec<(f64, f64)> = pts.iter().map(E::plane_f64).collect();
+        let (mut changed, mut worst) = (false, 0.0);
+        let rows = self.normals.iter().zip(self.h.iter_mut()).zip(&self.slacks).zip(&self.grids);
+        for (((n, hi), sl), gb) in rows {
+            let Some(m) = max_support::<E>(n, pts, &approx) else { continue };
+            if m > E::from_q(hi) {
+                // Overshoot by the excess itself: under a contraction the offsets then reach
+                // their fixed point in a few rounds instead of creeping towards it.
+                let excess = &E::upper(&m) - &*hi;
+                worst = f64::max(worst, excess.to_f64() / norm(n));
+                let bump = if excess > *sl { excess } else { sl.clone() };
+                *hi = (E::upper(&m) + bump).ceil_dyadic(*gb);
+                changed = true;
+            }
+        }
+        (changed, worst)
+    }
+}
+
+/// The plane points (omega_x, omega_y, -1) of an exact polygon's vertices.
+pub(crate) fn generators_of(poly: &HPoly) -> Vec<[Q; 3]> {
+    poly.iter()
+        .map(|p| {
+            let w = Q::from_int(&-&p[2]);
+            [Q::from_int(&p[0]) / &w, Q::from_int(&p[1]) / &w, Q::int(-1)]
+        })
+        .collect()
+}
+
 /// Exactifies a float polygon for the maps of `bodies` (one body, or the corners of a box).
 /// `seeds` are exact points that K must contain (e.g. I_0 of the generators of D); every exact
 /// image is added as the rounds go.
@@ -165,65 +250,20 @@ pub fn exactify<E: Exact>(
     seeds: &[Vec3<E>],
     cfg: &ExactifyConfig,
 ) -> Result<Exactified, ExactifyError> {
-    if float_poly.len() < 2 || float_poly.iter().any(|p| !p.x.is_finite() || !p.y.is_finite()) {
+    if float_poly.len() < 2 {
         return Err(ExactifyError::BadInput(format!("{} vertices", float_poly.len())));
     }
-    let normals = normals_of(float_poly, cfg.normal_bits);
-    let size = float_poly.iter().map(|p| p.x.abs().max(p.y.abs())).fold(1.0, f64::max);
-    let e = size.log2().ceil() as i64;
-    let unit = Q::from_rational(malachite::rational::Rational::from(1u32) >> (i64::from(cfg.slack_bits) - e));
-    // Slack and grid in units of |n|, so that every edge moves by about the same distance.
-    let nbits: Vec<u32> =
-        normals.iter().map(|n| 63 - (n.0.unsigned_abs().max(n.1.unsigned_abs())).leading_zeros()).collect();
-    let slacks: Vec<Q> =
-        nbits.iter().map(|b| Q::from_rational(unit.as_rational().clone() << i64::from(*b))).collect();
-    let grids: Vec<u64> =
-        nbits.iter().map(|b| (i64::from(cfg.grid_bits) - e - i64::from(*b)).max(0) as u64).collect();
+    let mut offsets = Offsets::new(float_poly, cfg)?;
     let seeds: Vec<E::P> = seeds.iter().map(E::point).collect();
-
-    // Initial offsets: support of the float polygon, rounded up, plus slack.
-    let mut h: Vec<Q> = normals
-        .iter()
-        .map(|n| {
-            let m = float_poly
-                .iter()
-                .map(|p| n.0 as f64 * p.x + n.1 as f64 * p.y)
-                .fold(f64::NEG_INFINITY, f64::max);
-            Q::from_f64_exact(m).expect("finite")
-        })
-        .zip(slacks.iter().zip(&grids))
-        .map(|(m, (sl, gb))| (m + sl).ceil_dyadic(*gb))
-        .collect();
-
     let mut worst_excess = 0.0;
     for round in 0..cfg.max_rounds {
-        let poly = polygon_of(&normals, &h);
+        let poly = offsets.polygon();
         let mut pts = E::images(bodies, &poly).map_err(|step| ExactifyError::ImageAbove { round, step })?;
         pts.extend(seeds.iter().cloned());
-        let approx: Vec<(f64, f64)> = pts.iter().map(E::plane_f64).collect();
-        let mut changed = false;
-        worst_excess = 0.0;
-        for (((n, hi), sl), gb) in normals.iter().zip(h.iter_mut()).zip(&slacks).zip(&grids) {
-            let Some(m) = max_support::<E>(n, &pts, &approx) else { continue };
-            if m > E::from_q(hi) {
-                // Overshoot by the excess itself: under a contraction the offsets then reach
-                // their fixed point in a few rounds instead of creeping towards it.
-                let excess = &E::upper(&m) - &*hi;
-                worst_excess = f64::max(worst_excess, excess.to_f64() / norm(n));
-                let bump = if excess > *sl { excess } else { sl.clone() };
-                *hi = (E::upper(&m) + bump).ceil_dyadic(*gb);
-                changed = true;
-            }
-        }
+        let (changed, worst) = offsets.raise::<E>(&pts);
+        worst_excess = worst;
         if !changed {
-            let generators = poly
-                .iter()
-                .map(|p| {
-                    let w = Q::from_int(&-&p[2]);
-                    [Q::from_int(&p[0]) / &w, Q::from_int(&p[1]) / &w, Q::int(-1)]
-                })
-                .collect();
-            return Ok(Exactified { generators, rounds: round + 1 });
+            return Ok(Exactified { generators: generators_of(&poly), rounds: round + 1 });
         }
     }
     Err(ExactifyError::NoConvergence { rounds: cfg.max_rounds, worst_excess })

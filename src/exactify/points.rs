@@ -40,7 +40,7 @@ pub fn int_vec(v: &Vec3<Q>) -> Vec3<Integer> {
     std::array::from_fn(|i| z[i].clone())
 }
 
-fn int_mat(m: &[[Q; 3]; 3]) -> [[Integer; 3]; 3] {
+pub fn int_mat(m: &[[Q; 3]; 3]) -> [[Integer; 3]; 3] {
     let flat: Vec<Q> = m.iter().flatten().cloned().collect();
     let z = crate::exact::scale_to_ints(&flat);
     std::array::from_fn(|r| std::array::from_fn(|c| z[3 * r + c].clone()))

@@ -4,6 +4,7 @@
 //! until no image leaves the polygon. The polygon is kept to a bounded number of vertices by
 //! outer approximation, so a curved limit cone does not drown the search in vertices.
 
+pub mod family;
 pub mod geometry;
 pub mod rod;
 

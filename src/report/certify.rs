@@ -3,7 +3,10 @@
 
 use super::finder::FinderReport;
 use super::{Interval, Report, Timings, Verdict, ms};
+use super::convex::GeneralBodyReport;
+use crate::certify::convex::{ConvexReport, ConvexRequest};
 use crate::certify::{self as pipeline, Request};
+use crate::exact::Q;
 use schemars::JsonSchema;
 use serde::Serialize;
 
@@ -39,6 +42,9 @@ pub struct CertifyReport {
     pub finder: Option<FinderReport>,
     /// Notes on the claims not certified.
     pub notes: Vec<String>,
+    /// A general convex body (docs/model.md §11; `n` is its number of contacts, `kappa` is 0 and
+    /// `generators` counts the generators of all its cones), else `null`.
+    pub general_body: Option<super::convex::GeneralBodyReport>,
     /// Only with `--timings`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub timings: Option<Timings>,
@@ -69,11 +75,43 @@ pub fn of(req: &Request, r: &pipeline::Report, output: Option<String>, timings: 
         method: r.method,
         finder: r.finder.as_ref().map(FinderReport::of),
         notes: r.notes.clone(),
-        timings: timings.then(|| Timings {
-            search_ms: ms(t.finder),
-            exactify_ms: ms(t.exactify),
-            kernel_ms: ms(t.kernel),
-        }),
+        general_body: None,
+        timings: timings.then(|| timings_of(t)),
+    }
+}
+
+fn timings_of(t: &pipeline::Timings) -> Timings {
+    Timings { search_ms: ms(t.finder), exactify_ms: ms(t.exactify), kernel_ms: ms(t.kernel) }
+}
+
+/// The report of a general body's certification (`description`: how the body was given).
+pub fn of_convex(
+    description: &str,
+    req: &ConvexRequest,
+    r: &ConvexReport,
+    output: Option<String>,
+    timings: bool,
+) -> CertifyReport {
+    let cert = r.result.as_ref().ok();
+    let gamma = req.body.gamma();
+    let t = &r.timings;
+    CertifyReport {
+        schema: CertifyReport::SCHEMA,
+        verdict: if cert.is_some() { Verdict::Certified } else { Verdict::NotCertified },
+        n: req.body.n() as u64,
+        kappa: Interval::of(&Q::int(0), &Q::int(0)),
+        kappa_field: None,
+        gamma: Interval::of(gamma, gamma),
+        claim: cert.map(|c| c.claim.name()),
+        generators: cert.map(|c| c.cones.iter().map(Vec::len).sum()),
+        max_denominator_bits: cert.map(|_| r.max_denominator_bits),
+        output: output.filter(|_| cert.is_some()),
+        reason: r.result.as_ref().err().map(ToString::to_string),
+        method: cert.map(|_| "family finder + exactifier"),
+        finder: r.finder.as_ref().map(FinderReport::of),
+        notes: r.notes.clone(),
+        general_body: Some(GeneralBodyReport::of(description, &req.body)),
+        timings: timings.then(|| timings_of(t)),
     }
 }
 

@@ -5,6 +5,7 @@ mod common;
 mod bodies;
 mod certificate;
 mod certify;
+mod certify_convex;
 mod cli;
 mod corpus;
 mod cover;

@@ -65,8 +65,9 @@ fn outcome(v: &Verdict) -> Result<Claim, Code> {
     }
 }
 
-/// The uniform plates of the issue, with the regular polygon they are images of.
-fn plates(gamma: &Q) -> Vec<(&'static str, u64, ConvexBody<Q>)> {
+/// The uniform plates of the issue, with the regular polygon they are images of (also used by
+/// `certify_convex`).
+pub(crate) fn plates(gamma: &Q) -> Vec<(&'static str, u64, ConvexBody<Q>)> {
     let rect = |a: &str, b: &str| {
         let (x, y) = (q(a) / q("2"), q(b) / q("2"));
         polygon_plate(
@@ -91,7 +92,7 @@ fn plates(gamma: &Q) -> Vec<(&'static str, u64, ConvexBody<Q>)> {
     ]
 }
 
-fn kappa_of(n: u64) -> &'static str {
+pub(crate) fn kappa_of(n: u64) -> &'static str {
     if n == 4 { "1/6" } else { "1/8" }
 }
 
