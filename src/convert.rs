@@ -5,7 +5,9 @@
 //! the kernel writer's text byte for byte. Content rules (numbers, body, cone) are not checked:
 //! an invalid certificate converts to an equally invalid one.
 
-use chatter_kernel::certificate::{Body, Certificate, Encoding, Param, quoted};
+use chatter_kernel::certificate::{
+    Body, Certificate, ConvexBodyText, ConvexCertificate, Encoding, Param, quoted,
+};
 use chatter_kernel::refute::{Refutation, Step};
 
 /// The encoding to convert to.
@@ -84,6 +86,34 @@ pub fn refutation_to_json(r: &Refutation) -> String {
     )
 }
 
+/// Writes a version-4 certificate (a general convex body, docs/certificate-format.md §13) as its
+/// JSON twin: one contact per line, each cone as a list of generators one per line.
+pub fn convex_to_json(c: &ConvexCertificate) -> String {
+    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma } = &c.body;
+    let tuple = |xs: &[&String]| format!("[{}]", xs.iter().map(|s| quoted(s)).collect::<Vec<_>>().join(", "));
+    let contacts: Vec<String> = contacts.iter().map(|(x, y)| format!("    {}", tuple(&[x, y]))).collect();
+    let cones: Vec<String> = c
+        .cones
+        .iter()
+        .map(|k| {
+            let gens: Vec<String> =
+                k.iter().map(|g| format!("    {}", tuple(&g.0.iter().collect::<Vec<_>>()))).collect();
+            list(&gens).replace("\n    ]", "\n        ]")
+        })
+        .collect();
+    format!(
+        "{{\n    \"format\": {},\n    \"version\": {},\n    \"body\": {{\"ConvexPolygon\": {{\n        \"contacts\": {},\n        \"inertia\": {},\n        \"gamma\": {}\n    }}}},\n    \"coordinates\": \"PaperVelocities\",\n    \"claim\": \"{}\",\n    \"cones\": {},\n    \"producer\": {}\n}}\n",
+        quoted(&c.format),
+        c.version,
+        list(&contacts).replace("\n    ]", "\n        ]"),
+        tuple(&[&inertia.0, &inertia.1, &inertia.2]),
+        quoted(gamma),
+        c.claim.name(),
+        list(&cones),
+        quoted(&c.producer)
+    )
+}
+
 /// Converts certificate or refutation text in the encoding `from` to `target`; an error in words
 /// (with the rejection code) when the text is not a readable certificate or refutation.
 pub fn convert(text: &str, from: Encoding, target: Target) -> Result<String, String> {
@@ -99,6 +129,13 @@ pub fn convert(text: &str, from: Encoding, target: Target) -> Result<String, Str
             })
         }
         Some(proof::FORMAT) => Err("a proof file (chatter-proof) has no JSON twin".into()),
+        _ if certificate::convex::version_of(text, from) == Some(certificate::convex::CONVEX_VERSION) => {
+            let c = certificate::read_convex(text, from).map_err(unreadable)?;
+            Ok(match target {
+                Target::Json => convex_to_json(&c),
+                Target::Ron => certificate::write_convex(&c),
+            })
+        }
         _ => {
             let c = certificate::read_in(text, from).map_err(unreadable)?;
             Ok(match target {
