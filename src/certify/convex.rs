@@ -8,16 +8,17 @@
 //! in millimetres puts every cone within 1e-2 of the axis and the grids lose their precision.
 
 use super::transport::convex_certificate;
-use super::{Attempt, ClaimChoice, Failure, Timings, claims_in, ladder, try_claims};
-use crate::exact::{OrderedField, ParseLimits, Q, QExt, Ring};
-use crate::exactify::ExactifyConfig;
+use super::{Attempt, ClaimChoice, Failure, Timings, claims_in, ladder_if, try_claims};
+use crate::exact::{ParseLimits, Q, QExt, Ring};
 use crate::exactify::family::exactify_family;
+use crate::exactify::{ExactifyConfig, ExactifyError};
 use crate::finder::family::{FamilyOutcome, FloatFamily, find_family};
 use crate::finder::{FinderConfig, Search, Seed};
 use chatter_kernel::certificate::{Claim, ConvexCertificate};
 use chatter_kernel::model::linalg::{Vec3, mat_vec};
-use chatter_kernel::model::{ConvexBody, PccExclusion};
+use chatter_kernel::model::{ConvexBody, Mat2, PccExclusion};
 use chatter_kernel::verify::{Backend, MALACHITE, NUM, Verdict, verify_convex_on};
+use nalgebra::Matrix2;
 use std::time::Instant;
 
 /// A certification request for a general convex body.
@@ -56,28 +57,48 @@ pub struct ConvexReport {
     pub notes: Vec<String>,
 }
 
-/// The power of two nearest (in log scale) to the largest contact distance.
-pub fn length_scale(body: &ConvexBody<Q>) -> Q {
-    let r2 = body.contacts().iter().map(|r| r[0].to_f64().powi(2) + r[1].to_f64().powi(2)).fold(0.0, f64::max);
-    let e = (0.5 * r2.log2()).round().clamp(-200.0, 200.0) as i64;
-    let two = Q::int(2);
-    let p = (0..e.unsigned_abs()).fold(Q::int(1), |acc, _| acc.times(&two));
-    if e >= 0 { p } else { Q::int(1).over(&p).expect("2^e > 0") }
+/// The normalising map L of the search (docs/model.md §11.12): a rational approximation, on a
+/// grid of 2^-20 of its size, of (2 Σ / n)^(-1/2) with Σ = Σ_k r_k r_kᵀ the contacts' second
+/// moment, so that the image body has contacts of mean square radius about 1 spread evenly (an
+/// affine image of a regular polygon goes back to a rotated regular polygon, up to the rounding).
+/// Symmetric positive definite, so det L > 0.
+pub fn normaliser(body: &ConvexBody<Q>) -> Mat2<Q> {
+    let n = body.n() as f64;
+    let mut s = Matrix2::<f64>::zeros();
+    for r in body.contacts() {
+        let v = nalgebra::Vector2::new(r[0].to_f64(), r[1].to_f64());
+        s += v * v.transpose() * (2.0 / n);
+    }
+    let e = s.symmetric_eigen();
+    let inv_sqrt = e.eigenvectors
+        * Matrix2::from_diagonal(&e.eigenvalues.map(|x| 1.0 / x.max(f64::MIN_POSITIVE).sqrt()))
+        * e.eigenvectors.transpose();
+    let size = inv_sqrt.abs().max().max(f64::MIN_POSITIVE);
+    let unit = (size.log2().floor() - 20.0).clamp(-1000.0, 1000.0).exp2();
+    let round = |x: f64| {
+        let q = Q::from_f64_exact((x / unit).round()).unwrap_or_else(|| Q::int(0));
+        q.times(&Q::from_f64_exact(unit).expect("a power of two"))
+    };
+    let off = round(0.5 * (inv_sqrt[(0, 1)] + inv_sqrt[(1, 0)]));
+    [[round(inv_sqrt[(0, 0)]), off.clone()], [off, round(inv_sqrt[(1, 1)])]]
 }
 
-/// The body with contacts / r and inertia / r^2 (same gamma).
-pub fn scaled(body: &ConvexBody<Q>, r: &Q) -> ConvexBody<Q> {
-    let d = |x: &Q| x.over(r).expect("r > 0");
-    let r2 = r.times(r);
-    let contacts = body.contacts().iter().map(|c| [d(&c[0]), d(&c[1])]).collect();
-    let inertia = body.inertia().clone().map(|row| row.map(|x| x.over(&r2).expect("r > 0")));
-    ConvexBody::new(contacts, inertia, body.gamma().clone()).expect("a scaled valid body is valid")
+/// The image of `body` under `l` (det L > 0) and the map T⁻¹ = diag(adj L, 1) that carries
+/// generators of the image's cones back to the body's (docs/model.md §11.7).
+pub fn normalised(body: &ConvexBody<Q>, l: &Mat2<Q>) -> Option<(ConvexBody<Q>, Mat2<Q>)> {
+    let image = body.affine_image(l)?;
+    let adj = [[l[1][1].clone(), l[0][1].negated()], [l[1][0].negated(), l[0][0].clone()]];
+    Some((image.body, adj))
 }
 
-/// Generators of the scaled body's cones as generators for the body: omega divided by r.
-fn unscaled(cones: Vec<Vec<[Q; 3]>>, r: &Q) -> Vec<Vec<Vec3<Q>>> {
-    let d = |x: &Q| x.over(r).expect("r > 0");
-    cones.into_iter().map(|c| c.into_iter().map(|[a, b, v]| [d(&a), d(&b), v]).collect()).collect()
+/// Generators of the normalised body's cones as generators for the body: g = T⁻¹ g'.
+fn carried_back(cones: Vec<Vec<[Q; 3]>>, adj: &Mat2<Q>) -> Vec<Vec<Vec3<Q>>> {
+    let back = |[a, b, v]: [Q; 3]| {
+        let x = adj[0][0].times(&a).plus(&adj[0][1].times(&b));
+        let y = adj[1][0].times(&a).plus(&adj[1][1].times(&b));
+        [x, y, v]
+    };
+    cones.into_iter().map(|c| c.into_iter().map(back).collect()).collect()
 }
 
 /// The strongest claim about drops: `CompleteChatterFromAllDown` when every adjacent pair's PCC
@@ -136,12 +157,12 @@ fn seeds(body: &ConvexBody<Q>, claim: Claim) -> Result<Vec<Vec<Vec3<Q>>>, Failur
     Ok(out)
 }
 
-/// The search, the exactifier and the kernel for one claim. `body` is the scaled body, `r` the
-/// scale, `original` the body of the certificate.
+/// The search, the exactifier and the kernel for one claim. `body` is the normalised body, `adj`
+/// carries its generators back to `req.body`, the body of the certificate.
 fn attempt(
     req: &ConvexRequest,
     body: &ConvexBody<Q>,
-    r: &Q,
+    adj: &Mat2<Q>,
     claim: Claim,
     t: &mut Timings,
 ) -> Attempt<ConvexCertificate> {
@@ -164,10 +185,14 @@ fn attempt(
         }
     };
     let start = Instant::now();
-    let ex = ladder(&req.exactify, |c| exactify_family(body, &polys, &exact_seeds, c));
+    // Close to the threshold the slack alone can push a cone over v = 0: retry then too.
+    let retry = |e: &ExactifyError| {
+        matches!(e, ExactifyError::NoConvergence { .. } | ExactifyError::TransitionAbove { .. })
+    };
+    let ex = ladder_if(&req.exactify, retry, |c| exactify_family(body, &polys, &exact_seeds, c));
     t.exactify += start.elapsed();
     let cones = match ex {
-        Ok(ex) => unscaled(ex.cones, r),
+        Ok(ex) => carried_back(ex.cones, adj),
         Err(e) => return Attempt::failed(Failure::Exactify(e), summary),
     };
     let producer = format!("chatter {} certify (family finder + exactifier)", env!("CARGO_PKG_VERSION"));
@@ -177,7 +202,9 @@ fn attempt(
     t.kernel += start.elapsed();
     let method = Some("family finder + exactifier");
     match verdict {
-        Verdict::Accepted(a) => Attempt { result: Ok(cert), finder: summary, method, bits: a.max_denominator_bits },
+        Verdict::Accepted(a) => {
+            Attempt { result: Ok(cert), finder: summary, method, bits: a.max_denominator_bits }
+        }
         Verdict::Rejected(rej) => Attempt::failed(Failure::Kernel(rej), summary),
         Verdict::Disagree(s) => {
             Attempt::failed(Failure::Internal(format!("the backends disagree: {s}")), summary)
@@ -196,8 +223,16 @@ pub fn certify_convex(req: &ConvexRequest) -> ConvexReport {
             return ConvexReport { result: Err(f), finder: None, timings, max_denominator_bits: 0, notes };
         }
     };
-    let r = length_scale(&req.body);
-    let body = scaled(&req.body, &r);
-    let (a, timings, notes) = try_claims(req.claim, claims, |c, t| attempt(req, &body, &r, c, t), notes);
+    let Some((body, adj)) = normalised(&req.body, &normaliser(&req.body)) else {
+        let f = Failure::Internal("the normalising map of the search is not invertible".into());
+        return ConvexReport {
+            result: Err(f),
+            finder: None,
+            timings: Timings::default(),
+            max_denominator_bits: 0,
+            notes,
+        };
+    };
+    let (a, timings, notes) = try_claims(req.claim, claims, |c, t| attempt(req, &body, &adj, c, t), notes);
     ConvexReport { result: a.result, finder: a.finder, timings, max_denominator_bits: a.bits, notes }
 }

@@ -4,6 +4,7 @@
 //! Regular polygons: float finder, then exactifier. The rod: an exact search
 //! ([`crate::finder::rod`]). Claims are tried strongest first unless one is asked for.
 
+pub mod bisect;
 pub mod convex;
 mod field;
 pub mod transport;
@@ -152,7 +153,11 @@ pub enum Failure {
     Exactify(ExactifyError),
     /// The family search of a general body (docs/model.md §11.9) found a vertex of
     /// K_from ∩ C_(from,to) whose image under I_to has v >= 0: no family contains the seeds.
-    NoFamily { iteration: usize, from: usize, to: usize },
+    NoFamily {
+        iteration: usize,
+        from: usize,
+        to: usize,
+    },
     /// The kernel rejected the exact cone (a bug in the untrusted side).
     Kernel(Rejection),
     /// The backends disagree: a bug in chatter or a bignum library.
@@ -330,6 +335,15 @@ fn ladder<T>(
     cfg: &ExactifyConfig,
     run: impl Fn(&ExactifyConfig) -> Result<T, ExactifyError>,
 ) -> Result<T, ExactifyError> {
+    ladder_if(cfg, |e| matches!(e, ExactifyError::NoConvergence { .. }), run)
+}
+
+/// [`ladder`], retrying after the errors `retry_on` accepts.
+fn ladder_if<T>(
+    cfg: &ExactifyConfig,
+    retry_on: impl Fn(&ExactifyError) -> bool,
+    run: impl Fn(&ExactifyConfig) -> Result<T, ExactifyError>,
+) -> Result<T, ExactifyError> {
     let finer = ExactifyConfig {
         normal_bits: cfg.normal_bits + 2,
         grid_bits: cfg.grid_bits + 8,
@@ -337,11 +351,17 @@ fn ladder<T>(
         ..*cfg
     };
     let coarser = ExactifyConfig { slack_bits: cfg.slack_bits.saturating_sub(4), ..*cfg };
+    let finest = ExactifyConfig {
+        normal_bits: cfg.normal_bits + 8,
+        grid_bits: cfg.grid_bits + 24,
+        slack_bits: cfg.slack_bits + 16,
+        ..*cfg
+    };
     let first = run(cfg);
-    if !cfg.retry || !matches!(first, Err(ExactifyError::NoConvergence { .. })) {
+    if !cfg.retry || !first.as_ref().is_err_and(&retry_on) {
         return first;
     }
-    [finer, coarser].iter().map(run).find(Result::is_ok).unwrap_or(first)
+    [finer, coarser, finest].iter().map(run).find(Result::is_ok).unwrap_or(first)
 }
 
 /// A regular polygon at every corner: float finder, exactifier, kernel.

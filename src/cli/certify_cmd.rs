@@ -36,6 +36,8 @@ impl ClaimArg {
 #[derive(Args, Debug)]
 #[command(after_help = "Numbers are read exactly: 1/6, 0.01 (= 1/100), 1e-2.\n\
 Defaults certify the flat homogeneous square plate: n = 4, kappa = 1/6, gamma = 1/100.\n\
+General convex bodies (docs/model.md §11: --rectangle, --box, --polygon, --body NAME|FILE) get a\n\
+version-4 certificate with one cone per contact.\n\
 kappa and gamma may be closed intervals a:b: one cone then certifies every (kappa, gamma) of the\n\
 box (a box certificate, docs/certificate-format.md).\n\n\
 For n = 5 and 7 to 64 the kernel works in Q(c), c = cos(2 pi/n): --kappa may be an element of it in\n\
@@ -43,7 +45,9 @@ canonical text (\"1/40 + 1/100*c\"), and --body NAME takes a catalogue body with
 Examples:\n  chatter certify --n 3 --kappa 3/20 --gamma 0.05 -o triangle.ron\n  \
 chatter certify --kappa 1/10:3/25 --gamma 1/100:1/50 -o box.ron\n  \
 chatter certify --n 5 --kappa \"1/40 + 1/100*c\" --gamma 1/100 -o pentagon.ron\n  \
-chatter certify --body dodecahedron --gamma 1/100")]
+chatter certify --body dodecahedron --gamma 1/100\n  \
+chatter certify --rectangle 2,1 --gamma 1/100 -o rectangle.ron\n  \
+chatter certify --box 150,75,8 --largest-gamma")]
 pub struct CertifyArgs {
     #[command(flatten)]
     pub body: super::BodyArgs,
@@ -69,6 +73,14 @@ pub struct CertifyArgs {
     /// at relative distance 1e-6 below it, about 10,000 to 25,000 iterations for n = 4, 6).
     #[arg(long, default_value_t = crate::finder::FinderConfig::default().max_iterations)]
     pub max_iterations: usize,
+    /// Instead of certifying at --gamma: the largest gamma in [1/4096, 4095/4096] that certifies
+    /// (the strongest claim about drops, or --claim), by bisection on exact rationals, and 100
+    /// simulated drops just above it.
+    #[arg(long)]
+    pub largest_gamma: bool,
+    /// With --largest-gamma: bisection steps after the two ends (1 to 60).
+    #[arg(long, default_value_t = 20)]
+    pub steps: usize,
     /// Vertex budget of the float polygon (outer approximation beyond it).
     #[arg(long, default_value_t = 40)]
     pub max_vertices: usize,
@@ -178,7 +190,7 @@ fn summary(v: &Validated, r: &Report) -> String {
 }
 
 /// Whether the arguments describe a general body (docs/model.md §11) rather than a regular one.
-fn is_general(a: &CertifyArgs) -> bool {
+pub(super) fn is_general(a: &CertifyArgs) -> bool {
     match &a.general.body {
         Some(value) => super::convex_args::names_general_body(value),
         None => a.general.given(),
@@ -186,6 +198,9 @@ fn is_general(a: &CertifyArgs) -> bool {
 }
 
 pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
+    if a.largest_gamma {
+        return super::largest_gamma::run(a, env);
+    }
     if is_general(&a) {
         return super::certify_general::run(a, env);
     }

@@ -53,8 +53,10 @@ fn summary(v: &Validated, r: &ConvexReport) -> String {
     let notes: String = r.notes.iter().map(|n| format!("\nnote: {n}")).collect();
     match &r.result {
         Ok(c) => {
-            let out =
-                v.output.as_ref().map_or(String::from(" (no -o: not written)"), |p| format!(" -> {}", p.display()));
+            let out = v
+                .output
+                .as_ref()
+                .map_or(String::from(" (no -o: not written)"), |p| format!(" -> {}", p.display()));
             let sizes: Vec<String> = c.cones.iter().map(|k| k.len().to_string()).collect();
             format!(
                 "CERTIFIED {head} claim={}: {} cones K_0..K_{} with {} generators, largest denominator {} bits, by the family finder + exactifier; {times}{out}{notes}",

@@ -48,7 +48,8 @@ fn general_entry(name: &str, gamma: &Q) -> Result<Option<GeneralEntry>, String> 
 /// Whether `--body VALUE` names a general body: a name of the general catalogue or an existing
 /// file (`certify` otherwise looks the name up in the regular catalogue).
 pub fn names_general_body(value: &str) -> bool {
-    let named = general_catalogue(&Q::int(0)).is_ok_and(|all| all.iter().any(|e| e.name.eq_ignore_ascii_case(value.trim())));
+    let named = general_catalogue(&Q::int(0))
+        .is_ok_and(|all| all.iter().any(|e| e.name.eq_ignore_ascii_case(value.trim())));
     named || Path::new(value).is_file()
 }
 

@@ -12,6 +12,7 @@ mod classify_cmd;
 mod convert_cmd;
 mod convex_args;
 mod cover_cmd;
+mod largest_gamma;
 mod map_cmd;
 mod plot_cmd;
 mod prove_cmd;

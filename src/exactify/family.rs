@@ -29,7 +29,8 @@ struct IntBody {
 impl IntBody {
     fn of(body: &ConvexBody<Q>) -> IntBody {
         let n = body.n() as i64;
-        let cone = |i, j| body.next_contact_cone(i, j).map_or_else(Vec::new, |c| c.iter().map(int_vec).collect());
+        let cone =
+            |i, j| body.next_contact_cone(i, j).map_or_else(Vec::new, |c| c.iter().map(int_vec).collect());
         IntBody {
             cones: (0..n).map(|i| (0..n).map(|j| cone(i, j)).collect()).collect(),
             impacts: (0..n).map(|k| int_mat(&body.impact(k))).collect(),
@@ -80,9 +81,11 @@ pub fn exactify_family(
     let mut worst_excess = 0.0;
     for round in 0..cfg.max_rounds {
         let polys: Vec<HPoly> = offsets.iter().map(Offsets::polygon).collect();
-        let mut pts = int_body
-            .images(&polys)
-            .map_err(|(from, to)| ExactifyError::TransitionAbove { round, from, to })?;
+        let mut pts = int_body.images(&polys).map_err(|(from, to)| ExactifyError::TransitionAbove {
+            round,
+            from,
+            to,
+        })?;
         let mut changed = false;
         worst_excess = 0.0;
         for ((o, p), s) in offsets.iter_mut().zip(&mut pts).zip(&seeds) {

@@ -182,10 +182,13 @@ impl Offsets {
         let normals = normals_of(float_poly, cfg.normal_bits);
         let size = float_poly.iter().map(|p| p.x.abs().max(p.y.abs())).fold(1.0, f64::max);
         let e = size.log2().ceil() as i64;
-        let unit = Q::from_rational(malachite::rational::Rational::from(1u32) >> (i64::from(cfg.slack_bits) - e));
+        let unit =
+            Q::from_rational(malachite::rational::Rational::from(1u32) >> (i64::from(cfg.slack_bits) - e));
         // Slack and grid in units of |n|, so that every edge moves by about the same distance.
-        let nbits: Vec<u32> =
-            normals.iter().map(|n| 63 - (n.0.unsigned_abs().max(n.1.unsigned_abs())).leading_zeros()).collect();
+        let nbits: Vec<u32> = normals
+            .iter()
+            .map(|n| 63 - (n.0.unsigned_abs().max(n.1.unsigned_abs())).leading_zeros())
+            .collect();
         let slacks: Vec<Q> =
             nbits.iter().map(|b| Q::from_rational(unit.as_rational().clone() << i64::from(*b))).collect();
         let grids: Vec<u64> =

@@ -34,7 +34,8 @@ impl FloatFamily {
     /// The rounded maps, cones and all-down generators of `body`.
     pub fn of(body: &ConvexBody<Q>) -> FloatFamily {
         let n = body.n() as i64;
-        let cone = |i, j| body.next_contact_cone(i, j).map_or_else(Vec::new, |c| c.iter().map(vec_f64).collect());
+        let cone =
+            |i, j| body.next_contact_cone(i, j).map_or_else(Vec::new, |c| c.iter().map(vec_f64).collect());
         FloatFamily {
             impacts: (0..n).map(|k| mat_f64(&body.impact(k))).collect(),
             cones: (0..n).map(|i| (0..n).map(|j| cone(i, j)).collect()).collect(),
@@ -81,7 +82,9 @@ impl FamilyOutcome {
             FamilyOutcome::Found { cones, iterations } => {
                 Search::Found { cone: cones.iter().map(Vec::len).sum(), iterations: *iterations }
             }
-            FamilyOutcome::NoCone { iteration, to, .. } => Search::NoCone { iteration: *iteration, step: *to },
+            FamilyOutcome::NoCone { iteration, to, .. } => {
+                Search::NoCone { iteration: *iteration, step: *to }
+            }
             FamilyOutcome::Inconclusive { iterations, reason } => {
                 Search::Inconclusive { iterations: *iterations, reason: reason.clone() }
             }
@@ -126,9 +129,12 @@ pub fn find_family(f: &FloatFamily, seed: Seed, cfg: &FinderConfig) -> FamilyOut
             return FamilyOutcome::Inconclusive { iterations: it, reason };
         }
         let tol = cfg.tolerance * sc;
-        let inside = polys.iter().zip(&imgs).all(|(poly, img)| {
-            poly.len() >= 2 && img.iter().all(|q| outside_distance(poly, q) <= tol)
-        });
+        // A point or a segment is fine too: at gamma = 0 the family is flat (every image of K_i
+        // has u_j = 0), and the exactifier's slack gives it an interior.
+        let inside = polys
+            .iter()
+            .zip(&imgs)
+            .all(|(poly, img)| !poly.is_empty() && img.iter().all(|q| outside_distance(poly, q) <= tol));
         if inside {
             return FamilyOutcome::Found { cones: polys, iterations: it };
         }
@@ -144,7 +150,7 @@ pub fn find_family(f: &FloatFamily, seed: Seed, cfg: &FinderConfig) -> FamilyOut
         // A thin polygon (gamma near 0) can stall with an image a rounding error outside that
         // the hull drops again: the float search can do no better, and the exactifier, which
         // is exact, decides.
-        if next == polys && polys.iter().all(|p| p.len() >= 2) {
+        if next == polys && polys.iter().all(|p| !p.is_empty()) {
             return FamilyOutcome::Found { cones: polys, iterations: it };
         }
         polys = next;

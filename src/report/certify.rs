@@ -1,9 +1,9 @@
 //! `chatter.certify/1`: a certificate made (or not) at a point or on a box of parameters.
 //! Build it with [`certify`] (runs the pipeline) or [`of`] (from a pipeline report).
 
+use super::convex::GeneralBodyReport;
 use super::finder::FinderReport;
 use super::{Interval, Report, Timings, Verdict, ms};
-use super::convex::GeneralBodyReport;
 use crate::certify::convex::{ConvexReport, ConvexRequest};
 use crate::certify::{self as pipeline, Request};
 use crate::exact::Q;

@@ -23,6 +23,7 @@ pub mod classify;
 pub mod convex;
 pub mod error;
 pub mod finder;
+pub mod largest_gamma;
 pub mod map;
 pub mod prove;
 pub mod refute;
@@ -150,6 +151,7 @@ pub fn schemas() -> Vec<(&'static str, serde_json::Value)> {
         one::<classify::ClassifyReport>(),
         one::<crate::cover::CoverSummary>(),
         one::<error::ErrorReport>(),
+        one::<largest_gamma::LargestGammaReport>(),
         one::<map::MapSummary>(),
         one::<prove::ProveReport>(),
         one::<refute::RefuteReport>(),

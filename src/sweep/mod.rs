@@ -5,6 +5,7 @@
 //! merged into exactly the files of one run: results never depend on threads or shards.
 
 pub mod curves;
+pub mod general;
 pub mod grid;
 pub mod point;
 pub mod summary;

@@ -6,10 +6,11 @@
 use crate::common::{bin, q, root};
 use crate::transport::{kappa_of, plates};
 use chatter::bodies::convex::rectangle_plate;
-use chatter::certify::convex::{ConvexRequest, certify_convex, length_scale, scaled};
+use chatter::certify::convex::{ConvexRequest, certify_convex, normalised, normaliser};
 use chatter::certify::transport::regular_image;
 use chatter::certify::{Failure, Request, certify};
 use chatter::exact::Q;
+use chatter::exact::QExt;
 use chatter_kernel::certificate::Claim;
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::model::ConvexBody;
@@ -58,7 +59,10 @@ fn regular_polygons_and_their_images_as_general_bodies_give_todays_verdicts() {
             let want = regular_claim(n, kappa, g);
             // n = 4: r0 = (1, 0), r1 = (0, 1) is the regular square itself.
             let images: Vec<[[Q; 2]; 2]> = match n {
-                4 => vec![[[one.clone(), zero.clone()], [zero.clone(), one.clone()]], [[q("2"), q("1")], [q("-1"), q("3")]]],
+                4 => vec![
+                    [[one.clone(), zero.clone()], [zero.clone(), one.clone()]],
+                    [[q("2"), q("1")], [q("-1"), q("3")]],
+                ],
                 _ => vec![[[q("2"), q("0")], [q("-1"), q("3/2")]], [[q("1"), q("1")], [q("-2"), q("1")]]],
             };
             for [r0, r1] in images {
@@ -78,12 +82,17 @@ fn the_length_scale_does_not_change_the_verdict() {
             assert_eq!(general_claim(&body), base, "{a} x {b} at gamma = {g}");
         }
     }
-    // The scale is a power of two near the size, and scaling by it is exact.
-    let phone = rectangle_plate(&q("150"), &q("75"), q("1/100")).unwrap();
-    let r = length_scale(&phone);
-    assert_eq!(r, q("64"));
-    let s = scaled(&phone, &r);
-    assert_eq!(s.contacts()[0], [q("75/64"), q("-75/128")]);
+    // The search's normalisation takes a rectangle back to (nearly) the regular square: contacts
+    // of radius about 1 at right angles (docs/model.md §11.12).
+    for (a, b) in [("150", "75"), ("4", "1"), ("1/3", "7")] {
+        let body = rectangle_plate(&q(a), &q(b), q("1/100")).unwrap();
+        let (image, _) = normalised(&body, &normaliser(&body)).unwrap();
+        let c: Vec<[f64; 2]> = image.contacts().iter().map(|r| [r[0].to_f64(), r[1].to_f64()]).collect();
+        for r in &c {
+            assert!((r[0].hypot(r[1]) - 1.0).abs() < 1e-5, "{a} x {b}: {c:?}");
+        }
+        assert!((c[0][0] * c[1][0] + c[0][1] * c[1][1]).abs() < 1e-5, "{a} x {b}: {c:?}");
+    }
 }
 
 #[test]
@@ -168,4 +177,61 @@ fn bad_general_bodies_in_certify_exit_2_naming_the_flag() {
     let o = chatter(&["certify", "--body", "square plate", "--gamma", "1/100"], d.path());
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
     assert!(text(&o.stdout).contains("n=4 kappa=1/6"), "{}", text(&o.stdout));
+}
+
+#[test]
+fn certified_claims_never_contradict_simulated_drops_on_a_grid() {
+    use chatter::sweep::general::{Agreement, finder_vs_simulation};
+    let gammas: Vec<Q> = (1..=12).map(|k| Q::new(k, 200)).collect();
+    let square = rectangle_plate(&q("1"), &q("1"), q("1/100")).unwrap();
+    let rect = rectangle_plate(&q("4"), &q("1"), q("1/100")).unwrap();
+    let lander = chatter::bodies::general::general_catalogue(&q("1/100")).unwrap().remove(3).body;
+    let (s, r) =
+        (finder_vs_simulation(&square, &gammas, 8, 5000), finder_vs_simulation(&rect, &gammas, 8, 5000));
+    // An affine image certifies at the same points (§11.7).
+    let claims = |g: &[chatter::sweep::general::GridPoint]| g.iter().map(|p| p.certified).collect::<Vec<_>>();
+    assert_eq!(claims(&s), claims(&r));
+    for grid in [s, r, finder_vs_simulation(&lander, &gammas, 8, 5000)] {
+        let a = Agreement::of(&grid);
+        assert_eq!(a.contradictions, 0, "{grid:?}");
+        assert!(a.certified >= 3 && a.all_cc >= 3, "{a:?}");
+    }
+}
+
+#[test]
+fn bisection_brackets_the_largest_certified_gamma() {
+    use chatter::certify::bisect::largest_certified_gamma;
+    let third = Q::new(1, 3);
+    let below = |g: &Q| if *g <= third { Ok(Claim::CompleteChatterFromAllDown) } else { Err("above".into()) };
+    let b = largest_certified_gamma(below, (q("0"), q("1")), 16, &|| {});
+    let (lo, hi) = (b.certified.unwrap().0, b.failed.unwrap().0);
+    assert!(lo <= third && third < hi && &hi - &lo == Q::new(1, 1 << 16), "{lo} {hi}");
+    assert_eq!(b.times.len(), 18);
+    let never = largest_certified_gamma(|_| Err("no".into()), (q("1/10"), q("1/2")), 5, &|| {});
+    assert!(never.certified.is_none() && never.failed.unwrap().0 == q("1/10") && never.times.len() == 1);
+    let always =
+        largest_certified_gamma(|_| Ok(Claim::EffectivelyInvariant), (q("1/10"), q("1/2")), 5, &|| {});
+    assert!(always.failed.is_none() && always.certified.unwrap().0 == q("1/2"));
+}
+
+#[test]
+fn largest_gamma_of_a_rectangle_is_the_square_plates() {
+    let d = tempfile::tempdir().unwrap();
+    let run = |args: &[&str]| {
+        let o = chatter(
+            &[&["certify", "--largest-gamma", "--steps", "10", "--json"][..], args].concat(),
+            d.path(),
+        );
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", text(&o.stderr));
+        serde_json::from_slice::<serde_json::Value>(&o.stdout).unwrap()
+    };
+    let (rect, square) = (run(&["--rectangle", "3,1"]), run(&["--n", "4", "--kappa", "1/6"]));
+    assert_eq!(rect["certified"], square["certified"]);
+    assert_eq!(rect["not_certified"]["gamma"], square["not_certified"]["gamma"]);
+    assert_eq!(rect["certified"]["claim"], "CompleteChatterFromAllDown");
+    // Just above, the drops do not all end in CC (the square's threshold is where ICC begins).
+    assert!(rect["drops_above"]["counts"]["CC"].as_u64().unwrap() < 100, "{rect}");
+    let o = chatter(&["certify", "--rectangle", "2,1", "--largest-gamma", "--steps", "0"], d.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("--steps"));
 }

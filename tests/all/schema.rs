@@ -122,9 +122,23 @@ fn every_command_output_validates_against_its_schema() {
             "chatter.certify/1",
         ),
         (vec!["certify", "--gamma", "1/2", "--json", "--timings"], 1, "chatter.certify/1"),
-        (vec!["certify", "--rectangle", "2,1", "--gamma", "1/100", "-o", "r.ron", "--json"], 0, "chatter.certify/1"),
+        (
+            vec!["certify", "--rectangle", "2,1", "--gamma", "1/100", "-o", "r.ron", "--json"],
+            0,
+            "chatter.certify/1",
+        ),
         (vec!["certify", "--body", "phone", "--gamma", "1/5", "--json"], 1, "chatter.certify/1"),
         (vec!["verify", "r.ron", "--json"], 0, "chatter.verify/1"),
+        (
+            vec!["certify", "--rectangle", "2,1", "--largest-gamma", "--steps", "4", "--json"],
+            0,
+            "chatter.largest-gamma/1",
+        ),
+        (
+            vec!["certify", "--body", "table", "--largest-gamma", "--steps", "2", "--json"],
+            0,
+            "chatter.largest-gamma/1",
+        ),
         (
             vec!["certify", "--n", "3", "--kappa", "1/8:3/20", "--gamma", "1/100:1/50", "--json"],
             0,
