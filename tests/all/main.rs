@@ -17,6 +17,7 @@ mod fuzz_smoke;
 mod json;
 mod kernel;
 mod model;
+mod oracle_convex;
 mod plot;
 mod readme;
 mod refute;

@@ -22,6 +22,8 @@
 //!   both backends and cross-checks the oracle (what the fuzz targets and smoke tests run);
 //! - [`mutation`]: structure-aware mutations of certificates, decoded from bytes.
 
+pub mod convex;
+
 use crate::exact::Q;
 use chatter_kernel::certificate::{
     Body as CertBody, Certificate, Claim, Code, FORMAT, Locus, Param, Rejection, VERSIONS,
@@ -439,7 +441,7 @@ pub struct Verdict {
 }
 
 impl Verdict {
-    fn new(max_denominator_bits: u64) -> Verdict {
+    pub(crate) fn new(max_denominator_bits: u64) -> Verdict {
         Verdict {
             failing: vec![],
             first_stage: vec![],
@@ -456,14 +458,14 @@ impl Verdict {
     }
 
     /// A verdict that stops at one failure of the header, the body or the numbers.
-    fn stopped(code: Code) -> Verdict {
+    pub(crate) fn stopped(code: Code) -> Verdict {
         let mut v = Verdict::new(0);
         v.stage(vec![code]);
         v
     }
 
     /// Records a failing stage.
-    fn stage(&mut self, codes: Vec<Code>) {
+    pub(crate) fn stage(&mut self, codes: Vec<Code>) {
         if self.first_stage.is_empty() {
             self.first_stage = codes.clone();
         }
@@ -687,7 +689,7 @@ fn claim_needs_open_gamma(claim: Claim, gamma: &Q) -> bool {
     claim > Claim::EffectivelyInvariant && (*gamma == zero() || *gamma == Q::int(1))
 }
 
-fn max_bits<'a>(xs: impl Iterator<Item = &'a Q>) -> u64 {
+pub(crate) fn max_bits<'a>(xs: impl Iterator<Item = &'a Q>) -> u64 {
     xs.map(Q::denominator_bits).max().unwrap_or(0)
 }
 
