@@ -61,7 +61,14 @@ pub fn run(a: OrbitArgs, env: &Env) -> Outcome {
         (_, Err(e)) => return Outcome::Usage(format!("--gamma: {e}")),
     };
     let head = format!("n={} kappa={} gamma={}", a.n, kappa, gamma);
-    let req = Request { n: a.n, kappa, gamma, pattern: a.pattern.clone(), drops: a.drops, max_depth: a.max_depth.min(chatter_kernel::orbit::MAX_DEPTH) };
+    let req = Request {
+        n: a.n,
+        kappa,
+        gamma,
+        pattern: a.pattern.clone(),
+        drops: a.drops,
+        max_depth: a.max_depth.min(chatter_kernel::orbit::MAX_DEPTH),
+    };
     let result = certify_orbit(&req, &env.backends);
     if let (Ok(found), Some(path)) = (&result, &a.output) {
         if let Err(e) = std::fs::write(path, write_orbit(&found.certificate)) {
@@ -131,4 +138,3 @@ pub fn run(a: OrbitArgs, env: &Env) -> Outcome {
         }
     }
 }
-

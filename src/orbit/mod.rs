@@ -200,8 +200,9 @@ pub fn fixed_point(maps: &FloatMaps, pattern: &[usize]) -> Option<[f64; 3]> {
                 for _ in 0..20 {
                     let (y, _, _) = float_return(maps, pattern, &x)?;
                     let j = jacobian(maps, pattern, &x)?;
-                    let m: [[f64; 3]; 3] =
-                        std::array::from_fn(|i| std::array::from_fn(|k| j[i][k] - if i == k { 1.0 } else { 0.0 }));
+                    let m: [[f64; 3]; 3] = std::array::from_fn(|i| {
+                        std::array::from_fn(|k| j[i][k] - if i == k { 1.0 } else { 0.0 })
+                    });
                     let r = [x[0] - y[0], x[1] - y[1], x[2] - y[2]];
                     let Some(dx) = solve3(&m, &r) else { break };
                     x = [x[0] + dx[0], x[1] + dx[1], x[2] + dx[2]];
@@ -223,7 +224,8 @@ pub fn real_eigen(j: &[[f64; 3]; 3]) -> Option<([f64; 3], [[f64; 3]; 3])> {
     let t = j[0][0] + j[1][1] + j[2][2];
     let s = j[0][0] * j[1][1] - j[0][1] * j[1][0] + j[0][0] * j[2][2] - j[0][2] * j[2][0] + j[1][1] * j[2][2]
         - j[1][2] * j[2][1];
-    let d = j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) - j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0])
+    let d = j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1])
+        - j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0])
         + j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
     // Depressed cubic: λ = y + t/3.
     let p = s - t * t / 3.0;
@@ -234,12 +236,14 @@ pub fn real_eigen(j: &[[f64; 3]; 3]) -> Option<([f64; 3], [[f64; 3]; 3])> {
     }
     let r = (-p / 3.0).sqrt();
     let phi = (3.0 * q / (2.0 * p * r)).clamp(-1.0, 1.0).acos() / 3.0;
-    let mut ls: [f64; 3] =
-        std::array::from_fn(|k| 2.0 * r * (phi - 2.0 * std::f64::consts::PI * k as f64 / 3.0).cos() + t / 3.0);
+    let mut ls: [f64; 3] = std::array::from_fn(|k| {
+        2.0 * r * (phi - 2.0 * std::f64::consts::PI * k as f64 / 3.0).cos() + t / 3.0
+    });
     ls.sort_by(|a, b| b.abs().total_cmp(&a.abs()));
     let mut vecs = [[0.0; 3]; 3];
     for (k, &l) in ls.iter().enumerate() {
-        let m: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|c| j[i][c] - if i == c { l } else { 0.0 }));
+        let m: [[f64; 3]; 3] =
+            std::array::from_fn(|i| std::array::from_fn(|c| j[i][c] - if i == c { l } else { 0.0 }));
         let cross = |a: &[f64; 3], b: &[f64; 3]| {
             [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
         };
@@ -273,7 +277,12 @@ pub fn find_pattern(req: &Request) -> Result<Vec<usize>, Failure> {
         .map_err(|e| Failure::Body(e.to_string()))?;
     let mut seen = Vec::new();
     for seed in 1..=req.drops.max(1) {
-        let run = simulate(&model, &Initial::RandomDrop { seed }, crate::simulate::Arithmetic::Float, &Options::new(600));
+        let run = simulate(
+            &model,
+            &Initial::RandomDrop { seed },
+            crate::simulate::Arithmetic::Float,
+            &Options::new(600),
+        );
         if let Some(p) = pattern::find(&run.sequence) {
             return Ok(pattern::steps(&p.cycle, req.n as usize));
         }
@@ -292,7 +301,11 @@ fn certificate(
     bounds: [&Q; 3],
 ) -> OrbitCertificate {
     let t = |v: &[f64; 3]| {
-        (to_canonical(&rational(v[0], 48)), to_canonical(&rational(v[1], 48)), to_canonical(&rational(v[2], 48)))
+        (
+            to_canonical(&rational(v[0], 48)),
+            to_canonical(&rational(v[1], 48)),
+            to_canonical(&rational(v[2], 48)),
+        )
     };
     OrbitCertificate {
         format: FORMAT.into(),
@@ -332,7 +345,8 @@ fn rotations(p: &[usize]) -> Vec<Vec<usize>> {
 /// Produces an orbit certificate: pattern, fixed point, basis, bounds, then δ = 2^-4, 2^-5, ...
 /// (each with subdivision 0 to `max_depth`) until the kernel (first backend) accepts; the accepted file is re-checked on every backend.
 pub fn certify_orbit(req: &Request, backends: &[Backend]) -> Result<Found, Failure> {
-    let body = Polygon::new(req.n, req.kappa.clone(), req.gamma.clone()).map_err(|e| Failure::Body(e.to_string()))?;
+    let body = Polygon::new(req.n, req.kappa.clone(), req.gamma.clone())
+        .map_err(|e| Failure::Body(e.to_string()))?;
     let maps = FloatMaps::new(&body);
     let given = match &req.pattern {
         Some(p) => {
@@ -398,7 +412,9 @@ pub fn certify_orbit(req: &Request, backends: &[Backend]) -> Result<Found, Failu
                             boxes: a.orbit_boxes.unwrap_or(0),
                             kernel_seconds,
                         }),
-                        Verdict::Rejected(r) => Err(Failure::Internal(format!("first backend accepts, all reject: {r}"))),
+                        Verdict::Rejected(r) => {
+                            Err(Failure::Internal(format!("first backend accepts, all reject: {r}")))
+                        }
                         Verdict::Disagree(s) => Err(Failure::Internal(s)),
                     };
                 }

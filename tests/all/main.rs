@@ -16,6 +16,7 @@ mod fuzz_smoke;
 mod json;
 mod kernel;
 mod model;
+mod orbit;
 mod plot;
 mod readme;
 mod refute;

@@ -15,8 +15,8 @@ pub use convex::{
     CONVEX_VERSION, ConvexBodyText, ConvexCertificate, ConvexCoordinates, read_convex, version_of,
     write_convex,
 };
-pub use orbit::{ORBIT_VERSION, OrbitBody, OrbitCertificate, OrbitSet, read_orbit, write_orbit};
 pub(crate) use json::{format_of as json_format_of, read as read_json};
+pub use orbit::{ORBIT_VERSION, OrbitBody, OrbitCertificate, OrbitSet, read_orbit, write_orbit};
 pub use read::{Syntax, read, read_in, read_with};
 pub(crate) use read::{check_header, ron_error};
 pub use rejection::{Boundary, Code, Locus, Rejection};

@@ -121,12 +121,8 @@ impl<F: Field> Iv<F> {
     }
     /// Product.
     pub fn times(&self, o: &Self) -> Self {
-        let (lo, hi) = min_max([
-            self.lo.times(&o.lo),
-            self.lo.times(&o.hi),
-            self.hi.times(&o.lo),
-            self.hi.times(&o.hi),
-        ]);
+        let (lo, hi) =
+            min_max([self.lo.times(&o.lo), self.lo.times(&o.hi), self.hi.times(&o.lo), self.hi.times(&o.hi)]);
         Iv::new(lo, hi)
     }
     /// Product with an exact scalar.

@@ -168,7 +168,9 @@ impl Quantity {
     pub fn describe(self) -> String {
         match self {
             Quantity::Approach { step, contact } => {
-                format!("at step {step}, the target contact {contact} approaches the floor (-u_{contact} > 0)")
+                format!(
+                    "at step {step}, the target contact {contact} approaches the floor (-u_{contact} > 0)"
+                )
             }
             Quantity::Up { step, contact } => {
                 format!("at step {step}, the target contact {contact} is up (h_{contact} > 0)")
@@ -216,7 +218,11 @@ impl<F: Field> Maps<F> {
     /// The constants of a regular polygon.
     pub fn new(body: &Polygon<F>) -> Self {
         let n = body.n();
-        Maps { n, contacts: (0..n).map(|k| body.contact(k as i64).clone()).collect(), impact0: body.impact(0) }
+        Maps {
+            n,
+            contacts: (0..n).map(|k| body.contact(k as i64).clone()).collect(),
+            impact0: body.impact(0),
+        }
     }
 
     fn dot<T: Num<F>>(&self, f: &[F; 3], x: &[T; 3]) -> T {

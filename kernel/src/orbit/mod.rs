@@ -61,11 +61,7 @@ pub struct Orbit<F> {
 
 /// The return map of the pattern at a rational point x = (a, b, c) of Σ, exactly: `Err` names the
 /// first quantity of conditions 1-2 that is not positive there.
-pub fn return_map<F: Field>(
-    body: &Polygon<F>,
-    pattern: &[usize],
-    x: &[F; 3],
-) -> Result<Period<F>, Quantity> {
+pub fn return_map<F: Field>(body: &Polygon<F>, pattern: &[usize], x: &[F; 3]) -> Result<Period<F>, Quantity> {
     let maps = Maps::new(body);
     if pattern.iter().any(|&j| j == 0 || j >= maps.n) {
         return Err(Quantity::Approach { step: 0, contact: 0 });
@@ -113,7 +109,10 @@ fn inverse<F: Field>(m: &[[F; 3]; 3]) -> Option<[[F; 3]; 3]> {
 }
 
 /// Rule O1: reads and checks everything but the three conditions.
-pub fn read_orbit_values<F: Field>(cert: &OrbitCertificate, limits: ParseLimits) -> Result<Orbit<F>, Rejection> {
+pub fn read_orbit_values<F: Field>(
+    cert: &OrbitCertificate,
+    limits: ParseLimits,
+) -> Result<Orbit<F>, Rejection> {
     if cert.format != FORMAT {
         return Err(Rejection::at_field(Code::WrongFormat, "format", format!("expected {FORMAT:?}")));
     }
@@ -143,7 +142,10 @@ pub fn read_orbit_values<F: Field>(cert: &OrbitCertificate, limits: ParseLimits)
         BodyError::GammaOutOfRange => Rejection::at_field(Code::ParameterOutOfRange, "body.gamma", e),
     })?;
     if cert.claim != Claim::CompleteChatterFromSet {
-        let msg = format!("{} is a cone claim; an orbit certificate claims CompleteChatterFromSet", cert.claim.name());
+        let msg = format!(
+            "{} is a cone claim; an orbit certificate claims CompleteChatterFromSet",
+            cert.claim.name()
+        );
         return Err(out_of_range("claim", msg));
     }
     if cert.pattern.is_empty() || cert.pattern.len() > MAX_PATTERN {
@@ -185,7 +187,11 @@ pub fn read_orbit_values<F: Field>(cert: &OrbitCertificate, limits: ParseLimits)
     let (centre, a, delta) = match &cert.set {
         OrbitSet::Parallelepiped { centre, axes, delta } => {
             let centre = triple("set.centre", centre)?;
-            let cols = [triple("set.axes[0]", &axes.0)?, triple("set.axes[1]", &axes.1)?, triple("set.axes[2]", &axes.2)?];
+            let cols = [
+                triple("set.axes[0]", &axes.0)?,
+                triple("set.axes[1]", &axes.1)?,
+                triple("set.axes[2]", &axes.2)?,
+            ];
             let a: [[F; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|k| cols[k][i].clone()));
             let delta: F = number("set.delta", delta, limits)?;
             if !delta.is_positive() {
@@ -202,12 +208,14 @@ pub fn read_orbit_values<F: Field>(cert: &OrbitCertificate, limits: ParseLimits)
             let two = F::from_i64(2);
             let mid = |i: usize| lo[i].plus(&hi[i]).over(&two).unwrap_or_else(F::zero);
             let half = |i: usize| hi[i].minus(&lo[i]).over(&two).unwrap_or_else(F::zero);
-            let a = std::array::from_fn(|i| std::array::from_fn(|k| if i == k { half(i) } else { F::zero() }));
+            let a =
+                std::array::from_fn(|i| std::array::from_fn(|k| if i == k { half(i) } else { F::zero() }));
             ([mid(0), mid(1), mid(2)], a, F::one())
         }
     };
-    let a_inv = inverse(&a)
-        .ok_or_else(|| Rejection::at_field(Code::DegenerateSet, "set.axes", "the axes are linearly dependent"))?;
+    let a_inv = inverse(&a).ok_or_else(|| {
+        Rejection::at_field(Code::DegenerateSet, "set.axes", "the axes are linearly dependent")
+    })?;
     let maps = Maps::new(&body);
     Ok(Orbit { maps, pattern, centre, a, a_inv, delta, depth: cert.subdivision, rho, lambda, period })
 }
@@ -237,7 +245,8 @@ fn quantities<F: Field>(orbit: &Orbit<F>, b: &SubBox<F>) -> Result<Vec<(Quantity
     let two = F::from_i64(2);
     let centre: [F; 3] = std::array::from_fn(|k| b.lo[k].plus(&b.hi[k]).over(&two).unwrap_or_else(F::zero));
     let radius: [F; 3] = std::array::from_fn(|k| b.hi[k].minus(&b.lo[k]).over(&two).unwrap_or_else(F::zero));
-    let r = std::sync::Arc::new(std::array::from_fn(|k| Iv { lo: radius[k].negated(), hi: radius[k].clone() }));
+    let r =
+        std::sync::Arc::new(std::array::from_fn(|k| Iv { lo: radius[k].negated(), hi: radius[k].clone() }));
     let x: [Centred<F>; 3] = std::array::from_fn(|i| {
         let mut at_c = Iv::point(&orbit.centre[i]);
         let mut over = at_c.clone();
@@ -308,14 +317,21 @@ fn rejection<F: Field>(b: &SubBox<F>, q: Quantity, wrong: bool) -> Rejection {
         _ => Code::NoContraction,
     };
     let range: Vec<String> = (0..3)
-        .map(|k| format!("[{}, {}]", crate::check::abbreviated(&to_canonical(&b.lo[k])), crate::check::abbreviated(&to_canonical(&b.hi[k]))))
+        .map(|k| {
+            format!(
+                "[{}, {}]",
+                crate::check::abbreviated(&to_canonical(&b.lo[k])),
+                crate::check::abbreviated(&to_canonical(&b.hi[k]))
+            )
+        })
         .collect();
     let how = if wrong {
         "fails at the centre of".to_string()
     } else {
         format!("is not shown (interval bounds, {} bisections) on", b.depth)
     };
-    let msg = format!("condition {}: {} {how} the sub-box y in {}", q.condition(), q.describe(), range.join(" x "));
+    let msg =
+        format!("condition {}: {} {how} the sub-box y in {}", q.condition(), q.describe(), range.join(" x "));
     Rejection::new(code, locus(b, q), msg)
 }
 
@@ -343,7 +359,8 @@ pub fn check_orbit<F: Field>(cert: &OrbitCertificate, limits: ParseLimits) -> Re
 /// shown.
 pub fn cover<F: Field>(orbit: &Orbit<F>, limits: ParseLimits) -> Result<usize, Rejection> {
     let d = orbit.delta.clone();
-    let root = SubBox { lo: std::array::from_fn(|_| d.negated()), hi: std::array::from_fn(|_| d.clone()), depth: 0 };
+    let root =
+        SubBox { lo: std::array::from_fn(|_| d.negated()), hi: std::array::from_fn(|_| d.clone()), depth: 0 };
     let mut stack = vec![root];
     let (mut examined, mut shown) = (0usize, 0usize);
     while let Some(b) = stack.pop() {
@@ -361,7 +378,8 @@ pub fn cover<F: Field>(orbit: &Orbit<F>, limits: ParseLimits) -> Result<usize, R
             Found::Unshown(q) if b.depth >= orbit.depth => return Err(rejection(&b, q, false)),
             Found::Unshown(_) => {
                 let two = F::from_i64(2);
-                let mid: [F; 3] = std::array::from_fn(|k| b.lo[k].plus(&b.hi[k]).over(&two).unwrap_or_else(F::zero));
+                let mid: [F; 3] =
+                    std::array::from_fn(|k| b.lo[k].plus(&b.hi[k]).over(&two).unwrap_or_else(F::zero));
                 // Children in reverse order, so that the first (all lower halves) is examined first.
                 for child in (0..8).rev() {
                     let pick = |k: usize| child >> k & 1 == 1;
