@@ -168,8 +168,11 @@ fn the_kernels_exact_return_map_agrees_with_the_exact_and_float_simulators() {
 
 #[test]
 fn a_cone_certificate_cannot_carry_the_orbit_claim() {
-    let path = root().join("certificates/invalid/orbit-claim-in-cone-certificate.ron");
-    let text = std::fs::read_to_string(path).unwrap();
+    let path = root().join("certificates/valid/n3-kappa1_10-gamma3_20-complete-chatter-from-all-down.ron");
+    let text = std::fs::read_to_string(path)
+        .unwrap()
+        .replace("claim: CompleteChatterFromAllDown", "claim: CompleteChatterFromSet");
+    assert!(text.contains("CompleteChatterFromSet"));
     match verify_text(&text, ParseLimits::default(), &[MALACHITE, NUM]) {
         Verdict::Rejected(r) => assert_eq!(r.code, Code::UnknownVariant),
         other => panic!("{other:?}"),
