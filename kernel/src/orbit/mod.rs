@@ -250,8 +250,8 @@ fn quantities<F: Field>(orbit: &Orbit<F>, b: &SubBox<F>) -> Result<Vec<(Quantity
     let x: [Centred<F>; 3] = std::array::from_fn(|i| {
         let mut at_c = Iv::point(&orbit.centre[i]);
         let mut over = at_c.clone();
-        for k in 0..3 {
-            at_c = at_c.plus(&Iv::point(&centre[k]).scaled(&orbit.a[i][k]));
+        for (k, ck) in centre.iter().enumerate() {
+            at_c = at_c.plus(&Iv::point(ck).scaled(&orbit.a[i][k]));
             over = over.plus(&Iv { lo: b.lo[k].clone(), hi: b.hi[k].clone() }.scaled(&orbit.a[i][k]));
         }
         Centred::seed(at_c, over, std::array::from_fn(|k| Iv::point(&orbit.a[i][k])), r.clone())
