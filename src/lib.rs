@@ -22,6 +22,7 @@ pub mod exactify;
 pub mod finder;
 pub mod model;
 pub mod oracle;
+pub mod orbit;
 #[cfg(feature = "cli")]
 pub mod plot;
 pub mod refute;

@@ -12,6 +12,8 @@
 //! - [`model`]: the exact impact model of the rod and of regular polygons (docs/model.md).
 //! - [`geometry`]: exact convex polygons on the plane v = -1, with integer arithmetic only.
 //! - [`check`]: the certificate kernel (the acceptance rules of docs/certificate-format.md).
+//! - [`orbit`]: orbit certificates (version 5): the return map of an impact pattern and the
+//!   three conditions over a set of the section, by exact interval arithmetic.
 //! - [`verify`]: the kernel on both backends, with a disagreement reported as an internal error.
 //!
 //! Why acceptance implies each claim is argued in docs/kernel-soundness.md.
@@ -25,6 +27,7 @@ pub mod check;
 pub mod exact;
 pub mod geometry;
 pub mod model;
+pub mod orbit;
 pub mod proof;
 pub mod refute;
 pub mod verify;

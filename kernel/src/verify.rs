@@ -3,7 +3,8 @@
 //! (messages included) reveals a bug in one of them or in the kernel, and is reported as such.
 
 use crate::certificate::{
-    CONVEX_VERSION, Certificate, ConvexCertificate, Encoding, read_convex, read_in, version_of,
+    CONVEX_VERSION, Certificate, ConvexCertificate, Encoding, ORBIT_VERSION, OrbitCertificate, read_convex,
+    read_in, read_orbit, version_of,
 };
 use crate::check::{Accepted, check, check_convex};
 use crate::exact::{ParseLimits, Q};
@@ -15,6 +16,9 @@ pub type Checker = fn(&Certificate, ParseLimits) -> Result<Accepted, crate::cert
 /// The kernel on a version-4 (`ConvexPolygon`) certificate on one backend: `check_convex::<F>`.
 pub type ConvexChecker =
     fn(&ConvexCertificate, ParseLimits) -> Result<Accepted, crate::certificate::Rejection>;
+
+/// The kernel on a version-5 (orbit) certificate on one backend: `orbit::check_orbit::<F>`.
+pub type OrbitChecker = fn(&OrbitCertificate, ParseLimits) -> Result<Accepted, crate::certificate::Rejection>;
 
 /// The refutation checker on one backend: `refute::check::<F>` for some backend `F`.
 pub type RefutationChecker = fn(
@@ -33,6 +37,8 @@ pub struct Backend {
     pub refute: RefutationChecker,
     /// The kernel on version-4 (`ConvexPolygon`) certificates on it.
     pub convex: ConvexChecker,
+    /// The kernel on version-5 (orbit) certificates on it.
+    pub orbit: OrbitChecker,
 }
 
 /// malachite, the main backend.
@@ -41,6 +47,7 @@ pub const MALACHITE: Backend = Backend {
     check: check::<Q>,
     refute: crate::refute::check::<Q>,
     convex: check_convex::<Q>,
+    orbit: crate::orbit::check_orbit::<Q>,
 };
 /// num-bigint/num-rational, the independent second backend.
 pub const NUM: Backend = Backend {
@@ -48,6 +55,7 @@ pub const NUM: Backend = Backend {
     check: check::<BigRational>,
     refute: crate::refute::check::<BigRational>,
     convex: check_convex::<BigRational>,
+    orbit: crate::orbit::check_orbit::<BigRational>,
 };
 
 /// The kernel's verdict, possibly over two backends (on a certificate, `T` = [`Accepted`]; on a
@@ -105,6 +113,16 @@ pub fn verify_convex_on(cert: &ConvexCertificate, limits: ParseLimits, backends:
     agree(backends.iter().map(|b| (b.name, (b.convex)(cert, limits))))
 }
 
+/// Runs the kernel on a version-5 (orbit) certificate on each backend and compares the verdicts.
+pub fn verify_orbit_on(cert: &OrbitCertificate, limits: ParseLimits, backends: &[Backend]) -> Verdict {
+    agree(backends.iter().map(|b| (b.name, (b.orbit)(cert, limits))))
+}
+
+/// Runs the kernel on a version-5 (orbit) certificate on both backends (malachite and num-rational).
+pub fn verify_orbit(cert: &OrbitCertificate, limits: ParseLimits) -> Verdict {
+    verify_orbit_on(cert, limits, &[MALACHITE, NUM])
+}
+
 /// Runs the kernel on a version-4 certificate on both backends (malachite and num-rational).
 pub fn verify_convex(cert: &ConvexCertificate, limits: ParseLimits) -> Verdict {
     verify_convex_on(cert, limits, &[MALACHITE, NUM])
@@ -126,6 +144,12 @@ pub fn verify_text_in(text: &str, encoding: Encoding, limits: ParseLimits, backe
     if version_of(text, encoding) == Some(CONVEX_VERSION) {
         return match read_convex(text, encoding) {
             Ok(cert) => verify_convex_on(&cert, limits, backends),
+            Err(r) => Verdict::Rejected(r),
+        };
+    }
+    if version_of(text, encoding) == Some(ORBIT_VERSION) {
+        return match read_orbit(text, encoding) {
+            Ok(cert) => verify_orbit_on(&cert, limits, backends),
             Err(r) => Verdict::Rejected(r),
         };
     }

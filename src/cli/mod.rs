@@ -14,6 +14,7 @@ mod convex_args;
 mod cover_cmd;
 mod largest_gamma;
 mod map_cmd;
+mod orbit_cmd;
 mod plot_cmd;
 mod prove_cmd;
 mod refute_cmd;
@@ -95,6 +96,9 @@ pub enum Command {
     Reproduce(reproduce_cmd::ReproduceArgs),
     /// Find, exactify and kernel-check an effectively invariant cone; write a certificate.
     Certify(certify_cmd::CertifyArgs),
+    /// Prove complete chatter from a set of states around an attracting impact cycle (an orbit
+    /// certificate, docs/orbit-certificates.md); write it.
+    CertifyOrbit(orbit_cmd::OrbitArgs),
     /// Check certificate files (or directories of *.ron and *.json files) with the trusted kernel.
     Verify(verify_cmd::VerifyArgs),
     /// Convert a certificate or refutation between RON and its JSON twin (lossless).
@@ -126,6 +130,7 @@ impl Command {
     pub fn json(&self) -> bool {
         match self {
             Command::Certify(a) => a.json,
+            Command::CertifyOrbit(a) => a.json,
             Command::Verify(a) => a.json,
             Command::Classify(a) => a.json,
             Command::Bodies(a) => a.json,
@@ -198,6 +203,7 @@ pub fn range(flag: &str, text: &str) -> Result<[Q; 2], String> {
 pub fn run(cli: Cli, env: &Env) -> Outcome {
     match cli.command {
         Command::Certify(a) => certify_cmd::run(a, env),
+        Command::CertifyOrbit(a) => orbit_cmd::run(a, env),
         Command::Verify(a) => verify_cmd::run(a, env),
         Command::Convert(a) => convert_cmd::run(a),
         Command::Simulate(a) => simulate_cmd::run(a),

@@ -142,7 +142,7 @@ fn every_valid_certificate_verifies_on_both_backends() {
         BTreeSet::from([2, 3, 4, 5, 6, 7, 8, 12]),
         "the corpus covers the rod, n = 3, 4, 6 and the number fields of n = 5, 7, 8, 12"
     );
-    assert_eq!(claims.len(), 3, "the corpus covers every claim");
+    assert_eq!(claims.len(), 4, "the corpus covers every claim (the three cone claims and the orbit claim)");
 }
 
 #[test]
@@ -193,6 +193,15 @@ fn corpus_certificates_round_trip_through_the_writer() {
                 chatter_kernel::certificate::read_convex(&text, chatter_kernel::certificate::Encoding::Ron)
                     .unwrap();
             assert_eq!(chatter_kernel::certificate::write_convex(&cert), text, "{}", f.display());
+            continue;
+        }
+        if chatter_kernel::certificate::version_of(&text, chatter_kernel::certificate::Encoding::Ron)
+            == Some(chatter_kernel::certificate::ORBIT_VERSION)
+        {
+            let cert =
+                chatter_kernel::certificate::read_orbit(&text, chatter_kernel::certificate::Encoding::Ron)
+                    .unwrap();
+            assert_eq!(chatter_kernel::certificate::write_orbit(&cert), text, "{}", f.display());
             continue;
         }
         let cert = read(&text).unwrap();

@@ -18,6 +18,7 @@ mod json;
 mod kernel;
 mod model;
 mod oracle_convex;
+mod orbit;
 mod plot;
 mod readme;
 mod refute;

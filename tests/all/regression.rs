@@ -83,6 +83,7 @@ const LIAR: Backend = Backend {
     check: check::<Liar>,
     refute: chatter_kernel::refute::check::<Liar>,
     convex: chatter_kernel::check::check_convex::<Liar>,
+    orbit: chatter_kernel::orbit::check_orbit::<Liar>,
 };
 
 fn outcome(args: &[&str], env: &Env) -> Outcome {

@@ -5,6 +5,7 @@
 
 pub mod convex;
 mod json;
+pub mod orbit;
 mod read;
 mod rejection;
 mod strict;
@@ -15,6 +16,7 @@ pub use convex::{
     write_convex,
 };
 pub(crate) use json::{format_of as json_format_of, read as read_json};
+pub use orbit::{ORBIT_VERSION, OrbitBody, OrbitCertificate, OrbitSet, read_orbit, write_orbit};
 pub use read::{Syntax, read, read_in, read_with};
 pub(crate) use read::{check_header, ron_error};
 pub use rejection::{Boundary, Code, Locus, Rejection};
@@ -180,6 +182,11 @@ pub enum Claim {
     CcOrPccFromAllDown,
     /// Also PCC excluded: every drop with all contacts moving down ends in CC.
     CompleteChatterFromAllDown,
+    /// Orbit certificates only (version 5): every motion whose state right after some impact is,
+    /// up to relabelling and the two scalings, a point of the set X ends in complete chatter,
+    /// following the pattern periodically (docs/orbit-certificates.md §4). Not a cone claim: it
+    /// is not in [`Claim::ALL`] and the cone kernels reject it.
+    CompleteChatterFromSet,
 }
 
 impl Claim {
@@ -193,6 +200,7 @@ impl Claim {
             Claim::EffectivelyInvariant => "EffectivelyInvariant",
             Claim::CcOrPccFromAllDown => "CcOrPccFromAllDown",
             Claim::CompleteChatterFromAllDown => "CompleteChatterFromAllDown",
+            Claim::CompleteChatterFromSet => "CompleteChatterFromSet",
         }
     }
 }

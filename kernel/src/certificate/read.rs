@@ -84,13 +84,17 @@ pub fn read_in(text: &str, encoding: super::Encoding) -> Result<Certificate, Rej
 }
 
 /// Every version this build reads: 1-3 here, 4 (`ConvexPolygon` bodies) with
-/// [`super::read_convex`]. A header with version 4 is told where to go, not "unsupported".
-const ALL_VERSIONS: RangeInclusive<u64> = 1..=super::CONVEX_VERSION;
+/// [`super::read_convex`], 5 (orbit certificates) with [`super::read_orbit`]. A header with version 4 is told where to go, not "unsupported".
+const ALL_VERSIONS: RangeInclusive<u64> = 1..=super::ORBIT_VERSION;
 
 /// Rejects version 4 in the reader of versions 1-3 (`chatter verify` dispatches on the version).
 fn not_convex(h: super::convex::VersionOnly) -> Result<(), Rejection> {
     if h.version == Some(super::CONVEX_VERSION) {
         let msg = "version 4 certificates have a ConvexPolygon body and are read by read_convex (chatter verify reads both)";
+        return Err(Rejection::at_field(Code::UnsupportedVersion, "version", msg));
+    }
+    if h.version == Some(super::ORBIT_VERSION) {
+        let msg = "version 5 certificates are orbit certificates and are read by read_orbit (chatter verify reads them)";
         return Err(Rejection::at_field(Code::UnsupportedVersion, "version", msg));
     }
     Ok(())

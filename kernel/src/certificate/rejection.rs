@@ -50,6 +50,18 @@ pub enum Code {
     InvalidHeader,
     /// A step of a proof does not check.
     StepFailed,
+    /// An orbit certificate's set X is degenerate (delta <= 0, singular axes, an empty box).
+    DegenerateSet,
+    /// An orbit certificate's bounds are out of range (rho or lambda not in (0, 1), period <= 0)
+    /// or its pattern is (empty, too long, a step outside 1..n-1).
+    OrbitOutOfRange,
+    /// Orbit condition 1: on a sub-box of X, the pattern's next impact is not shown to be forced.
+    PatternNotForced,
+    /// Orbit condition 2: on a sub-box of X, the return map is not shown to stay in X.
+    SetNotInvariant,
+    /// Orbit condition 3: on a sub-box of X, the scale factors or the flight time are not shown
+    /// to be within the certificate's bounds.
+    NoContraction,
     /// The model contradicts itself or the two backends disagree: a bug in chatter.
     Internal,
 }
@@ -79,6 +91,11 @@ impl Code {
             Code::TimeLimit => "time-limit",
             Code::InvalidHeader => "invalid-header",
             Code::StepFailed => "step-failed",
+            Code::DegenerateSet => "degenerate-set",
+            Code::OrbitOutOfRange => "orbit-out-of-range",
+            Code::PatternNotForced => "pattern-not-forced",
+            Code::SetNotInvariant => "set-not-invariant",
+            Code::NoContraction => "no-contraction",
             Code::Internal => "internal",
         }
     }
@@ -192,6 +209,21 @@ pub enum Locus {
     Limit {
         /// The limit's name, as in docs/certificate-format.md §2.
         name: String,
+    },
+    /// A sub-box of an orbit certificate's set X, in the parameters y of X (x = x* + A y for a
+    /// parallelepiped, x = y for a box), with the step of the pattern and the contact concerned
+    /// when the failing check has them.
+    OrbitBox {
+        /// [lo, hi] of each coordinate of y, canonical text.
+        sub_box: Box<[[String; 2]; 3]>,
+        /// Bisections of X that gave the sub-box (0: all of X).
+        depth: u64,
+        /// The step of the pattern (from 0), for condition 1.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        step: Option<usize>,
+        /// The contact (label at that step), for condition 1.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        contact: Option<usize>,
     },
     /// Nowhere in particular (internal errors).
     Nowhere,

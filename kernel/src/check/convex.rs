@@ -91,6 +91,7 @@ pub fn check_convex<F: Field>(cert: &ConvexCertificate, limits: ParseLimits) -> 
         contains_translation,
         region: None,
         pcc_boxes: None,
+        orbit_boxes: None,
     })
 }
 
@@ -104,7 +105,7 @@ fn header(cert: &ConvexCertificate) -> Result<(), Rejection> {
         let msg = format!("{} is not {CONVEX_VERSION}, the version of ConvexPolygon bodies", cert.version);
         return Err(Rejection::at_field(Code::UnsupportedVersion, "version", msg));
     }
-    Ok(())
+    super::not_orbit_claim(cert.claim)
 }
 
 /// The limits before any arithmetic: at most [`MAX_CONTACTS`] contacts (else the body is

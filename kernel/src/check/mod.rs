@@ -49,6 +49,9 @@ pub struct Accepted {
     /// For `CompleteChatterFromAllDown` on a box: the number of sub-boxes on which PCC exclusion
     /// was shown by Bernstein bounds.
     pub pcc_boxes: Option<usize>,
+    /// For an orbit certificate (version 5): the number of sub-boxes of X on which conditions
+    /// 1-3 were shown.
+    pub orbit_boxes: Option<usize>,
 }
 
 /// Checks a certificate exactly over the field `F`. The first failing check is reported.
@@ -134,6 +137,15 @@ fn header(cert: &Certificate) -> Result<(), Rejection> {
     if !VERSIONS.contains(&cert.version) {
         let msg = format!("{} is not one of the versions this build reads ({VERSIONS:?})", cert.version);
         return Err(Rejection::at_field(Code::UnsupportedVersion, "version", msg));
+    }
+    not_orbit_claim(cert.claim)
+}
+
+/// The orbit claim is not a cone claim: a cone certificate that names it is rejected.
+pub(crate) fn not_orbit_claim(claim: Claim) -> Result<(), Rejection> {
+    if claim == Claim::CompleteChatterFromSet {
+        let msg = "CompleteChatterFromSet is the claim of orbit certificates (version 5), not of a cone";
+        return Err(Rejection::at_field(Code::UnknownVariant, "claim", msg));
     }
     Ok(())
 }

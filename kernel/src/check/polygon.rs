@@ -301,5 +301,6 @@ pub(super) fn check<E: Scalar>(
         contains_translation,
         region: None,
         pcc_boxes,
+        orbit_boxes: None,
     })
 }

@@ -205,5 +205,6 @@ pub(super) fn check<F: Field>(
         contains_translation,
         region: None,
         pcc_boxes: None,
+        orbit_boxes: None,
     })
 }

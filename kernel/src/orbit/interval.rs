@@ -1,0 +1,315 @@
+//! Exact interval arithmetic with outward rounding, and its first-order automatic
+//! differentiation (docs/kernel-soundness.md §7).
+//!
+//! An [`Iv`] is a closed interval [lo, hi] of exact rationals. After every operation the ends are
+//! rounded *outward* to dyadic rationals m 2^e with |m| < 2^(PRECISION+2) (lo down, hi up), so the
+//! numbers stay short whatever the depth of the computation; rounding outward only enlarges the
+//! interval, so every enclosure stays an enclosure. The rounding is exact integer arithmetic
+//! (a bisection for floor(p 2^s / q)), no floating point. A [`Dual`] carries an interval for a
+//! value and one for each of its three partial derivatives, with the usual rules of forward
+//! differentiation applied to intervals: if the inputs enclose a function and its gradient on a
+//! box, the outputs do too.
+
+use crate::exact::{Field, Int, Ring};
+use std::cmp::Ordering;
+
+/// Mantissa bits kept by the outward rounding.
+pub const PRECISION: u64 = 64;
+
+/// 2^k as an integer of the backend.
+fn pow2<Z: Int>(k: u64) -> Z {
+    let (mut result, mut base, mut k) = (Z::one(), Z::from_i64(2), k);
+    while k > 0 {
+        if k & 1 == 1 {
+            result = result.times(&base);
+        }
+        base = base.times(&base);
+        k >>= 1;
+    }
+    result
+}
+
+/// floor(num / den) for den > 0, when |num / den| < 2^bits.
+fn floor_div<Z: Int>(num: &Z, den: &Z, bits: u64) -> Z {
+    if num.is_negative() {
+        // floor(-a/d) = -ceil(a/d) = -floor((a + d - 1)/d).
+        let a = num.negated().plus(den).minus(&Z::one());
+        return floor_div(&a, den, bits + 1).negated();
+    }
+    let (mut m, mut bit, two) = (Z::zero(), pow2::<Z>(bits), Z::from_i64(2));
+    for _ in 0..bits {
+        bit = bit.div_exact(&two);
+        let cand = m.plus(&bit);
+        if cand.times(den) <= *num {
+            m = cand;
+        }
+    }
+    m
+}
+
+/// The largest dyadic m 2^e <= x with |m| < 2^(PRECISION+2) on the grid of x's magnitude.
+pub fn round_down<F: Field>(x: &F) -> F {
+    if x.is_zero() {
+        return F::zero();
+    }
+    let (p, q) = (x.numer(), x.denom());
+    let (pb, qb) = (p.bit_length(), q.bit_length());
+    // Already short: a power-of-two denominator and a short numerator.
+    if pb <= PRECISION + 1 && pow2::<F::Int>(qb - 1) == q {
+        return x.clone();
+    }
+    // 2^(pb-1) <= |p| < 2^pb, 2^(qb-1) <= q < 2^qb, so |x| < 2^(pb-qb+1); scale by 2^s, s = PRECISION - (pb - qb).
+    let s = PRECISION as i64 - (pb as i64 - qb as i64);
+    let (num, den) = if s >= 0 {
+        (p.times(&pow2::<F::Int>(s as u64)), q)
+    } else {
+        (p, q.times(&pow2::<F::Int>(s.unsigned_abs())))
+    };
+    let m = floor_div(&num, &den, PRECISION + 2);
+    if s >= 0 {
+        F::from_fraction(&m, &pow2::<F::Int>(s as u64))
+    } else {
+        F::from_int(&m.times(&pow2::<F::Int>(s.unsigned_abs())))
+    }
+}
+
+/// The smallest dyadic >= x on the same grid: -round_down(-x).
+pub fn round_up<F: Field>(x: &F) -> F {
+    round_down(&x.negated()).negated()
+}
+
+/// A closed interval [lo, hi] of rationals, lo <= hi.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Iv<F> {
+    /// Lower end.
+    pub lo: F,
+    /// Upper end.
+    pub hi: F,
+}
+
+fn min_max<F: Field>(xs: [F; 4]) -> (F, F) {
+    let [a, b, c, d] = xs;
+    let lo = a.clone().min(b.clone()).min(c.clone()).min(d.clone());
+    let hi = a.max(b).max(c).max(d);
+    (lo, hi)
+}
+
+impl<F: Field> Iv<F> {
+    /// [lo, hi] rounded outward (the caller guarantees lo <= hi).
+    pub fn new(lo: F, hi: F) -> Self {
+        Iv { lo: round_down(&lo), hi: round_up(&hi) }
+    }
+    /// The point x, enclosed.
+    pub fn point(x: &F) -> Self {
+        Iv::new(x.clone(), x.clone())
+    }
+    /// 0.
+    pub fn zero() -> Self {
+        Iv { lo: F::zero(), hi: F::zero() }
+    }
+    /// Sum.
+    pub fn plus(&self, o: &Self) -> Self {
+        Iv::new(self.lo.plus(&o.lo), self.hi.plus(&o.hi))
+    }
+    /// Difference.
+    pub fn minus(&self, o: &Self) -> Self {
+        Iv::new(self.lo.minus(&o.hi), self.hi.minus(&o.lo))
+    }
+    /// Negation (exact).
+    pub fn negated(&self) -> Self {
+        Iv { lo: self.hi.negated(), hi: self.lo.negated() }
+    }
+    /// Product.
+    pub fn times(&self, o: &Self) -> Self {
+        let (lo, hi) =
+            min_max([self.lo.times(&o.lo), self.lo.times(&o.hi), self.hi.times(&o.lo), self.hi.times(&o.hi)]);
+        Iv::new(lo, hi)
+    }
+    /// Product with an exact scalar.
+    pub fn scaled(&self, c: &F) -> Self {
+        let (a, b) = (self.lo.times(c), self.hi.times(c));
+        if a <= b { Iv::new(a, b) } else { Iv::new(b, a) }
+    }
+    /// Quotient; `None` when `o` contains 0.
+    pub fn over(&self, o: &Self) -> Option<Self> {
+        if !o.excludes_zero() {
+            return None;
+        }
+        let inv = |x: &F| F::one().over(x);
+        let (lo, hi) = min_max([
+            self.lo.times(&inv(&o.lo)?),
+            self.lo.times(&inv(&o.hi)?),
+            self.hi.times(&inv(&o.lo)?),
+            self.hi.times(&inv(&o.hi)?),
+        ]);
+        Some(Iv::new(lo, hi))
+    }
+    /// 0 is not in the interval.
+    pub fn excludes_zero(&self) -> bool {
+        self.lo.is_positive() || self.hi.is_negative()
+    }
+    /// The intersection with `o`, or `self` when they are disjoint (cannot happen for two
+    /// enclosures of the same number).
+    pub fn meet(&self, o: &Self) -> Self {
+        let lo = self.lo.clone().max(o.lo.clone());
+        let hi = self.hi.clone().min(o.hi.clone());
+        if lo.cmp(&hi) == Ordering::Greater { self.clone() } else { Iv { lo, hi } }
+    }
+}
+
+/// A value and its gradient with respect to three parameters, all as intervals.
+#[derive(Clone, Debug)]
+pub struct Dual<F> {
+    /// Enclosure of the value.
+    pub v: Iv<F>,
+    /// Enclosures of the three partial derivatives.
+    pub d: [Iv<F>; 3],
+}
+
+impl<F: Field> Dual<F> {
+    /// A constant (zero gradient).
+    pub fn constant(c: &F) -> Self {
+        Dual { v: Iv::point(c), d: [Iv::zero(), Iv::zero(), Iv::zero()] }
+    }
+    /// Sum.
+    pub fn plus(&self, o: &Self) -> Self {
+        Dual { v: self.v.plus(&o.v), d: std::array::from_fn(|i| self.d[i].plus(&o.d[i])) }
+    }
+    /// Difference.
+    pub fn minus(&self, o: &Self) -> Self {
+        Dual { v: self.v.minus(&o.v), d: std::array::from_fn(|i| self.d[i].minus(&o.d[i])) }
+    }
+    /// Negation.
+    pub fn negated(&self) -> Self {
+        Dual { v: self.v.negated(), d: std::array::from_fn(|i| self.d[i].negated()) }
+    }
+    /// Product: (fg)' = f'g + fg'.
+    pub fn times(&self, o: &Self) -> Self {
+        Dual {
+            v: self.v.times(&o.v),
+            d: std::array::from_fn(|i| self.d[i].times(&o.v).plus(&self.v.times(&o.d[i]))),
+        }
+    }
+    /// Product with an exact scalar.
+    pub fn scaled(&self, c: &F) -> Self {
+        Dual { v: self.v.scaled(c), d: std::array::from_fn(|i| self.d[i].scaled(c)) }
+    }
+    /// Quotient: (f/g)' = (f' - (f/g) g')/g; `None` when g's enclosure contains 0.
+    pub fn over(&self, o: &Self) -> Option<Self> {
+        let q = self.v.over(&o.v)?;
+        let mut d = [Iv::zero(), Iv::zero(), Iv::zero()];
+        for (i, di) in d.iter_mut().enumerate() {
+            *di = self.d[i].minus(&q.times(&o.d[i])).over(&o.v)?;
+        }
+        Some(Dual { v: q, d })
+    }
+}
+
+/// A quantity over a box Y = c + [-r, r] of parameters: an enclosure of its value at the centre c
+/// (`c`), and of its value and gradient over Y (`b`). After every operation the value over Y is
+/// intersected with the mean-value form c + ∇f(Y)(Y - c) (mean value theorem: the operations
+/// are smooth on Y, as every divisor's enclosure excludes 0), which keeps the enclosures of
+/// long computations tight (docs/kernel-soundness.md §7).
+#[derive(Clone, Debug)]
+pub struct Centred<F> {
+    /// Enclosure of f(c).
+    pub c: Iv<F>,
+    /// Enclosure of f and ∇f over Y.
+    pub b: Dual<F>,
+    /// The symmetric intervals [-r_k, r_k] (`None` for a constant).
+    pub r: Option<std::sync::Arc<[Iv<F>; 3]>>,
+}
+
+impl<F: Field> Centred<F> {
+    /// The seed x = c + (y - c) with the given gradient: value `c` at the centre, `over` on Y.
+    pub fn seed(c: Iv<F>, over: Iv<F>, d: [Iv<F>; 3], r: std::sync::Arc<[Iv<F>; 3]>) -> Self {
+        Centred { c, b: Dual { v: over, d }, r: Some(r) }.tightened()
+    }
+
+    fn tightened(mut self) -> Self {
+        if let Some(r) = &self.r {
+            let mut v = self.c.clone();
+            for (dk, rk) in self.b.d.iter().zip(r.iter()) {
+                v = v.plus(&dk.times(rk));
+            }
+            self.b.v = self.b.v.meet(&v);
+        }
+        self
+    }
+
+    fn with(c: Iv<F>, b: Dual<F>, x: &Self, y: &Self) -> Self {
+        let r = x.r.clone().or_else(|| y.r.clone());
+        Centred { c, b, r }.tightened()
+    }
+
+    /// A constant.
+    pub fn constant(k: &F) -> Self {
+        Centred { c: Iv::point(k), b: Dual::constant(k), r: None }
+    }
+    /// Sum.
+    pub fn plus(&self, o: &Self) -> Self {
+        Self::with(self.c.plus(&o.c), self.b.plus(&o.b), self, o)
+    }
+    /// Difference.
+    pub fn minus(&self, o: &Self) -> Self {
+        Self::with(self.c.minus(&o.c), self.b.minus(&o.b), self, o)
+    }
+    /// Product.
+    pub fn times(&self, o: &Self) -> Self {
+        Self::with(self.c.times(&o.c), self.b.times(&o.b), self, o)
+    }
+    /// Product with an exact scalar.
+    pub fn scaled(&self, k: &F) -> Self {
+        Centred { c: self.c.scaled(k), b: self.b.scaled(k), r: self.r.clone() }
+    }
+    /// Quotient; `None` when the divisor's enclosure over Y contains 0.
+    pub fn over(&self, o: &Self) -> Option<Self> {
+        Some(Self::with(self.c.over(&o.c)?, self.b.over(&o.b)?, self, o))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exact::{OrderedField, Q};
+    use num_rational::BigRational;
+
+    fn rounding_brackets<F: Field>() {
+        for (n, d) in [(1, 3), (-1, 3), (22, 7), (-355, 113), (1, 1 << 40), (7, 1), (0, 1)] {
+            let x = F::from_ratio(n, d);
+            let (lo, hi) = (round_down(&x), round_up(&x));
+            assert!(lo <= x && x <= hi, "{n}/{d}");
+            // Short: the denominators are powers of two of at most PRECISION + 2 + |exponent| bits.
+            assert!(lo.denom().bit_length() <= PRECISION + 48 && hi.denom().bit_length() <= PRECISION + 48);
+            // Tight: relative width below 2^-60.
+            let width = hi.minus(&lo);
+            let bound = F::from_ratio(1, 1 << 60).times(&x.plus(&x).max(x.negated().plus(&x.negated())));
+            assert!(width <= bound, "{n}/{d}");
+        }
+    }
+
+    #[test]
+    fn outward_rounding_brackets_the_number_on_both_backends() {
+        rounding_brackets::<Q>();
+        rounding_brackets::<BigRational>();
+    }
+
+    #[test]
+    fn interval_and_dual_operations_enclose_their_values() {
+        let iv = |a: i64, b: i64| Iv::<Q> { lo: Q::from_ratio(a, 10), hi: Q::from_ratio(b, 10) };
+        let (x, y) = (iv(-3, 2), iv(5, 7));
+        let p = x.times(&y);
+        assert!(p.lo <= Q::from_ratio(-21, 100) && p.hi >= Q::from_ratio(14, 100));
+        let q = x.over(&y).unwrap();
+        assert!(q.lo <= Q::from_ratio(-3, 5) && q.hi >= Q::from_ratio(2, 7));
+        assert!(y.over(&x).is_none(), "a divisor containing 0");
+        // d/dy (y^2 / (y + 1)) at y in [1, 2]: (y^2 + 2y)/(y + 1)^2 lies in [3/4, 8/9].
+        let one = Iv::point(&Q::from_ratio(1, 1));
+        let zero = Iv::zero();
+        let y =
+            Dual { v: Iv { lo: Q::from_ratio(1, 1), hi: Q::from_ratio(2, 1) }, d: [one, zero.clone(), zero] };
+        let f = y.times(&y).over(&y.plus(&Dual::constant(&Q::from_ratio(1, 1)))).unwrap();
+        assert!(f.d[0].lo <= Q::from_ratio(3, 4) && f.d[0].hi >= Q::from_ratio(8, 9));
+        assert!(f.v.lo <= Q::from_ratio(1, 2) && f.v.hi >= Q::from_ratio(4, 3));
+    }
+}

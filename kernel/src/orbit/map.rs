@@ -1,0 +1,293 @@
+//! The return map R_P of a pattern P on the section Σ (docs/orbit-certificates.md §2), written
+//! once over any arithmetic ([`Num`]): exact rationals (the return map at a rational point) or
+//! intervals with gradients ([`Dual`], enclosures over a box). Every quantity whose sign a
+//! condition needs is handed to the caller's `check` before it is used, in a fixed order.
+
+use super::interval::{Centred, Dual};
+use crate::exact::Field;
+use crate::model::Polygon;
+use crate::model::linalg::Mat3;
+
+/// The arithmetic the return map is written in.
+pub trait Num<F: Field>: Clone {
+    /// A rational constant.
+    fn cst(c: &F) -> Self;
+    /// Sum.
+    fn add(&self, o: &Self) -> Self;
+    /// Difference.
+    fn sub(&self, o: &Self) -> Self;
+    /// Product.
+    fn mul(&self, o: &Self) -> Self;
+    /// Product with a rational constant.
+    fn scale(&self, c: &F) -> Self;
+    /// Quotient, `None` when the divisor is (or may be) 0.
+    fn div(&self, o: &Self) -> Option<Self>;
+}
+
+impl<F: Field> Num<F> for F {
+    fn cst(c: &F) -> Self {
+        c.clone()
+    }
+    fn add(&self, o: &Self) -> Self {
+        self.plus(o)
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self.minus(o)
+    }
+    fn mul(&self, o: &Self) -> Self {
+        self.times(o)
+    }
+    fn scale(&self, c: &F) -> Self {
+        self.times(c)
+    }
+    fn div(&self, o: &Self) -> Option<Self> {
+        self.over(o)
+    }
+}
+
+impl<F: Field> Num<F> for Dual<F> {
+    fn cst(c: &F) -> Self {
+        Dual::constant(c)
+    }
+    fn add(&self, o: &Self) -> Self {
+        self.plus(o)
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self.minus(o)
+    }
+    fn mul(&self, o: &Self) -> Self {
+        self.times(o)
+    }
+    fn scale(&self, c: &F) -> Self {
+        self.scaled(c)
+    }
+    fn div(&self, o: &Self) -> Option<Self> {
+        self.over(o)
+    }
+}
+
+impl<F: Field> Num<F> for Centred<F> {
+    fn cst(c: &F) -> Self {
+        Centred::constant(c)
+    }
+    fn add(&self, o: &Self) -> Self {
+        self.plus(o)
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self.minus(o)
+    }
+    fn mul(&self, o: &Self) -> Self {
+        self.times(o)
+    }
+    fn scale(&self, c: &F) -> Self {
+        self.scaled(c)
+    }
+    fn div(&self, o: &Self) -> Option<Self> {
+        self.over(o)
+    }
+}
+
+/// A quantity that must be positive (`strict`) or non-negative on all of X.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Quantity {
+    /// Condition 1: -u_j > 0 at step `step` (the target contact approaches).
+    Approach {
+        /// The step (from 0).
+        step: usize,
+        /// The target contact j.
+        contact: usize,
+    },
+    /// Condition 1: h_j > 0 at step `step` (the target contact is up).
+    Up {
+        /// The step (from 0).
+        step: usize,
+        /// The target contact j.
+        contact: usize,
+    },
+    /// Condition 1: h_k(-u_j) + h_j u_k > 0 (contact k is still up when j lands).
+    Clear {
+        /// The step (from 0).
+        step: usize,
+        /// The other contact k.
+        contact: usize,
+    },
+    /// Condition 2: alpha = hc(q_m) > 0.
+    PositionScale,
+    /// Condition 2: beta = -v(p_m) > 0.
+    VelocityScale,
+    /// Condition 2: delta - y'_i >= 0 (`upper`) or y'_i + delta >= 0, for y' = A^-1 (R_P(x) - x*).
+    Inside {
+        /// The coordinate i.
+        coordinate: usize,
+        /// Which end.
+        upper: bool,
+    },
+    /// Condition 3: lambda - beta >= 0.
+    VelocityBound,
+    /// Condition 3: rho beta - alpha >= 0 (alpha/beta <= rho).
+    RatioBound,
+    /// Condition 3: lambda - alpha >= 0.
+    PositionBound,
+    /// Condition 3: period - T >= 0.
+    TimeBound,
+}
+
+impl Quantity {
+    /// Whether the quantity must be strictly positive.
+    pub fn strict(self) -> bool {
+        matches!(
+            self,
+            Quantity::Approach { .. }
+                | Quantity::Up { .. }
+                | Quantity::Clear { .. }
+                | Quantity::PositionScale
+                | Quantity::VelocityScale
+        )
+    }
+
+    /// The condition of docs/orbit-certificates.md §3 (1, 2 or 3).
+    pub fn condition(self) -> u8 {
+        match self {
+            Quantity::Approach { .. } | Quantity::Up { .. } | Quantity::Clear { .. } => 1,
+            Quantity::PositionScale | Quantity::VelocityScale | Quantity::Inside { .. } => 2,
+            _ => 3,
+        }
+    }
+
+    /// (step, contact) for condition 1.
+    pub fn step_contact(self) -> (Option<usize>, Option<usize>) {
+        match self {
+            Quantity::Approach { step, contact }
+            | Quantity::Up { step, contact }
+            | Quantity::Clear { step, contact } => (Some(step), Some(contact)),
+            _ => (None, None),
+        }
+    }
+
+    /// The quantity in words.
+    pub fn describe(self) -> String {
+        match self {
+            Quantity::Approach { step, contact } => {
+                format!(
+                    "at step {step}, the target contact {contact} approaches the floor (-u_{contact} > 0)"
+                )
+            }
+            Quantity::Up { step, contact } => {
+                format!("at step {step}, the target contact {contact} is up (h_{contact} > 0)")
+            }
+            Quantity::Clear { step, contact } => format!(
+                "at step {step}, contact {contact} is strictly above the floor when the target lands (h_k (-u_j) + h_j u_k > 0 for k = {contact})"
+            ),
+            Quantity::PositionScale => "alpha = hc(q_m) > 0".into(),
+            Quantity::VelocityScale => "beta = -v(p_m) > 0".into(),
+            Quantity::Inside { coordinate, upper: true } => {
+                format!("R_P(x) in X: y'_{coordinate} <= delta for y' = A^-1 (R_P(x) - x*)")
+            }
+            Quantity::Inside { coordinate, upper: false } => {
+                format!("R_P(x) in X: y'_{coordinate} >= -delta for y' = A^-1 (R_P(x) - x*)")
+            }
+            Quantity::VelocityBound => "beta <= lambda".into(),
+            Quantity::RatioBound => "alpha/beta <= rho".into(),
+            Quantity::PositionBound => "alpha <= lambda".into(),
+            Quantity::TimeBound => "T <= period".into(),
+        }
+    }
+}
+
+/// Why the computation of R_P stopped.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stop {
+    /// The caller's check failed on this quantity.
+    Failed(Quantity),
+    /// A division by this quantity was impossible (its enclosure contains 0).
+    Division(Quantity),
+}
+
+/// The body's constants the return map needs.
+#[derive(Clone, Debug)]
+pub struct Maps<F> {
+    /// n.
+    pub n: usize,
+    /// Contact covectors f_0..f_{n-1}.
+    pub contacts: Vec<[F; 3]>,
+    /// The impact map I_0.
+    pub impact0: Mat3<F>,
+}
+
+impl<F: Field> Maps<F> {
+    /// The constants of a regular polygon.
+    pub fn new(body: &Polygon<F>) -> Self {
+        let n = body.n();
+        Maps {
+            n,
+            contacts: (0..n).map(|k| body.contact(k as i64).clone()).collect(),
+            impact0: body.impact(0),
+        }
+    }
+
+    fn dot<T: Num<F>>(&self, f: &[F; 3], x: &[T; 3]) -> T {
+        x[0].scale(&f[0]).add(&x[1].scale(&f[1])).add(&x[2].scale(&f[2]))
+    }
+}
+
+/// One period: the normalised state after it, the scales and the flight time.
+#[derive(Clone, Debug)]
+pub struct Period<T> {
+    /// R_P(x) = (a', b', c').
+    pub next: [T; 3],
+    /// alpha = hc(q_m).
+    pub alpha: T,
+    /// beta = -v(p_m).
+    pub beta: T,
+    /// T = t_1 + ... + t_m.
+    pub time: T,
+    /// The states (q_s, p_s) before each step and after the last, unnormalised.
+    pub states: Vec<([T; 3], [T; 3])>,
+}
+
+/// The return map of `pattern` at x = (a, b, c) ∈ Σ; `check` sees every quantity of conditions 1
+/// and 2 whose sign is needed, in order, before it is used as a divisor.
+pub fn period<F: Field, T: Num<F>>(
+    maps: &Maps<F>,
+    pattern: &[usize],
+    x: &[T; 3],
+    check: &mut dyn FnMut(Quantity, &T) -> Result<(), Stop>,
+) -> Result<Period<T>, Stop> {
+    let (zero, one) = (T::cst(&F::zero()), T::cst(&F::one()));
+    let mut q = [zero.clone(), x[0].clone(), one.clone()];
+    let mut p = [x[1].clone(), x[2].clone(), zero.sub(&one)];
+    let mut time = zero.clone();
+    let mut states = Vec::with_capacity(pattern.len() + 1);
+    let n = maps.n;
+    for (s, &j) in pattern.iter().enumerate() {
+        states.push((q.clone(), p.clone()));
+        let hj = maps.dot(&maps.contacts[j], &q);
+        let uj = maps.dot(&maps.contacts[j], &p);
+        let nu = zero.sub(&uj);
+        let approach = Quantity::Approach { step: s, contact: j };
+        check(approach, &nu)?;
+        check(Quantity::Up { step: s, contact: j }, &hj)?;
+        for k in (0..n).filter(|&k| k != j) {
+            let hk = maps.dot(&maps.contacts[k], &q);
+            let uk = maps.dot(&maps.contacts[k], &p);
+            check(Quantity::Clear { step: s, contact: k }, &hk.mul(&nu).add(&hj.mul(&uk)))?;
+        }
+        let t = hj.div(&nu).ok_or(Stop::Division(approach))?;
+        time = time.add(&t);
+        let moved: [T; 3] = std::array::from_fn(|i| q[i].add(&t.mul(&p[i])));
+        let next = &maps.contacts[(j + 1) % n];
+        // h_j(q + t p) = h_j + t u_j = 0 exactly: the landed contact is the new contact 0.
+        q = [zero.clone(), maps.dot(next, &moved), moved[2].clone()];
+        let relabelled = [uj, maps.dot(next, &p), p[2].clone()];
+        p = std::array::from_fn(|i| maps.dot(&maps.impact0[i], &relabelled));
+    }
+    states.push((q.clone(), p.clone()));
+    let alpha = q[2].clone();
+    let beta = zero.sub(&p[2]);
+    check(Quantity::PositionScale, &alpha)?;
+    check(Quantity::VelocityScale, &beta)?;
+    let a = q[1].div(&alpha).ok_or(Stop::Division(Quantity::PositionScale))?;
+    let b = p[0].div(&beta).ok_or(Stop::Division(Quantity::VelocityScale))?;
+    let c = p[1].div(&beta).ok_or(Stop::Division(Quantity::VelocityScale))?;
+    Ok(Period { next: [a, b, c], alpha, beta, time, states })
+}
