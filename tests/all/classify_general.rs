@@ -4,7 +4,7 @@
 //! the command's text and JSON, bad input, and the general catalogue in `chatter bodies`.
 
 use crate::common::{bin, q, root};
-use chatter::bodies::convex::{rectangle_plate, regular_polygon, regular_polygon_exact};
+use chatter::bodies::convex::{polygon_plate, rectangle_plate, regular_polygon, regular_polygon_exact};
 use chatter::bodies::general::general_catalogue;
 use chatter::certify::transport::regular_image;
 use chatter::exact::{Algebraic, OrderedField, Q};
@@ -114,13 +114,19 @@ fn affine_images_of_the_square_plate_have_the_square_products() {
     }
 }
 
+/// The affine images of the square plate (kappa = 1/6) and of the equilateral plate (kappa = 1/8)
+/// have the paper's S_1 threshold in gamma (docs/model.md §11.7, §11.11).
 #[test]
-fn the_rectangle_threshold_is_the_square_plates() {
+fn plate_thresholds_are_the_regular_plates() {
     let rect = rectangle_plate(&q("2"), &q("1"), q("1/20")).unwrap();
-    let ours = product_profile(&rect, Direction::CounterClockwise).sup_lower_bound(40).unwrap();
-    let square = cc_profile(&Family { n: 4, c1: Q::int(0), kappa: q("1/6") }).sup_lower_bound(40).unwrap();
-    let gap = if ours > square { &ours - &square } else { &square - &ours };
-    assert!(gap < q("1/1000000000000"), "{ours} vs {square}");
+    let pts = vec![[q("0"), q("0")], [q("4"), q("0")], [q("0"), q("3")]];
+    let triangle = polygon_plate(&pts, q("1/20")).unwrap();
+    for (body, n, c1, kappa) in [(rect, 4, "0", "1/6"), (triangle, 3, "-1/2", "1/8")] {
+        let ours = product_profile(&body, Direction::CounterClockwise).sup_lower_bound(40).unwrap();
+        let regular = cc_profile(&Family { n, c1: q(c1), kappa: q(kappa) }).sup_lower_bound(40).unwrap();
+        let gap = if ours > regular { &ours - &regular } else { &regular - &ours };
+        assert!(gap < q("1/1000000000000"), "n = {n}: {ours} vs {regular}");
+    }
 }
 
 fn text(o: &Output) -> (String, String) {
