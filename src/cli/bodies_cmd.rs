@@ -3,7 +3,7 @@
 use super::{Outcome, emit, emit_report};
 use crate::bodies::{self, Entry};
 use crate::exact::{Q, Ring, parse_user_number};
-use crate::report::bodies::{BodyRow, bodies};
+use crate::report::bodies::{BodyRow, GeneralBodyRow, bodies, general_rows};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 
@@ -14,7 +14,9 @@ use indicatif::{ProgressBar, ProgressStyle};
 the CC criterion (S_1 has a real positive dominant eigenvalue) and the PCC criterion (all\n\
 eigenvalues of S_(n-1) S_1 real) hold, as guaranteed enclosures; for the rod, Goyal's threshold.\n\
 The paper's stated values are printed beside ours and disagreements are flagged.\n\n\
-Extra bodies: --n N --kappa K, --plate N, --prism N --height H (circumradius 1)."
+Extra bodies: --n N --kappa K, --plate N, --prism N --height H (circumradius 1).\n\n\
+After them, the general convex bodies (phone, brick, table, lander; docs/bodies.md): contacts,\n\
+J and derivation, without gamma (classify them with --body NAME --gamma G)."
 )]
 pub struct BodiesArgs {
     /// Print one JSON object (schema chatter.bodies/1, docs/json.md).
@@ -83,14 +85,21 @@ pub fn run(a: BodiesArgs) -> Outcome {
         Ok(e) => e,
         Err(e) => return Outcome::Usage(e.to_string()),
     };
+    let general = if a.only { Ok(Vec::new()) } else { general_rows() };
+    let general = match general {
+        Ok(g) => g,
+        Err(e) => return Outcome::Internal(e),
+    };
     let bar = ProgressBar::new(entries.len() as u64);
     bar.set_style(ProgressStyle::with_template("{bar:30} {pos}/{len} bodies").expect("valid template"));
-    let report = bodies(&entries, a.digits, &|| bar.inc(1));
+    let mut report = bodies(&entries, a.digits, &|| bar.inc(1));
     bar.finish_and_clear();
+    report.general = general;
     if a.json {
         emit_report(&report);
     } else {
         report.bodies.iter().flat_map(BodyRow::lines).for_each(|l| emit(&l));
+        report.general.iter().flat_map(GeneralBodyRow::lines).for_each(|l| emit(&l));
     }
     Outcome::Success
 }

@@ -3,7 +3,9 @@
 
 use super::{self as cli, emit, emit_report};
 use crate::exact::parse_user_number;
-use crate::report::classify::{ClassifyRequest, classify};
+use crate::exact::{Q, Ring};
+use crate::report::classify::{ClassifyReport, ClassifyRequest, classify};
+use crate::report::classify_general::classify_general;
 use clap::Args;
 
 /// Raw arguments of `chatter classify`.
@@ -11,11 +13,16 @@ use clap::Args;
 #[command(
     after_help = "Decides the paper's spectral criteria exactly (Sturm sequences, exact number fields for\n\
 n = 5, 7, 8, ...) and shows the evidence, the float finder's verdict and whether a certificate\n\
-can be produced.\n\nExamples:\n  chatter classify --n 3 --kappa 3/20 --gamma 1/20\n  chatter classify --n 2 --kappa 1/3 --gamma 0.05 --velocity 0.1,-0.5"
+can be produced.\n\n\
+General bodies (--rectangle, --box, --polygon, --body; docs/model.md §11.11): the conjectural\n\
+criteria of the products of impact maps once around the polygon in both directions, the PCC\n\
+lemma per adjacent pair, simulated drops and the certificate.\n\nExamples:\n  chatter classify --n 3 --kappa 3/20 --gamma 1/20\n  chatter classify --n 2 --kappa 1/3 --gamma 0.05 --velocity 0.1,-0.5\n  chatter classify --rectangle 2,1 --gamma 1/20\n  chatter classify --body phone --gamma 1/20"
 )]
 pub struct ClassifyArgs {
     #[command(flatten)]
     pub body: super::BodyArgs,
+    #[command(flatten)]
+    pub general: super::convex_args::ConvexArgs,
     /// Rod only: initial velocity u0,u1 of the two ends, to decide CC from it (the paper's
     /// theorem on rotating initial velocities).
     #[arg(long, allow_hyphen_values = true)]
@@ -26,6 +33,23 @@ pub struct ClassifyArgs {
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
+}
+
+/// A general body (docs/model.md §11.11): `None` when none was asked for.
+fn general(a: &ClassifyArgs, gamma: &Q) -> Result<Option<ClassifyReport>, String> {
+    if !a.general.given() {
+        return Ok(None);
+    }
+    if a.velocity.is_some() {
+        return Err("--velocity is for the rod (--n 2), not for general bodies".into());
+    }
+    if gamma.is_negative() || *gamma > Q::int(1) {
+        return Err("--gamma: gamma must lie in [0, 1]".into());
+    }
+    match a.general.parse(gamma)? {
+        Some(g) => classify_general(&g.description, &g.body, a.digits).map(Some),
+        None => Ok(None),
+    }
 }
 
 fn validate(a: ClassifyArgs) -> Result<ClassifyRequest, String> {
@@ -47,9 +71,18 @@ fn validate(a: ClassifyArgs) -> Result<ClassifyRequest, String> {
     Ok(r)
 }
 
+/// The report of a general body if one was given, else of the regular body (n, kappa, gamma).
+fn report(a: ClassifyArgs) -> Result<ClassifyReport, String> {
+    let (_, _, gamma) = a.body.parse()?;
+    match general(&a, &gamma)? {
+        Some(r) => Ok(r),
+        None => validate(a).and_then(|r| classify(&r)),
+    }
+}
+
 pub fn run(a: ClassifyArgs) -> cli::Outcome {
     let json = a.json;
-    let report = match validate(a).and_then(|r| classify(&r)) {
+    let report = match report(a) {
         Ok(r) => r,
         Err(e) => return cli::Outcome::Usage(e),
     };

@@ -2,8 +2,11 @@
 //! exact CC and PCC thresholds in gamma and the paper's values beside ours. Build it with
 //! [`bodies()`] or [`catalogue`].
 
-use super::Report;
+use super::convex::GeneralBodyReport;
+use super::{Number, Report};
+use crate::bodies::general::general_catalogue;
 use crate::bodies::{self, Entry, PaperValue, Threshold, compare, kappa_decimal, kappa_f64};
+use crate::exact::Q;
 use rayon::prelude::*;
 use schemars::JsonSchema;
 use serde::Serialize;
@@ -52,12 +55,30 @@ pub struct BodyRow {
     pub kappa_decimal: String,
 }
 
+/// One general convex body of the catalogue (docs/model.md §11, docs/bodies.md): gamma is not
+/// a property of the body and is not listed.
+#[derive(Clone, Debug, Serialize, JsonSchema)]
+pub struct GeneralBodyRow {
+    pub name: &'static str,
+    /// Number of contacts.
+    pub n: usize,
+    /// Contact points (x_k, y_k) relative to the centre of mass, counter-clockwise.
+    pub contacts: Vec<[Number; 2]>,
+    /// J_xx, J_xy, J_yy: the horizontal inertia tensor per unit mass about the centre of mass.
+    pub inertia: [Number; 3],
+    /// How the contacts and J were obtained.
+    pub derivation: &'static str,
+}
+
 /// `chatter bodies --json`.
 #[derive(Clone, Debug, Serialize, JsonSchema)]
 pub struct BodiesReport {
     /// `chatter.bodies/1`.
     pub schema: &'static str,
     pub bodies: Vec<BodyRow>,
+    /// The general convex bodies of the catalogue (phone, brick, table, lander; empty with
+    /// `--only`).
+    pub general: Vec<GeneralBodyRow>,
 }
 
 impl Report for BodiesReport {
@@ -107,12 +128,32 @@ pub fn bodies(entries: &[Entry], digits: usize, tick: &(dyn Fn() + Sync)) -> Bod
             r
         })
         .collect();
-    BodiesReport { schema: BodiesReport::SCHEMA, bodies }
+    BodiesReport { schema: BodiesReport::SCHEMA, bodies, general: Vec::new() }
+}
+
+/// The rows of the general catalogue (docs/bodies.md), listed without gamma.
+pub fn general_rows() -> Result<Vec<GeneralBodyRow>, String> {
+    let all = general_catalogue(&Q::int(0)).map_err(|e| format!("general catalogue: {e}"))?;
+    Ok(all
+        .into_iter()
+        .map(|e| {
+            let b = GeneralBodyReport::of(e.name, &e.body);
+            GeneralBodyRow {
+                name: e.name,
+                n: e.body.n(),
+                contacts: b.contacts,
+                inertia: b.inertia,
+                derivation: e.derivation,
+            }
+        })
+        .collect())
 }
 
 /// The whole catalogue (`chatter bodies --json`) with enclosures of `digits` decimals.
 pub fn catalogue(digits: usize) -> Result<BodiesReport, String> {
-    Ok(bodies(&bodies::catalogue()?, digits, &|| {}))
+    let mut r = bodies(&bodies::catalogue()?, digits, &|| {});
+    r.general = general_rows()?;
+    Ok(r)
 }
 
 fn paper_text(p: &Option<PaperValue>) -> String {
@@ -182,5 +223,24 @@ impl BodyRow {
                 format!("  certificates: none ({})", self.why_not_certifiable.clone().unwrap_or_default())
             }
         }
+    }
+}
+
+impl GeneralBodyRow {
+    /// The text output of a general body (docs/bodies.md).
+    pub fn lines(&self) -> Vec<String> {
+        let pts: Vec<String> =
+            self.contacts.iter().map(|c| format!("({}, {})", c[0].exact, c[1].exact)).collect();
+        let j = &self.inertia;
+        vec![
+            format!("{} (general body, {} contacts; gamma is not a property of the body)", self.name, self.n),
+            format!("  contacts (about the centre of mass, counter-clockwise): {}", pts.join(" ")),
+            format!(
+                "  J = [[{}, {}], [{}, {}]] per unit mass",
+                j[0].exact, j[1].exact, j[1].exact, j[2].exact
+            ),
+            format!("  derivation: {}", self.derivation),
+            format!("  use: chatter classify --body {} --gamma G (also simulate, certify)", self.name),
+        ]
     }
 }

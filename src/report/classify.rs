@@ -158,7 +158,8 @@ pub struct Criterion {
     pub dominant_text: &'static str,
 }
 
-fn criterion<F: OrderedField + std::fmt::Display>(
+/// A criterion's report from its exact spectrum (docs/model.md §6).
+pub(crate) fn criterion<F: OrderedField + std::fmt::Display>(
     holds: bool,
     matrix: String,
     s: &mut Spectrum<F>,
@@ -244,6 +245,12 @@ pub struct ClassifyReport {
     /// A batch of random drops.
     pub drops: Option<Drops>,
     pub certificate: CertificateSummary,
+    /// General convex bodies only (absent otherwise): the body, the conjectural product
+    /// criteria and the PCC lemma per adjacent pair (docs/model.md §11.11). For them `n` is the
+    /// number of contacts, `kappa` is 0, and `cc`, `cc_threshold` repeat the counter-clockwise
+    /// product criterion.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub general_body: Option<super::classify_general::GeneralClassify>,
 }
 
 impl Report for ClassifyReport {
@@ -293,7 +300,8 @@ fn finders(fb: &FloatBody) -> Finders {
     Finders { translation: run(Seed::Translation), all_down: run(Seed::AllDown) }
 }
 
-fn drops(model: &Model) -> Drops {
+/// SIM_RUNS random drops of the model in f64 (seeds 0.., budget SIM_BUDGET).
+pub(crate) fn drops(model: &Model) -> Drops {
     let briefs = simulate_many(model, 0, SIM_RUNS, Arithmetic::Float, &Options::new(SIM_BUDGET), &|| {});
     let c = counts(&briefs);
     let counts = Outcome::ALL.iter().zip(c).map(|(o, k)| (o.name().to_string(), k)).collect();
@@ -363,6 +371,7 @@ pub fn classify(r: &ClassifyRequest) -> Result<ClassifyReport, String> {
         finder,
         drops,
         certificate: certificate(r),
+        general_body: None,
     })
 }
 
@@ -386,6 +395,9 @@ fn eigen_text(c: &Criterion) -> String {
 impl ClassifyReport {
     /// The text output, one line per item.
     pub fn lines(&self) -> Vec<String> {
+        if let Some(g) = &self.general_body {
+            return super::classify_general::general_lines(self, g);
+        }
         let method = match &self.field {
             None => "exact over Q".to_string(),
             Some(f) => format!("exact in Q({f})"),

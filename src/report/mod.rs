@@ -20,6 +20,7 @@
 pub mod bodies;
 pub mod certify;
 pub mod classify;
+pub mod classify_general;
 pub mod convex;
 pub mod error;
 pub mod finder;

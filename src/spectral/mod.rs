@@ -2,6 +2,7 @@
 //! sequences and real-root isolation, exact number fields, eigenvalue decisions, and the CC and
 //! PCC criteria with their thresholds in gamma.
 
+pub mod convex;
 pub mod criteria;
 pub mod eigen;
 pub mod number_field;

@@ -6,6 +6,7 @@ mod bodies;
 mod certificate;
 mod certify;
 mod certify_convex;
+mod classify_general;
 mod cli;
 mod corpus;
 mod cover;
