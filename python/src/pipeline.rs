@@ -49,6 +49,7 @@ fn code(f: &Failure) -> String {
         Failure::Finder(Search::NoCone { .. }) => "no-cone".into(),
         Failure::Finder(_) => "inconclusive".into(),
         Failure::Exactify(_) => "exactify-failed".into(),
+        Failure::NoFamily { .. } => "no-family".into(),
         Failure::Kernel(r) => r.code.as_str().into(),
         Failure::Internal(_) => "internal".into(),
     }

@@ -10,6 +10,7 @@ use super::{Number, Report, Verdict};
 use crate::bodies::Threshold;
 use crate::certify::convex::{ConvexRequest, certify_convex};
 use crate::exact::{OrderedField, Q};
+use crate::finder::Search;
 use crate::simulate::{Model, Outcome};
 use crate::spectral::convex::{
     Direction, PairExclusion, pair_exclusions, product_criterion, product_profile,
@@ -58,7 +59,9 @@ pub struct GeneralClassify {
     pub clockwise: ProductCriterionReport,
     /// The PCC lemma per adjacent pair (proved).
     pub pairs: Vec<PairPccReport>,
-    /// The family finder's verdict: not yet available for general bodies (always null).
+    /// The family finder's verdict (docs/model.md §11.12) for the claim the pipeline tried last
+    /// (`found`: total vertices of the polygons K_0..K_{n-1}; `no-cone`: `step` is the target
+    /// contact j of the transition whose image left v < 0); null if the search did not run.
     pub finder: Option<FinderReport>,
 }
 
@@ -136,10 +139,12 @@ fn pair<F: OrderedField>(
     }
 }
 
-/// The certificate of the general-body pipeline (docs/model.md §11.12) at the body.
-fn certificate(body: &ConvexBody<Q>) -> CertificateSummary {
+/// The certificate of the general-body pipeline (docs/model.md §11.12) at the body, and its
+/// family finder's verdict.
+fn certificate(body: &ConvexBody<Q>) -> (CertificateSummary, Option<FinderReport>) {
     let r = certify_convex(&ConvexRequest::new(body.clone()));
-    match r.result {
+    let finder = r.finder.as_ref().map(FinderReport::of);
+    let summary = match r.result {
         Ok(c) => CertificateSummary {
             verdict: Verdict::Certified,
             claim: Some(c.claim.name()),
@@ -152,7 +157,8 @@ fn certificate(body: &ConvexBody<Q>) -> CertificateSummary {
             generators: None,
             reason: Some(e.to_string()),
         },
-    }
+    };
+    (summary, finder)
 }
 
 /// Classifies a general body (docs/model.md §11.11): `cc` and `cc_threshold` of the report
@@ -168,12 +174,13 @@ pub fn classify_general(
     let t = threshold(&product_profile(body, Direction::CounterClockwise), digits);
     let [ccw, cw] = Direction::BOTH.map(|d| product(body, d, t.clone(), digits));
     let pairs = pair_exclusions(body).iter().map(|e| pair(e, body.n(), n)).collect();
+    let (certificate, finder) = certificate(body);
     let general = GeneralClassify {
         body: GeneralBodyReport::of(description, body),
         counter_clockwise: ccw.clone(),
         clockwise: cw,
         pairs,
-        finder: None,
+        finder,
     };
     Ok(ClassifyReport {
         schema: ClassifyReport::SCHEMA,
@@ -189,7 +196,7 @@ pub fn classify_general(
         pcc_threshold: None,
         finder: None,
         drops: Some(drops(&Model::convex(body))),
-        certificate: certificate(body),
+        certificate,
         general_body: Some(general),
     })
 }
@@ -264,6 +271,19 @@ fn drops_lines(g: &GeneralClassify, d: &Drops, l: &mut Vec<String>) {
     }
 }
 
+/// The family finder's verdict in words.
+fn family_text(f: &FinderReport, n: u64) -> String {
+    match f.search() {
+        Search::Found { cone, iterations } => {
+            format!("found a family K_0..K_{} ({cone} vertices in all, {iterations} iterations)", n - 1)
+        }
+        Search::NoCone { iteration, step } => format!(
+            "no family (an image under I_{step} of a piece K_i ∩ C_(i,{step}) has v >= 0 at iteration {iteration})"
+        ),
+        Search::Inconclusive { reason, .. } => format!("inconclusive: {reason}"),
+    }
+}
+
 /// The text output of a general body's report (docs/model.md §11.11).
 pub fn general_lines(r: &ClassifyReport, g: &GeneralClassify) -> Vec<String> {
     let mut l = Vec::new();
@@ -271,7 +291,10 @@ pub fn general_lines(r: &ClassifyReport, g: &GeneralClassify) -> Vec<String> {
     product_lines(&g.counter_clockwise, &mut l);
     product_lines(&g.clockwise, &mut l);
     l.extend(g.pairs.iter().map(pair_line));
-    l.push("finder: (not yet available for general bodies)".into());
+    l.push(match &g.finder {
+        Some(f) => format!("family finder (docs/model.md §11.12): {}", family_text(f, r.n)),
+        None => "family finder: did not run (the claims were decided before the search)".into(),
+    });
     if let Some(d) = &r.drops {
         drops_lines(g, d, &mut l);
     }

@@ -81,6 +81,9 @@ pub struct FileVerdict {
     /// For a box certificate with rule R4: the sub-boxes of the Bernstein subdivision.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pcc_boxes: Option<usize>,
+    /// For an orbit certificate (version 5): the sub-boxes of X on which every sign was shown.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub orbit_boxes: Option<usize>,
     /// For an accepted refutation: what it refutes and how.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub refutation: Option<RefutationReport>,
@@ -116,6 +119,7 @@ impl FileVerdict {
             gzip: None,
             region: None,
             pcc_boxes: None,
+            orbit_boxes: None,
             refutation: None,
         }
     }
@@ -144,6 +148,14 @@ impl FileVerdict {
                 self.n.unwrap_or(0),
                 r.points,
                 r.last.join(", ")
+            );
+        }
+        if let Some(b) = self.orbit_boxes {
+            return format!(
+                "{}: OK ({}, n = {}: every state of the set X ends in complete chatter; conditions shown on {b} sub-boxes)",
+                self.path,
+                self.claim.unwrap_or("?"),
+                self.n.unwrap_or(0)
             );
         }
         let red = self.redundant.as_ref().map_or(0, Vec::len);
@@ -186,6 +198,10 @@ pub fn verdict_of(path: &Path, verdict: Verdict) -> FileVerdict {
             v.contains_translation = Some(a.contains_translation);
             v.region = a.region;
             v.pcc_boxes = a.pcc_boxes;
+            v.orbit_boxes = a.orbit_boxes;
+            if a.orbit_boxes.is_some() {
+                (v.generators, v.redundant, v.contains_translation) = (None, None, None);
+            }
             v
         }
         Verdict::Rejected(r) => {

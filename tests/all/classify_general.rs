@@ -149,7 +149,7 @@ fn classify_prints_both_conjectural_directions_for_a_rectangle_and_the_phone() {
             format!("conjectural CC criterion, counter-clockwise ({ccw} has a real, positive dominant"),
             format!("conjectural CC criterion, clockwise ({cw} has a real, positive dominant"),
             "PCC lemma (proved, docs/model.md §11.6), pair (0, 1)".to_string(),
-            "finder: (not yet available for general bodies)".to_string(),
+            "family finder (docs/model.md §11.12): ".to_string(),
             "simulation (20 random drops, budget 2000 impacts".to_string(),
             "certificate: ".to_string(),
         ] {
@@ -188,7 +188,11 @@ fn classify_json_of_a_rectangle_is_valid_and_matches_the_square() {
             assert_eq!(g[dir]["criterion"]["matrix"], matrix);
         }
         assert_eq!(g["pairs"].as_array().unwrap().len(), 4);
-        assert!(g["finder"].is_null());
+        // The family finder ran; below the square's largest certified gamma (0.0295) it found a
+        // family, above it it did not.
+        let found = gamma == "1/100";
+        assert_eq!(g["finder"]["outcome"] == "found", found, "gamma = {gamma}: {v}");
+        assert!(g["finder"]["iterations"].as_u64().unwrap() >= 1);
         assert_eq!(g["body"]["contacts"][0][0]["exact"], "1");
         // The rectangle is an affine image of the square plate (kappa = 1/6): same verdict.
         let square = json(&["classify", "--n", "4", "--kappa", "1/6", "--gamma", gamma, "--json"]);

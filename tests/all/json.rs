@@ -33,7 +33,8 @@ fn verdict(text: &str, encoding: Encoding) -> String {
 
 /// Version-5 (orbit) files: `chatter convert` does not convert them yet.
 fn is_orbit(f: &std::path::Path) -> bool {
-    chatter_kernel::certificate::version_of(&text_of(f), Encoding::Ron) == Some(chatter_kernel::certificate::ORBIT_VERSION)
+    chatter_kernel::certificate::version_of(&text_of(f), Encoding::Ron)
+        == Some(chatter_kernel::certificate::ORBIT_VERSION)
 }
 #[test]
 fn every_valid_corpus_file_verifies_as_json_with_the_same_report() {

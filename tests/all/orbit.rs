@@ -178,3 +178,28 @@ fn a_cone_certificate_cannot_carry_the_orbit_claim() {
         other => panic!("{other:?}"),
     }
 }
+
+#[test]
+fn verify_reports_an_orbit_certificate_by_its_sub_boxes() {
+    let o = std::process::Command::new(crate::common::bin())
+        .args(["verify", "certificates/valid/orbit-n3-kappa1_8-gamma3_20.ron", "--json"])
+        .current_dir(root())
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let f = &v["files"][0];
+    assert_eq!(f["claim"], "CompleteChatterFromSet");
+    assert!(f["orbit_boxes"].as_u64().unwrap() >= 1, "{f}");
+    assert!(f.get("generators").is_none(), "an orbit certificate has no generators: {f}");
+    let o = std::process::Command::new(crate::common::bin())
+        .args(["verify", "certificates/valid/orbit-n3-kappa1_8-gamma3_20.ron"])
+        .current_dir(root())
+        .output()
+        .unwrap();
+    let line = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        line.contains("every state of the set X ends in complete chatter; conditions shown on"),
+        "{line}"
+    );
+}

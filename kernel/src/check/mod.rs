@@ -42,7 +42,7 @@ pub struct Accepted {
     pub pcc: Option<[String; 3]>,
     /// Whether K contains the velocity after the first impact of a pure downward translation
     /// (informational: without some such velocity the claim is vacuous); for a box, at every
-    /// corner.
+    /// corner. Orbit certificates have no cone: always false there (not applicable).
     pub contains_translation: bool,
     /// For a box certificate: the bounds [lo, hi] of kappa and of gamma, canonical text.
     pub region: Option<[[String; 2]; 2]>,

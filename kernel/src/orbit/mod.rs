@@ -348,7 +348,8 @@ pub fn check_orbit<F: Field>(cert: &OrbitCertificate, limits: ParseLimits) -> Re
         pieces: Vec::new(),
         max_denominator_bits: 0,
         pcc: None,
-        contains_translation: true,
+        // There is no cone K here: the field does not apply (docs/certificate-format.md §14).
+        contains_translation: false,
         region: None,
         pcc_boxes: None,
         orbit_boxes: Some(boxes),
