@@ -6,7 +6,8 @@
 //! an invalid certificate converts to an equally invalid one.
 
 use chatter_kernel::certificate::{
-    Body, Certificate, ConvexBodyText, ConvexCertificate, Encoding, Param, quoted,
+    Body, Certificate, ConvexBodyText, ConvexCertificate, Encoding, OrbitBody, OrbitCertificate, OrbitSet,
+    Param, quoted,
 };
 use chatter_kernel::refute::{Refutation, Step};
 
@@ -114,6 +115,44 @@ pub fn convex_to_json(c: &ConvexCertificate) -> String {
     )
 }
 
+/// Writes a version-5 (orbit) certificate (docs/certificate-format.md §14) as its JSON twin:
+/// one vector per line, in the order of the RON writer's fields.
+pub fn orbit_to_json(c: &OrbitCertificate) -> String {
+    let OrbitBody::RegularPolygon { n, kappa, gamma } = &c.body;
+    let triple =
+        |t: &(String, String, String)| format!("[{}, {}, {}]", quoted(&t.0), quoted(&t.1), quoted(&t.2));
+    let steps: Vec<String> = c.pattern.iter().map(u64::to_string).collect();
+    let set = match &c.set {
+        OrbitSet::Parallelepiped { centre, axes, delta } => format!(
+            "{{\"Parallelepiped\": {{\n        \"centre\": {},\n        \"axes\": [\n            {},\n            {},\n            {}\n        ],\n        \"delta\": {}\n    }}}}",
+            triple(centre),
+            triple(&axes.0),
+            triple(&axes.1),
+            triple(&axes.2),
+            quoted(delta)
+        ),
+        OrbitSet::Box { lo, hi } => format!(
+            "{{\"Box\": {{\n        \"lo\": {},\n        \"hi\": {}\n    }}}}",
+            triple(lo),
+            triple(hi)
+        ),
+    };
+    format!(
+        "{{\n    \"format\": {},\n    \"version\": {},\n    \"body\": {{\"RegularPolygon\": {{\"n\": {n}, \"kappa\": {}, \"gamma\": {}}}}},\n    \"claim\": \"{}\",\n    \"pattern\": [{}],\n    \"set\": {set},\n    \"subdivision\": {},\n    \"rho\": {},\n    \"lambda\": {},\n    \"period\": {},\n    \"producer\": {}\n}}\n",
+        quoted(&c.format),
+        c.version,
+        quoted(kappa),
+        quoted(gamma),
+        c.claim.name(),
+        steps.join(", "),
+        c.subdivision,
+        quoted(&c.rho),
+        quoted(&c.lambda),
+        quoted(&c.period),
+        quoted(&c.producer)
+    )
+}
+
 /// Converts certificate or refutation text in the encoding `from` to `target`; an error in words
 /// (with the rejection code) when the text is not a readable certificate or refutation.
 pub fn convert(text: &str, from: Encoding, target: Target) -> Result<String, String> {
@@ -134,6 +173,13 @@ pub fn convert(text: &str, from: Encoding, target: Target) -> Result<String, Str
             Ok(match target {
                 Target::Json => convex_to_json(&c),
                 Target::Ron => certificate::write_convex(&c),
+            })
+        }
+        _ if certificate::convex::version_of(text, from) == Some(certificate::ORBIT_VERSION) => {
+            let c = certificate::read_orbit(text, from).map_err(unreadable)?;
+            Ok(match target {
+                Target::Json => orbit_to_json(&c),
+                Target::Ron => certificate::write_orbit(&c),
             })
         }
         _ => {

@@ -1,12 +1,14 @@
 //! `chatter certify-orbit`: an orbit certificate (docs/orbit-certificates.md) for a regular
 //! polygon at one parameter point.
 
-use super::{Env, Outcome, emit};
+use super::{Env, Outcome, emit, emit_report};
 use crate::exact::parse_user_number;
 use crate::orbit::{Failure, Request, certify_orbit};
 use chatter_kernel::certificate::write_orbit;
+use chatter_kernel::model::BodyError;
 use clap::Args;
 use std::path::PathBuf;
+use std::time::{Duration, Instant};
 
 /// Raw arguments of `chatter certify-orbit`.
 #[derive(Args, Debug)]
@@ -19,15 +21,15 @@ pub struct OrbitArgs {
     #[arg(long, default_value_t = 3)]
     pub n: u64,
     /// kappa = rho^2/R^2.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub kappa: String,
     /// Coefficient of restitution.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub gamma: String,
-    /// The pattern's steps j (the next contact is j places on), comma-separated, e.g. 2,2,1,1;
-    /// found by simulating random drops when omitted.
-    #[arg(long, value_delimiter = ',')]
-    pub pattern: Option<Vec<usize>>,
+    /// The pattern's steps j (the next contact is j places on), comma-separated, e.g. 2,2,1,1,
+    /// each in 1..n-1, at most 64 steps; found by simulating random drops when omitted.
+    #[arg(long, allow_hyphen_values = true)]
+    pub pattern: Option<String>,
     /// Random drops simulated to find the pattern.
     #[arg(long, default_value_t = 20)]
     pub drops: u64,
@@ -38,103 +40,128 @@ pub struct OrbitArgs {
     /// Write the certificate here (only if the kernel accepts it).
     #[arg(short = 'o', long)]
     pub output: Option<PathBuf>,
-    /// Print one JSON object instead of the one-line summary.
+    /// Print one JSON object (`chatter.certify-orbit/1`) instead of the one-line summary.
     #[arg(long)]
     pub json: bool,
+    /// With --json: include the wall-clock times (then the output differs from run to run).
+    #[arg(long)]
+    pub timings: bool,
 }
 
-fn failure_kind(f: &Failure) -> &'static str {
-    match f {
-        Failure::Body(_) => "body",
-        Failure::NoPattern(_) => "no-pattern",
-        Failure::NoAttractingCycle(_) => "no-attracting-cycle",
-        Failure::PatternNotStable(_) => "pattern-not-stable",
-        Failure::NoContraction(_) => "no-contraction",
-        Failure::Internal(_) => "internal",
+/// The most steps a pattern may have (docs/certificate-format.md §14).
+pub const MAX_PATTERN: usize = 64;
+
+/// `--pattern` text: comma-separated steps, each in 1..n-1.
+fn parse_pattern(text: &str, n: u64) -> Result<Vec<usize>, String> {
+    let mut steps = Vec::new();
+    for (i, part) in text.split(',').enumerate() {
+        let part = part.trim();
+        let j: u64 = part.parse().map_err(|_| {
+            format!(
+                "--pattern: {text:?}: step {} ({part:?}) is not a non-negative integer (write e.g. 2,2,1,1)",
+                i + 1
+            )
+        })?;
+        if j == 0 || j >= n {
+            return Err(format!(
+                "--pattern: {text:?}: step {} is {j}, outside 1..{} (the next contact is j places on, j = 1..n-1 for n = {n})",
+                i + 1,
+                n - 1
+            ));
+        }
+        steps.push(j as usize);
     }
+    if steps.len() > MAX_PATTERN {
+        return Err(format!("--pattern: {} steps, more than {MAX_PATTERN}", steps.len()));
+    }
+    Ok(steps)
+}
+
+/// The validated request, or a usage error naming the flag.
+fn validate(a: &OrbitArgs) -> Result<Request, String> {
+    if ![3, 4, 6].contains(&a.n) {
+        return Err(format!(
+            "--n: n = {}: orbit certificates need a rational cos(2 pi/n), n in {{3, 4, 6}}",
+            a.n
+        ));
+    }
+    let kappa = parse_user_number(&a.kappa).map_err(|e| format!("--kappa: {e}"))?;
+    let gamma = parse_user_number(&a.gamma).map_err(|e| format!("--gamma: {e}"))?;
+    if let Err(e) = crate::certify::check_body(a.n, &kappa, &gamma) {
+        let flag = match e {
+            BodyError::UnsupportedN(_) => "--n",
+            BodyError::KappaNotPositive => "--kappa",
+            BodyError::GammaOutOfRange => "--gamma",
+        };
+        return Err(format!("{flag}: {e}"));
+    }
+    let pattern = a.pattern.as_deref().map(|p| parse_pattern(p, a.n)).transpose()?;
+    if a.max_depth > chatter_kernel::orbit::MAX_DEPTH {
+        return Err(format!(
+            "--max-depth: {} is more than the kernel's limit {}",
+            a.max_depth,
+            chatter_kernel::orbit::MAX_DEPTH
+        ));
+    }
+    Ok(Request { n: a.n, kappa, gamma, pattern, drops: a.drops, max_depth: a.max_depth })
 }
 
 pub fn run(a: OrbitArgs, env: &Env) -> Outcome {
-    let (kappa, gamma) = match (parse_user_number(&a.kappa), parse_user_number(&a.gamma)) {
-        (Ok(k), Ok(g)) => (k, g),
-        (Err(e), _) => return Outcome::Usage(format!("--kappa: {e}")),
-        (_, Err(e)) => return Outcome::Usage(format!("--gamma: {e}")),
+    let req = match validate(&a) {
+        Ok(r) => r,
+        Err(e) => return Outcome::Usage(e),
     };
-    let head = format!("n={} kappa={} gamma={}", a.n, kappa, gamma);
-    let req = Request {
-        n: a.n,
-        kappa,
-        gamma,
-        pattern: a.pattern.clone(),
-        drops: a.drops,
-        max_depth: a.max_depth.min(chatter_kernel::orbit::MAX_DEPTH),
-    };
+    let head = format!("n={} kappa={} gamma={}", req.n, req.kappa, req.gamma);
+    let start = Instant::now();
     let result = certify_orbit(&req, &env.backends);
+    let elapsed = start.elapsed();
     if let (Ok(found), Some(path)) = (&result, &a.output) {
         if let Err(e) = std::fs::write(path, write_orbit(&found.certificate)) {
             return Outcome::Usage(format!("cannot write {}: {e}", path.display()));
         }
     }
+    match &result {
+        Err(Failure::Body(s)) => return Outcome::Usage(s.clone()),
+        Err(Failure::Internal(s)) => return Outcome::Internal(s.clone()),
+        _ => {}
+    }
     let out = a.output.as_ref().map(|p| p.display().to_string());
+    if a.json {
+        let times = a.timings.then(|| {
+            let kernel =
+                result.as_ref().map_or(Duration::ZERO, |f| Duration::from_secs_f64(f.kernel_seconds));
+            (elapsed.saturating_sub(kernel), kernel)
+        });
+        emit_report(&crate::report::orbit::of(&req, &result, &env.backends, out, times));
+        return Outcome::from_answer(result.is_ok());
+    }
     match &result {
         Ok(f) => {
-            if a.json {
-                let v = serde_json::json!({
-                    "command": "certify-orbit",
-                    "status": "certified",
-                    "n": a.n, "kappa": crate::exact::to_canonical(&req.kappa), "gamma": crate::exact::to_canonical(&req.gamma),
-                    "claim": "CompleteChatterFromSet",
-                    "pattern": f.pattern,
-                    "fixed_point": f.fixed_point,
-                    "eigenvalues": f.eigenvalues,
-                    "alpha": f.scales[0], "beta": f.scales[1], "ratio": f.scales[2], "period_time": f.scales[3],
-                    "delta": f.delta,
-                    "sub_boxes": f.boxes,
-                    "kernel_seconds": f.kernel_seconds,
-                    "output": out,
-                });
-                emit(&v.to_string());
-            } else {
-                let written = out.map_or(" (no -o: not written)".to_string(), |p| format!(" -> {p}"));
-                emit(&format!(
-                    "CERTIFIED {head} claim=CompleteChatterFromSet: pattern {:?}, fixed point ({:.6}, {:.6}, {:.6}), eigenvalues ({:.5}, {:.5}, {:.5}), alpha {:.5}, beta {:.5}, alpha/beta {:.5}; X = x* + A [-delta, delta]^3 with delta = {:e}, {} sub-boxes, kernel {:.2} s ({} + {}){written}",
-                    f.pattern,
-                    f.fixed_point[0],
-                    f.fixed_point[1],
-                    f.fixed_point[2],
-                    f.eigenvalues[0],
-                    f.eigenvalues[1],
-                    f.eigenvalues[2],
-                    f.scales[0],
-                    f.scales[1],
-                    f.scales[2],
-                    f.delta,
-                    f.boxes,
-                    f.kernel_seconds,
-                    env.backends[0].name,
-                    env.backends[1].name
-                ));
-            }
+            let written = out.map_or(" (no -o: not written)".to_string(), |p| format!(" -> {p}"));
+            emit(&format!(
+                "CERTIFIED {head} claim=CompleteChatterFromSet: pattern {:?}, fixed point ({:.6}, {:.6}, {:.6}), eigenvalues ({:.5}, {:.5}, {:.5}), alpha {:.5}, beta {:.5}, alpha/beta {:.5}; X = x* + A [-delta, delta]^3 with delta = {:e}, {} sub-boxes, kernel {:.2} s ({} + {}){written}",
+                f.pattern,
+                f.fixed_point[0],
+                f.fixed_point[1],
+                f.fixed_point[2],
+                f.eigenvalues[0],
+                f.eigenvalues[1],
+                f.eigenvalues[2],
+                f.scales[0],
+                f.scales[1],
+                f.scales[2],
+                f.delta,
+                f.boxes,
+                f.kernel_seconds,
+                env.backends[0].name,
+                env.backends[1].name
+            ));
             Outcome::Success
         }
         Err(e) => {
-            if a.json {
-                let v = serde_json::json!({
-                    "command": "certify-orbit",
-                    "status": "not-certified",
-                    "n": a.n, "kappa": crate::exact::to_canonical(&req.kappa), "gamma": crate::exact::to_canonical(&req.gamma),
-                    "failure": failure_kind(e),
-                    "reason": e.to_string(),
-                });
-                emit(&v.to_string());
-            } else {
-                emit(&format!("NOT CERTIFIED {head}: {e}"));
-            }
-            match e {
-                Failure::Internal(s) => Outcome::Internal(s.clone()),
-                Failure::Body(s) => Outcome::Usage(s.clone()),
-                _ => Outcome::Negative,
-            }
+            let code = crate::report::orbit::Reason::of(e).name();
+            emit(&format!("NOT CERTIFIED {head}: [{code}] {e}"));
+            Outcome::Negative
         }
     }
 }

@@ -26,6 +26,7 @@ pub mod error;
 pub mod finder;
 pub mod largest_gamma;
 pub mod map;
+pub mod orbit;
 pub mod prove;
 pub mod refute;
 pub mod simulate;
@@ -154,6 +155,7 @@ pub fn schemas() -> Vec<(&'static str, serde_json::Value)> {
         one::<error::ErrorReport>(),
         one::<largest_gamma::LargestGammaReport>(),
         one::<map::MapSummary>(),
+        one::<orbit::CertifyOrbitReport>(),
         one::<prove::ProveReport>(),
         one::<refute::RefuteReport>(),
         one::<simulate::SimulateReport>(),

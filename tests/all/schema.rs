@@ -157,6 +157,52 @@ fn every_command_output_validates_against_its_schema() {
         (vec!["simulate", "--n", "5", "--exact", "--json"], 0, "chatter.simulate/1"),
         (vec!["simulate", "--n", "65", "--json"], 2, "chatter.error/1"),
         (vec!["verify", "no-such-file.ron", "--json"], 2, "chatter.verify/1"),
+        (
+            vec![
+                "certify-orbit",
+                "--n",
+                "3",
+                "--kappa",
+                "1/8",
+                "--gamma",
+                "3/20",
+                "--pattern",
+                "2,2,1,1",
+                "-o",
+                "orbit.ron",
+                "--json",
+                "--timings",
+            ],
+            0,
+            "chatter.certify-orbit/1",
+        ),
+        (vec!["verify", "orbit.ron", "--json"], 0, "chatter.verify/1"),
+        (
+            vec!["certify-orbit", "--n", "3", "--kappa", "1/8", "--gamma", "1/5", "--json"],
+            1,
+            "chatter.certify-orbit/1",
+        ),
+        (
+            vec![
+                "certify-orbit",
+                "--n",
+                "3",
+                "--kappa",
+                "1/8",
+                "--gamma",
+                "1/5",
+                "--pattern",
+                "2,2,1,1",
+                "--json",
+            ],
+            1,
+            "chatter.certify-orbit/1",
+        ),
+        (
+            vec!["certify-orbit", "--n", "5", "--kappa", "1/8", "--gamma", "1/5", "--json"],
+            2,
+            "chatter.error/1",
+        ),
     ];
     for (args, code, want) in cases {
         let (name, _) = run_valid(&args, p, code);
@@ -190,6 +236,7 @@ fn default_json_is_byte_stable_and_timings_are_opt_in() {
         &["refute", "--n", "4", "--kappa", "1/6", "--gamma", "1/10", "--json"],
         &["classify", "--n", "4", "--kappa", "1/6", "--gamma", "1/100", "--json"],
         &["simulate", "--n", "4", "--runs", "8", "--json"],
+        &["certify-orbit", "--n", "3", "--kappa", "1/8", "--gamma", "1/5", "--pattern", "2,2,1,1", "--json"],
     ] {
         let (a, b) = (chatter(args, d.path()), chatter(args, d.path()));
         assert_eq!(a.stdout, b.stdout, "{args:?} differs between runs");
@@ -211,6 +258,8 @@ fn errors_under_json_are_json_on_stdout_with_the_same_exit_status() {
         (&["classify", "--n", "3", "--velocity", "1,2", "--json"], 2),
         (&["bodies", "--prism", "4", "--json"], 2),
         (&["check-proof", "missing.ron", "--json"], 2),
+        (&["certify-orbit", "--n", "5", "--kappa", "1/8", "--gamma", "3/20", "--json"], 2),
+        (&["certify-orbit", "--kappa", "1/8", "--gamma", "3/20", "--pattern", "2,x", "--json"], 2),
     ] {
         let o = chatter(args, d.path());
         assert_eq!(o.status.code(), Some(code), "{args:?}");
@@ -237,8 +286,13 @@ fn verdicts_use_one_vocabulary() {
         &["refute", "--n", "4", "--kappa", "1/6", "--gamma", "1/100", "--json"],
         &["verify", "certificates/valid", "--json"],
         &["check-proof", "proofs/square.ron", "--json"],
+        &["certify-orbit", "--n", "3", "--kappa", "1/8", "--gamma", "1/5", "--json"],
     ] {
-        let dir = if args[0] == "certify" || args[0] == "refute" { d.path().to_path_buf() } else { root() };
+        let dir = if args[0] == "certify" || args[0] == "refute" || args[0] == "certify-orbit" {
+            d.path().to_path_buf()
+        } else {
+            root()
+        };
         let o = chatter(args, &dir);
         let v: Value = serde_json::from_slice(&o.stdout).unwrap();
         assert!(words.contains(&v["verdict"].as_str().unwrap()), "{args:?}: {}", v["verdict"]);
