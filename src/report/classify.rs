@@ -245,6 +245,11 @@ pub struct ClassifyReport {
     /// A batch of random drops.
     pub drops: Option<Drops>,
     pub certificate: CertificateSummary,
+    /// Only where the CC criterion fails and some simulated drop ends in CC (regular polygons,
+    /// not the rod): the orbit certificate attempted there (docs/orbit-certificates.md), whether
+    /// the kernel accepted it, what it proves, and what that says about the paper's Conjecture 1.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub orbit: Option<super::classify_orbit::OrbitSummary>,
     /// General convex bodies only (absent otherwise): the body, the conjectural product
     /// criteria and the PCC lemma per adjacent pair (docs/model.md §11.11). For them `n` is the
     /// number of contacts, `kappa` is 0, and `cc`, `cc_threshold` repeat the counter-clockwise
@@ -356,6 +361,7 @@ pub fn classify(r: &ClassifyRequest) -> Result<ClassifyReport, String> {
     let finder = if r.n >= 3 { float_body(r, polygon).map(|fb| finders(&fb)) } else { None };
     let shape = if r.n == 2 { Shape::Rod } else { Shape::Polygon(r.n) };
     let drops = Model::new(shape, r.kappa.clone(), r.gamma.clone()).ok().map(|m| drops(&m));
+    let orbit = super::classify_orbit::orbit_attempt(r.n, &r.kappa, &r.gamma, &cc, drops.as_ref());
     Ok(ClassifyReport {
         schema: ClassifyReport::SCHEMA,
         n: r.n,
@@ -371,6 +377,7 @@ pub fn classify(r: &ClassifyRequest) -> Result<ClassifyReport, String> {
         finder,
         drops,
         certificate: certificate(r),
+        orbit,
         general_body: None,
     })
 }
@@ -427,6 +434,9 @@ impl ClassifyReport {
             (None, Some(r)) if self.field.is_some() => format!("certificate: none ({r})"),
             (None, r) => format!("certificate: none: {}", r.clone().unwrap_or_default()),
         });
+        if let Some(o) = &self.orbit {
+            super::classify_orbit::orbit_lines(o, &mut l);
+        }
         l
     }
 

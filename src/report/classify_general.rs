@@ -197,6 +197,7 @@ pub fn classify_general(
         finder: None,
         drops: Some(drops(&Model::convex(body))),
         certificate,
+        orbit: None,
         general_body: Some(general),
     })
 }

@@ -21,6 +21,7 @@ pub mod bodies;
 pub mod certify;
 pub mod classify;
 pub mod classify_general;
+pub mod classify_orbit;
 pub mod convex;
 pub mod error;
 pub mod finder;

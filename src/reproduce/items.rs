@@ -13,12 +13,13 @@ use crate::plot::trajectory::TrajectoryFigure;
 use crate::plot::{Figure, png_bytes, svg_string};
 use crate::simulate::{Arithmetic, Initial, Model, Options, counts, pattern, simulate, simulate_many};
 use crate::spectral::criteria::{cc_criterion, goyal_threshold, pcc_criterion, rod_cc_profile};
+use crate::spectral::eigen::Dominant;
 use crate::sweep::curves::{self, row};
 use crate::sweep::grid::{Axis, Grid, Shard, Variable};
 use crate::sweep::point::Tasks;
 use crate::sweep::summary::Summary;
 use crate::sweep::{self, Request as SweepRequest};
-use chatter_kernel::certificate::write;
+use chatter_kernel::certificate::{Claim, OrbitSet, write, write_orbit};
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::model::{Polygon, Shape, pcc_quadratic};
 use chatter_kernel::verify::{MALACHITE, NUM, Verdict as KernelVerdict, verify_proof, verify_text};
@@ -252,19 +253,61 @@ pub fn pcc_n4(_ctx: &Context, r: &mut Report) -> Result<(), String> {
     Ok(())
 }
 
-/// The n = 3 band: above the CC criterion's threshold, random drops still chatter.
+/// The orbit certificate of the band point: made by the producer from the drops' pattern, written
+/// to certificates/NAME.ron, then read back and re-verified by the kernel on both backends (the
+/// producer's verdict is not trusted). `Ok(None)` with the producer's reason if it fails.
+fn orbit_certificate(
+    ctx: &Context,
+    name: &str,
+    body: &Polygon<Q>,
+    pattern: Option<Vec<usize>>,
+) -> Result<Result<(String, crate::orbit::Found, usize), String>, String> {
+    use crate::report::classify_orbit::{ORBIT_DEPTH, ORBIT_DROPS};
+    let req = crate::orbit::Request {
+        n: body.n() as u64,
+        kappa: body.kappa().clone(),
+        gamma: body.gamma().clone(),
+        pattern,
+        drops: ORBIT_DROPS,
+        max_depth: ORBIT_DEPTH,
+    };
+    let found = match crate::orbit::certify_orbit(&req, &[MALACHITE, NUM]) {
+        Ok(f) => f,
+        Err(e) => return Ok(Err(e.to_string())),
+    };
+    let rel = format!("certificates/{name}.ron");
+    let path = ctx.out.join(&rel);
+    std::fs::write(&path, write_orbit(&found.certificate))
+        .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    let text = std::fs::read_to_string(&path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    match verify_text(&text, ParseLimits::default(), &[MALACHITE, NUM]) {
+        KernelVerdict::Accepted(a) if a.claim == Claim::CompleteChatterFromSet => {
+            Ok(Ok((rel, found, a.orbit_boxes.unwrap_or(0))))
+        }
+        KernelVerdict::Accepted(a) => Err(format!("{rel}: accepted with the wrong claim {}", a.claim.name())),
+        KernelVerdict::Rejected(e) => Err(format!("{rel}: rejected on re-verification: {}", e.message)),
+        KernelVerdict::Disagree(s) => Err(format!("{rel}: the backends disagree: {s}")),
+    }
+}
+
+/// The n = 3 band: above the CC criterion's threshold, random drops still chatter, and an orbit
+/// certificate proves CC from a set of states there: Conjecture 1 (i) ⇒ (iii) is refuted.
 pub fn band(ctx: &Context, r: &mut Report) -> Result<(), String> {
     let (kappa, gamma) = (q(1, 8), q(3, 20));
     let body = Polygon::new(3, kappa.clone(), gamma.clone()).map_err(|e| e.to_string())?;
-    let (holds, _, dominant) = cc_criterion(&body);
+    let (holds, mut s1, dominant) = cc_criterion(&body);
+    let s1_poly = s1.char_poly.to_string();
+    let s1_eigen = s1.describe(10).join("; ");
     let finder = find_cone(&FloatBody::new(&body), Seed::Translation, &FinderConfig::default()).label();
-    let model = Model::from_body(&Shape::Polygon(body));
+    let model = Model::from_body(&Shape::Polygon(body.clone()));
     let runs = ctx.plan.point_drops;
     let c = counts(&simulate_many(&model, 0, runs, Arithmetic::Float, &Options::new(200), &|| {}));
     let mut opts = Options::new(200);
     opts.record = true;
     let run = simulate(&model, &Initial::RandomDrop { seed: 0 }, Arithmetic::Float, &opts);
-    let cycle = pattern::find(&run.sequence)
+    let found_cycle = pattern::find(&run.sequence);
+    let cycle = found_cycle
+        .as_ref()
         .map(|p| {
             format!(
                 "{} (steps S_j, j = {:?})",
@@ -284,25 +327,84 @@ pub fn band(ctx: &Context, r: &mut Report) -> Result<(), String> {
         &TrajectoryFigure::new(&run, &model.float, title),
         "A drop in the n = 3 band (κ = 1/8, γ = 0.15): it settles into the cycle 2,1,0,1 and the intervals shrink geometrically (panel b)",
     )?;
+    // The orbit certificate, with the pattern the drop settled into (the producer tries every
+    // phase of it).
+    let steps = found_cycle.map(|p| pattern::steps(&p.cycle, 3));
+    let orbit = orbit_certificate(ctx, "orbit-n3-kappa1_8-gamma3_20", &body, steps)?;
+    let criterion = format!(
+        "S₁'s dominant eigenvalue is {} (criterion {})",
+        dominant.describe(),
+        if holds { "holds" } else { "fails" }
+    );
+    let negative = dominant == Dominant::Negative;
+    let mut evidence = vec![
+        format!(
+            "outcomes of {runs} drops: CC {}, PCC {}, ICC {}, undecided {}, simultaneous {}",
+            c[0], c[1], c[2], c[3], c[4]
+        ),
+        format!("seed 0: {} — {}", run.outcome, run.decision.describe()),
+        format!(
+            "S₁ at κ = 1/8, γ = 3/20 (exact, Sturm sequences): det(tI − S₁) = {s1_poly}; eigenvalues {s1_eigen}; dominant: {}",
+            dominant.describe()
+        ),
+    ];
+    let sims = format!(
+        "the float finder reports {finder}, and {} of {runs} random drops end in CC; a drop settles into the cycle {cycle} with contraction {ratio} per impact",
+        c[0]
+    );
+    let ours = match &orbit {
+        Ok((rel, found, boxes)) => {
+            let cert = &found.certificate;
+            let pat = found.pattern.iter().map(usize::to_string).collect::<Vec<_>>().join(",");
+            let x = match &cert.set {
+                OrbitSet::Parallelepiped { delta, .. } => format!(
+                    "X = x* + A[−δ, δ]³ with δ = {delta} around the attracting cycle x* ≈ ({:.6}, {:.6}, {:.6}) of the return map (A: its eigenvectors)",
+                    found.fixed_point[0], found.fixed_point[1], found.fixed_point[2]
+                ),
+                OrbitSet::Box { .. } => "X a box".into(),
+            };
+            let fails = if negative {
+                "S₁'s dominant eigenvalue is negative (the CC criterion (iii) fails)".to_string()
+            } else {
+                format!("the CC criterion (iii) fails (dominant: {})", dominant.describe())
+            };
+            if !holds {
+                evidence.push(format!(
+                    "Conjecture 1 (i) ⇒ (iii) is refuted at κ = 1/8, γ = 3/20 by the certificate `{rel}`: CC is possible (proved from X), but {fails}"
+                ));
+            }
+            evidence.push(format!(
+                "orbit certificate `{rel}` (docs/orbit-certificates.md, format version 5, claim CompleteChatterFromSet): pattern {pat}, {x}, bounds ρ = {}, λ = {}, T̄ = {}; written, read back and accepted by the kernel on both backends (malachite and num-rational) over {boxes} sub-boxes: every motion whose state right after an impact lies in X (up to relabelling and scaling) follows the pattern for ever and ends in complete chatter (not proved: CC from every drop)",
+                cert.rho, cert.lambda, cert.period
+            ));
+            if holds {
+                format!(
+                    "at κ = 1/8, γ = 0.15 {criterion}; {sims}; the orbit certificate `{rel}` proves CC from an explicit set of post-impact states"
+                )
+            } else {
+                format!(
+                    "Conjecture 1 (i) ⇒ (iii) is refuted at κ = 1/8, γ = 0.15: the orbit certificate `{rel}`, accepted by the kernel on both backends, proves CC from an explicit set of post-impact states (not from every drop), while {criterion}; {sims}"
+                )
+            }
+        }
+        Err(why) => {
+            evidence.push(format!("no orbit certificate: {why} (simulation evidence only)"));
+            format!("at κ = 1/8, γ = 0.15 {criterion}, yet {sims}")
+        }
+    };
+    evidence.push("the maps below count every grid point where this happens (summary.json: simulated-chatter-criterion-fails)".into());
     r.items.push(Item {
         title: "The n = 3 band above the threshold where drops still chatter".into(),
         paper: "Conjecture 1: CC or PCC for suitable initial conditions ⇔ an effectively invariant cone ⇔ S₁ has a real positive dominant eigenvalue; figure “simulations”: the 200-impact level curve follows the eigenvalue curve.".into(),
-        ours: format!(
-            "at κ = 1/8, γ = 0.15 S₁'s dominant eigenvalue is {} (criterion {}), the float finder reports {finder}, yet {} of {runs} random drops end in CC; a drop settles into the cycle {cycle} with contraction {ratio} per impact",
-            dominant.describe(),
-            if holds { "holds" } else { "fails" },
-            c[0]
-        ),
+        ours,
         verdict: Verdict::of(holds || c[0] + c[1] == 0),
-        evidence: vec![
-            format!("outcomes of {runs} drops: CC {}, PCC {}, ICC {}, undecided {}, simultaneous {}", c[0], c[1], c[2], c[3], c[4]),
-            format!("seed 0: {} — {}", run.outcome, run.decision.describe()),
-            "the maps below count every grid point where this happens (summary.json: simulated-chatter-criterion-fails)".into(),
-        ],
+        evidence,
         commands: vec![
-            "chatter classify --n 3 --kappa 1/8 --gamma 0.15".into(),
+            "chatter classify --n 3 --kappa 1/8 --gamma 0.15 --orbit-out orbit.ron && chatter verify orbit.ron".into(),
             "chatter simulate --n 3 --kappa 1/8 --gamma 0.15 --runs 100".into(),
             "chatter simulate --n 3 --kappa 1/8 --gamma 0.15 --plot band.png".into(),
+            "chatter certify-orbit --n 3 --kappa 1/8 --gamma 3/20 --pattern 2,2,1,1 -o orbit.ron && chatter verify orbit.ron".into(),
+            "chatter verify certificates/orbit-n3-kappa1_8-gamma3_20.ron".into(),
         ],
         figures: vec![fig],
     });

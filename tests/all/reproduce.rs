@@ -65,6 +65,8 @@ fn reproduce_quick_writes_a_report_that_a_browser_renders() {
     ] {
         assert!(out.join(dir).exists(), "{dir} missing");
     }
+    // The band item refutes Conjecture 1 (i) => (iii) with the orbit certificate it wrote.
+    crate::orbit_classify::check_reproduce_output(&out);
     let figures = md.matches("![").count();
     assert!(figures >= 9, "{figures} figures");
     let html = std::fs::read_to_string(out.join("report.html")).unwrap();

@@ -84,6 +84,11 @@ fn every_command_output_validates_against_its_schema() {
             "chatter.classify/1",
         ),
         (
+            vec!["classify", "--n", "3", "--kappa", "1/8", "--gamma", "3/20", "--json"],
+            0,
+            "chatter.classify/1",
+        ),
+        (
             vec!["classify", "--n", "5", "--kappa", "1/20", "--gamma", "1/100", "--json"],
             0,
             "chatter.classify/1",
