@@ -21,7 +21,11 @@ pub fn cc_threshold(n: u64, kappa: &Q, bits: u32) -> Option<(Q, Q)> {
     let lo = match rational_cos::<Q>(n) {
         Some(c1) => cc_profile(&Family { n, c1, kappa: kappa.clone() }).sup_lower_bound(bits),
         None => {
-            let fam = Family { n, c1: cosine(n as usize), kappa: <crate::spectral::number_field::Nf as crate::exact::OrderedField>::from_q(kappa) };
+            let fam = Family {
+                n,
+                c1: cosine(n as usize),
+                kappa: <crate::spectral::number_field::Nf as crate::exact::OrderedField>::from_q(kappa),
+            };
             cc_profile(&fam).sup_lower_bound(bits)
         }
     }?;
@@ -62,7 +66,11 @@ impl Drops {
                 parts.push(format!("{name} {k}"));
             }
         }
-        let pat = self.patterns.first().map(|(p, k)| format!(", pattern {} x{k}", steps_text(p))).unwrap_or_default();
+        let pat = self
+            .patterns
+            .first()
+            .map(|(p, k)| format!(", pattern {} x{k}", steps_text(p)))
+            .unwrap_or_default();
         format!("{}/{}{pat}", parts.join(" "), self.runs)
     }
 }
@@ -74,7 +82,10 @@ pub fn steps_text(p: &[usize]) -> String {
 
 /// A canonical phase of a cycle of steps: the lexicographically largest rotation.
 pub fn canonical(p: &[usize]) -> Vec<usize> {
-    (0..p.len().max(1)).map(|r| p[r..].iter().chain(&p[..r]).copied().collect::<Vec<_>>()).max().unwrap_or_default()
+    (0..p.len().max(1))
+        .map(|r| p[r..].iter().chain(&p[..r]).copied().collect::<Vec<_>>())
+        .max()
+        .unwrap_or_default()
 }
 
 /// Simulates `runs` random drops (seeds 1..=runs, `f64`, `budget` impacts each).
@@ -97,7 +108,7 @@ pub fn drops(n: u64, kappa: &Q, gamma: &Q, runs: u64, budget: usize) -> Drops {
             }
         }
     }
-    d.patterns.sort_by(|a, b| b.1.cmp(&a.1));
+    d.patterns.sort_by_key(|p| std::cmp::Reverse(p.1));
     d
 }
 
@@ -113,7 +124,10 @@ pub enum OrbitVerdict {
         delta: f64,
         boxes: usize,
     },
-    Failed { kind: &'static str, reason: String },
+    Failed {
+        kind: &'static str,
+        reason: String,
+    },
 }
 
 impl OrbitVerdict {
@@ -222,9 +236,22 @@ pub fn point(
 }
 
 /// Whether the producer certifies at gamma (pattern given).
-pub fn certifies(n: u64, kappa: &Q, gamma: &Q, pattern: &[usize], backends: &[Backend], hints: &mut Vec<[f64; 3]>) -> bool {
-    let req =
-        Request { n, kappa: kappa.clone(), gamma: gamma.clone(), pattern: Some(pattern.to_vec()), drops: 0, max_depth: 1 };
+pub fn certifies(
+    n: u64,
+    kappa: &Q,
+    gamma: &Q,
+    pattern: &[usize],
+    backends: &[Backend],
+    hints: &mut Vec<[f64; 3]>,
+) -> bool {
+    let req = Request {
+        n,
+        kappa: kappa.clone(),
+        gamma: gamma.clone(),
+        pattern: Some(pattern.to_vec()),
+        drops: 0,
+        max_depth: 1,
+    };
     match certify_orbit_from(&req, backends, hints) {
         Ok(f) => {
             hints.insert(0, f.fixed_point);
@@ -258,4 +285,59 @@ pub fn edge(
         }
     }
     (lo, hi)
+}
+
+/// One row of the triangle's band table (docs/orbit-certificates.md §7), for `chatter reproduce`.
+#[derive(Clone, Debug)]
+pub struct Row {
+    pub kappa: Q,
+    /// An exact enclosure of gamma*(kappa) of width 2^-60 ([`cc_threshold`]).
+    pub gamma_star: (Q, Q),
+    /// The requested gamma / gamma*.
+    pub ratio: f64,
+    /// The rational gamma tried (denominator 10^5, strictly above gamma*).
+    pub gamma: Q,
+    /// The producer's answer for (2, 2, 1, 1): certified = accepted by the kernel on both backends.
+    pub orbit: OrbitVerdict,
+    /// The exact S_1^2 S_2^2 criterion at (kappa, gamma) (src/spectral/cycle.rs).
+    pub cycle: bool,
+    /// The exact S_1 criterion at (kappa, gamma): false, as gamma > gamma*.
+    pub cc: bool,
+    /// `runs` random `f64` drops (600 impacts each).
+    pub drops: Drops,
+}
+
+/// The n = 3 band table at r gamma*(kappa), up to ~90 s a point (docs/orbit-certificates.md §7.1, §7.5).
+pub fn band_rows(kappas: &[Q], ratios: &[f64], runs: u64) -> Vec<Row> {
+    use chatter_kernel::verify::{MALACHITE, NUM};
+    let mut rows = Vec::new();
+    for kappa in kappas {
+        let Some(th) = cc_threshold(3, kappa, 60) else { continue };
+        let mut hints = Vec::new();
+        for &ratio in ratios {
+            let gamma = gamma_at(&th, ratio, 100_000);
+            let word = crate::spectral::cycle::CANDIDATE;
+            let p = point(
+                3,
+                kappa,
+                &gamma,
+                Some(vec![2, 2, 1, 1]),
+                runs,
+                Some(&word),
+                &[MALACHITE, NUM],
+                &mut hints,
+            );
+            rows.push(Row {
+                kappa: kappa.clone(),
+                gamma_star: th.clone(),
+                ratio,
+                gamma,
+                orbit: p.orbit,
+                cycle: p.cycle.unwrap_or(false),
+                cc: p.cc,
+                drops: p.drops,
+            });
+        }
+    }
+    rows
 }

@@ -425,7 +425,8 @@ pub fn eigenvalues(j: &[[f64; 3]; 3]) -> [C; 3] {
     let t = j[0][0] + j[1][1] + j[2][2];
     let s = j[0][0] * j[1][1] - j[0][1] * j[1][0] + j[0][0] * j[2][2] - j[0][2] * j[2][0] + j[1][1] * j[2][2]
         - j[1][2] * j[2][1];
-    let d = j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) - j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0])
+    let d = j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1])
+        - j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0])
         + j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
     let f = |l: f64| ((l - t) * l + s) * l - d;
     let df = |l: f64| (3.0 * l - 2.0 * t) * l + s;
@@ -576,7 +577,13 @@ impl FixedPoint {
 fn fixed_point_info(maps: &FloatMaps, pattern: &[usize], x: [f64; 3]) -> Option<FixedPoint> {
     let (_, [alpha, beta, time], margin) = float_period(maps, pattern, &x, false)?;
     let j = jacobian_of(maps, pattern, &x, false)?;
-    Some(FixedPoint { pattern: pattern.to_vec(), x, eigenvalues: eigenvalues(&j), margin, scales: [alpha, beta, time] })
+    Some(FixedPoint {
+        pattern: pattern.to_vec(),
+        x,
+        eigenvalues: eigenvalues(&j),
+        margin,
+        scales: [alpha, beta, time],
+    })
 }
 
 /// Every fixed point of R_P found for the phases of `given`: by iterating the strict map from a
@@ -607,7 +614,9 @@ pub fn fixed_points(maps: &FloatMaps, given: &[usize], hints: &[[f64; 3]]) -> Ve
         for a in [0.25, 1.0, 2.0] {
             for b in [0.1, 1.0] {
                 for c in [-2.0, -0.5, 0.5] {
-                    if let Some(f) = newton(maps, &pattern, &[a, b, c]).and_then(|x| fixed_point_info(maps, &pattern, x)) {
+                    if let Some(f) =
+                        newton(maps, &pattern, &[a, b, c]).and_then(|x| fixed_point_info(maps, &pattern, x))
+                    {
                         push(f, &mut out);
                     }
                 }
@@ -657,12 +666,18 @@ pub fn certify_orbit_from(req: &Request, backends: &[Backend], hints: &[[f64; 3]
         let what = if f.margin <= 0.0 {
             return Err(Failure::PatternNotStable(format!(
                 "the fixed point {:?} of R_P for {:?} (eigenvalues {}) breaks the pattern: condition 1's margin there is {:.3e} (a competing contact lands first or the target moves up)",
-                f.x, f.pattern, f.eigen_text(), f.margin
+                f.x,
+                f.pattern,
+                f.eigen_text(),
+                f.margin
             )));
         } else if f.radius() >= 1.0 {
             format!("is not attracting: eigenvalues {} (largest modulus {:.5})", f.eigen_text(), f.radius())
         } else {
-            format!("has alpha = {:.5}, beta = {:.5}: not both below 1 with alpha < beta", f.scales[0], f.scales[1])
+            format!(
+                "has alpha = {:.5}, beta = {:.5}: not both below 1 with alpha < beta",
+                f.scales[0], f.scales[1]
+            )
         };
         return Err(Failure::NoAttractingCycle(format!(
             "the fixed point {:?} of R_P for {:?} (condition 1 holds there, margin {:.3e}) {what}",
@@ -676,7 +691,9 @@ pub fn certify_orbit_from(req: &Request, backends: &[Backend], hints: &[[f64; 3]
         let Some((axes, k, norm)) = axes_and_periods(&j, max_k) else {
             last = Failure::NoContraction(format!(
                 "the fixed point {:?} of R_P for {:?} (eigenvalues {}) has no basis in which up to {max_k} periods contract the box norm",
-                f.x, f.pattern, f.eigen_text()
+                f.x,
+                f.pattern,
+                f.eigen_text()
             ));
             continue;
         };
