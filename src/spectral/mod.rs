@@ -4,6 +4,7 @@
 
 pub mod convex;
 pub mod criteria;
+pub mod cycle;
 pub mod eigen;
 pub mod number_field;
 pub mod poly;

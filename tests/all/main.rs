@@ -20,6 +20,7 @@ mod kernel;
 mod model;
 mod oracle_convex;
 mod orbit;
+mod orbit_band;
 mod orbit_classify;
 mod orbit_cli;
 mod plot;
