@@ -2,6 +2,7 @@
 //! paper's claim with "agrees" or "differs" and its evidence ([`items`]), written as report.md
 //! and report.html ([`report`]) with the figures (SVG and PNG).
 
+pub mod band_grid;
 pub mod items;
 pub mod report;
 
@@ -130,6 +131,7 @@ pub fn run(out: &Path, plan: Plan, step: &dyn Fn(&str)) -> Result<Report, String
     timed("triangle plate", &mut |r| items::triangle(&ctx, r))?;
     timed("PCC for n >= 4", &mut |r| items::pcc_n4(&ctx, r))?;
     timed("n = 3 band", &mut |r| items::band(&ctx, r))?;
+    timed("n = 3 band across kappa", &mut |r| band_grid::band_grid(&ctx, r))?;
     for n in [3, 4, 5] {
         timed(&format!("map n = {n}"), &mut |r| items::map(&ctx, n, r))?;
     }

@@ -222,7 +222,13 @@ fn each_failure_of_certify_orbit_is_reported_with_its_code_and_exit_status_1() {
         ),
         // The pattern has no attracting cycle there.
         (vec!["--gamma", "1/5", "--pattern", "2,2,1,1"], "no-attracting-cycle", "no attracting cycle found"),
-        (vec!["--gamma", "3/20", "--pattern", "1,2"], "no-attracting-cycle", "for the pattern [1, 2]"),
+        (vec!["--gamma", "3/20", "--pattern", "1,2"], "pattern-not-stable", "breaks the pattern"),
+        // Above the S_1^2 S_2^2 threshold gamma_c (docs/orbit-certificates.md §7.2): no fixed point.
+        (
+            vec!["--gamma", "763/5000", "--pattern", "2,2,1,1"],
+            "no-attracting-cycle",
+            "no attracting cycle found",
+        ),
     ];
     for (more, code, message) in &cases {
         let args = with(&base, more);
