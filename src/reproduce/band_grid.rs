@@ -7,6 +7,7 @@ use super::{Item, Report, Table, Verdict};
 use crate::exact::{Q, QExt};
 use crate::orbit::band::{OrbitVerdict, Row, band_rows, cc_threshold, drops, gamma_at};
 use crate::spectral::criteria::pcc_criterion;
+use crate::spectral::pcc_sign::pair_signs;
 use chatter_kernel::model::Polygon;
 
 /// The κ grid and the ratios γ/γ* of a run.
@@ -61,8 +62,14 @@ fn square_pcc(runs: u64) -> Result<String, String> {
     let body = Polygon::new(4, kappa.clone(), gamma.clone()).map_err(|e| e.to_string())?;
     let (holds, _) = pcc_criterion(&body);
     let d = drops(4, &kappa, &gamma, runs, 2000);
+    let signs = pair_signs(&body)?;
+    let alternation = match signs.signs {
+        Some(_) if signs.blocks_alternation() => "both eigenvectors of S₃S₁ other than that of the eigenvalue 1 have u₀u₁ > 0 (decided exactly in Q(√D)), so by the argument of docs/orbit-certificates.md §7.4 (not machine-checked) the alternation 0, 1, 0, … cannot go on for ever".to_string(),
+        Some(s) => format!("the signs of u₀u₁ on the eigenvectors of S₃S₁ other than that of the eigenvalue 1 are {s:?} (exact)"),
+        None => "S₃S₁ has no two distinct real eigenvalues besides 1".to_string(),
+    };
     Ok(format!(
-        "square, κ = 1/6, γ = 1/500: the PCC criterion (Conjecture 2) {} (exact); drops {}: no PCC orbit found (docs/orbit-certificates.md §7.4: the certificate format cannot express PCC, and in f64 the subdominant eigenvectors of S₃S₁ have u₀u₁ > 0, so the alternation cannot go on; not recomputed here)",
+        "square, κ = 1/6, γ = 1/500: the PCC criterion (Conjecture 2) {} (exact); drops {}; {alternation}; no PCC orbit certificate (the format cannot express PCC)",
         if holds { "holds" } else { "fails" },
         d.text()
     ))

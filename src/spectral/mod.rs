@@ -7,5 +7,6 @@ pub mod criteria;
 pub mod cycle;
 pub mod eigen;
 pub mod number_field;
+pub mod pcc_sign;
 pub mod poly;
 pub mod roots;

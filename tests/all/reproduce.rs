@@ -53,6 +53,7 @@ fn reproduce_quick_writes_a_report_that_a_browser_renders() {
         "The n = 3 band across κ: orbit certificates and the S₁²S₂² criterion — **differs**",
         "refute Conjecture 1 (i) ⇒ (iii) for the triangle at κ ∈ {1/20, 1/8, 3/10}",
         "the PCC criterion (Conjecture 2) holds (exact)",
+        "other than that of the eigenvalue 1 have u₀u₁ > 0 (decided exactly in Q(√D))",
         "The falling rod (Goyal's condition) — **agrees**",
         "pentagon certificates — **not checked yet**",
         "fit κ = 1/4",

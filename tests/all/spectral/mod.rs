@@ -3,4 +3,5 @@
 mod criteria;
 mod eigen;
 mod number_field;
+mod pcc_sign;
 mod poly;
