@@ -256,15 +256,21 @@ pub fn fixed_point(maps: &FloatMaps, pattern: &[usize]) -> Option<[f64; 3]> {
     None
 }
 
-/// Real eigenvalues and eigenvectors of a 3x3 matrix (`None` if some eigenvalue is not real).
-pub fn real_eigen(j: &[[f64; 3]; 3]) -> Option<([f64; 3], [[f64; 3]; 3])> {
-    // Characteristic polynomial λ³ - t λ² + s λ - d.
+/// (trace, sum of principal 2x2 minors, determinant): det(λI - j) = λ³ - t λ² + s λ - d.
+fn char_coefficients(j: &[[f64; 3]; 3]) -> (f64, f64, f64) {
     let t = j[0][0] + j[1][1] + j[2][2];
     let s = j[0][0] * j[1][1] - j[0][1] * j[1][0] + j[0][0] * j[2][2] - j[0][2] * j[2][0] + j[1][1] * j[2][2]
         - j[1][2] * j[2][1];
     let d = j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1])
         - j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0])
         + j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
+    (t, s, d)
+}
+
+/// Real eigenvalues and eigenvectors of a 3x3 matrix (`None` if some eigenvalue is not real).
+pub fn real_eigen(j: &[[f64; 3]; 3]) -> Option<([f64; 3], [[f64; 3]; 3])> {
+    // Characteristic polynomial λ³ - t λ² + s λ - d.
+    let (t, s, d) = char_coefficients(j);
     // Depressed cubic: λ = y + t/3.
     let p = s - t * t / 3.0;
     let q = -2.0 * t * t * t / 27.0 + t * s / 3.0 - d;
@@ -422,12 +428,7 @@ fn csub(a: C, b: C) -> C {
 
 /// The three eigenvalues of a 3x3 matrix as complex numbers, by modulus, largest first.
 pub fn eigenvalues(j: &[[f64; 3]; 3]) -> [C; 3] {
-    let t = j[0][0] + j[1][1] + j[2][2];
-    let s = j[0][0] * j[1][1] - j[0][1] * j[1][0] + j[0][0] * j[2][2] - j[0][2] * j[2][0] + j[1][1] * j[2][2]
-        - j[1][2] * j[2][1];
-    let d = j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1])
-        - j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0])
-        + j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
+    let (t, s, d) = char_coefficients(j);
     let f = |l: f64| ((l - t) * l + s) * l - d;
     let df = |l: f64| (3.0 * l - 2.0 * t) * l + s;
     // A real root: bracket by sign change, bisect, then Newton.

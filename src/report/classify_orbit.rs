@@ -6,6 +6,7 @@
 //! the paper's Conjecture 1; or why no certificate was made.
 
 use super::classify::{Criterion, Drops};
+use super::orbit::Diagnostics;
 use super::{Number, Verdict};
 use crate::orbit::{Failure, Found, Request, certify_orbit, find_pattern};
 use crate::simulate::Outcome;
@@ -41,22 +42,6 @@ pub enum OrbitSetReport {
     Box { lo: [Number; 3], hi: [Number; 3] },
 }
 
-/// The attracting cycle behind the certificate, in `f64` (the producer's, untrusted; the
-/// kernel checks the set X exactly).
-#[derive(Clone, Debug, Serialize, JsonSchema)]
-pub struct OrbitCycle {
-    /// The fixed point x* of the return map R_P.
-    pub fixed_point: [f64; 3],
-    /// Eigenvalues of the Jacobian of R_P at x*.
-    pub eigenvalues: [f64; 3],
-    /// Position scale α, velocity scale β per period, their ratio α/β (the flight-time ratio)
-    /// and the period's flight time T, at x*.
-    pub alpha: f64,
-    pub beta: f64,
-    pub ratio: f64,
-    pub period_time: f64,
-}
-
 /// An orbit certificate attempted by `classify` (docs/orbit-certificates.md).
 #[derive(Clone, Debug, Serialize, JsonSchema)]
 pub struct OrbitSummary {
@@ -78,7 +63,7 @@ pub struct OrbitSummary {
     pub lambda: Option<Number>,
     pub period: Option<Number>,
     /// The attracting cycle in `f64` (untrusted).
-    pub cycle: Option<OrbitCycle>,
+    pub cycle: Option<Diagnostics>,
     /// The kernel's backends that accepted the certificate (empty when not certified).
     pub backends: Vec<&'static str>,
     /// What the certificate proves, in words (null when not certified).
@@ -204,14 +189,7 @@ fn certified(found: Found, cc: &Criterion) -> OrbitSummary {
         rho: number(&c.rho),
         lambda: number(&c.lambda),
         period: number(&c.period),
-        cycle: Some(OrbitCycle {
-            fixed_point: found.fixed_point,
-            eigenvalues: found.eigenvalues,
-            alpha: found.scales[0],
-            beta: found.scales[1],
-            ratio: found.scales[2],
-            period_time: found.scales[3],
-        }),
+        cycle: Some(Diagnostics::of(&found)),
         backends: vec![MALACHITE.name, NUM.name],
         proves: Some(proves_text(&found.pattern)),
         failure: None,

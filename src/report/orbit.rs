@@ -76,6 +76,20 @@ pub struct Diagnostics {
     pub period_time: f64,
 }
 
+impl Diagnostics {
+    /// The producer's view of the cycle behind a certificate it made.
+    pub fn of(f: &Found) -> Diagnostics {
+        Diagnostics {
+            fixed_point: f.fixed_point,
+            eigenvalues: f.eigenvalues,
+            alpha: f.scales[0],
+            beta: f.scales[1],
+            ratio: f.scales[2],
+            period_time: f.scales[3],
+        }
+    }
+}
+
 /// The certificate made: its exact numbers (the file holds them all).
 #[derive(Clone, Debug, PartialEq, Serialize, JsonSchema)]
 pub struct OrbitCertificateReport {
@@ -206,14 +220,7 @@ pub fn of(
         drops: req.drops,
         max_depth: req.max_depth,
         certificate: found.map(certificate_of),
-        diagnostics: found.map(|f| Diagnostics {
-            fixed_point: f.fixed_point,
-            eigenvalues: f.eigenvalues,
-            alpha: f.scales[0],
-            beta: f.scales[1],
-            ratio: f.scales[2],
-            period_time: f.scales[3],
-        }),
+        diagnostics: found.map(Diagnostics::of),
         kernel: found.map(|f| KernelReport {
             sub_boxes: f.boxes,
             backends: backends.iter().map(|b| b.name).collect(),
