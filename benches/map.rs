@@ -29,8 +29,11 @@ fn main() {
     let repeats: usize = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(2);
     let axis = Axis { lo: Q::int(0), hi: Q::int(1), steps };
     let grid = Grid { n: 3, variable: Variable::Rho, x: axis.clone(), gamma: axis };
-    let req =
-        Request { grid, tasks: Tasks { certify: true, refute: false, simulate: None }, shard: Shard::ALL };
+    let req = Request {
+        grid,
+        tasks: Tasks { certify: true, refute: false, simulate: None, proof_budget: 0 },
+        shard: Shard::ALL,
+    };
     let points = req.grid.len() as f64;
     let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
     println!(

@@ -7,6 +7,7 @@
 //! - [`spectral`], [`bodies`], [`simulate`], [`symbolic`]: criteria, the catalogue, simulation
 //!   and the producer of the square-case proof;
 //! - [`sweep`]: the paper's maps over (rho, gamma) as data, in parallel and in shards;
+//! - [`prove`]: drops decided with proofs (exact runs entering kernel-checked certified sets);
 //! - `plot`, `reproduce` (feature `cli`): the figures, and the paper's results regenerated with a report;
 //! - [`certify`], [`verify`], `cli` (feature `cli`): the pipeline and the command line;
 //! - [`report`]: the typed, versioned reports every `--json` output prints (docs/json.md).
@@ -25,6 +26,7 @@ pub mod oracle;
 pub mod orbit;
 #[cfg(feature = "cli")]
 pub mod plot;
+pub mod prove;
 pub mod refute;
 pub mod report;
 #[cfg(feature = "cli")]

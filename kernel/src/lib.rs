@@ -15,6 +15,7 @@
 //! - [`orbit`]: orbit certificates (version 5): the return map of an impact pattern and the
 //!   three conditions over a set of the section, by exact interval arithmetic.
 //! - [`verify`]: the kernel on both backends, with a disagreement reported as an internal error.
+//! - [`membership`]: whether an exact state lies in the set an accepted certificate certifies.
 //!
 //! Why acceptance implies each claim is argued in docs/kernel-soundness.md.
 #![forbid(unsafe_code)]
@@ -26,6 +27,7 @@ pub mod certificate;
 pub mod check;
 pub mod exact;
 pub mod geometry;
+pub mod membership;
 pub mod model;
 pub mod orbit;
 pub mod proof;

@@ -164,7 +164,8 @@ def map(n, gamma, rho=None, kappa=None, certify=False, refute=False, simulate=No
     "grid", "computed", "points", "counts", "disagreement_kinds", "disagreements") with the
     points under "columns": a dict of lists named as the columns of points.csv: "index",
     "n", "rho", "kappa", "gamma", "cc_criterion", "pcc_criterion", "finder", "certified",
-    "claim", "refuted", "sim_runs", "sim_cc", ..., "mean_impacts", and
+    "claim", "refuted", "sim_runs", "sim_cc_evidence", ... (f64 drops: evidence), "mean_impacts", "sim_cc_proved", ...,
+    "sim_undecided" (the exact runs' proofs), and
     "certificate"/"refutation" (RON text or None). Exact columns hold Fractions.
     numpy=True makes the columns numpy arrays instead, exact columns as float64.
     """

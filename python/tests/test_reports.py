@@ -67,6 +67,9 @@ def test_simulate_batch_and_exact_and_given_start():
     assert sum(b["decided_by"].values()) == 30 and b["mean_impacts"] > 0
     e = chatter.simulate(4, F(1, 6), F(1, 100), exact=True, impacts=50)
     assert e["arithmetic"] == "exact"
+    # The square plate at gamma = 1/100 has a cone certificate: every all-down drop is proved CC
+    # by entering its cone at the first impact.
+    assert e["outcome"] == "CC" and e["proved"] and e["entered"]["impact"] == 1 and e["entered"]["kind"] == "cone"
     g = chatter.simulate(4, F(1, 6), F(1, 100), position=("1/2", "1/2", 1), velocity=(-1, -1, -1), exact=True)
     assert g["start"]["kind"] == "given"
     assert [exact(v) for v in g["start"]["velocity"]] == [F(-1)] * 3
@@ -78,7 +81,9 @@ def test_exact_simulation_in_a_number_field_agrees_with_f64():
     e = chatter.simulate(5, F(1, 20), F(1, 10), seed=3, exact=True, impacts=60)
     f = chatter.simulate(5, F(1, 20), F(1, 10), seed=3, impacts=60)
     assert e["arithmetic"] == "exact" and f["arithmetic"] == "f64"
-    assert e["outcome"] == f["outcome"]
+    # The exact run's verdict is proved (or undecided); f64's is evidence (issue 22).
+    assert e["evidence"]["outcome"] == f["outcome"] and f["proved"] is False and f["basis"] == "evidence"
+    assert e["outcome"] in (f["outcome"], "undecided") and e["proved"] == (e["outcome"] != "undecided")
     assert e["sequence"][:20] == f["sequence"][:20]
 
 

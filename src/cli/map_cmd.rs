@@ -56,9 +56,16 @@ pub struct MapArgs {
     /// (n = 3, 4, 6), kept under DIR/refutations.
     #[arg(long)]
     pub refute: bool,
-    /// Also simulate RUNS of the paper's random drops per point (200 impacts each).
+    /// Also simulate RUNS of the paper's random drops per point: the paper's protocol in f64
+    /// (200 impacts each; evidence) and, for each drop, an exact run that proves its outcome where
+    /// it can (CC by entering a kernel-checked cone or orbit certificate's set, ICC by v > 0, PCC
+    /// by the exact pair proof; docs/map.md).
     #[arg(long, value_name = "RUNS", allow_hyphen_values = true)]
     pub simulate: Option<String>,
+    /// With --simulate: the impact budget of each exact run that proves a drop's outcome (0: no
+    /// proofs, evidence only).
+    #[arg(long, value_name = "IMPACTS", default_value_t = crate::sweep::point::PROOF_BUDGET)]
+    pub proof_budget: usize,
     /// Output folder.
     #[arg(long, short = 'o', value_name = "DIR", default_value = "map")]
     pub out: PathBuf,
@@ -139,7 +146,14 @@ fn validate(a: MapArgs, env_var: impl Fn(&str) -> Option<String>) -> Result<Vali
             "note: refutations for n = 5 need the number-field kernel (not available yet); the refuted column stays empty"
         );
     }
-    let tasks = Tasks { certify: a.certify, refute: a.refute, simulate };
+    if a.proof_budget > crate::cli::simulate_cmd::MAX_IMPACTS {
+        return Err(format!(
+            "--proof-budget: {} is more than {} impacts",
+            a.proof_budget,
+            crate::cli::simulate_cmd::MAX_IMPACTS
+        ));
+    }
+    let tasks = Tasks { certify: a.certify, refute: a.refute, simulate, proof_budget: a.proof_budget };
     Ok(Validated { request: Request { grid, tasks, shard }, out: a.out, jobs })
 }
 

@@ -7,7 +7,9 @@ use crate::plot::trajectory::TrajectoryFigure;
 use crate::report::simulate as report;
 use crate::simulate::classify::DEFAULT_PCC_EPSILON;
 use crate::simulate::pattern;
-use crate::simulate::{Arithmetic, Decision, Initial, Model, Options, Outcome, Run, Shape, record, simulate};
+use crate::simulate::{
+    Arithmetic, Certified, Decision, Initial, Model, Options, Outcome, Run, Shape, record,
+};
 use chatter_kernel::model::BodyError;
 use clap::Args;
 use std::io::IsTerminal;
@@ -82,6 +84,12 @@ pub struct SimulateArgs {
     /// Epsilon of the paper's PCC criterion (state within eps of a multiple of m_(i,i+1)).
     #[arg(long, default_value_t = DEFAULT_PCC_EPSILON)]
     pub pcc_epsilon: f64,
+    /// With --exact: prove CC from these certificates only (cone certificates with claim
+    /// CompleteChatterFromAllDown, orbit certificates; RON or .json; each re-checked by the kernel
+    /// on both backends and required to be about this body). Without it, certificates are made on
+    /// the fly.
+    #[arg(long, value_name = "FILE", num_args = 1..)]
+    pub certificate: Vec<PathBuf>,
 }
 
 /// Validated arguments.
@@ -100,6 +108,10 @@ struct Validated {
     trajectory: Option<PathBuf>,
     plot: Option<PathBuf>,
     json: bool,
+    /// Exact runs on regular polygons: the certified sets, and whether orbit certificates may be
+    /// made on the fly (not when the sets were given as files).
+    sets: Option<Certified>,
+    make_orbits: bool,
 }
 
 fn numbers(flag: &str, s: &str) -> Result<Vec<Q>, String> {
@@ -187,6 +199,8 @@ fn validate(a: SimulateArgs) -> Result<Validated, String> {
     if runs.is_some() && (a.trajectory.is_some() || a.plot.is_some()) {
         return Err("--trajectory and --plot describe a single run: drop --runs".into());
     }
+    let arithmetic = if a.exact { Arithmetic::Exact } else { Arithmetic::Float };
+    let (sets, make_orbits) = certified_sets(&model, arithmetic, &a.certificate)?;
     let mut opts = Options::new(impacts);
     opts.pcc_epsilon = a.pcc_epsilon;
     opts.record = a.trajectory.is_some() || a.plot.is_some();
@@ -196,7 +210,7 @@ fn validate(a: SimulateArgs) -> Result<Validated, String> {
         n,
         kappa,
         gamma,
-        arithmetic: if a.exact { Arithmetic::Exact } else { Arithmetic::Float },
+        arithmetic,
         initial,
         seed,
         runs,
@@ -204,7 +218,38 @@ fn validate(a: SimulateArgs) -> Result<Validated, String> {
         trajectory: a.trajectory,
         plot: a.plot,
         json: a.json,
+        sets,
+        make_orbits,
     })
+}
+
+/// The certified sets of an exact run on a regular polygon: the given files (each must be
+/// accepted by the kernel, exclude PCC and be about this body), or those made on the fly.
+fn certified_sets(
+    model: &Model,
+    arithmetic: Arithmetic,
+    files: &[PathBuf],
+) -> Result<(Option<Certified>, bool), String> {
+    let polygon = matches!(model.shape(), Shape::Polygon(_) | Shape::Rod);
+    if arithmetic == Arithmetic::Float || !polygon {
+        if !files.is_empty() {
+            let why = if polygon {
+                "needs --exact (f64 runs prove nothing)"
+            } else {
+                "needs a regular polygon or the rod"
+            };
+            return Err(format!("--certificate {why}"));
+        }
+        return Ok((None, false));
+    }
+    if files.is_empty() {
+        return Ok((Some(crate::prove::made(model)), true));
+    }
+    let mut sets = Certified::empty();
+    for f in files {
+        sets.add_file(model, f).map_err(|e| format!("--certificate {}: {e}", f.display()))?;
+    }
+    Ok((Some(sets), false))
 }
 
 fn arithmetic_text(a: Arithmetic, model: &Model) -> String {
@@ -245,7 +290,7 @@ fn single_text(v: &Validated, run: &Run) -> Vec<String> {
             arithmetic_text(v.arithmetic, &v.model),
             run.budget
         ),
-        format!("outcome: {}", run.outcome),
+        verdict_line(v, run),
         format!("decided by: {}", run.decision.describe()),
         format!("impacts: {} (per contact {counts})", run.impacts),
         format!("sequence: {}", pattern::summary_for(&run.sequence, v.model.shape())),
@@ -274,6 +319,43 @@ fn single_text(v: &Validated, run: &Run) -> Vec<String> {
     lines
 }
 
+/// "outcome: CC (proved)", "outcome: undecided (no proof; evidence: CC, last v = ...)" or, in
+/// `f64`, "outcome: CC (evidence: f64 simulation proves nothing; rerun with --exact)".
+fn verdict_line(v: &Validated, run: &Run) -> String {
+    if run.proved {
+        return format!("outcome: {} (proved)", run.outcome);
+    }
+    let last_v = report::snapshot_v(&v.model, &run.last);
+    match v.arithmetic {
+        Arithmetic::Float => format!(
+            "outcome: {} (evidence: an f64 simulation proves nothing; last v = {last_v:.3e}; --exact proves)",
+            run.evidence
+        ),
+        Arithmetic::Exact => format!(
+            "outcome: undecided (no proof within {} impacts; evidence: {} after {} impacts, last v = {last_v:.3e})",
+            run.budget, run.evidence, run.impacts
+        ),
+    }
+}
+
+/// The certified sets an exact run was checked against, and why any is missing.
+fn sets_lines(sets: &[report::SetReport], notes: &[String]) -> Vec<String> {
+    let mut lines: Vec<String> = sets
+        .iter()
+        .map(|s| {
+            format!(
+                "certified set: {} ({}, claim {}, kernel-checked on both backends)",
+                s.kind, s.certificate, s.claim
+            )
+        })
+        .collect();
+    lines.extend(notes.iter().map(|n| format!("note: {n}")));
+    if sets.is_empty() {
+        lines.push("no certified set: CC cannot be proved here (ICC and PCC still can)".into());
+    }
+    lines
+}
+
 fn general_report(v: &Validated) -> Option<crate::report::convex::GeneralBodyReport> {
     v.general.as_ref().map(|g| crate::report::convex::GeneralBodyReport::of(&g.description, &g.body))
 }
@@ -283,7 +365,8 @@ fn write_file(path: &PathBuf, text: &str) -> Result<(), String> {
 }
 
 fn run_single(v: &Validated) -> cli::Outcome {
-    let run = simulate(&v.model, &v.initial, v.arithmetic, &v.opts);
+    let (mut report, run) =
+        report::single(&v.model, &v.initial, v.arithmetic, &v.opts, v.sets.clone(), v.make_orbits);
     if let Some(path) = &v.trajectory {
         if let Err(e) = write_file(path, &record::csv(&run, v.model.shape())) {
             return cli::Outcome::Usage(e.to_string());
@@ -304,7 +387,6 @@ fn run_single(v: &Validated) -> cli::Outcome {
         }
     }
     if v.json {
-        let mut report = report::of_run(&v.model, &v.initial, v.arithmetic, &run);
         report.general_body = general_report(v);
         report.trajectory = v.trajectory.as_ref().map(|p| p.display().to_string());
         report.plot = v.plot.as_ref().map(|p| p.display().to_string());
@@ -312,6 +394,11 @@ fn run_single(v: &Validated) -> cli::Outcome {
     } else {
         for line in single_text(v, &run) {
             emit(&line);
+        }
+        if v.sets.is_some() {
+            for line in sets_lines(&report.certified_sets, &report.certificate_notes) {
+                emit(&line);
+            }
         }
         if let Some(p) = &v.trajectory {
             emit(&format!("trajectory: {} ({} rows)", p.display(), run.records.len()));
@@ -332,7 +419,9 @@ fn run_many(v: &Validated, runs: u64) -> cli::Outcome {
     } else {
         bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
     }
-    let mut r = report::batch(&v.model, v.seed, runs, v.arithmetic, &v.opts, &|| bar.inc(1));
+    let tick = || bar.inc(1);
+    let mut r =
+        report::batch(&v.model, v.seed, runs, v.arithmetic, &v.opts, v.sets.clone(), v.make_orbits, &tick);
     r.general_body = general_report(v);
     bar.finish_and_clear();
     if v.json {
@@ -346,12 +435,28 @@ fn run_many(v: &Validated, runs: u64) -> cli::Outcome {
             arithmetic_text(v.arithmetic, &v.model),
             r.budget
         ));
-        let count = |o: &Outcome| r.counts.get(o.name()).copied().unwrap_or(0);
-        let list = Outcome::ALL.iter().map(|o| format!("{o} {}", count(o))).collect::<Vec<_>>().join(", ");
-        emit(&format!("outcomes: {list}"));
+        let list = |m: &std::collections::BTreeMap<String, usize>| {
+            let count = |o: &Outcome| m.get(o.name()).copied().unwrap_or(0);
+            Outcome::ALL.iter().map(|o| format!("{o} {}", count(o))).collect::<Vec<_>>().join(", ")
+        };
+        match v.arithmetic {
+            Arithmetic::Exact => {
+                emit(&format!("proved: {}", list(&r.proved)));
+                emit(&format!("evidence (the simulator's rules, not proofs): {}", list(&r.evidence)));
+            }
+            Arithmetic::Float => emit(&format!(
+                "outcomes (evidence: f64 simulation proves nothing; --exact proves): {}",
+                list(&r.counts)
+            )),
+        }
         let by = r.decided_by.iter().map(|(k, c)| format!("{k} {c}")).collect::<Vec<_>>().join(", ");
         emit(&format!("decided by: {by}"));
         emit(&format!("mean impacts: {:.1}", r.mean_impacts));
+        if v.sets.is_some() {
+            for line in sets_lines(&r.certified_sets, &r.certificate_notes) {
+                emit(&line);
+            }
+        }
     }
     cli::Outcome::Success
 }

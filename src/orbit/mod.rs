@@ -644,6 +644,21 @@ pub fn certify_orbit(req: &Request, backends: &[Backend]) -> Result<Found, Failu
 /// eigenvector and the real one; when the linear part does not contract the box norm in one
 /// period, the pattern is repeated k times (R_P^k has the same fixed point; at most 64 steps).
 pub fn certify_orbit_from(req: &Request, backends: &[Backend], hints: &[[f64; 3]]) -> Result<Found, Failure> {
+    certify_orbit_within(req, backends, hints, MAX_HALVINGS)
+}
+
+/// How many times [`certify_orbit_from`] halves δ from 2^-4 per fixed point (down to 2^-27).
+pub const MAX_HALVINGS: u64 = 24;
+
+/// [`certify_orbit_from`] with δ halved at most `halvings` times per fixed point: a bounded
+/// attempt (e.g. for the proofs of a sweep's drops), at the price of missing certificates that
+/// need a smaller set.
+pub fn certify_orbit_within(
+    req: &Request,
+    backends: &[Backend],
+    hints: &[[f64; 3]],
+    halvings: u64,
+) -> Result<Found, Failure> {
     let body = Polygon::new(req.n, req.kappa.clone(), req.gamma.clone())
         .map_err(|e| Failure::Body(e.to_string()))?;
     let maps = FloatMaps::new(&body);
@@ -706,7 +721,7 @@ pub fn certify_orbit_from(req: &Request, backends: &[Backend], hints: &[[f64; 3]
         let period = above(time * 1.1);
         let mut delta = Q::new(1, 16);
         let limits = ParseLimits::default();
-        for attempt in 0..24 * (req.max_depth + 1) {
+        for attempt in 0..halvings.min(MAX_HALVINGS) * (req.max_depth + 1) {
             let depth = attempt % (req.max_depth + 1);
             if attempt > 0 && depth == 0 {
                 delta = delta.times(&Q::new(1, 2));

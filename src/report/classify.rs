@@ -195,9 +195,11 @@ pub struct Finders {
     pub all_down: FinderReport,
 }
 
-/// A batch of random drops (f64).
+/// A batch of random drops (f64): evidence, never a proof (issue 22 §1).
 #[derive(Clone, Debug, Serialize, JsonSchema)]
 pub struct Drops {
+    /// Always `evidence`: f64 simulations prove nothing (`chatter simulate --exact` proves).
+    pub basis: &'static str,
     pub runs: u64,
     /// Impact budget of each drop.
     pub budget: usize,
@@ -310,7 +312,7 @@ pub(crate) fn drops(model: &Model) -> Drops {
     let briefs = simulate_many(model, 0, SIM_RUNS, Arithmetic::Float, &Options::new(SIM_BUDGET), &|| {});
     let c = counts(&briefs);
     let counts = Outcome::ALL.iter().zip(c).map(|(o, k)| (o.name().to_string(), k)).collect();
-    Drops { runs: SIM_RUNS, budget: SIM_BUDGET, counts }
+    Drops { basis: "evidence", runs: SIM_RUNS, budget: SIM_BUDGET, counts }
 }
 
 /// The certificate at the body (every n from 2 to 64: in Q(cos 2 pi/n) where that is irrational).
@@ -489,7 +491,7 @@ impl ClassifyReport {
         let count = |o: Outcome| d.counts.get(o.name()).copied().unwrap_or(0);
         let text: Vec<String> = Outcome::ALL.iter().map(|o| format!("{} {}", o.name(), count(*o))).collect();
         l.push(format!(
-            "simulation ({} random drops, budget {} impacts, f64): {}",
+            "simulation (evidence: {} random drops in f64, budget {} impacts; `chatter simulate --exact` proves): {}",
             d.runs,
             d.budget,
             text.join(", ")

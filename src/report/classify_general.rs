@@ -258,7 +258,7 @@ fn drops_lines(g: &GeneralClassify, d: &Drops, l: &mut Vec<String>) {
     let count = |o: Outcome| d.counts.get(o.name()).copied().unwrap_or(0);
     let text: Vec<String> = Outcome::ALL.iter().map(|o| format!("{} {}", o.name(), count(*o))).collect();
     l.push(format!(
-        "simulation ({} random drops, budget {} impacts, f64): {}",
+        "simulation (evidence: {} random drops in f64, budget {} impacts; `chatter simulate --exact` proves): {}",
         d.runs,
         d.budget,
         text.join(", ")

@@ -67,7 +67,7 @@ impl Report for LargestGammaReport {
 pub fn drops(model: &Model) -> Drops {
     let briefs = simulate_many(model, 0, DROPS_ABOVE, Arithmetic::Float, &Options::new(DROP_BUDGET), &|| {});
     let counts = Outcome::ALL.iter().zip(counts(&briefs)).map(|(o, k)| (o.name().to_string(), k)).collect();
-    Drops { runs: DROPS_ABOVE, budget: DROP_BUDGET, counts }
+    Drops { basis: "evidence", runs: DROPS_ABOVE, budget: DROP_BUDGET, counts }
 }
 
 /// What a body is, for the report.
@@ -133,7 +133,7 @@ impl LargestGammaReport {
             let c: Vec<String> =
                 d.counts.iter().filter(|(_, k)| **k > 0).map(|(o, k)| format!("{o} {k}")).collect();
             out.push(format!(
-                "  {} random drops just above (f64, budget {} impacts): {}",
+                "  {} random drops just above (evidence: f64, budget {} impacts): {}",
                 d.runs,
                 d.budget,
                 c.join(", ")

@@ -5,7 +5,8 @@
 use super::{Number, Report};
 use crate::simulate::pattern::find;
 use crate::simulate::{
-    Arithmetic, Decision, Initial, Model, Options, Outcome, Run, counts, simulate, simulate_many,
+    Arithmetic, Brief, Certified, Decision, Initial, Model, Options, Outcome, Run, counts, evidence_counts,
+    proved_counts, simulate_many,
 };
 use schemars::JsonSchema;
 use serde::Serialize;
@@ -43,13 +44,88 @@ pub struct TieReport {
     pub exact: bool,
 }
 
+/// What the evidence rules said (issue 22 §1): the paper's protocol, never a proof by itself.
+#[derive(Clone, Debug, Serialize, JsonSchema)]
+pub struct EvidenceReport {
+    /// `CC`, `PCC`, `ICC`, `undecided` or `simultaneous`, by the rule `decided_by`.
+    pub outcome: &'static str,
+    /// The rule (e.g. `converging-intervals`, `v-positive`).
+    pub decided_by: &'static str,
+    /// The rule's evidence in words.
+    pub description: String,
+    /// Impacts simulated.
+    pub impacts: usize,
+    /// The centre's velocity v after the last impact (`f64`; the initial v is -1 for random drops).
+    pub last_v: f64,
+}
+
+/// A set whose entry proves CC, with the certificate it comes from.
+#[derive(Clone, Debug, Serialize, JsonSchema)]
+pub struct SetReport {
+    /// `cone` (velocities in K) or `orbit` (normalised states in X).
+    pub kind: &'static str,
+    /// The certificate's file, or how it was made.
+    pub certificate: String,
+    /// The claim the kernel accepted (both backends).
+    pub claim: &'static str,
+}
+
+/// Where a drop entered a certified set.
+#[derive(Clone, Debug, Serialize, JsonSchema)]
+pub struct EnteredReport {
+    /// The impact after which the state lay in the set (from 1).
+    pub impact: usize,
+    /// `cone` or `orbit`.
+    pub kind: &'static str,
+    /// The certificate's file, or how it was made.
+    pub certificate: String,
+}
+
+/// The certified sets a run was checked against, and why any is missing.
+pub fn set_reports(sets: &Certified) -> Vec<SetReport> {
+    sets.sets()
+        .iter()
+        .map(|s| SetReport { kind: s.kind.name(), certificate: s.name.clone(), claim: s.claim.name() })
+        .collect()
+}
+
+/// The velocity v of the centre of mass in a snapshot (v = (u0 + u1)/2 for the rod).
+pub fn snapshot_v(model: &Model, s: &crate::simulate::Snapshot) -> f64 {
+    let v = if model.shape().dim() == 2 { (s.p[0] + s.p[1]) / 2.0 } else { s.p[2] };
+    v * (s.p_exp as f64).exp2()
+}
+
+/// The evidence of a run.
+pub fn evidence_of(model: &Model, run: &Run) -> EvidenceReport {
+    EvidenceReport {
+        outcome: run.evidence.name(),
+        decided_by: run.decision.key(),
+        description: run.decision.describe(),
+        impacts: run.impacts,
+        last_v: snapshot_v(model, &run.last),
+    }
+}
+
 /// `chatter simulate --json` (one drop).
 #[derive(Clone, Debug, Serialize, JsonSchema)]
 pub struct SimulateReport {
     /// `chatter.simulate/1`.
     pub schema: &'static str,
-    /// `CC`, `PCC`, `ICC`, `undecided` or `simultaneous`.
+    /// The verdict: `CC`, `PCC`, `ICC`, `undecided` or `simultaneous`. With exact arithmetic it
+    /// is proved (`proved`) or `undecided`; in `f64` it is evidence (`proved` false).
     pub outcome: &'static str,
+    /// Whether `outcome` is proved (exact arithmetic, and for CC a kernel-checked certificate).
+    pub proved: bool,
+    /// `proof` or `evidence`.
+    pub basis: &'static str,
+    /// What the rules of the simulator say, as evidence.
+    pub evidence: EvidenceReport,
+    /// Where the drop entered a certified set (the proof of CC), if it did.
+    pub entered: Option<EnteredReport>,
+    /// The certified sets the exact run was checked against (empty in `f64`).
+    pub certified_sets: Vec<SetReport>,
+    /// Why a certified set is missing (e.g. no cone certificate above the CC threshold).
+    pub certificate_notes: Vec<String>,
     /// The test that decided it (e.g. `paper-pcc-criterion`, `exact-tie`, `converging`).
     pub decided_by: &'static str,
     pub impacts: usize,
@@ -106,8 +182,19 @@ pub struct SimulateBatchReport {
     /// `f64` or `exact`.
     pub arithmetic: &'static str,
     pub budget: usize,
-    /// Outcome (`CC`, `PCC`, `ICC`, `undecided`, `simultaneous`) -> drops.
+    /// `proof` (exact arithmetic: `counts` counts proved outcomes, the rest `undecided`) or
+    /// `evidence` (`f64`: `counts` is evidence, nothing is proved).
+    pub basis: &'static str,
+    /// Outcome (`CC`, `PCC`, `ICC`, `undecided`, `simultaneous`) -> drops: the verdicts.
     pub counts: BTreeMap<String, usize>,
+    /// Proved outcome -> drops (a drop without a proof counts as `undecided`); all undecided in `f64`.
+    pub proved: BTreeMap<String, usize>,
+    /// What the rules say as evidence (the paper's protocol) -> drops.
+    pub evidence: BTreeMap<String, usize>,
+    /// The certified sets the exact runs were checked against (empty in `f64`).
+    pub certified_sets: Vec<SetReport>,
+    /// Why a certified set is missing.
+    pub certificate_notes: Vec<String>,
     /// Deciding test -> drops.
     pub decided_by: BTreeMap<String, usize>,
     pub mean_impacts: f64,
@@ -147,9 +234,21 @@ pub fn of_run(model: &Model, initial: &Initial, arithmetic: Arithmetic, run: &Ru
     };
     let pattern =
         find(&run.sequence).map(|p| PatternReport { transient: p.transient, cycle: p.cycle, tail: p.tail });
+    let entered = match &run.decision {
+        Decision::Certified { after, kind, name } => {
+            Some(EnteredReport { impact: *after, kind: kind.name(), certificate: name.clone() })
+        }
+        _ => None,
+    };
     SimulateReport {
         schema: SimulateReport::SCHEMA,
         outcome: run.outcome.name(),
+        proved: run.proved,
+        basis: if run.proved { "proof" } else { "evidence" },
+        evidence: evidence_of(model, run),
+        entered,
+        certified_sets: Vec::new(),
+        certificate_notes: Vec::new(),
         decided_by: run.decision.key(),
         impacts: run.impacts,
         budget: run.budget,
@@ -175,29 +274,69 @@ pub fn of_run(model: &Model, initial: &Initial, arithmetic: Arithmetic, run: &Ru
 }
 
 /// Simulates one drop and reports it; the run itself (with its records if `opts.record`) is
-/// returned too.
+/// returned too. Exact runs are checked against `sets` (and orbit certificates made for their
+/// pattern with `make_orbits`); `f64` runs are evidence.
 pub fn single(
     model: &Model,
     initial: &Initial,
     arithmetic: Arithmetic,
     opts: &Options,
+    sets: Option<Certified>,
+    make_orbits: bool,
 ) -> (SimulateReport, Run) {
-    let run = simulate(model, initial, arithmetic, opts);
-    (of_run(model, initial, arithmetic, &run), run)
+    let (run, sets) = match (arithmetic, sets) {
+        (Arithmetic::Exact, Some(sets)) => {
+            let (run, sets) = crate::prove::prove_one(
+                model,
+                initial,
+                opts,
+                sets,
+                make_orbits.then_some(crate::prove::Effort::Full),
+            );
+            (run, Some(sets))
+        }
+        _ => (crate::simulate::simulate(model, initial, arithmetic, opts), None),
+    };
+    let mut report = of_run(model, initial, arithmetic, &run);
+    if let Some(sets) = &sets {
+        report.certified_sets = set_reports(sets);
+        report.certificate_notes = sets.notes.clone();
+    }
+    (report, run)
 }
 
 /// Simulates `runs` random drops with seeds `seed..seed + runs` in parallel, calling `tick`
 /// after each, and reports the counts.
+#[allow(clippy::too_many_arguments)]
 pub fn batch(
     model: &Model,
     seed: u64,
     runs: u64,
     arithmetic: Arithmetic,
     opts: &Options,
+    sets: Option<Certified>,
+    make_orbits: bool,
     tick: &(dyn Fn() + Sync),
 ) -> SimulateBatchReport {
-    let briefs = simulate_many(model, seed, runs, arithmetic, opts, tick);
+    let (briefs, sets): (Vec<Brief>, Option<Certified>) = match (arithmetic, sets) {
+        (Arithmetic::Exact, Some(sets)) => {
+            let p = crate::prove::prove_many(
+                model,
+                seed,
+                runs,
+                opts,
+                sets,
+                make_orbits.then_some(crate::prove::Effort::Full),
+                tick,
+            );
+            (p.briefs, Some(p.sets))
+        }
+        _ => (simulate_many(model, seed, runs, arithmetic, opts, tick), None),
+    };
     let c = counts(&briefs);
+    let map = |c: [usize; 5]| -> BTreeMap<String, usize> {
+        Outcome::ALL.iter().zip(c).map(|(o, k)| (o.name().to_string(), k)).collect()
+    };
     let mut decided_by = BTreeMap::new();
     for b in &briefs {
         *decided_by.entry(b.decided_by.to_string()).or_default() += 1;
@@ -212,7 +351,12 @@ pub fn batch(
         gamma: Number::of(&model.gamma),
         arithmetic: arithmetic.name(),
         budget: opts.budget,
-        counts: Outcome::ALL.iter().zip(c).map(|(o, k)| (o.name().to_string(), k)).collect(),
+        basis: if arithmetic == Arithmetic::Exact { "proof" } else { "evidence" },
+        counts: map(c),
+        proved: map(proved_counts(&briefs)),
+        evidence: map(evidence_counts(&briefs)),
+        certified_sets: sets.as_ref().map(set_reports).unwrap_or_default(),
+        certificate_notes: sets.map(|s| s.notes).unwrap_or_default(),
         decided_by,
         mean_impacts: briefs.iter().map(|b| b.impacts as f64).sum::<f64>() / briefs.len().max(1) as f64,
     }

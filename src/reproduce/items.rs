@@ -433,7 +433,12 @@ fn compute_map(ctx: &Context, n: u64) -> Result<(MapRun, [FigureRef; 2]), String
     let steps = if n == 5 { ctx.plan.grid5 } else { ctx.plan.grid };
     let axis = Axis { lo: Q::int(0), hi: Q::int(1), steps };
     let grid = Grid { n, variable: Variable::Rho, x: axis.clone(), gamma: axis };
-    let tasks = Tasks { certify: n != 5, refute: false, simulate: Some(ctx.plan.drops) };
+    let tasks = Tasks {
+        certify: n != 5,
+        refute: false,
+        simulate: Some(ctx.plan.drops),
+        proof_budget: crate::sweep::point::PROOF_BUDGET,
+    };
     let req = SweepRequest { grid: grid.clone(), tasks, shard: Shard::ALL };
     let done = sweep::run(&req, &|| {});
     if let Some(d) = done.iter().find(|d| d.internal.is_some()) {
@@ -503,36 +508,52 @@ fn cones_item(m: &MapRun, fig: FigureRef) -> Item {
     }
 }
 
-/// Figure "simulations": random drops against the criterion.
-fn simulations_item(m: &MapRun, drops: u64, fig: FigureRef) -> Item {
-    let s = &m.summary;
-    let chatter_off = count(s, "simulated-chatter-criterion-fails");
-    let icc_off = count(s, "criterion-holds-all-icc");
-    let examples: Vec<String> = s
-        .disagreements
+/// "CC 12, PCC 0, ICC 30, ..." from a summary's counts of one kind of drop outcome.
+fn outcome_counts(s: &Summary, column: &str) -> String {
+    s.counts
+        .get(column)
+        .map(|m| m.iter().map(|(k, v)| format!("{k} {v}")).collect::<Vec<_>>().join(", "))
+        .unwrap_or_default()
+}
+
+/// Up to six examples of a kind of disagreement.
+fn examples(s: &Summary, kind: &str) -> Vec<String> {
+    s.disagreements
         .iter()
-        .filter(|d| d.kind == "simulated-chatter-criterion-fails")
+        .filter(|d| d.kind == kind)
         .take(6)
         .map(|d| format!("(ρ, γ) = ({}, {}): {}", d.rho, d.gamma, d.detail))
-        .collect();
-    let outcomes = s
-        .counts
-        .get("simulated_drops")
-        .map(|m| m.iter().map(|(k, v)| format!("{k} {v}")).collect::<Vec<_>>().join(", "))
-        .unwrap_or_default();
+        .collect()
+}
+
+/// Figure "simulations": random drops against the criterion, as evidence (the paper's protocol
+/// in `f64`) and as proofs (exact runs entering kernel-checked certified sets, issue 22 §1).
+fn simulations_item(m: &MapRun, drops: u64, fig: FigureRef) -> Item {
+    let s = &m.summary;
+    let evidence_off = count(s, "simulated-chatter-criterion-fails");
+    let proved_off = count(s, "proved-chatter-criterion-fails");
+    let contradicted = count(s, "evidence-contradicted-by-proof");
+    let icc_off = count(s, "criterion-holds-all-icc");
+    let listed = |kind: &str, none: &str| {
+        let e = examples(s, kind);
+        if e.is_empty() { none.to_string() } else { e.join("; ") }
+    };
     Item {
         title: format!("Figure “simulations”, n = {}: random drops and the eigenvalue criterion", m.n),
         paper: "The 200-impact level curve (CC or PCC below it) follows the curve where S₁'s dominant eigenvalue stops being real and positive (Conjecture 1 (i) ⇔ (iii)).".into(),
-        ours: format!("random drops chatter where the criterion fails at {chatter_off} points, and all drops end in ICC where it holds at {icc_off} points (of {})", s.points),
-        verdict: Verdict::of(chatter_off == 0 && icc_off == 0),
+        ours: format!(
+            "proved: drops end in CC or PCC where the criterion fails at {proved_off} points (Conjecture 1 (i) ⇒ (iii) false there); evidence only (f64, 200 impacts): at {evidence_off} points, of which the exact runs contradict the evidence at {contradicted} points; all drops ICC as evidence where the criterion holds at {icc_off} points (of {})",
+            s.points
+        ),
+        verdict: Verdict::of(proved_off == 0 && icc_off == 0),
         evidence: vec![
-            format!("{drops} drops per point, 200 impacts each, seeded per point (the paper's protocol: velocity (R₁, R₂, −1), position (R₃, R₄, 1 + R₅), Rᵢ uniform on (0, 0.1))"),
-            format!("outcomes over all points: {outcomes}"),
-            if examples.is_empty() {
-                "no point where drops chatter and the criterion fails".into()
-            } else {
-                format!("where drops chatter and the criterion fails, e.g. {}", examples.join("; "))
-            },
+            format!("{drops} drops per point, seeded per point (the paper's protocol: velocity (R₁, R₂, −1), position (R₃, R₄, 1 + R₅), Rᵢ uniform on (0, 0.1)); each drop run in f64 for 200 impacts (evidence) and exactly for up to {} impacts (proof)", m.summary.computed.proof_budget),
+            "a drop is proved CC only when, after some impact, its exact state enters the cone K of a kernel-checked cone certificate (claim CompleteChatterFromAllDown) or the set X of a kernel-checked orbit certificate; ICC only by v > 0 exactly; PCC only by the exact pair proof; everything else is undecided".into(),
+            format!("proved outcomes over all points: {}", outcome_counts(s, "drops_proved")),
+            format!("evidence over all points: {}", outcome_counts(s, "drops_evidence")),
+            format!("proved CC or PCC where the criterion fails: {}", listed("proved-chatter-criterion-fails", "none")),
+            format!("evidence of chatter where the criterion fails: {}", listed("simulated-chatter-criterion-fails", "none")),
+            format!("exact runs contradicting the evidence: {}", listed("evidence-contradicted-by-proof", "none")),
         ],
         commands: vec![m.command.clone()],
         figures: vec![fig],

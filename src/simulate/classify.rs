@@ -1,5 +1,12 @@
 //! The driver loop and the CC / PCC / ICC classification, the same for both arithmetics.
 //!
+//! **Proof or evidence** (issue 22 §1). In an exact engine, rules 1 and 2, an exact tie (rule 3),
+//! the exact pair proof (rule 4) and rule 4a are exact facts and theorems: their outcome is
+//! *proved* ([`Run::proved`]). Every other rule — the paper's PCC criterion, the converging
+//! intervals of rule 6, a pair that did not settle, a breakdown — is *evidence*: an exact run that
+//! ends on one is `undecided`, with the evidence kept in [`Run::evidence`] and [`Run::decision`],
+//! never counted as CC. Every verdict of an `f64` engine is evidence.
+//!
 //! Rules, in the order they are applied (every verdict records the rule in [`Decision`]):
 //! 1. ICC when v > 0 at any time (the paper's Lemma: v never decreases, so the body leaves);
 //!    checked at the start and after every impact.
@@ -16,6 +23,14 @@
 //!    engines by the paper's criterion with ε. Where the Lemma excludes PCC the criterion can still
 //!    hold for a while (a pair phase that ends after tens of impacts, when the state is already
 //!    within 1e-16 of m_(i,i+1)); it is then overruled and counted in [`Run::pcc_overruled`].
+//!
+//!    Rule 4a. Exact engines on regular polygons and the rod, after every impact: CC when the
+//!    post-impact state, relabelled so that the contact that landed is contact 0, lies in a set
+//!    of [`super::certified::Certified`]: the velocity in the cone K of a kernel-checked cone
+//!    certificate whose claim excludes PCC, or the normalised state in the set X of a
+//!    kernel-checked orbit certificate (membership decided by `chatter_kernel::membership`).
+//!    Tested before rule 4 (in K or X with PCC excluded, the motion is CC).
+//!
 //! 5. `f64` only: an interval of exactly 0 with gamma > 0 cannot happen in exact dynamics after
 //!    the first impact; it means that heights were lost in rounding: "undecided".
 //! 6. When the budget is used up:
@@ -27,6 +42,7 @@
 //!      and again from the 3rd to the 4th; "undecided" when it does not (contraction per impact
 //!      too close to 1 to tell within the budget) or when N < [`MIN_BUDGET_FOR_CC`].
 
+use super::certified::{Certified, SetKind};
 use super::engine::{Engine, Step};
 use super::pcc::{PairSummary, PaperPcc, paper_criterion};
 use super::snapshot::{Scaled, Snapshot};
@@ -100,6 +116,9 @@ pub enum Decision {
     BudgetTooSmall { budget: usize },
     /// The `f64` state became non-finite or lost its heights in rounding (undecided).
     Breakdown { after: usize },
+    /// Exact engines: the relabelled post-impact state after `after` impacts lies in a set that a
+    /// kernel-checked certificate certifies (CC, issue 22 §1).
+    Certified { after: usize, kind: SetKind, name: String },
 }
 
 impl Decision {
@@ -118,7 +137,24 @@ impl Decision {
             Decision::PairNotSettled { .. } => "pair-not-settled",
             Decision::BudgetTooSmall { .. } => "budget-too-small",
             Decision::Breakdown { .. } => "float-precision-exhausted",
+            Decision::Certified { .. } => "entered-certified-set",
         }
+    }
+
+    /// Whether this test, in an exact engine (`exact`), proves its outcome: v > 0, no contact
+    /// approaching, at rest, an exact tie, the exact pair proof and a certified set are exact
+    /// facts and theorems; every other test, and every test in `f64`, is evidence.
+    pub fn is_proof(&self, exact: bool) -> bool {
+        exact
+            && matches!(
+                self,
+                Decision::VPositive { .. }
+                    | Decision::NoApproach { .. }
+                    | Decision::AtRest { .. }
+                    | Decision::Tie { exact: true, .. }
+                    | Decision::ExactPair { .. }
+                    | Decision::Certified { .. }
+            )
     }
 
     /// One sentence naming the test and its evidence.
@@ -198,6 +234,17 @@ impl Decision {
                 "f64 precision exhausted after {after} impacts (state not finite, or an interval of \
                  exactly 0 with gamma > 0); rerun with --exact"
             ),
+            Decision::Certified { after, kind, name } => {
+                let what = match kind {
+                    SetKind::Cone => "the velocity lies in the cone K",
+                    SetKind::Orbit => "the state lies, up to relabelling and scaling, in the set X",
+                };
+                format!(
+                    "after impact {after} {what} of a kernel-checked {} certificate ({name}), whose \
+                     theorem gives complete chatter from there",
+                    kind.name()
+                )
+            }
         }
     }
 }
@@ -236,7 +283,14 @@ pub struct Record {
 /// The result of one simulation.
 #[derive(Clone, Debug)]
 pub struct Run {
+    /// The verdict: for exact engines proved (CC, PCC, ICC, an exact tie) or `Undecided`; for
+    /// `f64` engines the evidence of [`Run::evidence`] (never a proof).
     pub outcome: Outcome,
+    /// Whether `outcome` is proved ([`Decision::is_proof`]).
+    pub proved: bool,
+    /// What the rules of the module doc say, proof or evidence (the paper's protocol): equal to
+    /// `outcome` when proved, e.g. CC by converging intervals when an exact run is undecided.
+    pub evidence: Outcome,
     pub decision: Decision,
     pub impacts: usize,
     pub budget: usize,
@@ -395,6 +449,8 @@ fn pair_tail(tail_log: &[f64; 3]) -> Option<f64> {
 /// The driver's state: the engine, the trace so far and the running evidence of the rules.
 struct Driver<'a, E: Engine> {
     eng: &'a mut E,
+    /// Sets whose entry proves CC (exact engines on regular polygons).
+    certified: Option<&'a Certified>,
     fs: &'a FloatSystem,
     opts: Options,
     initial: Snapshot,
@@ -414,7 +470,19 @@ struct Driver<'a, E: Engine> {
 
 /// Runs `eng` until a rule of the module doc decides.
 pub fn drive<E: Engine>(eng: &mut E, fs: &FloatSystem, opts: &Options) -> Run {
+    drive_with(eng, fs, opts, None)
+}
+
+/// [`drive`], where an exact engine also proves CC once a post-impact state enters one of the
+/// `certified` sets (rule 4a).
+pub fn drive_with<E: Engine>(
+    eng: &mut E,
+    fs: &FloatSystem,
+    opts: &Options,
+    certified: Option<&Certified>,
+) -> Run {
     let mut driver = Driver::new(eng, fs, opts);
+    driver.certified = certified;
     let verdict = driver.run();
     driver.finish(verdict)
 }
@@ -425,6 +493,7 @@ impl<'a, E: Engine> Driver<'a, E> {
         Driver {
             initial: eng.snapshot(),
             eng,
+            certified: None,
             fs,
             opts: *opts,
             seq: Vec::with_capacity(opts.budget),
@@ -483,7 +552,18 @@ impl<'a, E: Engine> Driver<'a, E> {
             return Some(Verdict::breakdown(k));
         }
         self.book(k, contact, dt);
+        if let Some(v) = self.entered(k + 1) {
+            return Some(v);
+        }
         if self.alt >= PCC_MIN_RUN { self.pcc_tests(k + 1, contact) } else { None }
+    }
+
+    /// Rule 4a (exact engines): CC once the relabelled post-impact state lies in a certified set.
+    fn entered(&self, after: usize) -> Option<Verdict> {
+        let (q, p) = self.eng.relabelled()?;
+        let set = self.certified?.entered(&q, &p)?;
+        let decision = Decision::Certified { after, kind: set.kind, name: set.name.clone() };
+        Some(Verdict::cc(decision))
     }
 
     /// Records the (k+1)-th impact: its interval, the alternation length, the sequence, the record.
@@ -602,10 +682,15 @@ impl<'a, E: Engine> Driver<'a, E> {
 
     /// The run, with its trace, once a rule has decided.
     fn finish(self, verdict: Verdict) -> Run {
-        let Verdict { outcome, decision, tail_log2, contraction } = verdict;
+        let Verdict { outcome: evidence, decision, tail_log2, contraction } = verdict;
         let time = self.eng.time();
+        let exact = self.eng.is_exact();
+        let proved = decision.is_proof(exact);
+        let outcome = if exact && !proved { Outcome::Undecided } else { evidence };
         Run {
             outcome,
+            proved,
+            evidence,
             decision,
             impacts: self.seq.len(),
             budget: self.opts.budget,

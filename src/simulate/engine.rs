@@ -3,7 +3,9 @@
 //! under their former paths).
 
 use super::pcc::PairSummary;
+use super::scalar::Nf;
 pub use super::snapshot::{LOG2_ZERO, Scaled, Snapshot, pow2};
+use chatter_kernel::model::linalg::Vec3;
 
 /// What happened at one event.
 #[derive(Clone, Debug, PartialEq)]
@@ -37,4 +39,12 @@ pub trait Engine {
     }
     /// Whether this engine computes exactly.
     fn is_exact(&self) -> bool;
+    /// Exact engines on regular polygons: the state right after the last impact, relabelled so
+    /// that the contact that landed is contact 0 (docs/model.md §3, R_j), as q = (h0, h1, hc) and
+    /// p = (u0, u1, v) in the kernel's exact scalars; what the membership tests of issue 22 §1
+    /// read (the rod: (h0, h1, 0), (u0, u1, 0) relabelled). `None` before the first impact, for
+    /// `f64` engines and for general bodies.
+    fn relabelled(&self) -> Option<(Vec3<Nf>, Vec3<Nf>)> {
+        None
+    }
 }

@@ -5,7 +5,7 @@
 use super::drop::Start;
 use super::engine::{Engine, Step};
 use super::pcc::{PairSummary, prove_pair_chatter};
-use super::scalar::SimField;
+use super::scalar::{Nf, SimField};
 pub use super::snapshot::scaled; // formerly defined here
 use super::snapshot::{Scaled, Snapshot};
 use super::system::System;
@@ -170,5 +170,17 @@ impl<F: SimField> Engine for ExactEngine<'_, F> {
 
     fn is_exact(&self) -> bool {
         true
+    }
+
+    fn relabelled(&self) -> Option<(Vec3<Nf>, Vec3<Nf>)> {
+        let k = self.last?;
+        if self.sys.shape.is_convex() {
+            return None;
+        }
+        let next = (k + 1) % self.sys.n();
+        let frame = |x: &Vec3<F>| -> Vec3<Nf> {
+            [self.sys.along(k, x), self.sys.along(next, x), dot(&self.sys.centre, x)].map(|e| e.to_exact())
+        };
+        Some((frame(&self.q), frame(&self.p)))
     }
 }

@@ -31,6 +31,7 @@
 //! assert_eq!(run.outcome, Outcome::Cc);
 //! ```
 
+pub mod certified;
 pub mod classify;
 pub mod convex;
 pub mod drop;
@@ -47,7 +48,8 @@ pub mod snapshot;
 pub mod system;
 pub mod text;
 
-pub use classify::{Decision, Options, Outcome, Record, Run, drive};
+pub use certified::{Certified, SetKind};
+pub use classify::{Decision, Options, Outcome, Record, Run, drive, drive_with};
 pub use drop::{SplitMix64, Start, StartError, exact_drop, given_start, random_drop};
 pub use engine::{Engine, Step};
 pub use exact::ExactEngine;
@@ -211,19 +213,36 @@ pub fn simulate_float(fs: &FloatSystem, start: &Start<f64>, opts: &Options) -> R
     drive(&mut FloatEngine::new(fs, start), fs, opts)
 }
 
-/// Simulates one drop exactly: in Q, or in Q(cos 2π/n) where the cosine is irrational.
+/// Simulates one drop exactly: in Q, or in Q(cos 2π/n) where the cosine is irrational. Without
+/// certified sets CC is never proved (such runs end `undecided`, with the evidence).
 pub fn simulate_exact(model: &Model, start: &Start<Q>, opts: &Options) -> Run {
+    simulate_exact_with(model, start, opts, None)
+}
+
+/// [`simulate_exact`] with sets whose entry proves CC (rule 4a of [`classify`]).
+pub fn simulate_exact_with(model: &Model, start: &Start<Q>, opts: &Options, sets: Option<&Certified>) -> Run {
     match model.exact_system() {
-        ExactSystem::Rational(sys) => drive(&mut ExactEngine::new(sys, start), &model.float, opts),
-        ExactSystem::Field(sys) => drive(&mut ExactEngine::new(sys, start), &model.float, opts),
+        ExactSystem::Rational(sys) => drive_with(&mut ExactEngine::new(sys, start), &model.float, opts, sets),
+        ExactSystem::Field(sys) => drive_with(&mut ExactEngine::new(sys, start), &model.float, opts, sets),
     }
 }
 
 /// Simulates one drop in the chosen arithmetic.
 pub fn simulate(model: &Model, initial: &Initial, arithmetic: Arithmetic, opts: &Options) -> Run {
+    simulate_with(model, initial, arithmetic, opts, None)
+}
+
+/// [`simulate`] with certified sets for the exact engine (ignored in `f64`: evidence only).
+pub fn simulate_with(
+    model: &Model,
+    initial: &Initial,
+    arithmetic: Arithmetic,
+    opts: &Options,
+    sets: Option<&Certified>,
+) -> Run {
     match arithmetic {
         Arithmetic::Float => simulate_float(&model.float, &model.float_start(initial), opts),
-        Arithmetic::Exact => simulate_exact(model, &model.exact_start(initial), opts),
+        Arithmetic::Exact => simulate_exact_with(model, &model.exact_start(initial), opts, sets),
     }
 }
 
@@ -231,16 +250,54 @@ pub fn simulate(model: &Model, initial: &Initial, arithmetic: Arithmetic, opts: 
 #[derive(Clone, Debug, PartialEq)]
 pub struct Brief {
     pub seed: u64,
+    /// The verdict ([`Run::outcome`]: proved in exact runs, evidence in `f64`).
     pub outcome: Outcome,
+    /// Whether `outcome` is proved.
+    pub proved: bool,
+    /// What the rules say as evidence ([`Run::evidence`]).
+    pub evidence: Outcome,
     pub decided_by: &'static str,
     pub impacts: usize,
+    /// The steps of the periodic tail of the impact sequence, if it has one ([`pattern::find`]).
+    pub cycle: Option<Vec<usize>>,
+}
+
+impl Brief {
+    /// The brief of a run with this seed.
+    pub fn of(seed: u64, run: &Run, n: usize) -> Brief {
+        let cycle = pattern::find(&run.sequence).map(|p| pattern::steps(&p.cycle, n));
+        Brief {
+            seed,
+            outcome: run.outcome,
+            proved: run.proved,
+            evidence: run.evidence,
+            decided_by: run.decision.key(),
+            impacts: run.impacts,
+            cycle,
+        }
+    }
 }
 
 /// Outcome counts of many runs, in the order of [`Outcome::ALL`].
 pub fn counts(briefs: &[Brief]) -> [usize; 5] {
+    count_by(briefs, |b| b.outcome)
+}
+
+/// Counts of the evidence ([`Brief::evidence`]) of many runs, in the order of [`Outcome::ALL`].
+pub fn evidence_counts(briefs: &[Brief]) -> [usize; 5] {
+    count_by(briefs, |b| b.evidence)
+}
+
+/// Counts of the proved outcomes of many runs, in the order of [`Outcome::ALL`]: a run without a
+/// proof counts as `undecided`.
+pub fn proved_counts(briefs: &[Brief]) -> [usize; 5] {
+    count_by(briefs, |b| if b.proved { b.outcome } else { Outcome::Undecided })
+}
+
+fn count_by(briefs: &[Brief], of: impl Fn(&Brief) -> Outcome) -> [usize; 5] {
     let mut c = [0; 5];
     for b in briefs {
-        c[Outcome::ALL.iter().position(|o| *o == b.outcome).expect("known outcome")] += 1;
+        c[Outcome::ALL.iter().position(|o| *o == of(b)).expect("known outcome")] += 1;
     }
     c
 }
@@ -255,15 +312,28 @@ pub fn simulate_many(
     opts: &Options,
     tick: &(dyn Fn() + Sync),
 ) -> Vec<Brief> {
+    simulate_many_with(model, seed, runs, arithmetic, opts, None, tick)
+}
+
+/// [`simulate_many`] with certified sets for the exact engine.
+pub fn simulate_many_with(
+    model: &Model,
+    seed: u64,
+    runs: u64,
+    arithmetic: Arithmetic,
+    opts: &Options,
+    sets: Option<&Certified>,
+    tick: &(dyn Fn() + Sync),
+) -> Vec<Brief> {
     use rayon::prelude::*;
     let opts = Options { record: false, ..*opts };
     (0..runs)
         .into_par_iter()
         .map(|i| {
             let s = seed.wrapping_add(i);
-            let run = simulate(model, &Initial::RandomDrop { seed: s }, arithmetic, &opts);
+            let run = simulate_with(model, &Initial::RandomDrop { seed: s }, arithmetic, &opts, sets);
             tick();
-            Brief { seed: s, outcome: run.outcome, decided_by: run.decision.key(), impacts: run.impacts }
+            Brief::of(s, &run, model.n())
         })
         .collect()
 }

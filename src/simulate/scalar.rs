@@ -28,6 +28,10 @@ pub trait SimField: OrderedField {
         self.fast_sign() == Ordering::Less
     }
 
+    /// The same number as an element of the kernel's [`Algebraic`] scalars (a rational, or an
+    /// element of Q(cos 2π/n)), for the kernel's membership tests (issue 22 §1).
+    fn to_exact(&self) -> Nf;
+
     /// The nearest `f64` (0 on underflow, infinite on overflow).
     fn approx(&self) -> f64 {
         let m = self.magnitude().to_f64();
@@ -50,6 +54,9 @@ impl SimField for Q {
     }
     fn fast_sign(&self) -> Ordering {
         self.sign()
+    }
+    fn to_exact(&self) -> Nf {
+        Nf::rational(self.clone())
     }
 }
 
@@ -150,5 +157,8 @@ impl SimField for Nf {
             Some(r) => r.sign(),
             None => enclosure(self, |lo, hi| lo.sign() == hi.sign()).0.sign(),
         }
+    }
+    fn to_exact(&self) -> Nf {
+        self.clone()
     }
 }

@@ -34,16 +34,18 @@ impl Request {
             refute: self.tasks.refute,
             simulate: self.tasks.simulate.unwrap_or(0),
             budget: PAPER_BUDGET,
+            proof_budget: if self.tasks.simulate.is_some() { self.tasks.proof_budget } else { 0 },
         }
     }
 }
 
-/// One evaluated point: its row and its certificate and refutation texts.
+/// One evaluated point: its row and its certificate, refutation and orbit certificate texts.
 #[derive(Clone, Debug)]
 pub struct Done {
     pub row: Row,
     pub certificate: Option<String>,
     pub refutation: Option<String>,
+    pub orbit: Option<String>,
     pub internal: Option<String>,
 }
 
@@ -63,7 +65,13 @@ pub fn run(req: &Request, tick: &(dyn Fn() + Sync)) -> Vec<Done> {
             let e: Evaluation = evaluate(req.grid.n, &p, req.tasks);
             tick();
             let row = Row::new(&req.grid, &p, &e);
-            Done { row, certificate: e.certificate, refutation: e.refutation, internal: e.internal }
+            Done {
+                row,
+                certificate: e.certificate,
+                refutation: e.refutation,
+                orbit: e.orbit,
+                internal: e.internal,
+            }
         })
         .collect()
 }
@@ -82,6 +90,7 @@ pub const SUMMARY: &str = "summary.json";
 pub const SHARD: &str = "shard.json";
 pub const CERTIFICATES: &str = "certificates";
 pub const REFUTATIONS: &str = "refutations";
+pub const ORBITS: &str = "orbits";
 
 fn io(path: &Path, e: std::io::Error) -> String {
     format!("{}: {e}", path.display())
@@ -104,7 +113,7 @@ pub fn prepare_dir(dir: &Path) -> Result<(), String> {
                 std::fs::remove_file(&p).map_err(|e| io(&p, e))?;
             }
         }
-        for sub in [CERTIFICATES, REFUTATIONS] {
+        for sub in [CERTIFICATES, REFUTATIONS, ORBITS] {
             let c = dir.join(sub);
             if c.exists() {
                 std::fs::remove_dir_all(&c).map_err(|e| io(&c, e))?;
@@ -130,6 +139,9 @@ pub fn write_output(dir: &Path, req: &Request, done: &[Done]) -> Result<Option<S
             write(dir.join(rel), text)?;
         }
         if let (Some(text), Some(rel)) = (&d.refutation, &d.row.refutation) {
+            write(dir.join(rel), text)?;
+        }
+        if let (Some(text), Some(rel)) = (&d.orbit, &d.row.orbit) {
             write(dir.join(rel), text)?;
         }
     }
@@ -190,7 +202,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Summary, String> {
     rows.sort_by_key(|(r, _)| r.index);
     prepare_dir(out)?;
     for (r, d) in &rows {
-        for rel in r.certificate.iter().chain(&r.refutation) {
+        for rel in r.certificate.iter().chain(&r.refutation).chain(&r.orbit) {
             write(out.join(rel), &read(&d.join(rel))?)?;
         }
     }

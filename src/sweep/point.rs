@@ -7,7 +7,11 @@ use crate::certify::{Failure, Request, certify};
 use crate::exact::{OrderedField, Q, QExt};
 use crate::finder::{FinderConfig, Seed, find_cone};
 use crate::model::FloatBody;
-use crate::simulate::{Arithmetic, Model, Options, Outcome, counts, simulate_many};
+use crate::prove::Effort;
+use crate::simulate::certified::Source;
+use crate::simulate::{
+    Arithmetic, Brief, Certified, Model, Options, Outcome, counts, proved_counts, simulate_many,
+};
 use crate::spectral::criteria::{Family, cc_criterion, pcc_criterion};
 use chatter_kernel::certificate::write;
 use chatter_kernel::model::{Polygon, Shape};
@@ -22,16 +26,28 @@ pub struct Tasks {
     pub certify: bool,
     /// Try for an exact refutation where no certificate was made (n = 3, 4, 6).
     pub refute: bool,
-    /// Random drops per point (the paper's protocol, 200 impacts each).
+    /// Random drops per point (the paper's protocol, 200 impacts each, `f64`: evidence).
     pub simulate: Option<u64>,
+    /// With `simulate`: the impact budget of the exact run of each drop that tries to prove its
+    /// outcome (issue 22 §1; 0: no proofs).
+    pub proof_budget: usize,
 }
+
+/// The default impact budget of the exact runs that prove drops' outcomes in a map.
+pub const PROOF_BUDGET: usize = 300;
 
 /// Outcome counts and mean impact count of the random drops at one point.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SimStats {
     pub runs: u64,
-    /// In the order of [`Outcome::ALL`]: CC, PCC, ICC, undecided, simultaneous.
+    /// Evidence (the paper's 200-impact protocol in `f64`), in the order of [`Outcome::ALL`]:
+    /// CC, PCC, ICC, undecided, simultaneous.
     pub counts: [u64; 5],
+    /// Proved outcomes of the same drops (exact runs, issue 22 §1), in the same order; a drop
+    /// without a proof counts as undecided. `None` when no proofs were tried.
+    pub proved: Option<[u64; 5]>,
+    /// Drops whose proved outcome differs from their evidence.
+    pub contradicted: u64,
     /// Sum over the drops of the impacts before the drop ended, capped at the budget; a drop
     /// classified PCC counts as the full budget (the paper's runs would have continued it).
     pub impacts: u64,
@@ -62,6 +78,8 @@ pub struct Evaluation {
     /// The refutation's text (RON), to be written under the output folder.
     pub refutation: Option<String>,
     pub sim: Option<SimStats>,
+    /// An orbit certificate made to prove drops CC (RON), to be written under the output folder.
+    pub orbit: Option<String>,
     /// A backend disagreement inside the kernel (an internal error to report).
     pub internal: Option<String>,
 }
@@ -97,22 +115,75 @@ pub fn float_model(n: u64, kappa: &Q, gamma: &Q) -> Polygon<Q> {
     Polygon::with_cosine(n, model_cosine(n).0, kappa.clone(), gamma.clone()).expect("a validated grid point")
 }
 
-/// The paper's random drops at one point; seeds depend on the point alone ([`point_seed`]).
+/// The paper's random drops at one point (evidence); seeds depend on the point alone
+/// ([`point_seed`]).
 pub fn simulate_point(n: u64, p: &Point, runs: u64) -> SimStats {
+    stats(runs, &evidence_briefs(n, p, runs))
+}
+
+/// The `f64` runs of the paper's drops at one point.
+fn evidence_briefs(n: u64, p: &Point, runs: u64) -> Vec<Brief> {
     let model = Model::from_body(&Shape::Polygon(float_model(n, &p.kappa, &p.gamma)));
-    let briefs = simulate_many(
-        &model,
-        point_seed(n, &p.kappa, &p.gamma),
-        runs,
-        Arithmetic::Float,
-        &Options::new(PAPER_BUDGET),
-        &|| {},
-    );
+    let seed = point_seed(n, &p.kappa, &p.gamma);
+    simulate_many(&model, seed, runs, Arithmetic::Float, &Options::new(PAPER_BUDGET), &|| {})
+}
+
+/// The evidence counts of the drops at one point.
+fn stats(runs: u64, briefs: &[Brief]) -> SimStats {
     let impacts = briefs
         .iter()
         .map(|b| if b.outcome == Outcome::Pcc { PAPER_BUDGET } else { b.impacts.min(PAPER_BUDGET) } as u64)
         .sum();
-    SimStats { runs, counts: counts(&briefs).map(|c| c as u64), impacts }
+    SimStats { runs, counts: counts(briefs).map(|c| c as u64), proved: None, contradicted: 0, impacts }
+}
+
+/// The same drops run exactly to prove their outcomes (issue 22 §1): against the point's cone
+/// certificate (`certificate`, RON, when the map made one; else one is made here), and orbit
+/// certificates made for the patterns of drops whose evidence is CC. Returns the proved counts,
+/// the drops whose proof contradicts `evidence`, and an orbit certificate made (RON).
+fn prove_point(
+    n: u64,
+    p: &Point,
+    evidence: &[Brief],
+    budget: usize,
+    certificate: Option<&str>,
+) -> ([u64; 5], u64, Option<String>) {
+    let runs = evidence.len() as u64;
+    let Ok(model) = Model::new(crate::simulate::Shape::Polygon(n), p.kappa.clone(), p.gamma.clone()) else {
+        return ([0, 0, 0, runs, 0], 0, None);
+    };
+    let sets = match certificate.map(chatter_kernel::certificate::read) {
+        Some(Ok(cert)) => {
+            let mut sets = Certified::empty();
+            if let Err(e) = sets.add_cone(&model, &cert, "the point's certificate") {
+                sets.notes.push(e);
+            }
+            sets
+        }
+        _ => crate::prove::cone(&model, Effort::Survey),
+    };
+    let seed = point_seed(n, &p.kappa, &p.gamma);
+    let proved = crate::prove::prove_many(
+        &model,
+        seed,
+        runs,
+        &Options::new(budget),
+        sets,
+        Some(Effort::Survey),
+        &|| {},
+    );
+    let decided = |o: Outcome| matches!(o, Outcome::Cc | Outcome::Pcc | Outcome::Icc);
+    let contradicted = proved
+        .briefs
+        .iter()
+        .zip(evidence)
+        .filter(|(b, e)| b.proved && decided(e.outcome) && b.outcome != e.outcome)
+        .count();
+    let orbit = proved.sets.sets().iter().find_map(|s| match &s.source {
+        Source::Orbit(c) => Some(chatter_kernel::certificate::write_orbit(c)),
+        Source::Cone(_) => None,
+    });
+    (proved_counts(&proved.briefs).map(|c| c as u64), contradicted as u64, orbit)
 }
 
 /// The first seed of a point's drops: FNV-1a of "n/kappa/gamma", so that a point gets the same
@@ -137,6 +208,7 @@ pub fn evaluate(n: u64, p: &Point, tasks: Tasks) -> Evaluation {
         refuted: None,
         refutation: None,
         sim: None,
+        orbit: None,
         internal: None,
     };
     if tasks.certify && model_cosine(n).1 {
@@ -153,7 +225,18 @@ pub fn evaluate(n: u64, p: &Point, tasks: Tasks) -> Evaluation {
     if tasks.refute && model_cosine(n).1 {
         refute_point(n, p, &mut e);
     }
-    e.sim = tasks.simulate.map(|runs| simulate_point(n, p, runs));
+    if let Some(runs) = tasks.simulate {
+        let briefs = evidence_briefs(n, p, runs);
+        let mut sim = stats(runs, &briefs);
+        if tasks.proof_budget > 0 {
+            let (proved, contradicted, orbit) =
+                prove_point(n, p, &briefs, tasks.proof_budget, e.certificate.as_deref());
+            sim.proved = Some(proved);
+            sim.contradicted = contradicted;
+            e.orbit = orbit;
+        }
+        e.sim = Some(sim);
+    }
     e
 }
 

@@ -15,8 +15,11 @@ pub struct Computed {
     pub refute: bool,
     /// Random drops per point (0: none).
     pub simulate: u64,
-    /// Impact budget of each drop.
+    /// Impact budget of each drop's `f64` run (the paper's protocol: evidence).
     pub budget: usize,
+    /// Impact budget of each drop's exact run that tries to prove its outcome (0: no proofs).
+    #[serde(default)]
+    pub proof_budget: usize,
 }
 
 /// A point where two verdicts disagree.
@@ -32,7 +35,7 @@ pub struct Disagreement {
 }
 
 /// The kinds of disagreement, with what each means.
-pub const KINDS: [(&str, &str); 10] = [
+pub const KINDS: [(&str, &str); 14] = [
     (
         "finder-found-criterion-fails",
         "the float finder found a cone where S_1's dominant eigenvalue is not real and positive (Conjecture 1 (ii) => (iii), numerically)",
@@ -48,19 +51,19 @@ pub const KINDS: [(&str, &str); 10] = [
     ("certified-finder-no-cone", "an exact certificate where the float finder reported no cone"),
     (
         "simulated-chatter-criterion-fails",
-        "random drops end in CC or PCC where the CC criterion fails: against Conjecture 1 (i) => (iii)",
+        "evidence (f64, the paper's 200-impact protocol): random drops end in CC or PCC where the CC criterion fails; not a proof (see proved-chatter-criterion-fails)",
     ),
     (
         "criterion-holds-all-icc",
-        "the CC criterion holds but every random drop ends in ICC (the conjecture speaks of suitable initial conditions, so this contradicts the paper's figure, not the conjecture)",
+        "evidence: the CC criterion holds but every random drop ends in ICC (the conjecture speaks of suitable initial conditions, so this contradicts the paper's figure, not the conjecture)",
     ),
     (
         "certified-simulated-icc",
-        "a certificate covering every all-down drop, yet a simulated drop (all contacts moving down) ended in ICC",
+        "evidence: a certificate covering every all-down drop, yet a simulated drop (all contacts moving down) ended in ICC in f64",
     ),
     (
         "simulated-pcc-criterion-fails",
-        "a random drop ended in PCC where S_{n-1} S_1 has non-real eigenvalues (against the PCC Lemma)",
+        "evidence: a random drop ended in PCC in f64 where S_{n-1} S_1 has non-real eigenvalues (against the PCC Lemma)",
     ),
     (
         "refuted-criterion-holds",
@@ -69,6 +72,22 @@ pub const KINDS: [(&str, &str); 10] = [
     (
         "refuted-finder-found",
         "an exact refutation where the float finder found a cone (the finder's tolerance let it stop early)",
+    ),
+    (
+        "proved-chatter-criterion-fails",
+        "a drop proved to end in CC (exact run entering a kernel-checked certified set) or PCC (exact pair proof) where the CC criterion fails: Conjecture 1 (i) => (iii) is false at this point",
+    ),
+    (
+        "evidence-contradicted-by-proof",
+        "a drop whose proved outcome differs from its f64 evidence (e.g. CC by converging intervals, proved ICC by v > 0 in the exact run)",
+    ),
+    (
+        "evidence-cc-unproved",
+        "fewer drops proved CC than drops with CC as f64 evidence (the exact run entered no certified set within the proof budget)",
+    ),
+    (
+        "certified-proved-icc",
+        "a certificate covering every all-down drop, yet an all-down drop proved ICC: a contradiction between a kernel-checked certificate and an exact run (a bug to report)",
     ),
 ];
 
@@ -87,7 +106,9 @@ pub struct Summary {
     pub grid: Grid,
     pub computed: Computed,
     pub points: usize,
-    /// Counts of each column's values ("true", "false", finder verdicts, claims, outcomes).
+    /// Counts of each column's values ("true", "false", finder verdicts, claims), and of the
+    /// drops' outcomes: `drops_evidence` (f64, the paper's protocol) and `drops_proved` (exact
+    /// runs; a drop without a proof counts as `undecided`).
     pub counts: BTreeMap<&'static str, BTreeMap<String, u64>>,
     /// Kind -> meaning and number of points.
     pub disagreement_kinds: BTreeMap<&'static str, KindCount>,
@@ -135,6 +156,37 @@ fn disagreements(r: &Row) -> Vec<(&'static str, String)> {
         if p > 0 && !r.pcc_criterion {
             out.push((KINDS[7].0, format!("{p} PCC drops, PCC criterion fails")));
         }
+        if let Some(proved) = s.proved {
+            out.extend(proof_disagreements(r, s, &proved));
+        }
+    }
+    out
+}
+
+/// The disagreements of a row's proved drop outcomes with the criterion, the evidence and the
+/// certificate.
+fn proof_disagreements(
+    r: &Row,
+    s: &super::point::SimStats,
+    proved: &[u64; 5],
+) -> Vec<(&'static str, String)> {
+    let mut out = Vec::new();
+    let [c, p, i, _, _] = *proved;
+    let claim = r.claim.clone().unwrap_or_default();
+    if c + p > 0 && !r.cc_criterion {
+        out.push((KINDS[10].0, format!("{c} CC and {p} PCC of {} drops proved, CC criterion fails", s.runs)));
+    }
+    if s.contradicted > 0 {
+        out.push((
+            KINDS[11].0,
+            format!("{} of {} drops: proved outcome differs from the f64 evidence", s.contradicted, s.runs),
+        ));
+    }
+    if s.counts[0] > c {
+        out.push((KINDS[12].0, format!("{} drops CC as evidence, {c} proved CC", s.counts[0])));
+    }
+    if i > 0 && r.certified == Some(true) && claim != "EffectivelyInvariant" {
+        out.push((KINDS[13].0, format!("certificate {claim}, {i} of {} drops proved ICC", s.runs)));
     }
     out
 }
@@ -160,10 +212,19 @@ impl Summary {
             if let Some(s) = &r.sim {
                 for (name, k) in crate::simulate::Outcome::ALL.iter().zip(s.counts) {
                     *counts
-                        .entry("simulated_drops")
+                        .entry("drops_evidence")
                         .or_default()
                         .entry(name.name().to_string())
                         .or_default() += k;
+                }
+                for (name, k) in crate::simulate::Outcome::ALL.iter().zip(s.proved.unwrap_or_default()) {
+                    if s.proved.is_some() {
+                        *counts
+                            .entry("drops_proved")
+                            .or_default()
+                            .entry(name.name().to_string())
+                            .or_default() += k;
+                    }
                 }
             }
             for (kind, detail) in disagreements(r) {

@@ -7,7 +7,9 @@ use crate::exact::{Q, QExt};
 
 /// The header of points.csv.
 pub const HEADER: &str = "index,n,rho,kappa,gamma,cc_criterion,pcc_criterion,finder,certified,claim,refuted,\
-sim_runs,sim_cc,sim_pcc,sim_icc,sim_undecided,sim_simultaneous,mean_impacts,certificate,refutation";
+sim_runs,sim_cc_evidence,sim_pcc_evidence,sim_icc_evidence,sim_undecided_evidence,sim_simultaneous_evidence,\
+mean_impacts,sim_cc_proved,sim_pcc_proved,sim_icc_proved,sim_simultaneous_proved,sim_undecided,sim_contradicted,\
+certificate,refutation,orbit";
 
 /// One row of points.csv.
 #[derive(Clone, Debug, PartialEq)]
@@ -30,6 +32,13 @@ pub struct Row {
     pub certificate: Option<String>,
     /// The refutation's path relative to the output folder.
     pub refutation: Option<String>,
+    /// The path of the orbit certificate made to prove drops CC, relative to the output folder.
+    pub orbit: Option<String>,
+}
+
+/// The orbit certificate file of a point, relative to the output folder.
+pub fn orbit_path(p: &Point) -> String {
+    format!("orbits/x{:04}-g{:04}.ron", p.ix, p.ig)
 }
 
 /// The refutation file of a point, relative to the output folder.
@@ -64,12 +73,18 @@ impl Row {
             sim: e.sim.clone(),
             certificate: e.certificate.as_ref().map(|_| certificate_path(p)),
             refutation: e.refutation.as_ref().map(|_| refutation_path(p)),
+            orbit: e.orbit.as_ref().map(|_| orbit_path(p)),
         }
     }
 
-    /// Whether the simulated drops (if any) include CC or PCC.
+    /// Whether the simulated drops (if any) include CC or PCC as evidence.
     pub fn sim_chatter(&self) -> Option<bool> {
         self.sim.as_ref().map(|s| s.counts[0] + s.counts[1] > 0)
+    }
+
+    /// Whether some drop was proved to end in CC or PCC (`None`: no proofs tried).
+    pub fn proved_chatter(&self) -> Option<bool> {
+        self.sim.as_ref().and_then(|s| s.proved).map(|p| p[0] + p[1] > 0)
     }
 
     /// The CSV line (without newline).
@@ -77,6 +92,8 @@ impl Row {
         let b = |x: Option<bool>| x.map(|v| v.to_string()).unwrap_or_default();
         let s = self.sim.as_ref();
         let count = |i: usize| s.map(|s| s.counts[i].to_string()).unwrap_or_default();
+        let proved = |i: usize| s.and_then(|s| s.proved).map(|p| p[i].to_string()).unwrap_or_default();
+        let contradicted = s.filter(|s| s.proved.is_some()).map(|s| s.contradicted.to_string());
         [
             self.index.to_string(),
             self.n.to_string(),
@@ -96,8 +113,15 @@ impl Row {
             count(3),
             count(4),
             s.map(|s| format!("{}", s.mean_impacts())).unwrap_or_default(),
+            proved(0),
+            proved(1),
+            proved(2),
+            proved(4),
+            proved(3),
+            contradicted.unwrap_or_default(),
             self.certificate.clone().unwrap_or_default(),
             self.refutation.clone().unwrap_or_default(),
+            self.orbit.clone().unwrap_or_default(),
         ]
         .join(",")
     }
@@ -120,7 +144,19 @@ impl Row {
             let runs = int(f[11])?;
             let counts = [int(f[12])?, int(f[13])?, int(f[14])?, int(f[15])?, int(f[16])?];
             let mean: f64 = f[17].parse().map_err(|_| format!("{:?} is not a number", f[17]))?;
-            Some(SimStats { runs, counts, impacts: (mean * runs as f64).round() as u64 })
+            let proved = if f[18].is_empty() {
+                None
+            } else {
+                Some([int(f[18])?, int(f[19])?, int(f[20])?, int(f[22])?, int(f[21])?])
+            };
+            let contradicted = if f[23].is_empty() { 0 } else { int(f[23])? };
+            Some(SimStats {
+                runs,
+                counts,
+                proved,
+                contradicted,
+                impacts: (mean * runs as f64).round() as u64,
+            })
         };
         Ok(Row {
             index: int(f[0])? as usize,
@@ -135,8 +171,9 @@ impl Row {
             claim: opt(f[9]),
             refuted: optb(f[10])?,
             sim,
-            certificate: opt(f[18]),
-            refutation: opt(f[19]),
+            certificate: opt(f[24]),
+            refutation: opt(f[25]),
+            orbit: opt(f[26]),
         })
     }
 }

@@ -150,7 +150,7 @@ fn classify_prints_both_conjectural_directions_for_a_rectangle_and_the_phone() {
             format!("conjectural CC criterion, clockwise ({cw} has a real, positive dominant"),
             "PCC lemma (proved, docs/model.md §11.6), pair (0, 1)".to_string(),
             "family finder (docs/model.md §11.12): ".to_string(),
-            "simulation (20 random drops, budget 2000 impacts".to_string(),
+            "simulation (evidence: 20 random drops in f64, budget 2000 impacts".to_string(),
             "certificate: ".to_string(),
         ] {
             assert!(out.contains(&needle), "{args:?}: missing {needle:?} in\n{out}");

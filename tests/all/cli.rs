@@ -206,7 +206,7 @@ fn classify_shows_finder_and_drops_for_irrational_n() {
         "CC criterion (S_1 has a real, positive dominant eigenvalue): HOLDS",
         "float finder, translation seed: found a cone",
         "float finder, all-down seed: found a cone",
-        "simulation (20 random drops, budget 2000 impacts, f64): CC 20,",
+        "simulation (evidence: 20 random drops in f64, budget 2000 impacts; `chatter simulate --exact` proves): CC 20,",
         "certificate: CcOrPccFromAllDown",
     ] {
         assert!(out.contains(needle), "missing {needle:?} in\n{out}");

@@ -39,7 +39,12 @@ fn request(a: &Args) -> Result<Request, Fail> {
     if a.simulate.is_some_and(|r| !(1..=MAX_RUNS).contains(&r)) {
         return Err(bad(format!("simulate: runs must be between 1 and {MAX_RUNS}")));
     }
-    let tasks = Tasks { certify: a.certify, refute: a.refute, simulate: a.simulate };
+    let tasks = Tasks {
+        certify: a.certify,
+        refute: a.refute,
+        simulate: a.simulate,
+        proof_budget: chatter::sweep::point::PROOF_BUDGET,
+    };
     Ok(Request { grid, tasks, shard: Shard::ALL })
 }
 
@@ -47,6 +52,7 @@ fn request(a: &Args) -> Result<Request, Fail> {
 fn point(row: &Row, done: &Done, variable: Variable) -> Map<String, Value> {
     let sim = row.sim.as_ref();
     let count = |i: usize| sim.map(|s| s.counts[i]);
+    let proved = |i: usize| sim.and_then(|s| s.proved).map(|p| p[i]);
     let rho = match variable {
         Variable::Rho => json!(row.rho),
         Variable::Kappa => json!(row.rho.parse::<f64>().ok()),
@@ -56,10 +62,13 @@ fn point(row: &Row, done: &Done, variable: Variable) -> Map<String, Value> {
         "kappa": row.kappa.to_string(), "gamma": row.gamma.to_string(),
         "cc_criterion": row.cc_criterion, "pcc_criterion": row.pcc_criterion,
         "finder": row.finder, "certified": row.certified, "claim": row.claim, "refuted": row.refuted,
-        "sim_runs": sim.map(|s| s.runs), "sim_cc": count(0), "sim_pcc": count(1), "sim_icc": count(2),
-        "sim_undecided": count(3), "sim_simultaneous": count(4),
+        "sim_runs": sim.map(|s| s.runs), "sim_cc_evidence": count(0), "sim_pcc_evidence": count(1),
+        "sim_icc_evidence": count(2), "sim_undecided_evidence": count(3), "sim_simultaneous_evidence": count(4),
         "mean_impacts": sim.map(|s| s.mean_impacts()),
-        "certificate": done.certificate, "refutation": done.refutation,
+        "sim_cc_proved": proved(0), "sim_pcc_proved": proved(1), "sim_icc_proved": proved(2),
+        "sim_simultaneous_proved": proved(4), "sim_undecided": proved(3),
+        "sim_contradicted": sim.filter(|s| s.proved.is_some()).map(|s| s.contradicted),
+        "certificate": done.certificate, "refutation": done.refutation, "orbit": done.orbit,
     });
     match obj {
         Value::Object(m) => m,

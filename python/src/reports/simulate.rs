@@ -89,8 +89,25 @@ fn validate(a: &Args) -> Result<Validated, Fail> {
 /// the reports `chatter.simulate/1` and `chatter.simulate-batch/1`.
 pub fn value(a: &Args) -> Result<Value, Fail> {
     let v = validate(a)?;
+    // Exact runs of regular polygons and the rod are checked against certified sets made on the
+    // fly (issue 22 §1), as `chatter simulate --exact` does.
+    let polygon =
+        matches!(v.model.shape(), chatter::simulate::Shape::Polygon(_) | chatter::simulate::Shape::Rod);
+    let sets = (v.arithmetic == Arithmetic::Exact && polygon).then(|| chatter::prove::made(&v.model));
+    let orbits = sets.is_some();
     Ok(match a.runs {
-        Some(m) => report::to_value(&simulate::batch(&v.model, a.seed, m, v.arithmetic, &v.opts, &|| {})),
-        None => report::to_value(&simulate::single(&v.model, &v.initial, v.arithmetic, &v.opts).0),
+        Some(m) => report::to_value(&simulate::batch(
+            &v.model,
+            a.seed,
+            m,
+            v.arithmetic,
+            &v.opts,
+            sets,
+            orbits,
+            &|| {},
+        )),
+        None => {
+            report::to_value(&simulate::single(&v.model, &v.initial, v.arithmetic, &v.opts, sets, orbits).0)
+        }
     })
 }

@@ -96,7 +96,9 @@ fn runs_print_counts_by_outcome() {
     assert_eq!(stdout(&o), stdout(&again));
     let o = simulate(&["--runs", "4"], d.path());
     assert!(
-        stdout(&o).contains("outcomes: CC 4, PCC 0, ICC 0, undecided 0, simultaneous 0"),
+        stdout(&o).contains(
+            "outcomes (evidence: f64 simulation proves nothing; --exact proves): CC 4, PCC 0, ICC 0, undecided 0, simultaneous 0"
+        ),
         "{}",
         stdout(&o)
     );
@@ -227,13 +229,16 @@ fn exact_simulation_runs_in_the_number_field_for_every_n() {
         assert_eq!(o.status.code(), Some(0), "n = {n}: {}", stderr(&o));
         let text = stdout(&o);
         assert!(
-            text.contains(&format!("exact, in Q(cos 2pi/{n})")) && text.contains("outcome: CC"),
+            // PCC is possible here (claims CcOrPccFromAllDown only), so CC stays evidence.
+            text.contains(&format!("exact, in Q(cos 2pi/{n})"))
+                && text.contains("outcome: undecided (no proof within 300 impacts; evidence: CC"),
             "{text}"
         );
         let e = json(&simulate(&[&args[..], &["--exact", "--json"]].concat(), d.path()));
         let f = json(&simulate(&[&args[..], &["--json"]].concat(), d.path()));
         assert_eq!((e["arithmetic"].as_str(), f["arithmetic"].as_str()), (Some("exact"), Some("f64")));
-        assert_eq!(e["outcome"], f["outcome"], "n = {n}");
+        assert_eq!(e["evidence"]["outcome"], f["outcome"], "n = {n}");
+        assert_eq!((e["proved"].as_bool(), f["proved"].as_bool()), (Some(false), Some(false)), "n = {n}");
         assert_eq!(e["sequence"].as_array().unwrap()[..40], f["sequence"].as_array().unwrap()[..40]);
     }
     for n in ["0", "1", "65", "1000"] {

@@ -9,6 +9,7 @@ mod field;
 mod outcomes;
 mod pattern;
 mod pcc;
+mod proved;
 mod regular;
 
 use crate::common::q;

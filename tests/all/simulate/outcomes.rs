@@ -6,7 +6,7 @@ use crate::common::q;
 use chatter::exact::{Q, Ring};
 use chatter::simulate::{
     Arithmetic, Decision, Initial, Model, Options, Outcome, Run, SplitMix64, Start, given_start, random_drop,
-    simulate, simulate_exact, simulate_float,
+    simulate_exact, simulate_float,
 };
 
 fn start(m: &Model, position: &[&str], velocity: &[&str]) -> Start<Q> {
@@ -24,7 +24,15 @@ fn both(m: &Model, s: &Start<Q>, budget: usize) -> [Run; 2] {
 fn rod_translation(gamma: &str, budget: usize, arithmetic: Arithmetic) -> Run {
     let m = model(2, "1/3", gamma);
     let s = start(&m, &["0", "1/10"], &["-1", "-1"]);
-    simulate(&m, &Initial::Given(Box::new(s)), arithmetic, &Options::new(budget))
+    // The exact run is checked against the rod's cone certificate where one exists.
+    let sets = chatter::prove::cone(&m, chatter::prove::Effort::Full);
+    chatter::simulate::simulate_with(
+        &m,
+        &Initial::Given(Box::new(s)),
+        arithmetic,
+        &Options::new(budget),
+        Some(&sets),
+    )
 }
 
 #[test]
@@ -36,7 +44,13 @@ fn rod_threshold_from_simulation_brackets_7_minus_4_sqrt_3() {
     for arithmetic in [Arithmetic::Float, Arithmetic::Exact] {
         let b = rod_translation(below, 200, arithmetic);
         assert_eq!(b.outcome, Outcome::Cc, "{arithmetic:?} below: {}", b.decision.describe());
-        assert!(matches!(b.decision, Decision::Converging { .. }));
+        // f64: converging intervals (evidence); exact: the rod's certified cone entered at impact 1.
+        match arithmetic {
+            Arithmetic::Float => assert!(matches!(b.decision, Decision::Converging { .. }) && !b.proved),
+            Arithmetic::Exact => {
+                assert!(matches!(b.decision, Decision::Certified { after: 1, .. }) && b.proved)
+            }
+        }
         let a = rod_translation(above, 200, arithmetic);
         assert_eq!(a.outcome, Outcome::Icc, "{arithmetic:?} above: {}", a.decision.describe());
         assert!(matches!(a.decision, Decision::VPositive { .. }));
@@ -145,7 +159,7 @@ fn exact_arithmetic_keeps_the_square_bouncing_on_a_diagonal_and_f64_does_not() {
     let m = model(4, "1/6", "1/100");
     let s = start(&m, &["0", "1", "1"], &["-1", "-1/2", "-1/2"]);
     let [f, e] = both(&m, &s, 120);
-    assert_eq!(e.outcome, Outcome::Cc, "{}", e.decision.describe());
+    assert_eq!(e.evidence, Outcome::Cc, "{}", e.decision.describe());
     assert!(e.sequence.iter().enumerate().all(|(i, &c)| c as usize == 2 * (i % 2)), "{:?}", e.sequence);
     let summary = chatter::simulate::pattern::summary_for(&e.sequence, chatter::simulate::Shape::Polygon(4));
     assert!(summary.contains("non-adjacent pair: rod-like"), "{summary}");

@@ -129,7 +129,7 @@ fn the_paper_criterion_is_overruled_where_the_lemma_excludes_pcc() {
     let e = simulate_exact(&m, &exact_drop(&m.float, 0), &opts);
     let f = simulate_float(&m.float, &random_drop(&m.float, 0), &opts);
     for r in [&e, &f] {
-        assert_eq!(r.outcome, Outcome::Cc, "{}", r.decision.describe());
+        assert_eq!(r.evidence, Outcome::Cc, "{}", r.decision.describe());
         assert!(r.pcc_overruled >= 3, "{}", r.pcc_overruled);
         assert!(r.sequence.contains(&0) && r.sequence.contains(&1) && r.sequence.contains(&2));
     }

@@ -134,7 +134,7 @@ fn rows_hold_the_exact_criteria_and_verified_certificates() {
     map(&["--out", "m"], d.path());
     let text = std::fs::read_to_string(d.path().join("m/points.csv")).unwrap();
     assert!(text.starts_with(HEADER));
-    for col in "n,rho,kappa,gamma,cc_criterion,pcc_criterion,finder,certified,claim,refuted,sim_runs,sim_cc,sim_pcc,sim_icc,mean_impacts".split(',') {
+    for col in "n,rho,kappa,gamma,cc_criterion,pcc_criterion,finder,certified,claim,refuted,sim_runs,sim_cc_evidence,sim_pcc_evidence,sim_icc_evidence,mean_impacts,sim_cc_proved,sim_icc_proved,sim_undecided,orbit".split(',') {
         assert!(HEADER.split(',').any(|h| h == col), "column {col} missing");
     }
     let rows = parse_csv(&text).unwrap();
@@ -153,6 +153,16 @@ fn rows_hold_the_exact_criteria_and_verified_certificates() {
         assert_eq!(r.refuted, None, "no --refute");
         let s = r.sim.as_ref().unwrap();
         assert_eq!((s.runs, s.counts.iter().sum::<u64>()), (3, 3));
+        // Issue 22: the same drops run exactly; a certificate excluding PCC proves every all-down
+        // drop CC (it enters K at its first impact), and no drop is proved CC without a set.
+        let proved = s.proved.expect("proofs run by default");
+        assert_eq!(proved.iter().sum::<u64>(), 3, "row {i}");
+        if r.claim.as_deref() == Some("CompleteChatterFromAllDown") {
+            assert_eq!(proved[0], 3, "row {i}: {proved:?}");
+        }
+        if r.certified != Some(true) && r.orbit.is_none() {
+            assert_eq!(proved[0], 0, "row {i}: CC proved without a certified set");
+        }
         certified += r.certified.unwrap_or(false) as usize;
     }
     assert!(certified > 0);
@@ -195,6 +205,13 @@ fn the_n3_band_is_a_disagreement_in_the_summary() {
     assert_eq!(s["disagreement_kinds"]["simulated-chatter-criterion-fails"]["points"], 1);
     assert_eq!(s["disagreements"][0]["kind"], "simulated-chatter-criterion-fails");
     assert!(stdout(&o).contains("disagreement simulated-chatter-criterion-fails: 1 points"));
+    // Issue 22: the drops are also proved CC, by an orbit certificate made for their pattern and
+    // written under orbits/, which the kernel re-checks from the file.
+    assert_eq!(s["disagreement_kinds"]["proved-chatter-criterion-fails"]["points"], 1);
+    assert_eq!(rows[0].sim.as_ref().unwrap().proved, Some([10, 0, 0, 0, 0]));
+    let orbit = rows[0].orbit.clone().expect("an orbit certificate was made");
+    let o = chatter(&["verify", &format!("band/{orbit}")], d.path());
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
 }
 
 #[test]

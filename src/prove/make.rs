@@ -1,0 +1,112 @@
+//! Certified sets made on the fly (issue 22 §1): a cone certificate with claim
+//! `CompleteChatterFromAllDown` by the certify pipeline, orbit certificates by the orbit
+//! producer; each is used only once the kernel accepts it on both backends
+//! ([`Certified::add_cone`], [`Certified::add_orbit`]).
+
+use crate::exact::Q;
+use crate::simulate::Model;
+use crate::simulate::certified::{Certified, SetKind, canonical_cycle, parameters, pattern_text};
+use chatter_kernel::certificate::Claim;
+use std::collections::HashMap;
+use std::sync::Mutex;
+
+/// The deepest subdivision an orbit certificate made on the fly may ask of the kernel (as in
+/// `chatter classify`).
+pub const ORBIT_DEPTH: u64 = 1;
+
+/// How hard the producers try: a single body (`chatter simulate`: the full budgets), or one
+/// point of a sweep (`chatter map`: the survey budgets of `crate::certify::Request::survey` and
+/// orbit sets down to δ = 2^-14).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Effort {
+    /// The full budgets.
+    Full,
+    /// Bounded budgets for sweeps.
+    Survey,
+}
+
+/// δ halvings of an orbit attempt at [`Effort::Survey`].
+const SURVEY_HALVINGS: u64 = 10;
+
+/// A cone certificate made on the fly (finder, exactifier, kernel on both backends), if one with
+/// claim `CompleteChatterFromAllDown` exists for the model (not cached: see [`made`]).
+pub fn cone(model: &Model, effort: Effort) -> Certified {
+    let mut out = Certified::empty();
+    let Some((n, _, _)) = parameters(model) else {
+        out.notes.push("no certified sets: not a regular polygon".into());
+        return out;
+    };
+    let mut req = crate::certify::Request::new(n, model.kappa.clone(), model.gamma.clone());
+    if effort == Effort::Survey {
+        req = req.survey();
+    }
+    req.claim = crate::certify::ClaimChoice::Exactly(Claim::CompleteChatterFromAllDown);
+    match crate::certify::certify(&req).result {
+        Ok(cert) => {
+            let name = format!("cone certificate made on the fly ({} generators)", cert.cone.len());
+            if let Err(e) = out.add_cone(model, &cert, &name) {
+                out.notes.push(format!("the cone certificate made on the fly cannot serve: {e}"));
+            }
+        }
+        Err(f) => out.notes.push(format!("no cone certificate with claim CompleteChatterFromAllDown: {f}")),
+    }
+    out
+}
+
+type Cache = Mutex<HashMap<(u64, Q, Q), Certified>>;
+
+/// The process-wide cache of sets made on the fly, per (n, κ, γ).
+fn cache() -> &'static Cache {
+    static CACHE: std::sync::OnceLock<Cache> = std::sync::OnceLock::new();
+    CACHE.get_or_init(Default::default)
+}
+
+fn key(model: &Model) -> (u64, Q, Q) {
+    (model.n() as u64, model.kappa.clone(), model.gamma.clone())
+}
+
+/// The sets made on the fly for a regular polygon model (a cone certificate, and the orbit
+/// certificates [`remember`]ed), cached per (n, κ, γ) for the life of the process.
+pub fn made(model: &Model) -> Certified {
+    if let Some(c) = cache().lock().expect("cache").get(&key(model)) {
+        return c.clone();
+    }
+    let made = cone(model, Effort::Full);
+    cache().lock().expect("cache").entry(key(model)).or_insert(made).clone()
+}
+
+/// Keeps these sets (e.g. with an orbit certificate added) as the model's cached sets.
+pub fn remember(model: &Model, sets: &Certified) {
+    cache().lock().expect("cache").insert(key(model), sets.clone());
+}
+
+/// Tries an orbit certificate for the steps `pattern` (orbit producer, kernel on both backends)
+/// and adds it to `sets`; `Ok(false)` when one for a phase of this pattern is there already.
+pub fn add_orbit_for(
+    sets: &mut Certified,
+    model: &Model,
+    pattern: &[usize],
+    effort: Effort,
+) -> Result<bool, String> {
+    let Some((n, _, _)) = parameters(model) else { return Err("not a regular polygon".into()) };
+    let canonical = canonical_cycle(pattern);
+    let text = pattern_text(&canonical);
+    if sets.sets().iter().any(|s| s.kind == SetKind::Orbit && s.name.contains(&text)) {
+        return Ok(false);
+    }
+    let req = crate::orbit::Request {
+        n,
+        kappa: model.kappa.clone(),
+        gamma: model.gamma.clone(),
+        pattern: Some(canonical),
+        drops: 0,
+        max_depth: ORBIT_DEPTH,
+    };
+    let backends = [chatter_kernel::verify::MALACHITE, chatter_kernel::verify::NUM];
+    let halvings = if effort == Effort::Survey { SURVEY_HALVINGS } else { crate::orbit::MAX_HALVINGS };
+    let found =
+        crate::orbit::certify_orbit_within(&req, &backends, &[], halvings).map_err(|f| f.to_string())?;
+    let name = format!("orbit certificate made on the fly (pattern {text})");
+    sets.add_orbit(model, &found.certificate, &name)?;
+    Ok(true)
+}

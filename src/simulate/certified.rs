@@ -1,0 +1,191 @@
+//! Certified sets that turn a drop's outcome into a proof (issue 22 §1): cone and orbit
+//! certificates, each accepted by the kernel on both backends before it is used, whose sets a
+//! post-impact state may enter (membership is decided by the kernel, `chatter_kernel::membership`).
+//!
+//! - a cone certificate proves CC from any post-impact velocity in its cone K when its claim
+//!   excludes PCC (`CompleteChatterFromAllDown`) and it holds for the body's n, κ, γ (a point
+//!   certificate with these exact values, or a box containing them);
+//! - an orbit certificate proves CC from any post-impact state in its set X (claim
+//!   `CompleteChatterFromSet`, n, κ, γ equal).
+//!
+//! Sets come from files (`chatter simulate --certificate FILE...`) or are made on the fly
+//! (`crate::prove::made`, cached per body and parameters; `crate::prove::add_orbit_for` once a
+//! drop's impacts show a periodic pattern).
+
+use super::scalar::Nf;
+use super::{Model, Shape};
+use chatter_kernel::certificate::{
+    Certificate, Claim, Encoding, ORBIT_VERSION, OrbitCertificate, read_in, read_orbit, version_of,
+};
+use chatter_kernel::exact::ParseLimits;
+use chatter_kernel::membership::{CertifiedCone, CertifiedOrbit, NotCertified};
+use chatter_kernel::model::linalg::Vec3;
+use chatter_kernel::verify::Verdict;
+use std::sync::Arc;
+
+/// The kind of a certified set.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SetKind {
+    /// The cone K of a cone certificate (velocities).
+    Cone,
+    /// The set X of an orbit certificate (normalised post-impact states).
+    Orbit,
+}
+
+impl SetKind {
+    /// The name used in output and JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            SetKind::Cone => "cone",
+            SetKind::Orbit => "orbit",
+        }
+    }
+}
+
+enum Inner {
+    Cone(Box<CertifiedCone>),
+    Orbit(Box<CertifiedOrbit>),
+}
+
+/// The certificate a set comes from (as read or made; the kernel accepted it).
+#[derive(Clone, Debug)]
+pub enum Source {
+    /// A cone certificate.
+    Cone(Certificate),
+    /// An orbit certificate.
+    Orbit(Box<OrbitCertificate>),
+}
+
+/// One certified set, with where it came from.
+pub struct Set {
+    /// The certificate's file name, or a description of the certificate made on the fly.
+    pub name: String,
+    /// What the set is.
+    pub kind: SetKind,
+    /// The claim the kernel accepted.
+    pub claim: Claim,
+    /// The certificate.
+    pub source: Source,
+    inner: Inner,
+}
+
+impl Set {
+    /// Whether the relabelled post-impact state (q, p) lies in the set (decided by the kernel).
+    fn contains(&self, q: &Vec3<Nf>, p: &Vec3<Nf>) -> bool {
+        match &self.inner {
+            Inner::Cone(c) => c.contains(p),
+            Inner::Orbit(o) => o.contains(q, p),
+        }
+    }
+}
+
+/// The certified sets of one body with its parameters (cheap to clone: the sets are shared).
+#[derive(Clone, Default)]
+pub struct Certified {
+    sets: Vec<Arc<Set>>,
+    /// What was tried and why a set is missing (for the report).
+    pub notes: Vec<String>,
+}
+
+/// Why a certificate cannot serve as a proof for this body.
+fn not_certified(e: NotCertified) -> String {
+    match e {
+        NotCertified::Verdict(v) => match *v {
+            Verdict::Rejected(r) => format!("rejected by the kernel: {r}"),
+            Verdict::Disagree(s) => format!("the kernel's backends disagree: {s}"),
+            Verdict::Accepted(_) => "accepted".into(),
+        },
+        NotCertified::Unreadable(s) => format!("a number could not be read again: {s}"),
+    }
+}
+
+/// n, κ and γ of a regular polygon or rod model in the kernel's scalars.
+pub fn parameters(model: &Model) -> Option<(u64, Nf, Nf)> {
+    match model.shape() {
+        Shape::Polygon(n) => Some((n, Nf::rational(model.kappa.clone()), Nf::rational(model.gamma.clone()))),
+        Shape::Rod => Some((2, Nf::rational(model.kappa.clone()), Nf::rational(model.gamma.clone()))),
+        Shape::Convex(_) => None,
+    }
+}
+
+impl Certified {
+    /// No sets: no drop can be proved CC.
+    pub fn empty() -> Certified {
+        Certified::default()
+    }
+
+    /// The sets, in the order they are tested.
+    pub fn sets(&self) -> &[Arc<Set>] {
+        &self.sets
+    }
+
+    /// The first set that contains the relabelled post-impact state (q, p).
+    pub fn entered(&self, q: &Vec3<Nf>, p: &Vec3<Nf>) -> Option<&Set> {
+        self.sets.iter().map(|s| &**s).find(|s| s.contains(q, p))
+    }
+
+    /// Adds a cone certificate that the kernel accepts, whose claim excludes PCC and which holds
+    /// for the model; `Err` says why it cannot serve.
+    pub fn add_cone(&mut self, model: &Model, cert: &Certificate, name: &str) -> Result<(), String> {
+        let Some((n, kappa, gamma)) = parameters(model) else {
+            return Err("proofs by certified sets need a regular polygon or the rod".into());
+        };
+        if cert.claim != Claim::CompleteChatterFromAllDown {
+            return Err(format!(
+                "its claim {} does not exclude PCC: only CompleteChatterFromAllDown proves CC from K",
+                cert.claim.name()
+            ));
+        }
+        let (cone, _) = CertifiedCone::new(cert, ParseLimits::default()).map_err(not_certified)?;
+        if !cone.applies_to(n, &kappa, &gamma) {
+            return Err(format!("it is not about n = {n}, kappa = {}, gamma = {}", model.kappa, model.gamma));
+        }
+        let (kind, source, inner) = (SetKind::Cone, Source::Cone(cert.clone()), Inner::Cone(Box::new(cone)));
+        let set = Set { name: name.into(), kind, claim: cert.claim, source, inner };
+        self.sets.push(Arc::new(set));
+        Ok(())
+    }
+
+    /// Adds an orbit certificate that the kernel accepts and which is about the model.
+    pub fn add_orbit(&mut self, model: &Model, cert: &OrbitCertificate, name: &str) -> Result<(), String> {
+        let Some((n, kappa, gamma)) = parameters(model) else {
+            return Err("proofs by certified sets need a regular polygon (n >= 3)".into());
+        };
+        let (orbit, _) = CertifiedOrbit::new(cert, ParseLimits::default()).map_err(not_certified)?;
+        if !orbit.applies_to(n, &kappa, &gamma) {
+            return Err(format!("it is not about n = {n}, kappa = {}, gamma = {}", model.kappa, model.gamma));
+        }
+        let claim = Claim::CompleteChatterFromSet;
+        let (kind, source, inner) =
+            (SetKind::Orbit, Source::Orbit(Box::new(cert.clone())), Inner::Orbit(Box::new(orbit)));
+        self.sets.push(Arc::new(Set { name: name.into(), kind, claim, source, inner }));
+        Ok(())
+    }
+
+    /// Adds the certificate in a file (RON, or its JSON twin by the extension `.json`).
+    pub fn add_file(&mut self, model: &Model, path: &std::path::Path) -> Result<(), String> {
+        let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read it: {e}"))?;
+        let json = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"));
+        let encoding = if json { Encoding::Json } else { Encoding::Ron };
+        let name = path.display().to_string();
+        if version_of(&text, encoding) == Some(ORBIT_VERSION) {
+            let cert = read_orbit(&text, encoding).map_err(|r| format!("rejected by the kernel: {r}"))?;
+            return self.add_orbit(model, &cert, &name);
+        }
+        let cert = read_in(&text, encoding).map_err(|r| format!("rejected by the kernel: {r}"))?;
+        self.add_cone(model, &cert, &name)
+    }
+}
+
+/// The steps of a cycle rotated to its lexicographically smallest phase (one name per cycle).
+pub fn canonical_cycle(steps: &[usize]) -> Vec<usize> {
+    (0..steps.len().max(1))
+        .map(|r| steps[r..].iter().chain(&steps[..r]).copied().collect::<Vec<_>>())
+        .min()
+        .unwrap_or_default()
+}
+
+/// "2,2,1,1".
+pub fn pattern_text(steps: &[usize]) -> String {
+    steps.iter().map(ToString::to_string).collect::<Vec<_>>().join(",")
+}

@@ -1,0 +1,196 @@
+//! Issue 22 §1: a drop's verdict is a proof or is called evidence. Exact runs prove CC only by
+//! entering a kernel-checked certified set, ICC by v > 0, PCC by the exact pair proof; `f64`
+//! runs prove nothing.
+
+use crate::common::{bin, q, root};
+use chatter::simulate::certified::{Certified, SetKind};
+use chatter::simulate::{
+    Arithmetic, Decision, Initial, Model, Options, Outcome, Shape, simulate, simulate_with,
+};
+use std::process::Command;
+
+fn polygon(n: u64, kappa: &str, gamma: &str) -> Model {
+    Model::new(Shape::Polygon(n), q(kappa), q(gamma)).expect("valid test body")
+}
+
+fn exact(model: &Model, seed: u64, budget: usize, sets: &Certified) -> chatter::simulate::Run {
+    simulate_with(model, &Initial::RandomDrop { seed }, Arithmetic::Exact, &Options::new(budget), Some(sets))
+}
+
+/// The seven pentagon points of issue 22 where the paper's 200-impact protocol calls some drops
+/// CC although they end in ICC (κ = ρ², γ on the 80 × 80 reproduce grid).
+const PENTAGON: [(&str, &str); 7] = [
+    ("9/25600", "141/160"),
+    ("1/1024", "131/160"),
+    ("1/1024", "133/160"),
+    ("1/1024", "27/32"),
+    ("49/25600", "25/32"),
+    ("49/25600", "127/160"),
+    ("81/25600", "23/32"),
+];
+
+#[test]
+fn an_all_down_drop_at_a_certified_point_enters_the_cone_at_its_first_impact() {
+    for (n, kappa, gamma) in [(3, "1/8", "1/10"), (4, "1/6", "1/100"), (6, "1/50", "1/5")] {
+        let model = polygon(n, kappa, gamma);
+        let sets = chatter::prove::cone(&model, chatter::prove::Effort::Full);
+        assert_eq!(sets.sets().len(), 1, "n = {n}: a cone certificate is made: {:?}", sets.notes);
+        for seed in 0..5 {
+            let run = exact(&model, seed, 200, &sets);
+            assert!(run.proved && run.outcome == Outcome::Cc, "n = {n}, seed {seed}: {:?}", run.decision);
+            // I_0(D) ⊆ K: every all-down drop's first post-impact velocity lies in K.
+            assert!(
+                matches!(run.decision, Decision::Certified { after: 1, kind: SetKind::Cone, .. }),
+                "n = {n}, seed {seed}: {:?}",
+                run.decision
+            );
+        }
+    }
+}
+
+#[test]
+fn a_drop_above_the_threshold_is_proved_icc_and_never_cc() {
+    // The square plate's CC threshold is 0.02955...; at γ = 1/5 no cone certificate exists.
+    let model = polygon(4, "1/6", "1/5");
+    let sets = chatter::prove::cone(&model, chatter::prove::Effort::Survey);
+    assert!(sets.sets().is_empty(), "no cone above the threshold");
+    for seed in 0..10 {
+        let run = exact(&model, seed, 1000, &sets);
+        assert_eq!((run.outcome, run.proved), (Outcome::Icc, true), "seed {seed}: {:?}", run.decision);
+        assert!(matches!(run.decision, Decision::VPositive { .. }));
+    }
+}
+
+#[test]
+fn the_seven_pentagon_points_are_never_proved_cc() {
+    for (kappa, gamma) in PENTAGON {
+        let model = polygon(5, kappa, gamma);
+        let sets = chatter::prove::cone(&model, chatter::prove::Effort::Survey);
+        assert!(sets.sets().is_empty(), "kappa {kappa}, gamma {gamma}: the CC criterion fails, no cone");
+        for seed in 0..20 {
+            let run = exact(&model, seed, 200, &sets);
+            assert_ne!(run.outcome, Outcome::Cc, "kappa {kappa}, gamma {gamma}, seed {seed}");
+            assert!(run.proved || run.outcome == Outcome::Undecided);
+        }
+    }
+}
+
+#[test]
+fn a_pentagon_drop_that_the_paper_protocol_calls_cc_is_proved_icc() {
+    // Seed 5 at κ = 1/1024, γ = 131/160: the f64 protocol says CC by converging intervals at
+    // 200 impacts; the exact run proves ICC (v > 0) after a few hundred impacts.
+    let model = polygon(5, "1/1024", "131/160");
+    let f64_run = simulate(&model, &Initial::RandomDrop { seed: 5 }, Arithmetic::Float, &Options::new(200));
+    assert_eq!((f64_run.outcome, f64_run.proved), (Outcome::Cc, false));
+    assert!(matches!(f64_run.decision, Decision::Converging { .. }));
+    let exact200 = exact(&model, 5, 200, &Certified::empty());
+    assert_eq!((exact200.outcome, exact200.evidence), (Outcome::Undecided, Outcome::Cc));
+    let long = exact(&model, 5, 1000, &Certified::empty());
+    assert_eq!((long.outcome, long.proved), (Outcome::Icc, true), "{:?}", long.decision);
+}
+
+#[test]
+fn a_band_drop_is_proved_cc_by_the_orbit_certificate_of_the_corpus() {
+    let model = polygon(3, "1/8", "3/20");
+    let mut sets = Certified::empty();
+    sets.add_file(&model, &root().join("certificates/valid/orbit-n3-kappa1_8-gamma3_20.ron")).unwrap();
+    for seed in 0..4 {
+        let run = exact(&model, seed, 400, &sets);
+        assert!(run.proved && run.outcome == Outcome::Cc, "seed {seed}: {:?}", run.decision);
+        assert!(matches!(run.decision, Decision::Certified { kind: SetKind::Orbit, .. }));
+    }
+    // Without the certificate the same run is evidence only.
+    let run = exact(&model, 0, 400, &Certified::empty());
+    assert_eq!((run.outcome, run.evidence, run.proved), (Outcome::Undecided, Outcome::Cc, false));
+}
+
+#[test]
+fn certificates_about_another_body_or_without_pcc_exclusion_are_refused() {
+    let model = polygon(3, "1/8", "1/7");
+    let mut sets = Certified::empty();
+    let orbit = root().join("certificates/valid/orbit-n3-kappa1_8-gamma3_20.ron");
+    let e = sets.add_file(&model, &orbit).unwrap_err();
+    assert!(e.contains("not about n = 3, kappa = 1/8, gamma = 1/7"), "{e}");
+    let square = polygon(4, "1/6", "1/100");
+    let cone = root().join("certificates/valid/doc-example-square.ron");
+    sets.add_file(&square, &cone).unwrap();
+    let weak = polygon(4, "1/6", "1/1000");
+    let mut req = chatter::certify::Request::new(4, q("1/6"), q("1/1000"));
+    req.claim =
+        chatter::certify::ClaimChoice::Exactly(chatter_kernel::certificate::Claim::CcOrPccFromAllDown);
+    let cert = chatter::certify::certify(&req).result.expect("the square at 1/1000 certifies CC or PCC");
+    let e = Certified::empty().add_cone(&weak, &cert, "weak").unwrap_err();
+    assert!(e.contains("does not exclude PCC"), "{e}");
+    assert_eq!(sets.sets().len(), 1);
+}
+
+#[test]
+fn f64_runs_are_never_proofs() {
+    let model = polygon(3, "1/8", "1/10");
+    for seed in 0..20 {
+        let run = simulate(&model, &Initial::RandomDrop { seed }, Arithmetic::Float, &Options::new(200));
+        assert!(!run.proved, "seed {seed}");
+        assert_eq!(run.outcome, run.evidence);
+    }
+}
+
+fn chatter(args: &[&str]) -> (String, i32) {
+    let out = Command::new(bin()).args(args).output().unwrap();
+    (
+        String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr),
+        out.status.code().unwrap(),
+    )
+}
+
+#[test]
+fn the_command_says_proof_or_evidence_in_text_and_json() {
+    let (text, code) = chatter(&["simulate", "--n", "3", "--kappa", "1/8", "--gamma", "1/10", "--exact"]);
+    assert_eq!(code, 0, "{text}");
+    assert!(text.contains("outcome: CC (proved)"), "{text}");
+    assert!(text.contains("after impact 1 the velocity lies in the cone K"), "{text}");
+    let (text, _) = chatter(&["simulate", "--n", "3", "--kappa", "1/8", "--gamma", "1/10"]);
+    assert!(text.contains("outcome: CC (evidence: an f64 simulation proves nothing"), "{text}");
+    let (json, _) = chatter(&["simulate", "--n", "3", "--kappa", "1/8", "--gamma", "1/10", "--json"]);
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!((v["proved"].as_bool(), v["basis"].as_str()), (Some(false), Some("evidence")));
+    let orbit = root().join("certificates/valid/orbit-n3-kappa1_8-gamma3_20.ron");
+    let args = ["simulate", "--n", "3", "--kappa", "1/8", "--gamma", "3/20", "--exact", "--impacts", "400"];
+    let (json, code) = chatter(&[&args[..], &["--json", "--certificate", orbit.to_str().unwrap()]].concat());
+    assert_eq!(code, 0, "{json}");
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!((v["outcome"].as_str(), v["proved"].as_bool()), (Some("CC"), Some(true)), "{json}");
+    assert_eq!(v["entered"]["kind"], "orbit");
+    assert!(v["entered"]["impact"].as_u64().unwrap() > 1);
+}
+
+#[test]
+fn the_command_refuses_certificates_that_cannot_serve() {
+    let orbit = root().join("certificates/valid/orbit-n3-kappa1_8-gamma3_20.ron");
+    let o = orbit.to_str().unwrap();
+    let (text, code) =
+        chatter(&["simulate", "--n", "3", "--kappa", "1/8", "--gamma", "1/7", "--exact", "--certificate", o]);
+    assert_eq!(code, 2, "{text}");
+    assert!(
+        text.contains("--certificate") && text.contains("not about n = 3, kappa = 1/8, gamma = 1/7"),
+        "{text}"
+    );
+    let (text, code) =
+        chatter(&["simulate", "--n", "3", "--kappa", "1/8", "--gamma", "3/20", "--certificate", o]);
+    assert_eq!(code, 2, "{text}");
+    assert!(text.contains("--certificate needs --exact"), "{text}");
+    let bad = root().join("certificates/invalid/shrunk-rectangle.ron");
+    let (text, code) = chatter(&[
+        "simulate",
+        "--n",
+        "4",
+        "--kappa",
+        "1/6",
+        "--gamma",
+        "1/100",
+        "--exact",
+        "--certificate",
+        bad.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 2, "{text}");
+    assert!(text.contains("rejected by the kernel"), "{text}");
+}
