@@ -8,7 +8,6 @@ use crate::report::simulate as report;
 use crate::simulate::classify::DEFAULT_PCC_EPSILON;
 use crate::simulate::pattern;
 use crate::simulate::{Arithmetic, Decision, Initial, Model, Options, Outcome, Run, Shape, record, simulate};
-use chatter_kernel::model::BodyError;
 use clap::Args;
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -113,11 +112,8 @@ fn model(n: u64, kappa: &Q, gamma: &Q) -> Result<Model, String> {
         return Err(format!("--n: {n} is outside 2..={MAX_N} (2 is the rod, 3..={MAX_N} regular n-gons)"));
     }
     let shape = if n == 2 { Shape::Rod } else { Shape::Polygon(n) };
-    let model = Model::new(shape, kappa.clone(), gamma.clone()).map_err(|e| match e {
-        BodyError::KappaNotPositive => format!("--kappa: {e}"),
-        BodyError::GammaOutOfRange => format!("--gamma: {e}"),
-        BodyError::UnsupportedN(_) => format!("--n: {e}"),
-    })?;
+    let model = Model::new(shape, kappa.clone(), gamma.clone())
+        .map_err(|e| super::body_error(&e, n, kappa, gamma, "n = 2 (the rod) or 3 to 64"))?;
     Ok(model)
 }
 
