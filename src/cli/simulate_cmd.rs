@@ -211,6 +211,14 @@ fn arithmetic_text(a: Arithmetic, model: &Model) -> String {
     }
 }
 
+/// The body in a figure's title, in the figures' notation (κ =, γ =).
+fn figure_head(v: &Validated) -> String {
+    match &v.general {
+        Some(g) => format!("{}, γ = {}", g.description, v.gamma),
+        None => format!("n = {}, κ = {}, γ = {}", v.n, v.kappa, v.gamma),
+    }
+}
+
 fn head(v: &Validated) -> String {
     if let Some(g) = &v.general {
         return format!("{}, n={} gamma={}", g.description, v.n, v.gamma);
@@ -288,7 +296,7 @@ fn run_single(v: &Validated) -> cli::Outcome {
     if let Some(path) = &v.plot {
         let title = format!(
             "{}: {} after {} impacts ({}, {})",
-            head(v),
+            figure_head(v),
             run.outcome,
             run.impacts,
             start_text(v),
