@@ -21,7 +21,7 @@ impl Frame {
     }
 
     /// Pixels from a point to the nearest edge of the frame.
-    fn to_edge(&self, p: (f64, f64)) -> f64 {
+    fn edge_distance(&self, p: (f64, f64)) -> f64 {
         let (x, y) = self.px(p);
         x.min(self.pixels.0 - x).min(y).min(self.pixels.1 - y)
     }
@@ -72,7 +72,7 @@ pub fn place(
                 (q.0 - r.0).hypot(q.1 - r.1) - 2.0 * reach
             })
             .fold(f64::INFINITY, f64::min);
-        let edge = frame.to_edge(p) - reach;
+        let edge = frame.edge_distance(p) - reach;
         (to_lines(frame, p, avoid) - reach).min(labels).min(edge)
     };
     let clear = candidates

@@ -79,7 +79,8 @@ pub fn draw<DB: DrawingBackend>(
         .into_iter()
         .map(|(_, l)| l)
         .collect();
-    let (thin, thick): (Vec<&(f64, Polyline)>, Vec<&(f64, Polyline)>) =
+    type Levels<'a> = Vec<&'a (f64, Polyline)>;
+    let (thin, thick): (Levels, Levels) =
         levels.iter().filter(|(_, l)| l.len() >= 2).partition(|(level, _)| *level < LEVELS[4]);
     let mut e = Vec::new();
     let thin_lines: Vec<Polyline> = thin.iter().map(|(_, l)| l.clone()).collect();

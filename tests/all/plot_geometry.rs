@@ -14,12 +14,15 @@ use chatter::sweep::table::Row;
 /// Where the legend begins: the figures draw their data left of this (SVG units).
 pub const LEGEND_X: f64 = 840.0;
 
+/// A drawn line: (stroke, stroke-width, points).
+pub type Line = (String, String, Vec<(f64, f64)>);
+
 /// The drawn things of an SVG document that the tests need.
 pub struct Drawn {
     /// (x, y, width, height, fill) of every <rect>.
     pub rects: Vec<(f64, f64, f64, f64, String)>,
     /// (stroke, stroke-width, points) of every <polyline> (and <line>).
-    pub lines: Vec<(String, String, Vec<(f64, f64)>)>,
+    pub lines: Vec<Line>,
     /// (x, y, fill, content) of every <text>.
     pub texts: Vec<(f64, f64, String, String)>,
 }

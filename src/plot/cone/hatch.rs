@@ -115,7 +115,7 @@ pub fn name_spot(
                 avoid.iter().filter(|a| a.len() >= 2).map(|a| depth(a, q)).fold(f64::INFINITY, f64::min);
             let names = placed.iter().map(|p| (p - q).norm() - 0.08).fold(f64::INFINITY, f64::min);
             let score = (alone, depth(&polys[j], q).min(clear).min(names));
-            if best.as_ref().is_none_or(|(s, _)| score.0 > s.0 || (score.0 == s.0 && score.1 > s.1)) {
+            if best.as_ref().is_none_or(|(s, _)| (score.0 && !s.0) || (score.0 == s.0 && score.1 > s.1)) {
                 best = Some((score, q));
             }
         }

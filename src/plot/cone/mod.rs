@@ -138,7 +138,6 @@ impl ConeFigure {
                 push(Entry::new(sample, m.legend.clone()));
             }
         }
-        let mut e = e;
         e.extend(self.notes.iter().map(|n| Entry::new(Sample::Note, n.clone())));
         e
     }
