@@ -89,6 +89,10 @@ fn a_certificates_cone_on_the_plane() {
     for s in ["K on the plane v = −1", "C₁", "C₃", "S₃(K ∩ C₃)", "p_max", "u₀ / (−v)"] {
         assert!(svg.contains(s), "cone.svg lacks {s}");
     }
+    // Issue 26 §1: the two eigenvectors are told apart, and a stretched axis is said so.
+    for s in ["p_max(S₁)", "p_max(S₃)", "axes not to scale: horizontal stretched"] {
+        assert!(svg.contains(s), "cone.svg lacks {s}");
+    }
     ok(&chatter(&["plot", "cone", "sq.ron", "-o", "cone.png"], p));
     assert_eq!(png_size(&p.join("cone.png")), (2500, 1640));
     ok(&chatter(&["certify", "--n", "2", "--kappa", "1/3", "--gamma", "1/20", "-o", "rod.ron"], p));
