@@ -2,7 +2,8 @@
 
     python examples/python/certify_and_map.py [OUT.png]
 
-Needs the package (pip install ./python) and matplotlib.
+Needs the package with its plotting extra, from the root of a clone:
+pip install "./python[plot]" (matplotlib and numpy).
 """
 
 import sys

@@ -606,7 +606,11 @@ pub fn field_kappa(n: u64, text: &str) -> Result<Option<(Q, String)>, String> {
         .ok_or_else(|| format!("{text:?} names c = cos(2 pi/{n}), which is rational or out of range here"))?;
     let k = field
         .parse(text, ParseLimits::default())
-        .map_err(|e| format!("{text:?} is not the canonical text of an element of Q(cos 2 pi/{n}): {e}"))?;
+        .map_err(|e| {
+            format!(
+                "{text:?} is neither a number (1/8, 0.125) nor an element of Q(c), c = cos(2π/{n}), in canonical text (\"1/40 + 1/100*c\"): {e}"
+            )
+        })?;
     let (lo, _) = k.enclose(&Q::new(1, 1 << 40));
     Ok(Some((lo, text.to_string())))
 }

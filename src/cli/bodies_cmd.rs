@@ -47,7 +47,7 @@ pub struct BodiesArgs {
 
 fn validate(a: &BodiesArgs) -> Result<Vec<Entry>, String> {
     if a.digits == 0 || a.digits > 60 {
-        return Err("--digits must be in 1..=60".into());
+        return Err(format!("--digits: {} is not accepted: give 1 to 60", a.digits));
     }
     let mut extra = Vec::new();
     match (a.n, &a.kappa) {
@@ -56,7 +56,7 @@ fn validate(a: &BodiesArgs) -> Result<Vec<Entry>, String> {
             extra.push(bodies::user(n, &k).map_err(|e| format!("--n/--kappa: {e}"))?);
         }
         (None, None) => {}
-        _ => return Err("--n and --kappa go together".into()),
+        _ => return Err("--n and --kappa go together: give both (e.g. --n 5 --kappa 1/8) or neither".into()),
     }
     if let Some(n) = a.plate {
         extra.push(bodies::prism(n, &Q::int(0)).map_err(|e| format!("--plate: {e}"))?);
@@ -65,12 +65,16 @@ fn validate(a: &BodiesArgs) -> Result<Vec<Entry>, String> {
         (Some(n), Some(h)) => {
             let h = parse_user_number(h).map_err(|e| format!("--height: {e}"))?;
             if h.is_negative() {
-                return Err("--height must be >= 0".into());
+                return Err(format!("--height: {h} is not accepted: the height must be >= 0"));
             }
             extra.push(bodies::prism(n, &h).map_err(|e| format!("--prism: {e}"))?);
         }
         (None, None) => {}
-        _ => return Err("--prism and --height go together".into()),
+        _ => {
+            return Err(
+                "--prism and --height go together: give both (e.g. --prism 4 --height 1/2) or neither".into(),
+            );
+        }
     }
     if a.only && extra.is_empty() {
         return Err("--only needs a body (--n/--kappa, --plate or --prism/--height)".into());

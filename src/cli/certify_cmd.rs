@@ -2,7 +2,7 @@
 
 use super::{Env, Outcome, emit, emit_report};
 use crate::certify::{ClaimChoice, Failure, Report, Request, certify};
-use crate::exact::Q;
+use crate::exact::{Q, parse_user_number};
 use chatter_kernel::certificate::{Claim, write};
 use chatter_kernel::model::BodyError;
 use clap::{Args, ValueEnum};
@@ -109,10 +109,16 @@ fn catalogue_body(name: &str) -> Result<(u64, Q, Option<String>), String> {
 
 /// `--kappa` as an element of Q(cos 2 pi/n) in canonical text, if it is one.
 fn field_kappa(body: &super::BodyArgs) -> Result<Option<(Q, String)>, String> {
-    if !body.kappa.contains(crate::exact::GENERATOR) {
+    if !body.kappa.contains(crate::exact::GENERATOR) || parse_user_number(&body.kappa).is_ok() {
         return Ok(None);
     }
     let (n, _, _) = super::BodyArgs { kappa: "1".into(), ..body.clone() }.parse()?;
+    if !chatter_kernel::check::is_irrational(n) {
+        return Err(format!(
+            "--kappa: {:?} is not a number: give a fraction or a decimal, such as 1/8 or 0.125 (an element of Q(c) such as \"1/40 + 1/100*c\", c = cos(2π/n), only where c is irrational: n = 5, 7, 8, ...)",
+            body.kappa
+        ));
+    }
     crate::certify::field_kappa(n, &body.kappa).map_err(|m| format!("--kappa: {m}"))
 }
 
@@ -133,16 +139,19 @@ fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
     }
     for (k, g) in [(&kappa[0], &gamma[0]), (&kappa[1], &gamma[1])] {
         if let Err(e) = crate::certify::check_body(n, k, g) {
-            let flag = match e {
-                BodyError::UnsupportedN(_) => "--n",
-                BodyError::KappaNotPositive => "--kappa",
-                BodyError::GammaOutOfRange => "--gamma",
-            };
-            return Err(format!("{flag}: {e}"));
+            return Err(match e {
+                BodyError::UnsupportedN(n) => format!(
+                    "--n: {n} is not supported: certify takes n = 2 (the rod) or a regular polygon with 3 to 64 contacts (general bodies: --rectangle, --box, --polygon, --body)"
+                ),
+                BodyError::KappaNotPositive => format!("--kappa: {k} is not accepted: kappa must be > 0"),
+                BodyError::GammaOutOfRange => {
+                    format!("--gamma: {g} is not accepted: gamma must lie in [0, 1]")
+                }
+            });
         }
     }
     if a.max_vertices < 3 {
-        return Err("--max-vertices must be at least 3".into());
+        return Err(format!("--max-vertices: {} is not accepted: give at least 3", a.max_vertices));
     }
     let mut req = Request::boxed(n, kappa, gamma);
     req.kappa_field = kappa_field;

@@ -52,7 +52,7 @@ fn general(a: &ClassifyArgs, gamma: &Q) -> Result<Option<ClassifyReport>, String
         return Err("--velocity is for the rod (--n 2), not for general bodies".into());
     }
     if gamma.is_negative() || *gamma > Q::int(1) {
-        return Err("--gamma: gamma must lie in [0, 1]".into());
+        return Err(format!("--gamma: {gamma} is not accepted: gamma must lie in [0, 1]"));
     }
     match a.general.parse(gamma)? {
         Some(g) => classify_general(&g.description, &g.body, a.digits).map(Some),

@@ -52,7 +52,9 @@ pub struct CoverArgs {
 fn validate(a: &CoverArgs) -> Result<CoverRequest, String> {
     let n: u64 = a.n.trim().parse().map_err(|_| format!("--n: {:?} is not a number of contacts", a.n))?;
     if ![2, 3, 4, 6].contains(&n) {
-        return Err(format!("--n: n = {n} is not supported (exact models for n = 2, 3, 4, 6)"));
+        return Err(format!(
+            "--n: {n} is not supported here: give n = 2, 3, 4 or 6 (box certificates need a rational cos 2π/n)"
+        ));
     }
     let kappa = range("--kappa", &a.kappa)?;
     let gamma = range("--gamma", &a.gamma)?;

@@ -24,6 +24,7 @@ mod simulate_cmd;
 mod verify_cmd;
 
 use crate::exact::{Q, parse_user_number};
+use chatter_kernel::model::BodyError;
 use chatter_kernel::verify::{Backend, MALACHITE, NUM};
 use clap::{Args, Parser, Subcommand};
 use std::process::ExitCode;
@@ -178,6 +179,16 @@ impl BodyArgs {
     pub fn parse_ranges(&self) -> Result<(u64, [Q; 2], [Q; 2]), String> {
         let (n, _, _) = BodyArgs { kappa: "1".into(), gamma: "0".into(), ..self.clone() }.parse()?;
         Ok((n, range("--kappa", &self.kappa)?, range("--gamma", &self.gamma)?))
+    }
+}
+
+/// A body the model refuses, as a usage error naming the option, the value given and what
+/// `command` accepts for n (e.g. "n = 2, 3, 4 or 6 (rational cos 2π/n)").
+pub fn body_error(e: &BodyError, n: u64, kappa: &Q, gamma: &Q, ns: &str) -> String {
+    match e {
+        BodyError::UnsupportedN(_) => format!("--n: {n} is not supported here: give {ns}"),
+        BodyError::KappaNotPositive => format!("--kappa: {kappa} is not accepted: kappa must be > 0"),
+        BodyError::GammaOutOfRange => format!("--gamma: {gamma} is not accepted: gamma must lie in [0, 1]"),
     }
 }
 

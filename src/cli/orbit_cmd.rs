@@ -5,7 +5,6 @@ use super::{Env, Outcome, emit, emit_report};
 use crate::exact::parse_user_number;
 use crate::orbit::{Failure, Request, certify_orbit};
 use chatter_kernel::certificate::write_orbit;
-use chatter_kernel::model::BodyError;
 use clap::Args;
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
@@ -81,19 +80,14 @@ fn parse_pattern(text: &str, n: u64) -> Result<Vec<usize>, String> {
 fn validate(a: &OrbitArgs) -> Result<Request, String> {
     if ![3, 4, 6].contains(&a.n) {
         return Err(format!(
-            "--n: n = {}: orbit certificates need a rational cos(2 pi/n), n in {{3, 4, 6}}",
+            "--n: {} is not supported here: give n = 3, 4 or 6 (orbit certificates need a rational cos 2π/n)",
             a.n
         ));
     }
     let kappa = parse_user_number(&a.kappa).map_err(|e| format!("--kappa: {e}"))?;
     let gamma = parse_user_number(&a.gamma).map_err(|e| format!("--gamma: {e}"))?;
     if let Err(e) = crate::certify::check_body(a.n, &kappa, &gamma) {
-        let flag = match e {
-            BodyError::UnsupportedN(_) => "--n",
-            BodyError::KappaNotPositive => "--kappa",
-            BodyError::GammaOutOfRange => "--gamma",
-        };
-        return Err(format!("{flag}: {e}"));
+        return Err(super::body_error(&e, a.n, &kappa, &gamma, "n = 3, 4 or 6"));
     }
     let pattern = a.pattern.as_deref().map(|p| parse_pattern(p, a.n)).transpose()?;
     if a.max_depth > chatter_kernel::orbit::MAX_DEPTH {

@@ -36,7 +36,7 @@ pub enum PlotWhat {
     Map(MapPlotArgs),
     /// A simulation map (figure "simulations"): level curves of the mean impact count (needs map --simulate).
     Simulations(MapPlotArgs),
-    /// An effectively invariant cone on the plane v = -1 (figure "sajatertekek", right).
+    /// A certificate on the plane v = -1: its cone(s), or an orbit certificate's set X (figure "sajatertekek", right).
     Cone(ConePlotArgs),
     /// A certified cover (`chatter cover`): the boxes by status, with the exact CC boundary.
     Cover(CoverPlotArgs),
@@ -87,7 +87,8 @@ pub struct MapPlotArgs {
 
 #[derive(Args, Debug)]
 pub struct ConePlotArgs {
-    /// A certificate of a regular polygon (n = 3, 4, 6).
+    /// A certificate (RON or JSON) of any version: a regular polygon (n = 3 to 64), a general body
+    /// (one panel per contact) or an orbit certificate (its set X projected).
     #[arg(value_name = "CERT")]
     pub cert: PathBuf,
     /// Output file: .svg or .png.
@@ -113,7 +114,7 @@ pub fn map_figure(dir: &Path, panel: Panel) -> Result<MapFigure, String> {
     );
     let what = match panel {
         Panel::Cones => "cone finder and exact eigenvalue curves".to_string(),
-        Panel::Simulations => format!("{} random drops per point, 200 impacts each", computed.simulate),
+        Panel::Simulations => crate::plot::simulations::title_of(computed.simulate, computed.proof_budget),
     };
     let title = format!("n = {} ({}): {what}", grid.n, body_name(grid.n));
     Ok(MapFigure { grid, rows, curves, panel, title, points: Vec::new() })

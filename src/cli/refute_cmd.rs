@@ -62,7 +62,8 @@ pub fn run(a: RefuteArgs, env: &Env) -> Outcome {
         Err(e) => return Outcome::Usage(e),
     };
     if let Err(e) = Shape::new(n, kappa.clone(), gamma.clone()) {
-        return Outcome::Usage(e.to_string());
+        let ns = "n = 2 (the rod), 3, 4 or 6 (refutations need a rational cos 2π/n)";
+        return Outcome::Usage(super::body_error(&e, n, &kappa, &gamma, ns));
     }
     let cfg = RefuteConfig { max_iterations: a.max_iterations, ..RefuteConfig::default() };
     let start = Instant::now();

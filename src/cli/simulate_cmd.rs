@@ -10,7 +10,6 @@ use crate::simulate::pattern;
 use crate::simulate::{
     Arithmetic, Certified, Decision, Initial, Model, Options, Outcome, Run, Shape, record,
 };
-use chatter_kernel::model::BodyError;
 use clap::Args;
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -125,11 +124,8 @@ fn model(n: u64, kappa: &Q, gamma: &Q) -> Result<Model, String> {
         return Err(format!("--n: {n} is outside 2..={MAX_N} (2 is the rod, 3..={MAX_N} regular n-gons)"));
     }
     let shape = if n == 2 { Shape::Rod } else { Shape::Polygon(n) };
-    let model = Model::new(shape, kappa.clone(), gamma.clone()).map_err(|e| match e {
-        BodyError::KappaNotPositive => format!("--kappa: {e}"),
-        BodyError::GammaOutOfRange => format!("--gamma: {e}"),
-        BodyError::UnsupportedN(_) => format!("--n: {e}"),
-    })?;
+    let model = Model::new(shape, kappa.clone(), gamma.clone())
+        .map_err(|e| super::body_error(&e, n, kappa, gamma, "n = 2 (the rod) or 3 to 64"))?;
     Ok(model)
 }
 
@@ -260,6 +256,14 @@ fn arithmetic_text(a: Arithmetic, model: &Model) -> String {
     }
 }
 
+/// The body in a figure's title, in the figures' notation (κ =, γ =).
+fn figure_head(v: &Validated) -> String {
+    match &v.general {
+        Some(g) => format!("{}, γ = {}", g.description, v.gamma),
+        None => format!("n = {}, κ = {}, γ = {}", v.n, v.kappa, v.gamma),
+    }
+}
+
 fn head(v: &Validated) -> String {
     if let Some(g) = &v.general {
         return format!("{}, n={} gamma={}", g.description, v.n, v.gamma);
@@ -375,7 +379,7 @@ fn run_single(v: &Validated) -> cli::Outcome {
     if let Some(path) = &v.plot {
         let title = format!(
             "{}: {} after {} impacts ({}, {})",
-            head(v),
+            figure_head(v),
             run.outcome,
             run.impacts,
             start_text(v),

@@ -66,6 +66,14 @@ fn fill(b: &CoverBox) -> RGBColor {
 }
 
 impl CoverFigure {
+    fn kappa_f64(&self) -> [f64; 2] {
+        [self.kappa[0].to_f64(), self.kappa[1].to_f64()]
+    }
+
+    fn gamma_f64(&self) -> [f64; 2] {
+        [self.gamma[0].to_f64(), self.gamma[1].to_f64()]
+    }
+
     fn legend_entries(&self) -> Vec<Entry> {
         let has =
             |s: &str, c: &str| self.boxes.iter().any(|b| b.status == s && (c.is_empty() || b.claim == c));
@@ -76,12 +84,21 @@ impl CoverFigure {
         if has("certified", "CcOrPccFromAllDown") {
             e.push(Entry::new(Sample::Fill(CC_OR_PCC), "certified box: CcOrPccFromAllDown"));
         }
-        e.push(Entry::new(Sample::Fill(REFUTED), "refuted at its four corners (exact refutations)"));
-        e.push(Entry::new(Sample::Fill(UNDECIDED), "undecided at the finest size"));
-        e.push(Entry::new(
-            Sample::Dashed(CC, 3),
-            "exact: CC criterion boundary (real positive dominant eigenvalue below)",
-        ));
+        if has("refuted", "") {
+            e.push(Entry::new(Sample::Fill(REFUTED), "refuted at its four corners (exact refutations)"));
+        }
+        if has("undecided", "") {
+            e.push(Entry::new(
+                Sample::Fill(UNDECIDED),
+                "undecided: neither certified nor refuted (at the finest size, or a corner not refuted)",
+            ));
+        }
+        if super::map::drawn(&inside(&self.curves.cc, self.kappa_f64(), self.gamma_f64())) {
+            e.push(Entry::new(
+                Sample::Dashed(CC, 3),
+                "exact: CC criterion boundary (real positive dominant eigenvalue below)",
+            ));
+        }
         e
     }
 }
@@ -94,10 +111,7 @@ impl Figure for CoverFigure {
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), String> {
         root.fill(&WHITE).map_err(err)?;
         let (left, right) = root.split_horizontally(840);
-        let (k, g) = (
-            [self.kappa[0].to_f64(), self.kappa[1].to_f64()],
-            [self.gamma[0].to_f64(), self.gamma[1].to_f64()],
-        );
+        let (k, g) = (self.kappa_f64(), self.gamma_f64());
         let mut chart = ChartBuilder::on(&left)
             .caption(&self.title, (super::FONT, TITLE))
             .margin(18)

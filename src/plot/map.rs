@@ -4,11 +4,10 @@
 //! boundaries, certified points; and the simulation maps (figure "simulations": level curves of
 //! the mean impact count of the random drops, the 200 level separating ICC, PCC found).
 
+use super::contour::ranges;
 use super::{Entry, Figure, LABEL, Sample, TICKS, TITLE, err, legend};
-use crate::exact::QExt;
 use crate::sweep::curves::{Curves, Polyline};
 use crate::sweep::grid::{Grid, Variable};
-use crate::sweep::point::PAPER_BUDGET;
 use crate::sweep::table::Row;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -49,18 +48,11 @@ pub struct MapFigure {
     pub points: Vec<(f64, f64, String)>,
 }
 
-/// Level curves of the mean impact count drawn on simulation maps (the last separates ICC).
-pub const LEVELS: [f64; 5] = [25.0, 50.0, 100.0, 150.0, PAPER_BUDGET as f64 - 0.5];
-
 fn x_name(v: Variable) -> &'static str {
     match v {
         Variable::Rho => "ρ = √κ",
         Variable::Kappa => "κ",
     }
-}
-
-fn ranges(g: &Grid) -> ((f64, f64), (f64, f64)) {
-    ((g.x.lo.to_f64(), g.x.hi.to_f64()), (g.gamma.lo.to_f64(), g.gamma.hi.to_f64()))
 }
 
 fn verdict_colour(finder: &str) -> RGBColor {
@@ -79,66 +71,6 @@ fn claim_colour(claim: &str) -> RGBColor {
     }
 }
 
-/// Contour lines of `value` over the grid at `levels` (marching squares, the contour crate).
-pub fn contours(
-    grid: &Grid,
-    rows: &[Row],
-    value: impl Fn(&Row) -> Option<f64>,
-    levels: &[f64],
-) -> Vec<(f64, Polyline)> {
-    let (nx, ny) = (grid.x.steps as usize, grid.gamma.steps as usize);
-    let mut values = vec![0.0; nx * ny];
-    for r in rows {
-        let (ix, ig) = (r.index / ny, r.index % ny);
-        values[ig * nx + ix] = value(r).unwrap_or(f64::NAN);
-    }
-    if values.iter().any(|v| v.is_nan()) || nx < 2 || ny < 2 {
-        return Vec::new();
-    }
-    let ((x0, x1), (g0, g1)) = ranges(grid);
-    let (dx, dg) = ((x1 - x0) / nx as f64, (g1 - g0) / ny as f64);
-    let builder = contour::ContourBuilder::new(nx, ny, true)
-        .x_origin(x0 + dx / 2.0)
-        .y_origin(g0 + dg / 2.0)
-        .x_step(dx)
-        .y_step(dg);
-    let Ok(lines) = builder.lines(&values, levels) else { return Vec::new() };
-    let frame = [x0 + dx / 2.0, x1 - dx / 2.0, g0 + dg / 2.0, g1 - dg / 2.0];
-    let mut out = Vec::new();
-    for l in lines {
-        let level = l.threshold();
-        for ls in l.into_inner().0.0 {
-            let pts: Polyline = ls.0.iter().map(|c| (c.x, c.y)).collect();
-            out.extend(off_frame(&pts, frame).into_iter().map(|p| (level, p)));
-        }
-    }
-    out
-}
-
-/// The pieces of a contour line that do not run along the frame of cell centres (marching
-/// squares closes its rings there; those edges are not level curves).
-fn off_frame(pts: &[(f64, f64)], [xa, xb, ya, yb]: [f64; 4]) -> Vec<Polyline> {
-    let eps = 1e-9 * (xb - xa).abs().max(yb - ya).max(1e-12);
-    let same_edge = |a: (f64, f64), b: (f64, f64)| {
-        [(a.0, b.0, xa), (a.0, b.0, xb), (a.1, b.1, ya), (a.1, b.1, yb)]
-            .iter()
-            .any(|(u, v, e)| (u - e).abs() < eps && (v - e).abs() < eps)
-    };
-    let mut pieces: Vec<Polyline> = vec![Vec::new()];
-    for w in pts.windows(2) {
-        if same_edge(w[0], w[1]) {
-            pieces.push(Vec::new());
-            continue;
-        }
-        let cur = pieces.last_mut().expect("non-empty");
-        if cur.is_empty() {
-            cur.push(w[0]);
-        }
-        cur.push(w[1]);
-    }
-    pieces.into_iter().filter(|p| p.len() >= 2).collect()
-}
-
 /// The body's name for titles.
 pub fn body_name(n: u64) -> &'static str {
     match n {
@@ -146,7 +78,11 @@ pub fn body_name(n: u64) -> &'static str {
         4 => "square",
         5 => "pentagon",
         6 => "hexagon",
-        _ => "polygon",
+        7 => "heptagon",
+        8 => "octagon",
+        9 => "nonagon",
+        10 => "decagon",
+        _ => "regular polygon",
     }
 }
 
@@ -155,70 +91,97 @@ pub fn sub(k: u64) -> String {
     k.to_string().chars().map(|c| char::from_u32(0x2080 + c.to_digit(10).unwrap_or(0)).unwrap_or(c)).collect()
 }
 
+/// The chart of a map figure (data coordinates: x, gamma).
+pub type MapChart<'a, 'b, DB> = ChartContext<
+    'a,
+    DB,
+    Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+>;
+
+/// Whether any of the polylines can be drawn (two points or more).
+pub fn drawn(lines: &[Polyline]) -> bool {
+    lines.iter().any(|l| l.len() >= 2)
+}
+
+/// The legend entries of the background: one per finder verdict that occurs, and what the
+/// finder starts from.
+fn background_entries(rows: &[Row]) -> Vec<Entry> {
+    let verdicts = [
+        ("found", FOUND, "cone finder: effectively invariant cone found"),
+        ("inconclusive", INCONCLUSIVE, "cone finder: inconclusive (budget exhausted)"),
+        ("no-cone", NO_CONE, "cone finder: no cone contains the seed"),
+    ];
+    let mut e: Vec<Entry> = verdicts
+        .into_iter()
+        .filter(|(v, ..)| rows.iter().any(|r| r.finder == *v))
+        .map(|(_, c, text)| Entry::new(Sample::Fill(c), text))
+        .collect();
+    if !e.is_empty() {
+        e.push(Entry::new(
+            Sample::Note,
+            "the finder's seed: −U₀u₃, the velocity after the first impact of a flat drop (the paper's)",
+        ));
+    }
+    e
+}
+
+/// Draws the lines and returns their legend entry if any was drawn.
+pub(crate) fn curve_entry<DB: DrawingBackend>(
+    chart: &mut MapChart<'_, '_, DB>,
+    lines: &[Polyline],
+    sample: Sample,
+    text: String,
+) -> Result<Option<Entry>, String> {
+    let (colour, width, dashed) = match sample {
+        Sample::Line(c, w) => (c, w, false),
+        Sample::Dashed(c, w) => (c, w, true),
+        _ => return Err("plot: a curve is drawn as a line".into()),
+    };
+    draw_lines(chart, lines, colour, width, dashed)?;
+    Ok(drawn(lines).then(|| Entry::new(sample, text)))
+}
+
 impl MapFigure {
-    fn legend_entries(&self) -> Vec<Entry> {
-        let mut e = vec![
-            Entry::new(Sample::Fill(FOUND), "cone finder: effectively invariant cone found"),
-            Entry::new(Sample::Fill(INCONCLUSIVE), "cone finder: inconclusive"),
-            Entry::new(Sample::Fill(NO_CONE), "cone finder: no cone contains the seed −U₀u₃"),
-        ];
-        match self.panel {
-            Panel::Cones => {
-                e.push(Entry::new(
-                    Sample::Line(KIND, 2),
-                    "exact: S₁'s dominant eigenvalue changes sign or becomes complex",
-                ));
-                e.push(Entry::new(
-                    Sample::Dashed(CC, 3),
-                    "exact: CC criterion boundary (real positive dominant eigenvalue below)",
-                ));
-                e.push(Entry::new(
-                    Sample::Dashed(PCC, 3),
-                    format!(
-                        "exact: PCC criterion boundary (S{}S₁ has real eigenvalues: PCC possible)",
-                        sub(self.grid.n - 1)
-                    ),
-                ));
-                let claims = ["CompleteChatterFromAllDown", "CcOrPccFromAllDown", "EffectivelyInvariant"];
-                for c in claims {
-                    if self.rows.iter().any(|r| r.claim.as_deref() == Some(c)) {
-                        e.push(Entry::new(Sample::Dot(claim_colour(c)), format!("certified: {c}")));
-                    }
-                }
-                if self.rows.iter().any(|r| r.refuted == Some(true)) {
-                    e.push(Entry::new(Sample::Star(REFUTED_MARK), "refuted: an exact refutation (no cone)"));
-                }
-            }
-            Panel::Simulations => {
-                e.push(Entry::new(
-                    Sample::Line(LEVEL, 1),
-                    "mean number of impacts of the random drops (levels 25, 50, 100, 150)",
-                ));
-                e.push(Entry::new(Sample::Line(LEVEL, 3), "level 200: above it some drops end in ICC"));
-                e.push(Entry::new(Sample::Line(PCC, 3), "PCC found in half of the drops"));
-                e.push(Entry::new(
-                    Sample::Dashed(PCC, 3),
-                    format!("exact: PCC possible (S{}S₁ has real eigenvalues)", sub(self.grid.n - 1)),
-                ));
-                e.push(Entry::new(
-                    Sample::Dashed(CC, 3),
-                    "exact: CC criterion boundary (conjectured CC/ICC divide)",
-                ));
+    /// The exact curves, certified and refuted points (figure "sajatertekek", left).
+    fn draw_cones<DB: DrawingBackend>(
+        &self,
+        chart: &mut MapChart<'_, '_, DB>,
+        radius: i32,
+        centre: &dyn Fn(&Row) -> (f64, f64),
+    ) -> Result<Vec<Entry>, String> {
+        let m = sub(self.grid.n - 1);
+        let mut e = Vec::new();
+        let kind = "exact: S₁'s dominant eigenvalue changes sign or becomes complex";
+        e.extend(curve_entry(chart, &self.curves.kind, Sample::Line(KIND, 2), kind.into())?);
+        let cc = "exact: CC criterion boundary (real positive dominant eigenvalue below)";
+        e.extend(curve_entry(chart, &self.curves.cc, Sample::Dashed(CC, 3), cc.into())?);
+        let pcc = format!("exact: PCC criterion boundary (S{m}S₁ has real eigenvalues: PCC possible)");
+        e.extend(curve_entry(chart, &self.curves.pcc, Sample::Dashed(PCC, 3), pcc)?);
+        chart
+            .draw_series(self.rows.iter().filter_map(|r| {
+                r.claim.as_deref().map(|c| Circle::new(centre(r), radius, claim_colour(c).filled()))
+            }))
+            .map_err(err)?;
+        for c in ["CompleteChatterFromAllDown", "CcOrPccFromAllDown", "EffectivelyInvariant"] {
+            if self.rows.iter().any(|r| r.claim.as_deref() == Some(c)) {
+                e.push(Entry::new(Sample::Dot(claim_colour(c)), format!("certified: {c}")));
             }
         }
-        if !self.points.is_empty() {
-            e.push(Entry::new(Sample::Star(BLACK), "marked parameter point"));
+        let refuted: Vec<&Row> = self.rows.iter().filter(|r| r.refuted == Some(true)).collect();
+        chart
+            .draw_series(
+                refuted.iter().map(|r| Cross::new(centre(r), radius + 1, REFUTED_MARK.stroke_width(1))),
+            )
+            .map_err(err)?;
+        if !refuted.is_empty() {
+            e.push(Entry::new(Sample::Star(REFUTED_MARK), "refuted: an exact refutation (no cone)"));
         }
-        e
+        Ok(e)
     }
 }
 
 pub(crate) fn draw_lines<DB: DrawingBackend>(
-    chart: &mut ChartContext<
-        '_,
-        DB,
-        Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
-    >,
+    chart: &mut MapChart<'_, '_, DB>,
     lines: &[Polyline],
     colour: RGBColor,
     width: u32,
@@ -274,56 +237,15 @@ impl Figure for MapFigure {
                 )
             }))
             .map_err(err)?;
-        match self.panel {
+        let mut entries = background_entries(&self.rows);
+        entries.extend(match self.panel {
             Panel::Cones => {
-                draw_lines(&mut chart, &self.curves.kind, KIND, 2, false)?;
-                draw_lines(&mut chart, &self.curves.cc, CC, 3, true)?;
-                draw_lines(&mut chart, &self.curves.pcc, PCC, 3, true)?;
                 let (w, _) = left.dim_in_pixel();
                 let radius = ((w as f64 / self.grid.x.steps as f64) / 6.0).clamp(1.0, 3.0) as i32;
-                chart
-                    .draw_series(self.rows.iter().filter_map(|r| {
-                        r.claim.as_deref().map(|c| Circle::new(centre(r), radius, claim_colour(c).filled()))
-                    }))
-                    .map_err(err)?;
-                chart
-                    .draw_series(
-                        self.rows
-                            .iter()
-                            .filter(|r| r.refuted == Some(true))
-                            .map(|r| Cross::new(centre(r), radius + 1, REFUTED_MARK.stroke_width(1))),
-                    )
-                    .map_err(err)?;
+                self.draw_cones(&mut chart, radius, &centre)?
             }
-            Panel::Simulations => {
-                for (i, (level, line)) in
-                    contours(&self.grid, &self.rows, |r| r.sim.as_ref().map(|s| s.mean_impacts()), &LEVELS)
-                        .into_iter()
-                        .enumerate()
-                {
-                    let width = if level > 199.0 { 3 } else { 1 };
-                    chart
-                        .draw_series(LineSeries::new(line.clone(), LEVEL.stroke_width(width)))
-                        .map_err(err)?;
-                    if line.len() >= 6 {
-                        let at = LEVELS.iter().position(|l| *l == level).unwrap_or(i) as f64;
-                        let (x, g) = line[((0.15 + 0.17 * at) * line.len() as f64) as usize % line.len()];
-                        let label = format!("{}", level.round());
-                        let style = (super::FONT, 16).into_font().color(&LEVEL);
-                        let tag = EmptyElement::at((x, g))
-                            + Rectangle::new([(-2, -2), (9 * label.len() as i32 + 2, 17)], WHITE.filled())
-                            + Text::new(label, (0, 0), style);
-                        chart.draw_series(std::iter::once(tag)).map_err(err)?;
-                    }
-                }
-                let pcc_share = |r: &Row| r.sim.as_ref().map(|s| s.counts[1] as f64 / s.runs as f64);
-                let found: Vec<Polyline> =
-                    contours(&self.grid, &self.rows, pcc_share, &[0.5]).into_iter().map(|(_, l)| l).collect();
-                draw_lines(&mut chart, &found, PCC, 3, false)?;
-                draw_lines(&mut chart, &self.curves.pcc, PCC, 3, true)?;
-                draw_lines(&mut chart, &self.curves.cc, CC, 3, true)?;
-            }
-        }
+            Panel::Simulations => super::simulations::draw(self, &mut chart)?,
+        });
         for (x, g, label) in &self.points {
             chart
                 .draw_series(std::iter::once(Cross::new((*x, *g), 8, BLACK.stroke_width(3))))
@@ -336,6 +258,9 @@ impl Figure for MapFigure {
                 )))
                 .map_err(err)?;
         }
-        legend(&right.margin(70, 10, 0, 10), &self.legend_entries())
+        if !self.points.is_empty() {
+            entries.push(Entry::new(Sample::Star(BLACK), "marked parameter point"));
+        }
+        legend(&right.margin(70, 10, 0, 10), &entries)
     }
 }

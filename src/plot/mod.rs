@@ -6,8 +6,11 @@
 //! (Debian's fonts-dejavu-core), see docs/figures.md.
 
 pub mod cone;
+pub mod contour;
 pub mod cover;
+pub mod label;
 pub mod map;
+pub mod simulations;
 pub mod trajectory;
 
 use plotters::coord::Shift;
@@ -132,6 +135,12 @@ pub enum Sample {
     Dot(RGBColor),
     /// A star (a marked vector).
     Star(RGBColor),
+    /// An outlined square (a second kind of marked vector).
+    Square(RGBColor),
+    /// A hatched square (a region that may overlap others).
+    Hatch(RGBColor),
+    /// No sample: a note.
+    Note,
 }
 
 /// One legend line.
@@ -179,6 +188,19 @@ pub fn legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, entries: &[Entr
             }
             Sample::Dot(c) => area.draw(&Circle::new((x0 + 15, yc), 4, c.filled())).map_err(err)?,
             Sample::Star(c) => area.draw(&Cross::new((x0 + 15, yc), 7, c.stroke_width(3))).map_err(err)?,
+            Sample::Square(c) => area
+                .draw(&Rectangle::new([(x0 + 9, yc - 6), (x0 + 21, yc + 6)], c.stroke_width(3)))
+                .map_err(err)?,
+            Sample::Hatch(c) => {
+                for k in 0..4 {
+                    let a = x0 + 8 * k;
+                    let line = vec![(a, yc + 8), (a + 8, yc - 8)];
+                    area.draw(&PathElement::new(line, c.stroke_width(1))).map_err(err)?;
+                }
+                area.draw(&Rectangle::new([(x0, yc - 8), (x0 + 30, yc + 8)], c.stroke_width(1)))
+                    .map_err(err)?;
+            }
+            Sample::Note => {}
         }
         for (i, line) in wrap(&e.text, chars).iter().enumerate() {
             area.draw(&Text::new(line.clone(), (x0 + 40, y + i as i32 * (LEGEND as i32 + 4)), style.clone()))

@@ -50,19 +50,19 @@ impl ClassifyRequest {
     /// Checks the ranges; the message names the flag (`--n: ...`).
     pub fn validate(&self) -> Result<(), String> {
         if !(2..=64).contains(&self.n) {
-            return Err(format!("--n: {} is outside 2..=64", self.n));
+            return Err(format!("--n: {} is not supported here: give n = 2 (the rod) or 3 to 64", self.n));
         }
         if !self.kappa.is_positive() {
-            return Err("--kappa: kappa must be > 0".into());
+            return Err(format!("--kappa: {} is not accepted: kappa must be > 0", self.kappa));
         }
         if self.gamma.is_negative() || self.gamma > Q::int(1) {
-            return Err("--gamma: gamma must lie in [0, 1]".into());
+            return Err(format!("--gamma: {} is not accepted: gamma must lie in [0, 1]", self.gamma));
         }
         if self.velocity.is_some() && self.n != 2 {
             return Err("--velocity is for the rod (--n 2)".into());
         }
         if self.digits == 0 || self.digits > 60 {
-            return Err("--digits must be in 1..=60".into());
+            return Err(format!("--digits: {} is not accepted: give 1 to 60", self.digits));
         }
         Ok(())
     }

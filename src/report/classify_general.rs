@@ -169,7 +169,7 @@ pub fn classify_general(
     digits: usize,
 ) -> Result<ClassifyReport, String> {
     if digits == 0 || digits > 60 {
-        return Err("--digits must be in 1..=60".into());
+        return Err(format!("--digits: {digits} is not accepted: give 1 to 60"));
     }
     let t = threshold(&product_profile(body, Direction::CounterClockwise), digits);
     let [ccw, cw] = Direction::BOTH.map(|d| product(body, d, t.clone(), digits));

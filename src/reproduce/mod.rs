@@ -67,6 +67,8 @@ pub struct Table {
 #[derive(Clone, Debug, Default)]
 pub struct Report {
     pub quick: bool,
+    /// The folder the report is written to, as given (`--out`): its commands run from there.
+    pub folder: String,
     pub tables: Vec<Table>,
     pub items: Vec<Item>,
     /// (step, seconds) for the record.
@@ -114,7 +116,8 @@ pub fn run(out: &Path, plan: Plan, step: &dyn Fn(&str)) -> Result<Report, String
         let p = out.join(d);
         std::fs::create_dir_all(&p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
     }
-    let mut report = Report { quick: plan.quick, ..Default::default() };
+    let folder = out.display().to_string();
+    let mut report = Report { quick: plan.quick, folder, ..Default::default() };
     let mut timed =
         |name: &str, f: &mut dyn FnMut(&mut Report) -> Result<(), String>| -> Result<(), String> {
             step(name);

@@ -110,17 +110,23 @@ impl Grid {
     pub fn validate(&self) -> Result<(), String> {
         if !(3..=6).contains(&self.n) {
             return Err(format!(
-                "--n: {} is not supported by maps: use 3, 4, 5 or 6 (the simulator handles up to 6 contacts; the rod's CC region is Goyal's closed formula)",
+                "--n: {0} is not supported by maps, which cover n = 3, 4, 5 and 6 (the paper's triangle, square and pentagon, and the hexagon); for n = {0} take single points (`chatter classify --n {0} ...`, `chatter simulate --n {0} ...`); the rod's (n = 2) CC region is Goyal's closed formula (`chatter bodies`)",
                 self.n
             ));
         }
         let zero = Q::int(0);
         if self.x.lo < zero {
             let name = if self.variable == Variable::Rho { "--rho" } else { "--kappa" };
-            return Err(format!("{name}: the axis must lie in [0, ...) (cell centres are then > 0)"));
+            return Err(format!(
+                "{name}: an axis from {} is not accepted: it must start at 0 or above (cell centres are then > 0)",
+                self.x.lo
+            ));
         }
         if self.gamma.lo < zero || self.gamma.hi > Q::int(1) {
-            return Err("--gamma: the axis must lie in [0, 1]".into());
+            return Err(format!(
+                "--gamma: the axis from {} to {} is not accepted: it must lie in [0, 1]",
+                self.gamma.lo, self.gamma.hi
+            ));
         }
         Ok(())
     }

@@ -70,7 +70,7 @@ fn decimal_input_is_read_exactly() {
 fn usage_errors_exit_2_with_a_message() {
     let d = tempfile::tempdir().unwrap();
     for (args, needle) in [
-        (vec!["certify", "--n", "65"], "--n: n = 65 is not supported"),
+        (vec!["certify", "--n", "65"], "--n: 65 is not supported"),
         (vec!["certify", "--n", "four"], "--n"),
         (vec!["certify", "--kappa", "abc"], "--kappa"),
         (vec!["certify", "--kappa", "-1/6"], "kappa must be > 0"),

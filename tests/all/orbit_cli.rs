@@ -261,9 +261,9 @@ fn bad_input_to_certify_orbit_is_a_usage_error() {
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (
             vec!["--n", "5", "--kappa", "1/8", "--gamma", "3/20"],
-            "--n: n = 5: orbit certificates need a rational cos(2 pi/n), n in {3, 4, 6}",
+            "--n: 5 is not supported here: give n = 3, 4 or 6 (orbit certificates need a rational cos 2π/n)",
         ),
-        (vec!["--n", "2", "--kappa", "1/8", "--gamma", "3/20"], "--n: n = 2"),
+        (vec!["--n", "2", "--kappa", "1/8", "--gamma", "3/20"], "--n: 2"),
         (vec!["--kappa", "1/8", "--gamma", "3/2"], "--gamma: "),
         (vec!["--kappa", "1/8", "--gamma", "-1/2"], "--gamma: "),
         (vec!["--kappa", "0", "--gamma", "3/20"], "--kappa: "),

@@ -71,7 +71,7 @@ fn map_panels_and_simulation_maps_in_both_formats() {
     assert_eq!(png_size(&p.join("map.png")), (2500, 1640), "PNG at twice the SVG size");
     ok(&chatter(&["plot", "simulations", "m", "-o", "sim.svg"], p));
     let svg = std::fs::read_to_string(p.join("sim.svg")).unwrap();
-    assert!(svg.contains("level 200") && svg.contains("4 random drops per point"));
+    assert!(svg.contains("level 200") && svg.contains("4 drops per point (f64 evidence"));
     // A map without simulations has no simulation map.
     ok(&chatter(&["map", "--n", "4", "--rho", "0:1:3", "--gamma", "0:1:3", "--out", "nosim"], p));
     let o = chatter(&["plot", "simulations", "nosim", "-o", "x.svg"], p);
@@ -87,6 +87,10 @@ fn a_certificates_cone_on_the_plane() {
     ok(&chatter(&["plot", "cone", "sq.ron", "-o", "cone.svg"], p));
     let svg = std::fs::read_to_string(p.join("cone.svg")).unwrap();
     for s in ["K on the plane v = −1", "C₁", "C₃", "S₃(K ∩ C₃)", "p_max", "u₀ / (−v)"] {
+        assert!(svg.contains(s), "cone.svg lacks {s}");
+    }
+    // Issue 26 §1: the two eigenvectors are told apart, and a stretched axis is said so.
+    for s in ["p_max(S₁)", "p_max(S₃)", "axes not to scale: horizontal stretched"] {
         assert!(svg.contains(s), "cone.svg lacks {s}");
     }
     ok(&chatter(&["plot", "cone", "sq.ron", "-o", "cone.png"], p));

@@ -55,7 +55,7 @@ fn reproduce_quick_writes_a_report_that_a_browser_renders() {
         "the PCC criterion (Conjecture 2) holds (exact)",
         "other than that of the eigenvalue 1 have u₀u₁ > 0 (decided exactly in Q(√D))",
         "The falling rod (Goyal's condition) — **agrees**",
-        "pentagon certificates — **not checked yet**",
+        "The pentagon's cone (figure “sajatertekek” (f)) — **agrees**",
         "fit κ = 1/4",
     ] {
         assert!(md.contains(s), "report.md lacks {s:?}");
@@ -105,13 +105,26 @@ fn reproduce_quick_writes_a_report_that_a_browser_renders() {
 }
 
 #[test]
-fn every_cited_command_runs_and_the_band_command_shows_the_cycle_and_the_contraction() {
+fn every_cited_command_runs_from_the_folder_the_report_names() {
     let d = tempfile::tempdir().unwrap();
-    let o = chatter(&["reproduce", "--quick", "--out", "."], d.path());
+    let o = chatter(&["reproduce", "--quick", "--out", "out"], d.path());
     assert_eq!(o.status.code(), Some(0));
-    let md = std::fs::read_to_string(d.path().join("report.md")).unwrap();
+    let md = std::fs::read_to_string(d.path().join("out/report.md")).unwrap();
+    // The report names the folder its commands run from: its own.
+    let named = "Every “Shown by” command runs as written from this report's folder, `out` (`cd out` first)";
+    assert!(md.contains(named), "report.md does not say where its commands run");
+    let html = std::fs::read_to_string(d.path().join("out/report.html")).unwrap();
+    assert!(html.contains("runs as written from this report's folder, <code>out</code>"));
+    let out = d.path().join("out");
     let commands = cited(&md);
     assert!(commands.len() >= 15);
+    for needed in [
+        "chatter verify certificates/",
+        "chatter check-proof proofs/square.ron",
+        "chatter bodies --plate 3 --only",
+    ] {
+        assert!(commands.iter().any(|c| c.contains(needed)), "the report no longer cites {needed}");
+    }
     let mut seen = std::collections::BTreeSet::new();
     for c in &commands {
         for step in c.split("&&") {
@@ -120,15 +133,24 @@ fn every_cited_command_runs_and_the_band_command_shows_the_cycle_and_the_contrac
             }
             let words: Vec<&str> = step.split_whitespace().collect();
             assert_eq!(words[0], "chatter", "{c}");
-            let o = chatter(&words[1..], d.path());
-            assert_eq!(o.status.code(), Some(0), "`{step}`: {}", String::from_utf8_lossy(&o.stderr));
+            let o = chatter(&words[1..], &out);
+            assert_eq!(
+                o.status.code(),
+                Some(0),
+                "`{step}` from out/: {}",
+                String::from_utf8_lossy(&o.stderr)
+            );
+            if step.starts_with("chatter bodies --plate 3") {
+                let text = String::from_utf8_lossy(&o.stdout);
+                assert!(!text.contains("cube"), "`{step}` prints the whole catalogue: {text}");
+            }
         }
     }
     // README and the report cite this command for the n = 3 band: it shows the cycle and the
     // contraction per impact (classify shows neither).
     let band = "chatter simulate --n 3 --kappa 1/8 --gamma 0.15 --plot band.png";
     assert!(commands.iter().any(|c| c == band));
-    let o = chatter(&band.split_whitespace().skip(1).collect::<Vec<_>>(), d.path());
+    let o = chatter(&band.split_whitespace().skip(1).collect::<Vec<_>>(), &out);
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(text.contains("cycles 2,1,0,1") && text.contains("ratio 0.86"), "{text}");
 }

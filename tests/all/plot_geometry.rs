@@ -1,0 +1,314 @@
+//! Where the figures draw their lines: a synthetic map whose level lines are known exactly is
+//! drawn as SVG, the SVG is read back (cells, polylines, labels) and every drawn point of a level
+//! line is compared with the exact line, in pixels (issue 26 §1: the contours were half a cell up
+//! and right, with a stub in the bottom-left corner).
+
+use chatter::exact::Q;
+use chatter::plot::map::{MapFigure, Panel};
+use chatter::plot::svg_string;
+use chatter::sweep::curves::Curves;
+use chatter::sweep::grid::{Axis, Grid, Variable};
+use chatter::sweep::point::SimStats;
+use chatter::sweep::table::Row;
+
+/// Where the legend begins: the figures draw their data left of this (SVG units).
+pub const LEGEND_X: f64 = 840.0;
+
+/// A drawn line: (stroke, stroke-width, points).
+pub type Line = (String, String, Vec<(f64, f64)>);
+
+/// The drawn things of an SVG document that the tests need.
+pub struct Drawn {
+    /// (x, y, width, height, fill) of every <rect>.
+    pub rects: Vec<(f64, f64, f64, f64, String)>,
+    /// (stroke, stroke-width, points) of every <polyline> (and <line>).
+    pub lines: Vec<Line>,
+    /// (x, y, fill, content) of every <text>.
+    pub texts: Vec<(f64, f64, String, String)>,
+}
+
+fn attr(tag: &str, name: &str) -> Option<String> {
+    let key = format!(" {name}=\"");
+    let start = tag.find(&key)? + key.len();
+    Some(tag[start..start + tag[start..].find('"')?].to_string())
+}
+
+fn num(tag: &str, name: &str) -> f64 {
+    attr(tag, name).and_then(|v| v.parse().ok()).unwrap_or(f64::NAN)
+}
+
+/// Reads the SVG elements plotters writes left of the legend.
+pub fn parse(svg: &str) -> Drawn {
+    let mut d = parse_all(svg);
+    d.rects.retain(|r| r.0 < LEGEND_X);
+    d.lines.retain(|l| l.2.iter().all(|p| p.0 < LEGEND_X));
+    d.texts.retain(|t| t.0 < LEGEND_X);
+    d
+}
+
+/// Reads every SVG element plotters writes.
+pub fn parse_all(svg: &str) -> Drawn {
+    let mut d = Drawn { rects: Vec::new(), lines: Vec::new(), texts: Vec::new() };
+    for (i, _) in svg.match_indices('<') {
+        let rest = &svg[i..];
+        let tag = &rest[..rest.find('>').unwrap_or(rest.len())];
+        if tag.starts_with("<rect") {
+            let fill = attr(tag, "fill").unwrap_or_default();
+            d.rects.push((num(tag, "x"), num(tag, "y"), num(tag, "width"), num(tag, "height"), fill));
+        } else if tag.starts_with("<polyline") {
+            let pts = attr(tag, "points")
+                .unwrap_or_default()
+                .split_whitespace()
+                .filter_map(|p| p.split_once(',').map(|(x, y)| (x.parse().unwrap(), y.parse().unwrap())))
+                .collect();
+            d.lines.push((
+                attr(tag, "stroke").unwrap_or_default(),
+                attr(tag, "stroke-width").unwrap_or_default(),
+                pts,
+            ));
+        } else if tag.starts_with("<line") {
+            let pts = vec![(num(tag, "x1"), num(tag, "y1")), (num(tag, "x2"), num(tag, "y2"))];
+            d.lines.push((
+                attr(tag, "stroke").unwrap_or_default(),
+                attr(tag, "stroke-width").unwrap_or_default(),
+                pts,
+            ));
+        } else if tag.starts_with("<text") {
+            let body = &rest[tag.len() + 1..];
+            let content = body[..body.find("</text>").unwrap_or(0)].trim().to_string();
+            d.texts.push((num(tag, "x"), num(tag, "y"), attr(tag, "fill").unwrap_or_default(), content));
+        }
+    }
+    d
+}
+
+/// Every text of the document joined by spaces (legend entries wrap over several <text>s).
+pub fn words(svg: &str) -> String {
+    parse_all(svg).texts.iter().map(|t| t.3.as_str()).collect::<Vec<_>>().join(" ")
+}
+
+/// The affine map from pixels back to data, read off the cells (rects of colour `fill`, which
+/// tile [x0, x1] x [g0, g1]).
+pub struct Pixels {
+    px: (f64, f64),
+    py: (f64, f64),
+    x: (f64, f64),
+    g: (f64, f64),
+}
+
+impl Pixels {
+    pub fn of(d: &Drawn, fill: &str, x: (f64, f64), g: (f64, f64)) -> Pixels {
+        let cells: Vec<_> = d.rects.iter().filter(|r| r.4.eq_ignore_ascii_case(fill)).collect();
+        assert!(!cells.is_empty(), "no cell of colour {fill}");
+        let left = cells.iter().map(|r| r.0).fold(f64::INFINITY, f64::min);
+        let right = cells.iter().map(|r| r.0 + r.2).fold(f64::NEG_INFINITY, f64::max);
+        let top = cells.iter().map(|r| r.1).fold(f64::INFINITY, f64::min);
+        let bottom = cells.iter().map(|r| r.1 + r.3).fold(f64::NEG_INFINITY, f64::max);
+        Pixels { px: (left, right), py: (bottom, top), x, g }
+    }
+
+    /// Data coordinates of a pixel.
+    pub fn data(&self, (u, v): (f64, f64)) -> (f64, f64) {
+        let t = (u - self.px.0) / (self.px.1 - self.px.0);
+        let s = (v - self.py.0) / (self.py.1 - self.py.0);
+        (self.x.0 + t * (self.x.1 - self.x.0), self.g.0 + s * (self.g.1 - self.g.0))
+    }
+
+    /// Pixels per data unit along x and gamma.
+    pub fn scale(&self) -> (f64, f64) {
+        (
+            (self.px.1 - self.px.0).abs() / (self.x.1 - self.x.0),
+            (self.py.1 - self.py.0).abs() / (self.g.1 - self.g.0),
+        )
+    }
+}
+
+const STEPS: u32 = 30;
+const RUNS: u64 = 1 << 20;
+/// The mean impact count: 210 − 120 (x + γ), level lines x + γ = (210 − L)/120.
+fn impacts(x: f64, g: f64) -> f64 {
+    210.0 - 120.0 * (x + g)
+}
+/// The PCC share: 0.84 − 0.4 x − 0.2 γ, its 1/2 line 0.4 x + 0.2 γ = 0.34.
+fn share(x: f64, g: f64) -> f64 {
+    0.84 - 0.4 * x - 0.2 * g
+}
+
+/// A 30 x 30 map over (0, 1)^2 with those fields, every cell "inconclusive" (one colour).
+fn synthetic(curves: Curves) -> MapFigure {
+    let axis = Axis { lo: Q::int(0), hi: Q::int(1), steps: STEPS };
+    let grid = Grid { n: 3, variable: Variable::Rho, x: axis.clone(), gamma: axis };
+    let rows = (0..(STEPS * STEPS) as usize)
+        .map(|index| {
+            let (ix, ig) = (index / STEPS as usize, index % STEPS as usize);
+            let (x, g) = ((ix as f64 + 0.5) / STEPS as f64, (ig as f64 + 0.5) / STEPS as f64);
+            let pcc = (share(x, g) * RUNS as f64).round() as u64;
+            let sim = SimStats {
+                runs: RUNS,
+                counts: [RUNS - pcc, pcc, 0, 0, 0],
+                proved: None,
+                contradicted: 0,
+                impacts: (impacts(x, g) * RUNS as f64).round() as u64,
+            };
+            Row {
+                index,
+                n: 3,
+                rho: String::new(),
+                kappa: Q::int(0),
+                gamma: Q::int(0),
+                cc_criterion: true,
+                pcc_criterion: false,
+                finder: "inconclusive".into(),
+                certified: None,
+                claim: None,
+                refuted: None,
+                sim: Some(sim),
+                certificate: None,
+                refutation: None,
+                orbit: None,
+            }
+        })
+        .collect();
+    MapFigure { grid, rows, curves, panel: Panel::Simulations, title: "synthetic".into(), points: Vec::new() }
+}
+
+const LEVEL: &str = "#006428";
+const PCC: &str = "#1E5AC8";
+const CC: &str = "#D7191C";
+const CELL: &str = "#CDCDCD";
+
+/// Checks every drawn point of the lines of `stroke` against the exact level lines of `field` at
+/// `levels`: each polyline lies on one level within `tol` pixels and covers that level's line
+/// across the rectangle of cell centres. Returns the number of points checked.
+fn check_lines(
+    d: &Drawn,
+    px: &Pixels,
+    stroke: &str,
+    field: fn(f64, f64) -> f64,
+    levels: &[f64],
+    grad: (f64, f64),
+) -> usize {
+    let (sx, sy) = px.scale();
+    // |field(p) - L| over the gradient's length per pixel: the pixel distance to the level line.
+    let per_pixel = ((grad.0 / sx).powi(2) + (grad.1 / sy).powi(2)).sqrt();
+    let (lo, hi) = (0.5 / STEPS as f64, 1.0 - 0.5 / STEPS as f64);
+    let mut checked = 0;
+    for (_, _, pts) in d.lines.iter().filter(|l| l.0.eq_ignore_ascii_case(stroke)) {
+        let data: Vec<(f64, f64)> = pts.iter().map(|&p| px.data(p)).collect();
+        let (_, level) = levels
+            .iter()
+            .enumerate()
+            .min_by(|a, b| {
+                (field(data[0].0, data[0].1) - a.1)
+                    .abs()
+                    .total_cmp(&(field(data[0].0, data[0].1) - b.1).abs())
+            })
+            .map(|(i, l)| (i, *l))
+            .unwrap();
+        for &(x, g) in &data {
+            let off = (field(x, g) - level).abs() / per_pixel;
+            assert!(
+                off <= 1.5,
+                "a point of the level {level} line is drawn {off:.1} px off it, at ({x:.4}, {g:.4})"
+            );
+            let tol = 1.5 / sx.min(sy);
+            assert!(
+                x >= lo - tol && x <= hi + tol && g >= lo - tol && g <= hi + tol,
+                "({x}, {g}) outside the cell centres"
+            );
+            checked += 1;
+        }
+    }
+    checked
+}
+
+#[test]
+fn simulation_level_lines_are_drawn_on_the_exact_lines_without_corner_stubs() {
+    let fig = synthetic(Curves::default());
+    let svg = svg_string(&fig).unwrap();
+    let d = parse(&svg);
+    let px = Pixels::of(&d, CELL, (0.0, 1.0), (0.0, 1.0));
+    let levels = [25.0, 50.0, 100.0, 150.0, 199.5];
+    let n = check_lines(&d, &px, LEVEL, impacts, &levels, (120.0, 120.0));
+    assert!(n >= 5 * 20, "only {n} points of level lines drawn");
+    let n = check_lines(&d, &px, PCC, share, &[0.5], (0.4, 0.2));
+    assert!(n >= 20, "only {n} points of the PCC line drawn");
+    // Each level is drawn across the whole rectangle of cell centres (its ends within a cell).
+    let (lo, hi) = (0.5 / 30.0, 1.0 - 0.5 / 30.0);
+    for level in levels {
+        let c = (210.0 - level) / 120.0;
+        let want = ((c - hi).max(lo), (c - lo).min(hi));
+        let gs: Vec<f64> = d
+            .lines
+            .iter()
+            .filter(|l| l.0.eq_ignore_ascii_case(LEVEL))
+            .flat_map(|l| l.2.iter().map(|&p| px.data(p)))
+            .filter(|&(x, g)| (impacts(x, g) - level).abs() < 1.0)
+            .map(|(_, g)| g)
+            .collect();
+        let got = (
+            gs.iter().copied().fold(f64::INFINITY, f64::min),
+            gs.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        );
+        assert!(
+            (got.0 - want.0).abs() < 1.0 / 30.0 && (got.1 - want.1).abs() < 1.0 / 30.0,
+            "level {level}: γ from {got:?}, expected {want:?}"
+        );
+    }
+    // The legend lists what is drawn, and only that.
+    let svg = words(&svg);
+    for s in [
+        "evidence: mean number of impacts per f64 drop (levels: 25, 50, 100, 150)",
+        "evidence: level 200",
+        "evidence: PCC found in half of the f64 drops",
+        "cone finder: inconclusive",
+    ] {
+        assert!(svg.contains(s), "the legend lacks {s:?}");
+    }
+    for s in
+        ["exact: PCC possible", "exact: CC criterion", "effectively invariant cone found", "no cone contains"]
+    {
+        assert!(!svg.contains(s), "the legend lists {s:?}, which is not drawn");
+    }
+}
+
+/// Pixel distance from p to the segment a-b.
+fn to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 > 0.0 { (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / len2).clamp(0.0, 1.0) } else { 0.0 };
+    (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
+}
+
+#[test]
+fn level_labels_stay_off_the_other_curves() {
+    // An exact CC boundary through the middle of every level line, and a PCC boundary across.
+    let curves = Curves {
+        kind: Vec::new(),
+        cc: vec![(0..=20).map(|i| (0.5, i as f64 / 20.0)).collect()],
+        pcc: vec![(0..=20).map(|i| (i as f64 / 20.0, 0.45)).collect()],
+    };
+    let svg = svg_string(&synthetic(curves)).unwrap();
+    let d = parse(&svg);
+    let text = words(&svg);
+    assert!(text.contains("exact: PCC possible") && text.contains("exact: CC criterion boundary"));
+    let others: Vec<&Vec<(f64, f64)>> = d
+        .lines
+        .iter()
+        .filter(|l| [CC, PCC].iter().any(|c| l.0.eq_ignore_ascii_case(c)))
+        .map(|l| &l.2)
+        .collect();
+    let labels: Vec<_> =
+        d.texts.iter().filter(|t| t.2.eq_ignore_ascii_case(LEVEL) && t.3.parse::<u32>().is_ok()).collect();
+    assert!(labels.len() >= 4, "{} level labels", labels.len());
+    for (x, y, _, text) in labels {
+        // The label's box: from its text's corner (3, 1) px inside, 4.5 px per character + 3, 20 high.
+        let centre = (x - 3.0 + 4.5 * text.len() as f64 + 3.0, y - 1.0 + 10.0);
+        let near = others
+            .iter()
+            .flat_map(|l| l.windows(2))
+            .map(|w| to_segment(centre, w[0], w[1]))
+            .fold(f64::INFINITY, f64::min);
+        assert!(near > 12.0, "label {text} at {centre:?} lies {near:.1} px from an exact curve");
+    }
+}
