@@ -9,8 +9,9 @@ use crate::exact::{Q, QExt};
 use crate::finder::geometry::{P2, clip, hull, lift, project};
 use crate::model::FloatBody;
 use crate::spectral::criteria::cc_criterion;
-use chatter_kernel::certificate::{Body as CertBody, read};
+use chatter_kernel::certificate::{Body as CertBody, Certificate};
 use chatter_kernel::model::Polygon as Body;
+use chatter_kernel::syntax::{Encoding, read};
 use nalgebra::{Matrix3, Vector3};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -75,7 +76,8 @@ fn on_plane(v: &Vector3<f64>) -> Option<P2> {
 impl ConeFigure {
     /// Reads a certificate (n = 3, 4, 6) and computes the drawing in f64 (for display only).
     pub fn from_certificate(text: &str) -> Result<ConeFigure, String> {
-        let cert = read(text).map_err(|r| format!("not a readable certificate: {r}"))?;
+        let cert: Certificate =
+            read(text, Encoding::Ron).map_err(|r| format!("not a readable certificate: {r}"))?;
         let CertBody::RegularPolygon { n, kappa, gamma } = &cert.body;
         let q = |s: &str| s.parse::<Q>().map_err(|e| format!("{s:?}: {e}"));
         // A box certificate is drawn with the maps at its lower corner (kappa_lo, gamma_lo).

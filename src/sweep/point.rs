@@ -4,12 +4,12 @@
 use super::grid::Point;
 use crate::bodies::cosine;
 use crate::certify::{Failure, Request, certify};
-use crate::exact::{OrderedField, Q, QExt};
+use crate::exact::{OrderedField, Q, QExt, QField};
 use crate::finder::{FinderConfig, Seed, find_cone};
 use crate::model::FloatBody;
 use crate::simulate::{Arithmetic, Model, Options, Outcome, counts, simulate_many};
 use crate::spectral::criteria::{Family, cc_criterion, pcc_criterion};
-use chatter_kernel::certificate::write;
+use crate::write::write;
 use chatter_kernel::model::{Polygon, Shape};
 
 /// The paper's impact budget per simulated drop (section "Comparison with direct simulation").
@@ -174,7 +174,7 @@ fn refute_point(n: u64, p: &Point, e: &mut Evaluation) {
         match verify_refutation(&r, Default::default(), &[MALACHITE, NUM]) {
             Verdict::Accepted(_) => {
                 e.refuted = Some(true);
-                e.refutation = Some(chatter_kernel::refute::write(&r));
+                e.refutation = Some(crate::write::write_refutation(&r));
             }
             Verdict::Rejected(x) => {
                 e.internal = Some(format!("the kernel rejects a refutation chatter made: {x}"))
