@@ -15,7 +15,7 @@ pub(super) fn words(f: &Failure, locus: &Locus) -> String {
             format!("{} is a cone claim; an orbit certificate claims CompleteChatterFromSet", c.name())
         }
         Failure::PatternLength(l) => format!("{l} steps; a pattern has 1 to {MAX_PATTERN}"),
-        Failure::Step { step, n } => format!("step {step} is not in 1..{}", n - 1),
+        Failure::Step { step, n } => format!("step {step} is not in 1..{}", n.saturating_sub(1)),
         Failure::Bound { text, below_one } => {
             format!("{} is not in {}", abbreviate(text), if *below_one { "0 < x < 1" } else { "x > 0" })
         }

@@ -77,7 +77,9 @@ impl fmt::Display for Failure {
             F::UnknownAtom(n) => write!(f, "unknown atom {n:?} (not a hypothesis or an earlier step)"),
             F::UnknownPoint(p) => write!(f, "unknown point {p:?}"),
             F::UnknownCone(c) => write!(f, "unknown cone {c:?}"),
-            F::NotAMap(m, n) => write!(f, "{m:?} is not a map of the model (S1..S{}, I0)", n - 1),
+            F::NotAMap(m, n) => {
+                write!(f, "{m:?} is not a map of the model (S1..S{}, I0)", n.saturating_sub(1))
+            }
             F::DuplicateId => write!(f, "the id is used twice"),
             F::DuplicateAtom(n) => write!(f, "the atom {n:?} is defined twice"),
             F::DuplicatePoint(p) => write!(f, "the point {p:?} is named twice"),
@@ -111,7 +113,7 @@ impl fmt::Display for Failure {
                 )
             }
             F::Body(e) => write!(f, "{e}"),
-            F::NoMap(j, n) => write!(f, "map {j} is not one of S_1..S_{}", n - 1),
+            F::NoMap(j, n) => write!(f, "map {j} is not one of S_1..S_{}", n.saturating_sub(1)),
             F::NotCharacteristic(j) => write!(f, "chi is not (kappa + 1) det(lambda I - S_{j}) of the model"),
             F::HypothesisVanishes => {
                 write!(f, "the hypothesis vanishes wherever chi does: the region would be empty")
