@@ -1,7 +1,8 @@
-//! Certificates of general convex bodies (format version 4, docs/certificate-format.md §13):
-//! regular-polygon certificates transported to affine images (docs/model.md §11.7) verify on both
-//! backends exactly where the regular ones do; raised gamma and shrunk cones are rejected; the
-//! kernel's rules K1-K4 give typed rejections with a locus; versions 1-3 are unchanged.
+//! Family certificates of general convex bodies (`chatter-family-certificate`,
+//! docs/certificate-format.md §13): regular-polygon certificates transported to affine images
+//! (docs/model.md §11.7) verify on both backends exactly where the regular ones do; raised gamma
+//! and shrunk cones are rejected; the kernel's rules K1-K4 give typed rejections with a locus;
+//! cone certificates (versions 1-3) are unchanged.
 
 use crate::common::{q, root};
 use chatter::bodies::convex::polygon_plate;
@@ -338,7 +339,7 @@ fn versions_one_to_three_are_unchanged() {
     assert!(old >= 30);
 }
 
-/// The version-4 corpus files are exactly what the transport produces (valid ones accepted,
+/// The family-certificate corpus files are exactly what the transport produces (valid ones accepted,
 /// invalid ones rejected); with `CHATTER_WRITE_CORPUS=1` the test rewrites them instead.
 #[test]
 fn the_convex_corpus_is_what_the_transport_writes() {
