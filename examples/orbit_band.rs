@@ -391,7 +391,7 @@ fn words(n: u64, kappa: Q, r: f64, len: usize) {
             let b = Family {
                 n,
                 c1: chatter::bodies::cosine(n as usize),
-                kappa: <chatter::spectral::number_field::Nf as chatter::exact::OrderedField>::from_q(&kappa),
+                kappa: <chatter::spectral::number_field::Nf as chatter::exact::QField>::from_q(&kappa),
             }
             .at(&gamma);
             Box::new(move |w: &[i64]| chatter::spectral::cycle::cycle_criterion(&b, w).holds)

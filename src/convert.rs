@@ -1,15 +1,18 @@
 //! `chatter convert` (docs/certificate-format.md §11): a certificate or refutation from RON to
 //! its JSON twin and back, losslessly. The file is read by the kernel's reader (strict syntax,
 //! header, schema: the rules `chatter verify` applies before any arithmetic), then written by the
-//! deterministic RON writer of the kernel or by the JSON writer here, so RON -> JSON -> RON gives
-//! the kernel writer's text byte for byte. Content rules (numbers, body, cone) are not checked:
-//! an invalid certificate converts to an equally invalid one.
+//! deterministic RON writer ([`crate::write`]) or by the JSON writer here, so RON -> JSON -> RON
+//! gives the RON writer's text byte for byte. A legacy header (`"chatter-certificate"` version 4
+//! or 5) is written in its current form. Content rules (numbers, body, cone) are not checked: an
+//! invalid certificate converts to an equally invalid one.
 
+use crate::write::{quoted, write, write_convex, write_orbit, write_refutation};
 use chatter_kernel::certificate::{
     Body, Certificate, ConvexBodyText, ConvexCertificate, Encoding, OrbitBody, OrbitCertificate, OrbitSet,
-    Param, quoted,
+    Param, Rejection,
 };
 use chatter_kernel::refute::{Refutation, Step};
+use chatter_kernel::syntax::{self, Kind, kind_of, schema};
 
 /// The encoding to convert to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -87,7 +90,7 @@ pub fn refutation_to_json(r: &Refutation) -> String {
     )
 }
 
-/// Writes a version-4 certificate (a general convex body, docs/certificate-format.md §13) as its
+/// Writes a family certificate (a general convex body, docs/certificate-format.md §13) as its
 /// JSON twin: one contact per line, each cone as a list of generators one per line.
 pub fn convex_to_json(c: &ConvexCertificate) -> String {
     let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma } = &c.body;
@@ -115,7 +118,7 @@ pub fn convex_to_json(c: &ConvexCertificate) -> String {
     )
 }
 
-/// Writes a version-5 (orbit) certificate (docs/certificate-format.md §14) as its JSON twin:
+/// Writes an orbit certificate (docs/certificate-format.md §14) as its JSON twin:
 /// one vector per line, in the order of the RON writer's fields.
 pub fn orbit_to_json(c: &OrbitCertificate) -> String {
     let OrbitBody::RegularPolygon { n, kappa, gamma } = &c.body;
@@ -156,38 +159,28 @@ pub fn orbit_to_json(c: &OrbitCertificate) -> String {
 /// Converts certificate or refutation text in the encoding `from` to `target`; an error in words
 /// (with the rejection code) when the text is not a readable certificate or refutation.
 pub fn convert(text: &str, from: Encoding, target: Target) -> Result<String, String> {
-    use chatter_kernel::{certificate, proof, refute};
-    let format = chatter_kernel::verify::format_of_in(text, from);
-    let unreadable = |r: certificate::Rejection| format!("not a readable certificate or refutation: {r}");
-    match format.as_deref() {
-        Some(refute::FORMAT) => {
-            let r = refute::read_in(text, from).map_err(unreadable)?;
-            Ok(match target {
-                Target::Json => refutation_to_json(&r),
-                Target::Ron => refute::write(&r),
-            })
+    let unreadable = |r: Rejection| format!("not a readable certificate or refutation: {r}");
+    let (kind, _) = kind_of(text, from, Kind::Cone).map_err(unreadable)?;
+    let json = target == Target::Json;
+    match kind {
+        Kind::Proof => Err("a proof file (chatter-proof) has no JSON twin".into()),
+        Kind::Refutation => {
+            let r: Refutation = schema(text, from).map_err(unreadable)?;
+            Ok(if json { refutation_to_json(&r) } else { write_refutation(&r) })
         }
-        Some(proof::FORMAT) => Err("a proof file (chatter-proof) has no JSON twin".into()),
-        _ if certificate::convex::version_of(text, from) == Some(certificate::convex::CONVEX_VERSION) => {
-            let c = certificate::read_convex(text, from).map_err(unreadable)?;
-            Ok(match target {
-                Target::Json => convex_to_json(&c),
-                Target::Ron => certificate::write_convex(&c),
-            })
+        Kind::Family => {
+            let mut c: ConvexCertificate = schema(text, from).map_err(unreadable)?;
+            (c.format, c.version) = (syntax::family::FORMAT.into(), syntax::family::VERSION);
+            Ok(if json { convex_to_json(&c) } else { write_convex(&c) })
         }
-        _ if certificate::convex::version_of(text, from) == Some(certificate::ORBIT_VERSION) => {
-            let c = certificate::read_orbit(text, from).map_err(unreadable)?;
-            Ok(match target {
-                Target::Json => orbit_to_json(&c),
-                Target::Ron => certificate::write_orbit(&c),
-            })
+        Kind::Orbit => {
+            let mut c: OrbitCertificate = schema(text, from).map_err(unreadable)?;
+            (c.format, c.version) = (syntax::orbit::FORMAT.into(), syntax::orbit::VERSION);
+            Ok(if json { orbit_to_json(&c) } else { write_orbit(&c) })
         }
-        _ => {
-            let c = certificate::read_in(text, from).map_err(unreadable)?;
-            Ok(match target {
-                Target::Json => certificate_to_json(&c),
-                Target::Ron => certificate::write(&c),
-            })
+        Kind::Cone => {
+            let c: Certificate = schema(text, from).map_err(unreadable)?;
+            Ok(if json { certificate_to_json(&c) } else { write(&c) })
         }
     }
 }

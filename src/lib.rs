@@ -36,5 +36,6 @@ pub mod spectral;
 pub mod sweep;
 pub mod symbolic;
 pub mod verify;
+pub mod write;
 
 pub use chatter_kernel::{certificate, check, geometry};

@@ -2,6 +2,7 @@
 //! user numbers, kinetic energy, the paper's coordinates, and `f64` copies of the maps for the
 //! numerical search; [`float`]: the float model of a regular n-gon for every n.
 
+pub mod affine;
 pub mod float;
 
 use crate::exact::{OrderedField, Q};

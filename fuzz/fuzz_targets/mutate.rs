@@ -24,7 +24,8 @@
 #![no_main]
 
 use chatter::oracle::{check_text_and_oracle, mutation};
-use chatter_kernel::certificate::{Certificate, read, write};
+use chatter::write::write;
+use chatter_kernel::certificate::{Certificate, read};
 use chatter_kernel::exact::ParseLimits;
 use libfuzzer_sys::fuzz_target;
 use std::sync::OnceLock;

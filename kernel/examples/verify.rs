@@ -8,13 +8,15 @@
 //! cannot be read, 3 if the two bignum backends disagree.
 
 use chatter_kernel::exact::ParseLimits;
-use chatter_kernel::verify::{MALACHITE, NUM, Verdict, format_of, verify_proof_text, verify_text};
+use chatter_kernel::syntax::{Encoding, Kind, kind_of};
+use chatter_kernel::verify::{BOTH, Verdict, verify_proof_text, verify_text};
 use std::process::ExitCode;
 
-/// The verdict on one file's text: certificates and proofs are told apart by their `format` field.
+/// The verdict on one file's text: certificates and proofs are told apart by their header.
 fn verdict(text: &str) -> (String, u8) {
     let limits = ParseLimits::default();
-    let (ok, rejected, disagree) = if format_of(text).as_deref() == Some(chatter_kernel::proof::FORMAT) {
+    let is_proof = matches!(kind_of(text, Encoding::Ron, Kind::Cone), Ok((Kind::Proof, _)));
+    let (ok, rejected, disagree) = if is_proof {
         match verify_proof_text(text, limits) {
             Verdict::Accepted(c) => (
                 Some(format!("proof {}: {} steps, {} conclusions", c.name, c.steps, c.conclusions.len())),
@@ -25,7 +27,7 @@ fn verdict(text: &str) -> (String, u8) {
             Verdict::Disagree(s) => (None, None, Some(s)),
         }
     } else {
-        match verify_text(text, limits, &[MALACHITE, NUM]) {
+        match verify_text(text, limits, &BOTH) {
             Verdict::Accepted(a) => {
                 (Some(format!("certificate: {} for n = {}", a.claim.name(), a.n)), None, None)
             }
@@ -35,7 +37,7 @@ fn verdict(text: &str) -> (String, u8) {
     };
     match (ok, rejected, disagree) {
         (Some(s), _, _) => (format!("OK ({s})"), 0),
-        (_, Some(r), _) => (format!("REJECTED [{}] at {:?}: {}", r.code.as_str(), r.locus, r.message), 1),
+        (_, Some(r), _) => (format!("REJECTED [{}] at {:?}: {}", r.code.as_str(), r.locus, r.message()), 1),
         (_, _, Some(s)) => (format!("ERROR: the backends disagree: {s}"), 3),
         _ => unreachable!("one verdict"),
     }

@@ -2,9 +2,42 @@
 //! integer 3-vector g with g_v < 0 (it stands for (g_u0, g_u1) / (-g_v)), a line is a covector.
 //! Every test is the sign of a polynomial in the integers, so nothing is ever divided.
 
-use crate::exact::Ring;
+use crate::exact::{Field, OrderedField, Ring, scale_to_ints, to_canonical};
 use crate::model::linalg::{Vec3, cross, det3, dot};
 use std::cmp::Ordering;
+
+/// An exact ordered field with a ring R in which homogeneous vectors are kept: every vector of
+/// the field has a positive multiple in R^k (integers for the rationals; the field itself for
+/// a number field), and R embeds back into the field.
+pub trait Scalar: OrderedField {
+    /// The ring of scaled coordinates.
+    type R: Ring;
+    /// A positive multiple of `xs` with coordinates in R.
+    fn scaled(xs: &[Self]) -> Vec<Self::R>;
+    /// An element of R as an element of the field.
+    fn lift(r: &Self::R) -> Self;
+    /// The canonical text of an element.
+    fn text(&self) -> String;
+}
+
+impl<F: Field> Scalar for F {
+    type R = F::Int;
+    fn scaled(xs: &[F]) -> Vec<F::Int> {
+        scale_to_ints(xs)
+    }
+    fn lift(r: &F::Int) -> F {
+        F::from_int(r)
+    }
+    fn text(&self) -> String {
+        to_canonical(self)
+    }
+}
+
+/// The point (a_0/w, ..., a_k/w) of a projection plane, from scaled coordinates and w > 0, as text.
+pub fn projected<E: Scalar>(coords: &[E::R], w: &E::R) -> Vec<String> {
+    let w = E::lift(w);
+    coords.iter().map(|x| E::lift(x).over(&w).map_or_else(String::new, |c| c.text())).collect()
+}
 
 /// Orientation of the projected points a, b, c: `Greater` when counter-clockwise. With
 /// w = -v > 0, orient2d(a/w_a, b/w_b, c/w_c) = -det[a, b, c] / (w_a w_b w_c).

@@ -1,9 +1,11 @@
 //! Polynomials in (kappa, gamma) and Bernstein bounds (`chatter_kernel::bivariate`), against
 //! brute-force evaluation, and the PCC polynomials against the point model.
+#![cfg(feature = "boxes")]
 
 use chatter_kernel::bivariate::{Bi, NotNegative, Rect, negative_on};
-use chatter_kernel::exact::{OrderedField, Q, Ring};
+use chatter_kernel::exact::{OrderedField, Ring};
 use chatter_kernel::model::{Polygon, pcc_polynomials, pcc_quadratic};
+use malachite::rational::Rational as Q;
 use num_rational::BigRational;
 use proptest::prelude::*;
 

@@ -1,5 +1,7 @@
 //! The trusted crate's boundary, checked: it depends on exact arithmetic, serde, ron and serde_json
-//! only, and its source has no floating-point type and no reference to the untrusted tool.
+//! only; its source has no floating-point type and no reference to the untrusted tool; the
+//! words of rejections (`explain/`) are outside the trusted path; the numbers do not depend on
+//! the proof checker; and every file of rules starts with the list of its rules.
 
 use std::path::Path;
 
@@ -47,5 +49,57 @@ fn the_kernel_source_has_no_floats_and_no_untrusted_code() {
             }
             assert!(!code.contains("chatter::"), "{}:{}: the tool in {line:?}", f.display(), i + 1);
         }
+    }
+}
+
+/// The source files under `src/<dir>` (all of them for `""`).
+fn files_under(dir: &str) -> Vec<std::path::PathBuf> {
+    let mut files = Vec::new();
+    sources(&Path::new(env!("CARGO_MANIFEST_DIR")).join("src").join(dir), &mut files);
+    files
+}
+
+#[test]
+fn the_rules_never_read_the_words_of_a_rejection() {
+    for f in files_under("") {
+        let text = std::fs::read_to_string(&f).unwrap();
+        let rel = f.to_string_lossy();
+        if rel.contains("/src/explain/") || rel.ends_with("/src/lib.rs") {
+            continue;
+        }
+        let code: Vec<&str> = text.lines().map(|l| l.split("//").next().unwrap()).collect();
+        let code = code.join("\n");
+        assert!(!code.contains("crate::explain") && !code.contains("message()"), "{rel} uses the words");
+    }
+}
+
+#[test]
+fn the_numbers_do_not_depend_on_the_rules_or_the_proof_checker() {
+    for f in files_under("exact") {
+        let text = std::fs::read_to_string(&f).unwrap();
+        for other in ["crate::rules", "crate::proof", "crate::syntax", "crate::verify"] {
+            assert!(!text.contains(other), "{}: {other}", f.display());
+        }
+    }
+}
+
+#[test]
+fn every_file_of_rules_starts_with_its_rules_and_their_codes() {
+    let codes: Vec<String> =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("src/reject.rs"))
+            .unwrap()
+            .lines()
+            .filter_map(|l| {
+                l.trim().split(" = \"").nth(1).map(|c| format!("`{}`", c.trim_end_matches("\",")))
+            })
+            .collect();
+    assert!(codes.len() > 20, "the codes of reject.rs");
+    let kinds = ["cone", "rod", "boxes", "field", "family", "orbit", "refutation", "proof/mod"];
+    for kind in kinds {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("src/rules/{kind}.rs"));
+        let text = std::fs::read_to_string(&path).unwrap();
+        let head: String = text.lines().take_while(|l| l.starts_with("//!")).collect::<Vec<_>>().join("\n");
+        assert!(head.lines().filter(|l| l.starts_with("//! -")).count() >= 2, "{kind}: a list of rules");
+        assert!(codes.iter().any(|c| head.contains(c.as_str())), "{kind}: the rules name their codes");
     }
 }

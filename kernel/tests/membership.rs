@@ -4,11 +4,15 @@
 //! not, x* lies in X and points beyond δ along an axis do not; rejected certificates give no set.
 
 use chatter_kernel::certificate::{Encoding, read, read_orbit};
-use chatter_kernel::exact::{Algebraic, OrderedField, Q, Ring, parse_canonical};
-use chatter_kernel::membership::{CertifiedCone, CertifiedOrbit, Exact, NotCertified};
+use chatter_kernel::exact::{Algebraic, OrderedField, Ring, parse_canonical};
+use chatter_kernel::membership::{CertifiedCone, CertifiedOrbit, NotCertified};
 use chatter_kernel::model::Polygon;
 use chatter_kernel::model::linalg::mat_vec;
 use std::path::PathBuf;
+
+/// The main backend's rationals (membership is generic over the backend).
+type Q = malachite::rational::Rational;
+type Exact = chatter_kernel::membership::Exact<Q>;
 
 fn file(rel: &str) -> String {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
@@ -27,7 +31,7 @@ fn v(x: [i64; 3], d: i64) -> [Exact; 3] {
 fn the_doc_example_cone_contains_its_generators_and_the_all_down_images_and_nothing_beyond() {
     let cert = read(&file("certificates/valid/doc-example-square.ron")).unwrap();
     let (cone, accepted) =
-        CertifiedCone::new(&cert, Default::default()).unwrap_or_else(|_| panic!("accepted"));
+        CertifiedCone::<Q>::new(&cert, Default::default()).unwrap_or_else(|_| panic!("accepted"));
     assert_eq!(accepted.n, 4);
     // K is 0 <= u0/(-v) <= 1/20, -11/4 <= u1/(-v) <= 3/4 (docs/certificate-format.md §1).
     for g in [[0, -55, -20], [1, -55, -20], [1, 15, -20], [0, 15, -20], [1, -20, -40]] {
@@ -51,9 +55,9 @@ fn the_doc_example_cone_contains_its_generators_and_the_all_down_images_and_noth
 #[test]
 fn a_rejected_certificate_gives_no_set() {
     let cert = read(&file("certificates/invalid/shrunk-rectangle.ron")).unwrap();
-    assert!(matches!(CertifiedCone::new(&cert, Default::default()), Err(NotCertified::Verdict(_))));
+    assert!(matches!(CertifiedCone::<Q>::new(&cert, Default::default()), Err(NotCertified::Verdict(_))));
     let orbit = read_orbit(&file("certificates/invalid/orbit-delta-enlarged.ron"), Encoding::Ron).unwrap();
-    assert!(matches!(CertifiedOrbit::new(&orbit, Default::default()), Err(NotCertified::Verdict(_))));
+    assert!(matches!(CertifiedOrbit::<Q>::new(&orbit, Default::default()), Err(NotCertified::Verdict(_))));
 }
 
 /// The numbers of a parallelepiped orbit certificate: x*, the axes (columns) and δ.
@@ -71,7 +75,7 @@ fn parallelepiped(text: &str) -> ([Q; 3], [[Q; 3]; 3], Q) {
 fn the_orbit_set_contains_its_centre_and_stops_at_delta_along_each_axis() {
     let text = file("certificates/valid/orbit-n3-kappa1_8-gamma3_20.ron");
     let cert = read_orbit(&text, Encoding::Ron).unwrap();
-    let (orbit, _) = CertifiedOrbit::new(&cert, Default::default()).unwrap_or_else(|_| panic!("accepted"));
+    let (orbit, _) = CertifiedOrbit::<Q>::new(&cert, Default::default()).unwrap_or_else(|_| panic!("accepted"));
     let (x, axes, delta) = parallelepiped(&text);
     // A state (q, p) with q = (0, a, 1) hc, p = (b, c, -1) w for x = (a, b, c), any hc, w > 0.
     let state = |x: &[Q; 3], hc: i64, w: i64| {
@@ -107,7 +111,7 @@ fn a_number_field_cone_decides_membership_in_its_field() {
     // Certificates for n = 7 are in Q(cos 2 pi/7); the generators themselves lie in K.
     let text = file("certificates/valid/n7-kappa1_200-gamma1_5-complete-chatter-from-all-down.ron");
     let cert = read(&text).unwrap();
-    let (cone, _) = CertifiedCone::new(&cert, Default::default()).unwrap_or_else(|_| panic!("accepted"));
+    let (cone, _) = CertifiedCone::<Q>::new(&cert, Default::default()).unwrap_or_else(|_| panic!("accepted"));
     let field = chatter_kernel::exact::CosField::<Q>::new(7).unwrap();
     for g in &cert.cone {
         let p: Vec<Exact> = g.0.iter().map(|s| field.parse(s, Default::default()).unwrap()).collect();

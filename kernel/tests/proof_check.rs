@@ -1,10 +1,12 @@
 //! The proof checker on the committed proof of the square-case lemmas: it checks on both
 //! backends, and a change to any coefficient, claim or reference makes it fail at that step.
+#![cfg(all(feature = "proof", feature = "explain"))]
 
-use chatter_kernel::certificate::{Code, Locus};
-use chatter_kernel::exact::{ParseLimits, Q};
-use chatter_kernel::proof::{ProofFile, Step, check, read};
+use chatter_kernel::exact::{ParseLimits, Ring};
+use chatter_kernel::proof::{Failure, ProofFile, Step, check, read};
+use chatter_kernel::reject::{Code, Detail, Locus};
 use chatter_kernel::verify::{Verdict, verify_proof};
+use malachite::rational::Rational as Q;
 
 fn committed() -> ProofFile {
     read(include_str!("../../proofs/square.ron")).expect("the committed proof reads")
@@ -16,7 +18,8 @@ fn fails_at(f: &ProofFile) -> Option<usize> {
         Ok(_) => None,
         Err(r) => match &r.locus {
             Locus::Step { index, .. } => {
-                assert_eq!(r.code, Code::StepFailed);
+                let Detail::Proof(f) = r.detail.as_ref() else { panic!("not a proof's failure: {r}") };
+                assert_eq!(r.code, f.code(), "{r}");
                 Some(*index)
             }
             other => panic!("a step mutation is reported at {other:?}: {r}"),
@@ -41,8 +44,8 @@ fn the_committed_proof_checks_on_both_backends() {
 }
 
 fn bump(c: &str) -> String {
-    let q: Q = c.parse().expect("canonical");
-    (&q + &Q::int(1)).to_string()
+    let q: Q = chatter_kernel::exact::parse_canonical(c, ParseLimits::default()).expect("canonical");
+    chatter_kernel::exact::to_canonical(&q.plus(&Q::from(1)))
 }
 
 #[test]
@@ -164,7 +167,12 @@ fn a_missing_obligation_fails_the_rule_that_needs_it() {
     let rule = f.steps.iter().position(|s| s.id() == "inv.S3").unwrap();
     assert_eq!(fails_at(&f), Some(rule));
     let r = check::<Q>(&f, ParseLimits::default()).unwrap_err();
-    assert!(r.message.contains("no step `K.S3.q1.left`"), "{r}");
+    assert_eq!(r.code, Code::SignNotProved, "{r}");
+    assert!(
+        matches!(r.detail.as_ref(), Detail::Proof(Failure::NoStep(key, _)) if key == "K.S3.q1.left"),
+        "{r}"
+    );
+    assert!(r.message().contains("no step `K.S3.q1.left`"), "{r}");
 }
 
 #[test]
@@ -194,7 +202,7 @@ fn hypotheses_are_about_the_parameters_and_include_kappa_positive() {
     let mut f = committed();
     f.hypotheses.retain(|h| h.expr != "k");
     let r = check::<Q>(&f, ParseLimits::default()).unwrap_err();
-    assert!(r.message.contains("kappa > 0 must be a hypothesis"), "{r}");
+    assert!(matches!(r.detail.as_ref(), Detail::Proof(Failure::KappaHypothesis)), "{r}");
 }
 
 #[test]

@@ -71,7 +71,7 @@ fn result(report: Report) -> Result<Value, Fail> {
     };
     let t = &report.timings;
     Ok(json!({
-        "ron": chatter_kernel::certificate::write(cert),
+        "ron": chatter::write::write(cert),
         "json": chatter::convert::certificate_to_json(cert),
         "method": report.method,
         "max_denominator_bits": report.max_denominator_bits,

@@ -8,6 +8,7 @@
 //! a flat body has J = P S P^T with S = int r r^T dm / m and P = [[0, 1], [-1, 0]].
 
 use crate::exact::{Algebraic, CosField, OrderedField, Q};
+use chatter_kernel::exact::OrderedField as _;
 use chatter_kernel::model::{ConvexBody, ConvexBodyError, MAX_CONTACTS, Mat2, Vec2, check_convex_polygon};
 
 /// Twice the signed area of the triangle (0, a, b): a_x b_y - b_x a_y.

@@ -8,10 +8,11 @@ pub mod file;
 pub mod general;
 pub mod solids;
 
-use crate::exact::{OrderedField, Q, QExt, Ring, Rounding};
+use crate::exact::{OrderedField, Q, QExt, QField, Ring, Rounding};
 use crate::spectral::criteria::{Family, Profile, Sup, cc_profile, goyal_threshold, pcc_profile};
 use crate::spectral::number_field::{Nf, NumberField};
 use crate::spectral::roots::RealRoot;
+use chatter_kernel::exact::OrderedField as _;
 use chatter_kernel::model::linalg::Vec3;
 use chatter_kernel::model::rational_cos as cos_step;
 use serde::Serialize;

@@ -4,8 +4,9 @@
 //! lo < hi, lo certified and hi not; that every gamma below lo certifies is *not* claimed
 //! (certifiability need not be monotone in gamma), only that these two pipeline runs came out so.
 
-use crate::exact::{OrderedField, Q, Ring};
+use crate::exact::{Q, Ring};
 use chatter_kernel::certificate::Claim;
+use chatter_kernel::exact::OrderedField;
 use std::time::{Duration, Instant};
 
 /// The default search interval [2^-12, 1 - 2^-12] (the claims about drops need 0 < gamma < 1).

@@ -1,4 +1,4 @@
-//! Certificates of general convex bodies (docs/model.md §11, format version 4): the family
+//! Certificates of general convex bodies (docs/model.md §11, format `chatter-family-certificate`): the family
 //! finder, the family exactifier, then the kernel on both backends.
 //!
 //! The search and the exactifier work on the body scaled to size about 1 (contacts / R and
@@ -86,7 +86,7 @@ pub fn normaliser(body: &ConvexBody<Q>) -> Mat2<Q> {
 /// The image of `body` under `l` (det L > 0) and the map T⁻¹ = diag(adj L, 1) that carries
 /// generators of the image's cones back to the body's (docs/model.md §11.7).
 pub fn normalised(body: &ConvexBody<Q>, l: &Mat2<Q>) -> Option<(ConvexBody<Q>, Mat2<Q>)> {
-    let image = body.affine_image(l)?;
+    let image = crate::model::affine::affine_image(body, l)?;
     let adj = [[l[1][1].clone(), l[0][1].negated()], [l[1][0].negated(), l[0][0].clone()]];
     Some((image.body, adj))
 }

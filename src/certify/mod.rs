@@ -9,7 +9,7 @@ pub mod convex;
 mod field;
 pub mod transport;
 
-use crate::exact::{OrderedField, ParseLimits, Q};
+use crate::exact::{OrderedField, ParseLimits, Q, QField};
 use crate::exactify::{Exact, Exactified, ExactifyConfig, ExactifyError, exactify};
 use crate::finder::geometry::P2;
 use crate::finder::rod::{RodCone, find_rod_cone_box, s_of};
@@ -248,7 +248,7 @@ fn certificate(req: &Request, claim: Claim, cone: Vec<Generator>, how: &str) -> 
         cone,
         producer: format!("chatter {} certify ({how})", env!("CARGO_PKG_VERSION")),
     };
-    cert.version = cert.version_needed();
+    cert.version = crate::write::VersionNeeded::version_needed(&cert);
     cert
 }
 

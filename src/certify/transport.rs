@@ -1,4 +1,4 @@
-//! Certificates for general convex bodies (format version 4, docs/certificate-format.md §13) by
+//! Certificates for general convex bodies (format `chatter-family-certificate`, docs/certificate-format.md §13) by
 //! transport from a regular n-gon certificate (untrusted: the kernel re-checks every output).
 //!
 //! A regular n-gon certificate gives one cone K in contact coordinates (u0, u1, v) relabelled at
@@ -11,12 +11,12 @@
 //! K'_i, where W_i' has rows f'_i, f'_{i+1}, (0, 0, 1): exact and rational whenever the image's
 //! contacts are, even for the triangle, whose own coordinates lie in Q(sqrt 3).
 
+use crate::exact::{Q, Ring};
 use chatter_kernel::certificate::{
-    Body, CONVEX_VERSION, Certificate, ConvexBodyText, ConvexCertificate, ConvexCoordinates, FORMAT,
-    Generator,
+    Body, Certificate, ConvexBodyText, ConvexCertificate, ConvexCoordinates, Generator,
 };
+use chatter_kernel::exact::OrderedField;
 use chatter_kernel::exact::to_canonical;
-use chatter_kernel::exact::{OrderedField, Q, Ring};
 use chatter_kernel::model::linalg::Vec3;
 use chatter_kernel::model::{ConvexBody, ConvexBodyError, Mat2, Vec2};
 
@@ -85,7 +85,7 @@ fn regular_cone(cert: &Certificate) -> Result<(u64, Vec<Vec3<Q>>), TransportErro
     Ok((*n, gens))
 }
 
-/// The version-4 text of a body and a family of cones.
+/// The family certificate of a body and a family of cones.
 pub fn convex_certificate(
     body: &ConvexBody<Q>,
     claim: chatter_kernel::certificate::Claim,
@@ -95,8 +95,8 @@ pub fn convex_certificate(
     let t = |x: &Q| to_canonical(x);
     let j = body.inertia();
     ConvexCertificate {
-        format: FORMAT.into(),
-        version: CONVEX_VERSION,
+        format: chatter_kernel::syntax::family::FORMAT.into(),
+        version: chatter_kernel::syntax::family::VERSION,
         body: ConvexBodyText::ConvexPolygon {
             contacts: body.contacts().iter().map(|r| (t(&r[0]), t(&r[1]))).collect(),
             inertia: (t(&j[0][0]), t(&j[0][1]), t(&j[1][1])),

@@ -3,7 +3,8 @@
 use super::{Env, Outcome, emit, emit_report};
 use crate::certify::{ClaimChoice, Failure, Report, Request, certify};
 use crate::exact::{Q, parse_user_number};
-use chatter_kernel::certificate::{Claim, write};
+use crate::write::write;
+use chatter_kernel::certificate::Claim;
 use chatter_kernel::model::BodyError;
 use clap::{Args, ValueEnum};
 use std::path::PathBuf;

@@ -8,7 +8,7 @@ use super::{Env, Outcome, emit, emit_report};
 use crate::certify::Failure;
 use crate::certify::convex::{ConvexReport, ConvexRequest, certify_convex};
 use crate::exact::parse_user_number;
-use chatter_kernel::certificate::write_convex;
+use crate::write::write_convex;
 use std::path::PathBuf;
 
 /// Validated arguments of a general body's certification.

@@ -2,10 +2,11 @@
 
 use super::{Outcome, emit, emit_report};
 use crate::report::prove::{CheckProofReport, ProofFileReport};
+use crate::verify::format::format_of;
 use crate::verify::read::{Input, read_input};
 use crate::verify::{DEFAULT_MAX_FILE_SIZE, DEFAULT_TIME_LIMIT, with_time_limit};
 use chatter_kernel::exact::ParseLimits;
-use chatter_kernel::verify::{Verdict, format_of, verify_proof_text};
+use chatter_kernel::verify::{Verdict, verify_proof_text};
 use clap::Args;
 use std::path::PathBuf;
 
@@ -77,12 +78,14 @@ pub fn run(a: CheckProofArgs) -> Outcome {
                 if a.json {
                     reports.push(ProofFileReport::rejected(&p.to_string(), &r));
                 } else {
-                    let hint = if format_of(&text).as_deref() == Some(chatter_kernel::certificate::FORMAT) {
+                    let certificate =
+                        ["chatter-certificate", "chatter-family-certificate", "chatter-orbit-certificate"];
+                    let hint = if format_of(&text).is_some_and(|f| certificate.contains(&f.as_str())) {
                         " (this file is a certificate: use `chatter verify`)"
                     } else {
                         ""
                     };
-                    emit(&format!("{p}: REJECTED: {}{hint}", r.message));
+                    emit(&format!("{p}: REJECTED: {}{hint}", r.message()));
                 }
                 outcome = Outcome::Negative;
             }

@@ -6,7 +6,7 @@ use crate::exact::parse_user_number;
 use crate::exact::{Q, Ring};
 use crate::report::classify::{ClassifyReport, ClassifyRequest, classify};
 use crate::report::classify_general::classify_general;
-use chatter_kernel::certificate::write_orbit;
+use crate::write::write_orbit;
 use clap::Args;
 use std::path::PathBuf;
 

@@ -92,7 +92,7 @@ fn write_leaves(dir: &Path, leaves: &[Leaf]) -> Result<(), String> {
         let (claim, file) = match &l.status {
             Status::Certified { claim, certificate } => {
                 let file = format!("certificates/box-{i:05}.ron");
-                w(dir.join(&file), &chatter_kernel::certificate::write(certificate))?;
+                w(dir.join(&file), &crate::write::write(certificate))?;
                 (claim.name(), file)
             }
             Status::Refuted { refutations } => {
@@ -100,7 +100,7 @@ fn write_leaves(dir: &Path, leaves: &[Leaf]) -> Result<(), String> {
                     let chatter_kernel::certificate::Body::RegularPolygon { kappa, gamma, .. } = &r.body;
                     points.insert(
                         (kappa.texts()[0].to_string(), gamma.texts()[0].to_string()),
-                        chatter_kernel::refute::write(r),
+                        crate::write::write_refutation(r),
                     );
                 }
                 ("", String::new())

@@ -4,7 +4,7 @@
 use super::{Env, Outcome, emit, emit_report};
 use crate::exact::parse_user_number;
 use crate::orbit::{Failure, Request, certify_orbit};
-use chatter_kernel::certificate::write_orbit;
+use crate::write::write_orbit;
 use clap::Args;
 use std::path::PathBuf;
 use std::time::{Duration, Instant};

@@ -74,7 +74,7 @@ pub fn run(a: ProveArgs) -> Outcome {
     let verdict = verify_proof(&file, ParseLimits::default());
     let checked = match &verdict {
         Verdict::Accepted(c) => Ok(c.clone()),
-        Verdict::Rejected(r) => Err(r.message.clone()),
+        Verdict::Rejected(r) => Err(r.message().clone()),
         Verdict::Disagree(s) => return Outcome::Internal(format!("the backends disagree on the proof: {s}")),
     };
     let cross = cross_check(a.points, a.seed);

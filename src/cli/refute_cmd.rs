@@ -7,9 +7,10 @@ use crate::exact::Q;
 use crate::refute::{RefuteConfig, refute};
 use crate::report::refute::RefuteReport;
 use crate::report::{Timings, ms};
+use crate::write::write_refutation as write;
 use chatter_kernel::certificate::Claim;
 use chatter_kernel::model::Shape;
-use chatter_kernel::refute::{Refutation, write};
+use chatter_kernel::refute::Refutation;
 use chatter_kernel::verify::{Verdict, verify_refutation};
 use clap::Args;
 use std::path::PathBuf;
@@ -121,7 +122,7 @@ fn checked(a: &RefuteArgs, r: Refutation, env: &Env, start: Instant, [kq, gq]: [
             "REFUTED n={n} kappa={k} gamma={g} claim={}: {} derived points, the last ({}) with {v}; search {:.2} ms, kernel {:.2} ms ({} + {}){out}",
             done.claim.name(),
             done.points,
-            done.last.join(", "),
+            done.last.iter().map(|x| chatter_kernel::explain::abbreviate(x)).collect::<Vec<_>>().join(", "),
             search.as_secs_f64() * 1e3,
             kernel.as_secs_f64() * 1e3,
             env.backends[0].name,

@@ -3,7 +3,8 @@
 //! itself always has rational vertices; only the pieces K ∩ C_j and their images live in the field.
 
 use super::HPoly;
-use crate::exact::{Algebraic, Field, Int, OrderedField, Q, QExt, Ring};
+use crate::exact::{Algebraic, Field, Int, OrderedField, Q, QExt, QField, Ring};
+use chatter_kernel::exact::OrderedField as _;
 use chatter_kernel::geometry::clip;
 use chatter_kernel::model::Polygon as Body;
 use chatter_kernel::model::linalg::{Vec3, mat_vec};

@@ -25,6 +25,7 @@
 pub mod convex;
 
 use crate::exact::Q;
+use crate::write::VersionNeeded;
 use chatter_kernel::certificate::{
     Body as CertBody, Certificate, Claim, Code, FORMAT, Locus, Param, Rejection, VERSIONS,
 };
@@ -993,7 +994,7 @@ pub fn check_text_and_oracle(
     limits: ParseLimits,
 ) -> Result<Result<Accepted, Rejection>, Finding> {
     use chatter_kernel::verify::{MALACHITE, NUM, Verdict as KernelVerdict, verify_text};
-    let text = chatter_kernel::certificate::write(cert);
+    let text = crate::write::write(cert);
     match chatter_kernel::certificate::read(&text) {
         Ok(back) if back == *cert => {}
         Ok(back) => return Err(finding("round-trip", format!("written and read back as {back:?}"))),
@@ -1558,7 +1559,7 @@ mod tests {
         ];
         for c in certs {
             if let Err(f) = check_text_and_oracle(&c, ParseLimits::default()) {
-                panic!("{f}\n{}", chatter_kernel::certificate::write(&c));
+                panic!("{f}\n{}", crate::write::write(&c));
             }
         }
     }

@@ -24,7 +24,7 @@ pub fn cc_threshold(n: u64, kappa: &Q, bits: u32) -> Option<(Q, Q)> {
             let fam = Family {
                 n,
                 c1: cosine(n as usize),
-                kappa: <crate::spectral::number_field::Nf as crate::exact::OrderedField>::from_q(kappa),
+                kappa: <crate::spectral::number_field::Nf as crate::exact::QField>::from_q(kappa),
             };
             cc_profile(&fam).sup_lower_bound(bits)
         }

@@ -9,9 +9,7 @@ pub mod band;
 
 use crate::exact::{Q, QExt};
 use crate::simulate::{Initial, Model, Options, Shape, pattern, simulate};
-use chatter_kernel::certificate::{
-    Claim, FORMAT, ORBIT_VERSION, OrbitBody, OrbitCertificate, OrbitSet, Rejection,
-};
+use chatter_kernel::certificate::{Claim, OrbitBody, OrbitCertificate, OrbitSet, Rejection};
 use chatter_kernel::exact::{ParseLimits, Ring, to_canonical};
 use chatter_kernel::model::Polygon;
 use chatter_kernel::verify::{Backend, Verdict, verify_orbit_on};
@@ -352,8 +350,8 @@ fn certificate(
         )
     };
     OrbitCertificate {
-        format: FORMAT.into(),
-        version: ORBIT_VERSION,
+        format: chatter_kernel::syntax::orbit::FORMAT.into(),
+        version: chatter_kernel::syntax::orbit::VERSION,
         body: OrbitBody::RegularPolygon {
             n: req.n,
             kappa: to_canonical(&req.kappa),

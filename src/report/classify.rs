@@ -6,7 +6,7 @@ use super::finder::FinderReport;
 use super::{Interval, Number, Report, Verdict};
 use crate::bodies::{self, Threshold};
 use crate::certify::{Request, certify};
-use crate::exact::{OrderedField, Q, QExt, Ring, Rounding};
+use crate::exact::{OrderedField, Q, QExt, QField, Ring, Rounding};
 use crate::finder::{FinderConfig, Seed, find_cone};
 use crate::model::FloatBody;
 use crate::model::float::FloatPolygon;

@@ -10,7 +10,7 @@ use super::orbit::Diagnostics;
 use super::{Number, Verdict};
 use crate::orbit::{Failure, Found, Request, certify_orbit, find_pattern};
 use crate::simulate::Outcome;
-use chatter_kernel::certificate::orbit::Triple;
+use chatter_kernel::certificate::Triple;
 use chatter_kernel::certificate::{OrbitCertificate, OrbitSet};
 use chatter_kernel::verify::{MALACHITE, NUM};
 use schemars::JsonSchema;

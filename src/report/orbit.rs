@@ -1,4 +1,4 @@
-//! `chatter.certify-orbit/1`: an orbit certificate (format version 5, docs/orbit-certificates.md)
+//! `chatter.certify-orbit/1`: an orbit certificate (format `chatter-orbit-certificate`, docs/orbit-certificates.md)
 //! made, or not, at one parameter point. Build it with [`certify`] (runs the producer) or [`of`]
 //! (from the producer's result); [`Reason::of`] maps each failure of the producer to a
 //! machine-readable code.

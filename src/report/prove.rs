@@ -43,7 +43,9 @@ pub struct ProofFileReport {
     pub conclusions: Option<Vec<String>>,
     /// Whether a witness shows the hypotheses' region is not empty.
     pub region_nonempty: Option<bool>,
-    /// The rejection's code (kebab-case).
+    /// The rejection's code (kebab-case): a header's (`wrong-format`, `unsupported-version`,
+    /// `invalid-header`, ...) or the failing step's kind of failure (`bad-expression`,
+    /// `not-an-identity`, `sign-not-proved`, ...: docs/proof-format.md §7).
     #[schemars(with = "Option<String>")]
     pub code: Option<chatter_kernel::certificate::Code>,
     /// Where the first failing step is (an object with a `kind`).
@@ -72,7 +74,7 @@ impl ProofFileReport {
             verdict: Verdict::Rejected,
             code: Some(r.code),
             locus: Some(r.locus.clone()),
-            reason: Some(r.message.clone()),
+            reason: Some(r.message().clone()),
             ..Self::empty(path)
         }
     }

@@ -61,7 +61,7 @@ impl RefuteReport {
         RefuteReport {
             claim: Some(done.claim.name()),
             points: Some(done.points),
-            last: Some(done.last.clone()),
+            last: Some(done.last.iter().map(|x| chatter_kernel::explain::abbreviate(x)).collect()),
             v_positive: Some(done.v_positive),
             output,
             ..Self::base(Verdict::Refuted, done.n, kappa, gamma)

@@ -19,7 +19,8 @@ use crate::sweep::grid::{Axis, Grid, Shard, Variable};
 use crate::sweep::point::Tasks;
 use crate::sweep::summary::Summary;
 use crate::sweep::{self, Request as SweepRequest};
-use chatter_kernel::certificate::{Claim, OrbitSet, write, write_orbit};
+use crate::write::{write, write_orbit};
+use chatter_kernel::certificate::{Claim, OrbitSet};
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::model::{Polygon, Shape, pcc_quadratic};
 use chatter_kernel::verify::{MALACHITE, NUM, Verdict as KernelVerdict, verify_proof, verify_text};
@@ -121,7 +122,7 @@ fn certified(
         KernelVerdict::Accepted(a) => {
             Ok(Some((rel, format!("{} ({} generators)", a.claim.name(), cert.cone.len()))))
         }
-        KernelVerdict::Rejected(e) => Err(format!("{rel}: rejected on re-verification: {}", e.message)),
+        KernelVerdict::Rejected(e) => Err(format!("{rel}: rejected on re-verification: {}", e.message())),
         KernelVerdict::Disagree(s) => Err(format!("{rel}: the backends disagree: {s}")),
     }
 }
@@ -285,7 +286,7 @@ fn orbit_certificate(
             Ok(Ok((rel, found, a.orbit_boxes.unwrap_or(0))))
         }
         KernelVerdict::Accepted(a) => Err(format!("{rel}: accepted with the wrong claim {}", a.claim.name())),
-        KernelVerdict::Rejected(e) => Err(format!("{rel}: rejected on re-verification: {}", e.message)),
+        KernelVerdict::Rejected(e) => Err(format!("{rel}: rejected on re-verification: {}", e.message())),
         KernelVerdict::Disagree(s) => Err(format!("{rel}: the backends disagree: {s}")),
     }
 }
@@ -374,7 +375,7 @@ pub fn band(ctx: &Context, r: &mut Report) -> Result<(), String> {
                 ));
             }
             evidence.push(format!(
-                "orbit certificate `{rel}` (docs/orbit-certificates.md, format version 5, claim CompleteChatterFromSet): pattern {pat}, {x}, bounds ρ = {}, λ = {}, T̄ = {}; written, read back and accepted by the kernel on both backends (malachite and num-rational) over {boxes} sub-boxes: every motion whose state right after an impact lies in X (up to relabelling and scaling) follows the pattern for ever and ends in complete chatter (not proved: CC from every drop)",
+                "orbit certificate `{rel}` (docs/orbit-certificates.md, format chatter-orbit-certificate, claim CompleteChatterFromSet): pattern {pat}, {x}, bounds ρ = {}, λ = {}, T̄ = {}; written, read back and accepted by the kernel on both backends (malachite and num-rational) over {boxes} sub-boxes: every motion whose state right after an impact lies in X (up to relabelling and scaling) follows the pattern for ever and ends in complete chatter (not proved: CC from every drop)",
                 cert.rho, cert.lambda, cert.period
             ));
             if holds {
@@ -692,7 +693,7 @@ pub fn square(ctx: &Context, r: &mut Report) -> Result<(), String> {
     let file = builder.finish();
     let checked = match verify_proof(&file, ParseLimits::default()) {
         KernelVerdict::Accepted(c) => Ok(c),
-        KernelVerdict::Rejected(e) => Err(e.message),
+        KernelVerdict::Rejected(e) => Err(e.message()),
         KernelVerdict::Disagree(s) => return Err(format!("the backends disagree on the square proof: {s}")),
     };
     let cross = cross_check(ctx.plan.cross_check, 2026);

@@ -14,9 +14,9 @@
 
 use super::scalar::Nf;
 use super::{Model, Shape};
-use chatter_kernel::certificate::{
-    Certificate, Claim, Encoding, ORBIT_VERSION, OrbitCertificate, read_in, read_orbit, version_of,
-};
+use crate::exact::Q;
+use chatter_kernel::certificate::{Certificate, Claim, Encoding, OrbitCertificate, read_in, read_orbit};
+use chatter_kernel::syntax::{Kind, kind_of};
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::membership::{CertifiedCone, CertifiedOrbit, NotCertified};
 use chatter_kernel::model::linalg::Vec3;
@@ -43,8 +43,8 @@ impl SetKind {
 }
 
 enum Inner {
-    Cone(Box<CertifiedCone>),
-    Orbit(Box<CertifiedOrbit>),
+    Cone(Box<CertifiedCone<Q>>),
+    Orbit(Box<CertifiedOrbit<Q>>),
 }
 
 /// The certificate a set comes from (as read or made; the kernel accepted it).
@@ -168,7 +168,7 @@ impl Certified {
         let json = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"));
         let encoding = if json { Encoding::Json } else { Encoding::Ron };
         let name = path.display().to_string();
-        if version_of(&text, encoding) == Some(ORBIT_VERSION) {
+        if kind_of(&text, encoding, Kind::Cone).is_ok_and(|k| k.0 == Kind::Orbit) {
             let cert = read_orbit(&text, encoding).map_err(|r| format!("rejected by the kernel: {r}"))?;
             return self.add_orbit(model, &cert, &name);
         }

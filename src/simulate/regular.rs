@@ -6,7 +6,7 @@
 
 use super::system::FloatSystem;
 use crate::bodies::cosine;
-use crate::exact::{OrderedField, Q, QExt, Ring};
+use crate::exact::{Q, QExt, QField, Ring};
 use crate::model::float::FloatPolygon;
 use crate::spectral::number_field::Nf;
 use chatter_kernel::model::BodyError;

@@ -5,7 +5,7 @@
 //! and a rational lower bound of a positive number ([`SimField::rational_below`]).
 
 use super::snapshot::{Scaled, scaled};
-use crate::exact::{Algebraic, CosField, OrderedField, Q, Ring};
+use crate::exact::{Algebraic, CosField, OrderedField, Q, QField, Ring};
 use std::cell::RefCell;
 use std::cmp::Ordering;
 use std::collections::HashMap;

@@ -8,7 +8,7 @@
 
 pub use super::frame::{Frame, TABLE_CONTACTS, frame_index};
 use super::scalar::{Nf, SimField};
-use crate::exact::{CosField, Q, QExt};
+use crate::exact::{CosField, Q, QExt, QField};
 use crate::model::float::FloatPolygon;
 use chatter_kernel::exact::OrderedField;
 use chatter_kernel::model::linalg::{Vec3, dot};

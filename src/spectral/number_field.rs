@@ -8,7 +8,8 @@
 
 use super::poly::Poly;
 use super::roots::isolate;
-use crate::exact::{OrderedField, Q, Ring};
+use crate::exact::{Q, Ring};
+use chatter_kernel::exact::OrderedField;
 use std::cmp::Ordering;
 use std::collections::HashMap;
 use std::fmt;
@@ -260,6 +261,9 @@ impl OrderedField for Nf {
     fn from_ratio(n: i64, d: i64) -> Self {
         Nf::from_coeffs(None, vec![Q::new(n, d)])
     }
+}
+
+impl crate::exact::QField for Nf {
     fn from_q(q: &Q) -> Self {
         Nf::from_coeffs(None, vec![q.clone()])
     }

@@ -6,7 +6,7 @@
 
 use super::grid::Variable;
 use crate::bodies::cosine;
-use crate::exact::{OrderedField, Q, QExt};
+use crate::exact::{OrderedField, Q, QExt, QField};
 use crate::spectral::criteria::{
     Family, Profile, Threshold, candidates_of, char_coefficients_at, discriminant_of, dominant_candidates,
     pcc_criterion, pcc_profile, profile,

@@ -4,7 +4,7 @@
 use super::grid::Point;
 use crate::bodies::cosine;
 use crate::certify::{Failure, Request, certify};
-use crate::exact::{OrderedField, Q, QExt};
+use crate::exact::{OrderedField, Q, QExt, QField};
 use crate::finder::{FinderConfig, Seed, find_cone};
 use crate::model::FloatBody;
 use crate::prove::Effort;
@@ -13,7 +13,7 @@ use crate::simulate::{
     Arithmetic, Brief, Certified, Model, Options, Outcome, counts, proved_counts, simulate_many,
 };
 use crate::spectral::criteria::{Family, cc_criterion, pcc_criterion};
-use chatter_kernel::certificate::write;
+use crate::write::write;
 use chatter_kernel::model::{Polygon, Shape};
 
 /// The paper's impact budget per simulated drop (section "Comparison with direct simulation").
@@ -180,7 +180,7 @@ fn prove_point(
         .filter(|(b, e)| b.proved && decided(e.outcome) && b.outcome != e.outcome)
         .count();
     let orbit = proved.sets.sets().iter().find_map(|s| match &s.source {
-        Source::Orbit(c) => Some(chatter_kernel::certificate::write_orbit(c)),
+        Source::Orbit(c) => Some(crate::write::write_orbit(c)),
         Source::Cone(_) => None,
     });
     (proved_counts(&proved.briefs).map(|c| c as u64), contradicted as u64, orbit)
@@ -257,7 +257,7 @@ fn refute_point(n: u64, p: &Point, e: &mut Evaluation) {
         match verify_refutation(&r, Default::default(), &[MALACHITE, NUM]) {
             Verdict::Accepted(_) => {
                 e.refuted = Some(true);
-                e.refutation = Some(chatter_kernel::refute::write(&r));
+                e.refutation = Some(crate::write::write_refutation(&r));
             }
             Verdict::Rejected(x) => {
                 e.internal = Some(format!("the kernel rejects a refutation chatter made: {x}"))

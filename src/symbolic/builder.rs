@@ -166,7 +166,7 @@ impl Builder {
             for a in atoms {
                 match self.ctx.atom(a) {
                     Ok(x) => t = self.mul(&t, x),
-                    Err(e) => return self.problem(id, e),
+                    Err(e) => return self.problem(id, e.to_string()),
                 }
             }
             sum = Some(sum.map_or(t.clone(), |s| self.add(&s, &t)));
@@ -199,7 +199,7 @@ impl Builder {
         let v = self.var(id);
         let params = [self.var(self.header.gamma), self.var(self.header.kappa)];
         if let Err(e) = self.ctx.define(v, num.clone(), den.clone(), &params) {
-            self.problem(id, e);
+            self.problem(id, e.to_string());
         }
         let nm = &self.ctx.names;
         let step = Step::Define {

@@ -12,7 +12,7 @@ use super::cert::Cert;
 use super::terms::lenient;
 use crate::exact::{Q, Ring};
 use chatter_kernel::proof::{
-    Coeffs, Frac, Oracle, PMat, Point, Poly, Step, clip, det, mat_mul, parallel, sturm_sequence,
+    Coeffs, Failure, Frac, Oracle, PMat, Point, Poly, Step, clip, det, mat_mul, parallel, sturm_sequence,
 };
 
 const VARS: [&str; 6] = ["g", "k", "l", "s", "e1", "e2"];
@@ -355,21 +355,21 @@ struct Writer<'b> {
 }
 
 impl Oracle<Q> for Writer<'_> {
-    fn sign(&mut self, point: &str, value: &Frac<Q>) -> Result<std::cmp::Ordering, String> {
+    fn sign(&mut self, point: &str, value: &Frac<Q>) -> Result<std::cmp::Ordering, Failure> {
         Ok(self.b.sign_step(&format!("{}.{point}", self.key), value))
     }
 
-    fn crossing(&mut self, x: &Point<Q>, from: &str, to: &str) -> Result<String, String> {
+    fn crossing(&mut self, x: &Point<Q>, from: &str, to: &str) -> Result<String, Failure> {
         let b = &self.b;
         let found =
             b.points.iter().find(|(_, w)| parallel(&b.ctx, x, w).unwrap_or(false)).map(|(n, _)| n.clone());
-        let name = found.ok_or(format!("the crossing of {from} -> {to} is not a named point"))?;
+        let name = found.ok_or_else(|| Failure::UnknownPoint(format!("the crossing of {from} -> {to}")))?;
         self.crossings.push(name.clone());
         Ok(name)
     }
 
-    fn point(&self, name: &str) -> Result<&Point<Q>, String> {
-        self.b.points.get(name).ok_or(format!("unknown point {name}"))
+    fn point(&self, name: &str) -> Result<&Point<Q>, Failure> {
+        self.b.points.get(name).ok_or_else(|| Failure::UnknownPoint(name.to_string()))
     }
 }
 
@@ -384,7 +384,7 @@ fn invariance(b: &mut Builder, j: usize) {
         let mut writer = Writer { b, key: format!("K.C{j}.h{m}"), crossings: &mut crossings };
         match clip(&ctx, &poly, &l.clone().map(Frac::poly), &mut writer) {
             Ok(p) => poly = p,
-            Err(e) => b.problems.push((format!("inv.S{j}"), e)),
+            Err(e) => b.problems.push((format!("inv.S{j}"), e.to_string())),
         }
     }
     for w in &poly {

@@ -73,17 +73,23 @@ pub fn encoding_of(p: &Path) -> chatter_kernel::certificate::Encoding {
     if is_json_name(p) { Encoding::Json } else { Encoding::Ron }
 }
 
+/// The format strings of the files `chatter verify` checks (docs/certificate-format.md §7).
+pub const FORMATS: [&str; 4] =
+    ["chatter-certificate", "chatter-family-certificate", "chatter-orbit-certificate", "chatter-refutation"];
+
 /// Whether JSON text declares a certificate's or refutation's format: it contains the key
-/// `"format"` followed, after optional whitespace, a colon and optional whitespace, by the string
-/// `"chatter-certificate"` or `"chatter-refutation"`. Textual, so that a certificate with a
-/// syntax error elsewhere is still checked (and rejected) rather than skipped.
+/// `"format"` followed, after optional whitespace, a colon and optional whitespace, by one of the
+/// strings of [`FORMATS`] (quoted). Textual, so that a certificate with a syntax error elsewhere
+/// is still checked (and rejected) rather than skipped.
 pub fn declares_format(text: &str) -> bool {
     let ws = [' ', '\t', '\n', '\r'];
     text.match_indices("\"format\"").any(|(i, key)| {
         let rest = text[i + key.len()..].trim_start_matches(ws);
         rest.strip_prefix(':').is_some_and(|r| {
             let r = r.trim_start_matches(ws);
-            r.starts_with("\"chatter-certificate\"") || r.starts_with("\"chatter-refutation\"")
+            FORMATS.iter().any(|f| {
+                r.strip_prefix('"').and_then(|r| r.strip_prefix(f)).is_some_and(|r| r.starts_with('"'))
+            })
         })
     })
 }

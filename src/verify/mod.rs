@@ -5,12 +5,14 @@
 
 pub mod expect;
 pub mod files;
+pub mod format;
 pub mod read;
 pub mod text;
 
-use chatter_kernel::certificate::{Code, Encoding, Locus, Rejection};
+use chatter_kernel::certificate::{Code, Detail, Encoding, Locus, Rejection};
 use chatter_kernel::exact::ParseLimits;
-use chatter_kernel::verify::{Backend, Verdict, format_of_in, verify_text_in};
+use chatter_kernel::verify::{Backend, Verdict, verify_text_in};
+use format::format_of_in;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -81,7 +83,7 @@ pub struct FileVerdict {
     /// For a box certificate with rule R4: the sub-boxes of the Bernstein subdivision.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pcc_boxes: Option<usize>,
-    /// For an orbit certificate (version 5): the sub-boxes of X on which every sign was shown.
+    /// For an orbit certificate: the sub-boxes of X on which every sign was shown.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub orbit_boxes: Option<usize>,
     /// For an accepted refutation: what it refutes and how.
@@ -206,9 +208,9 @@ pub fn verdict_of(path: &Path, verdict: Verdict) -> FileVerdict {
         }
         Verdict::Rejected(r) => {
             let mut v = FileVerdict::new(path, Status::Rejected);
+            v.reason = Some(r.message());
             v.code = Some(r.code);
             v.locus = Some(r.locus);
-            v.reason = Some(r.message);
             v
         }
         Verdict::Disagree(s) => {
@@ -230,7 +232,7 @@ pub fn refutation_verdict_of(path: &Path, verdict: Verdict<chatter_kernel::refut
             v.refutation = Some(RefutationReport {
                 refutes: a.claim.name(),
                 points: a.points,
-                last: a.last,
+                last: a.last.iter().map(|x| chatter_kernel::explain::abbreviate(x)).collect(),
                 v_positive: a.v_positive,
             });
             v
@@ -326,8 +328,8 @@ fn out_of_time(path: &Path, limit: Duration) -> FileVerdict {
 
 /// The verdict for a file over `max-file-size`.
 fn too_large(path: &Path, what: &str, max: u64) -> FileVerdict {
-    let msg = format!("{what}, more than the limit max-file-size = {max} bytes: no verdict on the content");
-    let r = Rejection::new(Code::TooLarge, Locus::Limit { name: "max-file-size".into() }, msg);
+    let detail = Detail::FileSize(what.to_string(), max);
+    let r = Rejection::new(Code::TooLarge, Locus::Limit { name: "max-file-size".into() }, detail);
     verdict_of(path, Verdict::Rejected(r))
 }
 

@@ -5,10 +5,11 @@ mod convex;
 mod general;
 
 use chatter::bodies::{self, PaperValue, catalogue, platonic, prism, thresholds, uniform_rod};
-use chatter::exact::{OrderedField, Q, Ring};
+use chatter::exact::{Q, Ring};
 use chatter::spectral::number_field::Nf;
 use chatter::spectral::poly::Poly;
 use chatter::spectral::roots::isolate;
+use chatter_kernel::exact::OrderedField as _;
 use std::cmp::Ordering;
 
 fn rational(x: &Nf) -> Q {

@@ -1,8 +1,7 @@
 //! Tests of `certificate`: the two-stage reader, the writer, the schema's error codes.
 
-use chatter_kernel::certificate::{
-    Body, Certificate, Claim, Code, Coordinates, FORMAT, Generator, read, write,
-};
+use chatter::write::write;
+use chatter_kernel::certificate::{Body, Certificate, Claim, Code, Coordinates, FORMAT, Generator, read};
 
 fn sample() -> Certificate {
     Certificate {
@@ -51,7 +50,7 @@ fn struct_name_and_field_order_are_free_and_producer_is_optional() {
 
 fn code_of(text: &str) -> (Code, String) {
     let r = read(text).unwrap_err();
-    (r.code, r.message)
+    (r.code, r.message())
 }
 
 #[test]

@@ -3,7 +3,8 @@
 use crate::common::q;
 use chatter::certify::{ClaimChoice, Failure, Request, certify};
 use chatter::finder::Search;
-use chatter_kernel::certificate::{Claim, write};
+use chatter::write::write;
+use chatter_kernel::certificate::Claim;
 
 fn run(n: u64, k: &str, g: &str, claim: ClaimChoice) -> chatter::certify::Report {
     let mut r = Request::new(n, q(k), q(g));

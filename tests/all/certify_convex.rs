@@ -1,7 +1,7 @@
 //! `certify` for general convex bodies (issue 13 §2-§3; docs/model.md §11.9): the family finder
 //! and exactifier certify affine images of the regular plates exactly where the regular pipeline
 //! certifies the regular plate, regular polygons given as general bodies give today's verdicts,
-//! the length scale does not matter, and the CLI writes version-4 files that `verify` accepts.
+//! the length scale does not matter, and the CLI writes family certificates that `verify` accepts.
 
 use crate::common::{bin, q, root};
 use crate::transport::{kappa_of, plates};
@@ -135,7 +135,7 @@ fn certify_writes_version_4_files_that_verify_accepts() {
         assert_eq!(o.status.code(), Some(0), "{args:?}: {}", text(&o.stderr));
         assert!(text(&o.stdout).starts_with("CERTIFIED"), "{args:?}: {}", text(&o.stdout));
         assert!(text(&o.stdout).contains(&format!("claim={claim}")), "{args:?}: {}", text(&o.stdout));
-        assert!(std::fs::read_to_string(&out).unwrap().contains("version: 4"));
+        assert!(std::fs::read_to_string(&out).unwrap().contains("format: \"chatter-family-certificate\","));
         let v = chatter(&["verify", out.to_str().unwrap()], d.path());
         assert_eq!(v.status.code(), Some(0), "{args:?}: {}", text(&v.stdout));
         assert!(text(&v.stdout).contains(claim), "{}", text(&v.stdout));

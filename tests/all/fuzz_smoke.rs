@@ -9,7 +9,8 @@
 
 use crate::common::root;
 use chatter::oracle::{check_text_and_oracle, mutation};
-use chatter_kernel::certificate::{Certificate, read, write};
+use chatter::write::write;
+use chatter_kernel::certificate::{Certificate, read};
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::verify::{MALACHITE, NUM, Verdict, verify_text};
 use proptest::prelude::*;

@@ -7,10 +7,12 @@ use crate::common::{bin, root};
 use crate::corpus::ron_files;
 use chatter::convert::{Target, convert};
 use chatter::verify::files::{declares_format, list};
+use chatter::verify::format::format_of_in;
 use chatter::verify::read::{Input, read_input};
-use chatter_kernel::certificate::{Code, Encoding, read, read_in, write};
+use chatter::write::write;
+use chatter_kernel::certificate::{Code, Encoding, read, read_in};
 use chatter_kernel::exact::ParseLimits;
-use chatter_kernel::verify::{MALACHITE, NUM, format_of_in, verify_refutation_text_in, verify_text_in};
+use chatter_kernel::verify::{MALACHITE, NUM, verify_refutation_text_in, verify_text_in};
 use std::path::Path;
 use std::process::Command;
 

@@ -6,9 +6,8 @@ use crate::common::root;
 use chatter::exact::{ParseLimits, Q};
 use chatter::orbit::{Request, certify_orbit};
 use chatter::simulate::{Engine, ExactEngine, Model, Shape, Step};
-use chatter_kernel::certificate::{
-    Claim, Code, Encoding, Locus, OrbitCertificate, OrbitSet, read_orbit, write_orbit,
-};
+use chatter::write::write_orbit;
+use chatter_kernel::certificate::{Claim, Code, Encoding, Locus, OrbitCertificate, OrbitSet, read_orbit};
 use chatter_kernel::exact::{OrderedField, Ring, parse_canonical};
 use chatter_kernel::model::Polygon;
 use chatter_kernel::orbit::return_map;

@@ -11,7 +11,7 @@ use chatter::spectral::criteria::{Family, Profile, cc_criterion, cc_profile};
 use chatter::spectral::cycle::{
     CANDIDATE, cycle_criterion, cycle_profile, verdict_from_profile, word_product,
 };
-use chatter_kernel::certificate::write_orbit;
+use chatter::write::write_orbit;
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::model::Polygon;
 use chatter_kernel::model::linalg::mat_mul;

@@ -6,8 +6,15 @@ use crate::common::q;
 use chatter::certify::{Request, certify};
 use chatter::exact::Q;
 use chatter::refute::{NoRefutation, RefuteConfig, refute};
+use chatter::write::write_refutation as write;
 use chatter_kernel::certificate::{Body, Claim, Code, Locus};
-use chatter_kernel::refute::{Refutation, Step, read, write};
+use chatter_kernel::refute::{Refutation, Step};
+use chatter_kernel::syntax::{Encoding, read as read_in};
+
+/// Reads a refutation (RON).
+fn read(text: &str) -> Result<Refutation, chatter_kernel::reject::Rejection> {
+    read_in(text, Encoding::Ron)
+}
 use chatter_kernel::verify::{MALACHITE, NUM, Verdict, verify_refutation};
 
 fn made(n: u64, k: &str, g: &str, claim: Claim) -> Refutation {
@@ -76,7 +83,7 @@ fn hostile_edits_are_rejected_at_the_step() {
     }
     let x = rejected(&r);
     assert_eq!((x.code, at(&x)), (Code::StepFailed, i), "{x}");
-    assert!(x.message.contains("negative"), "{x}");
+    assert!(x.message().contains("negative"), "{x}");
     // A reference to a later point.
     let mut r = base.clone();
     let i = first(&r, |s| matches!(s, Step::Image { .. }));
@@ -98,7 +105,7 @@ fn hostile_edits_are_rejected_at_the_step() {
             let mut r = base.clone();
             r.points[i] = Step::Image { step: other, of };
             if let Verdict::Rejected(x) = verdict(&r) {
-                if x.message.contains("is not in C_") && at(&x) == i {
+                if x.message().contains("is not in C_") && at(&x) == i {
                     outside = Some(x);
                     break 'search;
                 }
@@ -110,7 +117,7 @@ fn hostile_edits_are_rejected_at_the_step() {
     // No such map, no such seed.
     let mut r = base.clone();
     r.points[i] = Step::Image { step: 4, of };
-    assert!(rejected(&r).message.contains("S_4 does not exist"));
+    assert!(rejected(&r).message().contains("S_4 does not exist"));
     let mut r = base.clone();
     r.points[0] = Step::Seed { index: 7 };
     assert_eq!(at(&rejected(&r)), 0);
@@ -118,7 +125,7 @@ fn hostile_edits_are_rejected_at_the_step() {
     let mut r = base.clone();
     r.points.pop();
     let x = rejected(&r);
-    assert!(x.message.contains("nothing is refuted"), "{x}");
+    assert!(x.message().contains("nothing is refuted"), "{x}");
 }
 
 #[test]

@@ -3,9 +3,11 @@
 use crate::common::{bin, q};
 use chatter::certify::{ClaimChoice, Failure, Request, certify};
 use chatter::cli::{Cli, Env, Outcome, run};
+use chatter::exact::Q;
+use chatter::exact::QField;
 use chatter_kernel::certificate::{Claim, Code, Locus};
 use chatter_kernel::check::check;
-use chatter_kernel::exact::{Field, OrderedField, Q, Ring};
+use chatter_kernel::exact::{Field, OrderedField, Ring};
 use chatter_kernel::model::{Rod, Shape};
 use chatter_kernel::verify::{Backend, MALACHITE, Verdict, verify};
 use clap::Parser;
@@ -56,6 +58,9 @@ impl OrderedField for Liar {
     fn from_ratio(n: i64, d: i64) -> Self {
         Liar(BigRational::from_ratio(n, d))
     }
+}
+
+impl QField for Liar {
     fn from_q(x: &Q) -> Self {
         Liar(BigRational::from_q(x))
     }
@@ -84,6 +89,7 @@ const LIAR: Backend = Backend {
     refute: chatter_kernel::refute::check::<Liar>,
     convex: chatter_kernel::check::check_convex::<Liar>,
     orbit: chatter_kernel::orbit::check_orbit::<Liar>,
+    proof: chatter_kernel::proof::check::<Liar>,
 };
 
 fn outcome(args: &[&str], env: &Env) -> Outcome {
@@ -204,8 +210,12 @@ fn issue8_long_numbers_are_abbreviated_in_rejections() {
         panic!("rejected")
     };
     assert_eq!(r.code, Code::ImageOutside);
-    assert!(r.message.len() < 300, "{} characters: {}", r.message.len(), r.message);
-    assert!(r.message.contains("characters)"), "the long numbers are marked as abbreviated: {}", r.message);
+    assert!(r.message().len() < 300, "{} characters: {}", r.message().len(), r.message());
+    assert!(
+        r.message().contains("characters)"),
+        "the long numbers are marked as abbreviated: {}",
+        r.message()
+    );
 }
 
 #[test]

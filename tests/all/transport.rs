@@ -1,19 +1,22 @@
-//! Certificates of general convex bodies (format version 4, docs/certificate-format.md §13):
-//! regular-polygon certificates transported to affine images (docs/model.md §11.7) verify on both
-//! backends exactly where the regular ones do; raised gamma and shrunk cones are rejected; the
-//! kernel's rules K1-K4 give typed rejections with a locus; versions 1-3 are unchanged.
+//! Family certificates of general convex bodies (`chatter-family-certificate`,
+//! docs/certificate-format.md §13): regular-polygon certificates transported to affine images
+//! (docs/model.md §11.7) verify on both backends exactly where the regular ones do; raised gamma
+//! and shrunk cones are rejected; the kernel's rules K1-K4 give typed rejections with a locus;
+//! cone certificates (versions 1-3) are unchanged.
 
 use crate::common::{q, root};
 use chatter::bodies::convex::polygon_plate;
 use chatter::certify::transport::{family, regular_image, transport};
 use chatter::certify::{Request, certify};
 use chatter::exact::Q;
+use chatter::write::write_convex;
 use chatter_kernel::certificate::{
     Body, Certificate, Claim, Code, ConvexBodyText, ConvexCertificate, Encoding, Generator, Locus, Param,
-    read_convex, write_convex,
+    read_convex,
 };
 use chatter_kernel::exact::{OrderedField, ParseLimits, Ring};
 use chatter_kernel::model::{ConvexBody, Vec2};
+use chatter_kernel::syntax::Kind;
 use chatter_kernel::verify::{MALACHITE, NUM, Verdict, verify, verify_convex, verify_convex_on, verify_text};
 
 fn v2(x: &str, y: &str) -> Vec2<Q> {
@@ -303,8 +306,8 @@ fn rule_k1_to_k3_loci_name_the_cone_and_the_generator() {
 
 #[test]
 fn versions_one_to_three_are_unchanged() {
-    // Every valid file of versions 1-3 still verifies, and the version-4 reader refuses them
-    // (and the version 1-3 reader refuses version 4 with a pointer), so the forms never mix.
+    // Every valid cone certificate (versions 1-3) still verifies, and the family reader refuses
+    // it (and the cone reader refuses a family certificate), so the forms never mix.
     let dir = root().join("certificates/valid");
     let mut old = 0;
     for e in std::fs::read_dir(&dir).unwrap() {
@@ -314,30 +317,29 @@ fn versions_one_to_three_are_unchanged() {
             continue;
         }
         let text = std::fs::read_to_string(&p).unwrap();
+        let kind = chatter_kernel::syntax::kind_of(&text, Encoding::Ron, Kind::Cone).unwrap().0;
         if let Ok(c) = chatter_kernel::certificate::read(&text) {
             assert!(c.version <= 3);
             assert!(
                 matches!(verify_text(&text, ParseLimits::default(), &[MALACHITE, NUM]), Verdict::Accepted(_)),
                 "{name}"
             );
-            assert_eq!(read_convex(&text, Encoding::Ron).unwrap_err().code, Code::UnsupportedVersion);
+            assert_eq!(read_convex(&text, Encoding::Ron).unwrap_err().code, Code::WrongFormat);
             old += 1;
-        } else if chatter_kernel::certificate::version_of(&text, Encoding::Ron)
-            == Some(chatter_kernel::certificate::ORBIT_VERSION)
-        {
-            // Version 5 (orbit certificates) is read by neither older reader.
-            assert_eq!(read_convex(&text, Encoding::Ron).unwrap_err().code, Code::UnsupportedVersion);
+        } else if kind == Kind::Orbit {
+            // An orbit certificate is read by neither of the other readers.
+            assert_eq!(read_convex(&text, Encoding::Ron).unwrap_err().code, Code::WrongFormat);
         } else {
             let c = read_convex(&text, Encoding::Ron).unwrap();
-            assert_eq!(c.version, 4, "{name}");
+            assert_eq!((c.format.as_str(), c.version), ("chatter-family-certificate", 1), "{name}");
             let r = chatter_kernel::certificate::read(&text).unwrap_err();
-            assert_eq!(r.code, Code::UnsupportedVersion, "{name}");
+            assert_eq!(r.code, Code::WrongFormat, "{name}");
         }
     }
     assert!(old >= 30);
 }
 
-/// The version-4 corpus files are exactly what the transport produces (valid ones accepted,
+/// The family-certificate corpus files are exactly what the transport produces (valid ones accepted,
 /// invalid ones rejected); with `CHATTER_WRITE_CORPUS=1` the test rewrites them instead.
 #[test]
 fn the_convex_corpus_is_what_the_transport_writes() {

@@ -285,3 +285,21 @@ fn manifest_mismatches_are_each_reported() {
     let (code, _) = verify_cli(&["--expect", d.join("broken.json").to_str().unwrap()]);
     assert_eq!(code, Some(2), "an unreadable manifest is an input error");
 }
+
+/// `chatter::verify::format` reads the `format` field leniently (any struct name, comments
+/// allowed), to tell the kinds of file apart in messages and directory listings.
+#[test]
+fn the_kind_of_a_file_is_read_from_its_format_field() {
+    use chatter::verify::format::format_of;
+    let cert = format!(
+        "// made by \"chatter-proof\" tools\n{}",
+        include_str!("../../certificates/valid/doc-example-square.ron")
+    );
+    assert_eq!(format_of(&cert).as_deref(), Some("chatter-certificate"));
+    let proof =
+        include_str!("../../proofs/square.ron").replacen("\"chatter-proof\"", "\"chatter\\u{2d}proof\"", 1);
+    assert_eq!(format_of(&proof).as_deref(), Some("chatter-proof"));
+    let family = include_str!("../../certificates/valid/convex-rectangle-2x1-gamma1_50.ron");
+    assert_eq!(format_of(family).as_deref(), Some("chatter-family-certificate"));
+    assert_eq!(format_of("not ron"), None);
+}

@@ -3,7 +3,6 @@
 //! there is one.
 
 use super::{Field, Int, Ring};
-use std::fmt;
 
 /// Limits on the work an untrusted file may ask for (docs/certificate-format.md §2, "Limits").
 /// A file beyond a limit is rejected with code `too-large` or `time-limit`, naming the limit;
@@ -94,39 +93,6 @@ pub enum NumberError {
         max: usize,
     },
 }
-
-impl fmt::Display for NumberError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            NumberError::Empty => write!(f, "empty number"),
-            NumberError::Whitespace => write!(f, "whitespace is not allowed in a number"),
-            NumberError::PlusSign => write!(f, "a leading '+' is not canonical"),
-            NumberError::InvalidCharacter(c) => write!(f, "invalid character {c:?}"),
-            NumberError::MissingDigits => write!(f, "missing digits"),
-            NumberError::LeadingZero => write!(f, "leading zeros are not canonical"),
-            NumberError::NegativeZero => write!(f, "\"-0\" is not canonical (write \"0\")"),
-            NumberError::ZeroDenominator => write!(f, "zero denominator"),
-            NumberError::UnitDenominator { canonical } => {
-                write!(f, "denominator 1 is not canonical (write {canonical:?})")
-            }
-            NumberError::NotReduced { canonical } => {
-                write!(f, "not in lowest terms (canonical form {canonical:?})")
-            }
-            NumberError::NotCanonical { canonical } => {
-                write!(f, "not the canonical text of this field element (write {canonical:?})")
-            }
-            NumberError::PowerTooHigh { power, degree } => write!(
-                f,
-                "c^{power}: an element of a field of degree {degree} is written with powers of c below {degree}"
-            ),
-            NumberError::TooLong { digits, max } => {
-                write!(f, "number has {digits} digits, more than the limit max-digits = {max}")
-            }
-        }
-    }
-}
-
-impl std::error::Error for NumberError {}
 
 /// Checks the lexical shape of a run of digits: non-empty, ASCII digits, no leading zero
 /// (a lone "0" is allowed only where `zero_ok`).

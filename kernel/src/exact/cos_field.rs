@@ -4,9 +4,8 @@
 //! evaluating it in interval arithmetic on a rational interval that isolates c, halved until zero
 //! is excluded; this always ends for a non-zero element because Psi_n is irreducible.
 
-use super::{Field, OrderedField, ParseLimits, Q, Ring, parse_canonical, to_canonical};
-use crate::exact::NumberError;
-use crate::proof::sturm::{count_roots, derivative, rem, sturm_sequence};
+use super::univariate::{count_roots, derivative, div_rem, eval, mul, rem, sturm_sequence, sub, trim};
+use super::{Field, NumberError, OrderedField, ParseLimits, Ring, parse_canonical, to_canonical};
 use std::cmp::Ordering;
 use std::fmt;
 use std::sync::Arc;
@@ -20,48 +19,8 @@ pub const GENERATOR: &str = "c";
 /// Coefficients, lowest degree first, no trailing zeros.
 type Coeffs<F> = Vec<F>;
 
-fn trim<F: Field>(mut p: Coeffs<F>) -> Coeffs<F> {
-    while p.last().is_some_and(F::is_zero) {
-        p.pop();
-    }
-    p
-}
-
-fn mul<F: Field>(a: &[F], b: &[F]) -> Coeffs<F> {
-    if a.is_empty() || b.is_empty() {
-        return Vec::new();
-    }
-    let mut out = vec![F::zero(); a.len() + b.len() - 1];
-    for (i, x) in a.iter().enumerate() {
-        for (j, y) in b.iter().enumerate() {
-            out[i + j] = out[i + j].plus(&x.times(y));
-        }
-    }
-    trim(out)
-}
-
-fn sub<F: Field>(a: &[F], b: &[F]) -> Coeffs<F> {
-    let n = a.len().max(b.len());
-    let at = |p: &[F], i: usize| p.get(i).cloned().unwrap_or_else(F::zero);
-    trim((0..n).map(|i| at(a, i).minus(&at(b, i))).collect())
-}
-
-/// The quotient a / b (b non-zero); the remainder is dropped.
 fn quotient<F: Field>(a: &[F], b: &[F]) -> Coeffs<F> {
-    let mut r = trim(a.to_vec());
-    let lb = b.last().expect("non-zero divisor");
-    let mut q = vec![F::zero(); r.len().saturating_sub(b.len()) + 1];
-    while r.len() >= b.len() && !r.is_empty() {
-        let shift = r.len() - b.len();
-        let f = r.last().expect("non-empty").over(lb).expect("lead != 0");
-        for (i, c) in b.iter().enumerate() {
-            r[i + shift] = r[i + shift].minus(&f.times(c));
-        }
-        q[shift] = f;
-        r.pop();
-        r = trim(r);
-    }
-    trim(q)
+    div_rem(a, b).0
 }
 
 fn monic<F: Field>(p: &[F]) -> Coeffs<F> {
@@ -75,10 +34,6 @@ fn gcd<F: Field>(a: &[F], b: &[F]) -> Coeffs<F> {
         (x, y) = (y.clone(), rem(&x, &y));
     }
     monic(&x)
-}
-
-fn eval<F: Field>(p: &[F], x: &F) -> F {
-    p.iter().rev().fold(F::zero(), |acc, c| acc.times(x).plus(c))
 }
 
 /// Psi_n, monic: the square-free part of T_n(x) - 1 has the roots cos(2 pi k/n), k = 0..n-1,
@@ -461,12 +416,5 @@ impl<F: Field> OrderedField for Algebraic<F> {
     }
     fn from_ratio(n: i64, d: i64) -> Self {
         Algebraic::rational(F::from_ratio(n, d))
-    }
-    fn from_q(q: &Q) -> Self {
-        Algebraic::rational(F::from_q(q))
-    }
-    fn enclose(&self, width: &Q) -> (Q, Q) {
-        let (a, b) = self.bounds(&F::from_q(width));
-        (a.enclose(width).0, b.enclose(width).1)
     }
 }

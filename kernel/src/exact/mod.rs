@@ -1,19 +1,52 @@
-//! Exact scalars: the ordered-ring and ordered-field traits that the model and the trusted
-//! kernel are generic over, the project's rational newtype [`Q`] (malachite, main backend),
-//! the independent second backend over num-rational's `BigRational`, and the canonical
-//! `"p/q"` text form used in certificates.
+//! Exact scalars: the ordered-ring and ordered-field traits that the model and the rules are
+//! generic over, their two independent backends (malachite's `Rational`, the main one, and
+//! num-rational's `BigRational`), the canonical `"p/q"` text of a rational, and (feature
+//! `field`) the number fields Q(cos 2 pi/n) with their own root isolation.
 //!
 //! Arithmetic methods have distinct names (`plus`, `times`, ...) rather than operator
 //! traits, so generic code needs no higher-ranked bounds and reads the same on both backends.
 
+/// Implements [`Ring`] for a type whose arithmetic operators on references are exact: `zero`,
+/// `from_i64` and `sign` given, `plus`, `minus`, `times` and `negated` by the operators.
+macro_rules! ring_by_operators {
+    ($t:ty, $zero:expr, $from:expr, $sign:expr) => {
+        impl Ring for $t {
+            fn zero() -> Self {
+                $zero
+            }
+            fn from_i64(v: i64) -> Self {
+                $from(v)
+            }
+            fn plus(&self, o: &Self) -> Self {
+                self + o
+            }
+            fn minus(&self, o: &Self) -> Self {
+                self - o
+            }
+            fn times(&self, o: &Self) -> Self {
+                self * o
+            }
+            fn negated(&self) -> Self {
+                -self
+            }
+            fn sign(&self) -> Ordering {
+                $sign(self)
+            }
+        }
+    };
+}
+
 mod canonical;
+#[cfg(feature = "field")]
 mod cos_field;
+mod malachite_backend;
 mod num_backend;
-mod q;
+#[cfg(any(feature = "field", feature = "proof"))]
+pub mod univariate;
 
 pub use canonical::{NumberError, ParseLimits, parse_canonical, parse_canonical_parts, to_canonical};
+#[cfg(feature = "field")]
 pub use cos_field::{Algebraic, CosField, GENERATOR, MAX_N, cos_minimal_polynomial};
-pub use q::Q;
 
 use std::cmp::Ordering;
 use std::fmt::{Debug, Display};
@@ -71,10 +104,6 @@ pub trait OrderedField: Ring {
     fn over(&self, o: &Self) -> Option<Self>;
     /// The rational n / d (d != 0).
     fn from_ratio(n: i64, d: i64) -> Self;
-    /// Any rational, exactly.
-    fn from_q(q: &Q) -> Self;
-    /// Rational bounds lo <= self <= hi with hi - lo <= width (lo = hi = self for a rational).
-    fn enclose(&self, width: &Q) -> (Q, Q);
 }
 
 /// The rationals of a backend: an ordered field with integer numerators and denominators.

@@ -5,36 +5,14 @@ use super::{Field, Int, OrderedField, Ring};
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer as _;
 use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
+use num_traits::{Signed, Zero};
 use std::cmp::Ordering;
 
-impl Ring for BigInt {
-    fn zero() -> Self {
-        Zero::zero()
-    }
-    fn from_i64(v: i64) -> Self {
-        BigInt::from(v)
-    }
-    fn plus(&self, o: &Self) -> Self {
-        self + o
-    }
-    fn minus(&self, o: &Self) -> Self {
-        self - o
-    }
-    fn times(&self, o: &Self) -> Self {
-        self * o
-    }
-    fn negated(&self) -> Self {
-        -self
-    }
-    fn sign(&self) -> Ordering {
-        match BigInt::sign(self) {
-            Sign::Minus => Ordering::Less,
-            Sign::NoSign => Ordering::Equal,
-            Sign::Plus => Ordering::Greater,
-        }
-    }
-}
+ring_by_operators!(BigInt, <BigInt as Zero>::zero(), BigInt::from, |x: &BigInt| match x.sign() {
+    Sign::Minus => Ordering::Less,
+    Sign::NoSign => Ordering::Equal,
+    Sign::Plus => Ordering::Greater,
+});
 
 impl Int for BigInt {
     fn gcd(&self, o: &Self) -> Self {
@@ -56,38 +34,20 @@ impl Int for BigInt {
     }
 }
 
-impl Ring for BigRational {
-    fn zero() -> Self {
-        Zero::zero()
-    }
-    fn from_i64(v: i64) -> Self {
-        BigRational::from_integer(BigInt::from(v))
-    }
-    fn plus(&self, o: &Self) -> Self {
-        self + o
-    }
-    fn minus(&self, o: &Self) -> Self {
-        self - o
-    }
-    fn times(&self, o: &Self) -> Self {
-        self * o
-    }
-    fn negated(&self) -> Self {
-        -self
-    }
-    fn sign(&self) -> Ordering {
-        if Zero::is_zero(self) {
+ring_by_operators!(
+    BigRational,
+    <BigRational as Zero>::zero(),
+    |v| BigRational::from_integer(BigInt::from(v)),
+    |x: &BigRational| {
+        if Zero::is_zero(x) {
             Ordering::Equal
-        } else if Signed::is_negative(self) {
+        } else if Signed::is_negative(x) {
             Ordering::Less
         } else {
             Ordering::Greater
         }
     }
-    fn one() -> Self {
-        One::one()
-    }
-}
+);
 
 impl OrderedField for BigRational {
     fn over(&self, o: &Self) -> Option<Self> {
@@ -95,14 +55,6 @@ impl OrderedField for BigRational {
     }
     fn from_ratio(n: i64, d: i64) -> Self {
         BigRational::new(BigInt::from(n), BigInt::from(d))
-    }
-    fn from_q(q: &super::Q) -> Self {
-        let parse = |z: malachite::Integer| z.to_string().parse::<BigInt>().expect("decimal digits");
-        BigRational::new(parse(super::Field::numer(q)), parse(super::Field::denom(q)))
-    }
-    fn enclose(&self, _width: &super::Q) -> (super::Q, super::Q) {
-        let q: super::Q = self.to_string().parse().expect("num-rational prints canonical p/q");
-        (q.clone(), q)
     }
 }
 

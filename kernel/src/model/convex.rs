@@ -8,15 +8,14 @@
 //! - this file: the body, its covectors f_k and the impact maps I_k (§11.2);
 //! - `shape`: validation of the data (§11.1);
 //! - `cones`: the rest points m_{k,l}, the cones C_{ij} and the all-down cone D (§11.3-11.5);
-//! - `pcc`: the PCC quadratic of an adjacent pair (§11.6);
-//! - `affine`: the transport of a body by a linear map of the plane (§11.7).
+//! - `pcc`: the PCC quadratic of an adjacent pair (§11.6).
+//!
+//! (The transport of a body by a linear map of the plane, §11.7, is in the untrusted tool.)
 
-mod affine;
 mod cones;
 mod pcc;
-mod shape;
+pub mod shape;
 
-pub use affine::AffineImage;
 pub use shape::{ConvexBodyError, MAX_CONTACTS, check_convex_polygon};
 
 use super::linalg::{Mat3, Vec3, dot, identity};

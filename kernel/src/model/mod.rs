@@ -1,17 +1,22 @@
 //! The exact impact model (docs/model.md): 3-vectors and matrices, the regular-polygon body with
 //! its impact, relabelling and step maps, the cones C_j and D, the PCC quadratic, the rod, and
-//! general convex bodies (docs/model.md §11) with their impact maps, cones C_{ij}, pair PCC
-//! quadratics and affine images.
+//! (feature `family`) general convex bodies (docs/model.md §11) with their impact maps, cones
+//! C_{ij} and pair PCC quadratics.
 
-mod cones;
-mod convex;
+#[cfg(feature = "family")]
+pub mod convex;
 pub mod linalg;
-mod pcc;
-mod polygon;
-mod rod;
+pub mod pcc;
+#[cfg(feature = "boxes")]
+pub mod pcc_polynomials;
+pub mod polygon;
+pub mod rod;
 
-pub use convex::{AffineImage, ConvexBody, ConvexBodyError, MAX_CONTACTS, check_convex_polygon};
-pub use pcc::{PccExclusion, PccPolynomials, PccQuadratic, pcc_polynomials, pcc_quadratic};
+#[cfg(feature = "family")]
+pub use convex::{ConvexBody, ConvexBodyError, MAX_CONTACTS, check_convex_polygon};
+pub use pcc::{PccExclusion, PccQuadratic, pcc_quadratic};
+#[cfg(feature = "boxes")]
+pub use pcc_polynomials::{PccPolynomials, pcc_polynomials};
 pub use polygon::{BodyError, Polygon, rational_cos};
 pub use rod::{Mat2, Rod, Vec2, mat2_mul, mat2_vec};
 

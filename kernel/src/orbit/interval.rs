@@ -271,7 +271,8 @@ impl<F: Field> Centred<F> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::exact::{OrderedField, Q};
+    use crate::exact::OrderedField;
+    use malachite::rational::Rational as Q;
     use num_rational::BigRational;
 
     fn rounding_brackets<F: Field>() {

@@ -5,8 +5,8 @@
 
 use super::interval::{Centred, Dual};
 use crate::exact::Field;
-use crate::model::Polygon;
 use crate::model::linalg::Mat3;
+use crate::model::polygon::Polygon;
 
 /// The arithmetic the return map is written in.
 pub trait Num<F: Field>: Clone {
@@ -161,35 +161,6 @@ impl Quantity {
             | Quantity::Up { step, contact }
             | Quantity::Clear { step, contact } => (Some(step), Some(contact)),
             _ => (None, None),
-        }
-    }
-
-    /// The quantity in words.
-    pub fn describe(self) -> String {
-        match self {
-            Quantity::Approach { step, contact } => {
-                format!(
-                    "at step {step}, the target contact {contact} approaches the floor (-u_{contact} > 0)"
-                )
-            }
-            Quantity::Up { step, contact } => {
-                format!("at step {step}, the target contact {contact} is up (h_{contact} > 0)")
-            }
-            Quantity::Clear { step, contact } => format!(
-                "at step {step}, contact {contact} is strictly above the floor when the target lands (h_k (-u_j) + h_j u_k > 0 for k = {contact})"
-            ),
-            Quantity::PositionScale => "alpha = hc(q_m) > 0".into(),
-            Quantity::VelocityScale => "beta = -v(p_m) > 0".into(),
-            Quantity::Inside { coordinate, upper: true } => {
-                format!("R_P(x) in X: y'_{coordinate} <= delta for y' = A^-1 (R_P(x) - x*)")
-            }
-            Quantity::Inside { coordinate, upper: false } => {
-                format!("R_P(x) in X: y'_{coordinate} >= -delta for y' = A^-1 (R_P(x) - x*)")
-            }
-            Quantity::VelocityBound => "beta <= lambda".into(),
-            Quantity::RatioBound => "alpha/beta <= rho".into(),
-            Quantity::PositionBound => "alpha <= lambda".into(),
-            Quantity::TimeBound => "T <= period".into(),
         }
     }
 }

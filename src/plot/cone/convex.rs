@@ -54,7 +54,7 @@ fn cone(b: &ConvexBody<Q>, i: usize, k: usize) -> Vec<Vector3<f64>> {
 /// The figure of a version-4 certificate.
 pub fn figure(text: &str, encoding: Encoding) -> Result<ConeFigure, String> {
     let cert =
-        read_convex(text, encoding).map_err(|r| format!("not a readable certificate: {}", r.message))?;
+        read_convex(text, encoding).map_err(|r| format!("not a readable certificate: {}", r.message()))?;
     let b = body(&cert.body)?;
     let n = b.n();
     let ks: Vec<Vec<P2>> = cert.cones.iter().map(|c| polygon(c)).collect::<Result<_, _>>()?;

@@ -15,7 +15,8 @@ mod window;
 use super::map::sub;
 use super::{Entry, Figure, LABEL, Sample, TICKS, TITLE, err, legend};
 use crate::finder::geometry::P2;
-use chatter_kernel::certificate::{CONVEX_VERSION, Encoding, ORBIT_VERSION, version_of};
+use chatter_kernel::certificate::Encoding;
+use chatter_kernel::syntax::{Kind, kind_of};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -96,9 +97,9 @@ impl ConeFigure {
     /// Reads a certificate of any version (RON or its JSON twin) and computes its drawing.
     pub fn from_certificate(text: &str) -> Result<ConeFigure, String> {
         let encoding = if text.trim_start().starts_with('{') { Encoding::Json } else { Encoding::Ron };
-        match version_of(text, encoding) {
-            Some(CONVEX_VERSION) => convex::figure(text, encoding),
-            Some(ORBIT_VERSION) => orbit::figure(text, encoding),
+        match kind_of(text, encoding, Kind::Cone).map(|k| k.0) {
+            Ok(Kind::Family) => convex::figure(text, encoding),
+            Ok(Kind::Orbit) => orbit::figure(text, encoding),
             _ => regular::figure(text, encoding),
         }
     }

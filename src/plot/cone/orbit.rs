@@ -61,7 +61,7 @@ fn velocity(x: &[f64; 3]) -> P2 {
 /// The figure of a version-5 certificate.
 pub fn figure(text: &str, encoding: Encoding) -> Result<ConeFigure, String> {
     let cert =
-        read_orbit(text, encoding).map_err(|r| format!("not a readable certificate: {}", r.message))?;
+        read_orbit(text, encoding).map_err(|r| format!("not a readable certificate: {}", r.message()))?;
     let OrbitBody::RegularPolygon { n, kappa, gamma } = &cert.body;
     let body = Polygon::new(*n, q(kappa)?, q(gamma)?).map_err(|e| e.to_string())?;
     let maps = FloatMaps::new(&body);

@@ -10,7 +10,8 @@ use crate::model::FloatBody;
 use crate::model::float::FloatPolygon;
 use crate::plot::map::body_name;
 use chatter_kernel::certificate::{Body as CertBody, Encoding, read_in};
-use chatter_kernel::exact::{CosField, OrderedField, ParseLimits};
+use crate::exact::QField;
+use chatter_kernel::exact::{CosField, ParseLimits};
 use nalgebra::{Matrix3, Vector3};
 
 /// A number of the certificate as f64: a rational, or an element of Q(cos 2π/n) through a
@@ -78,7 +79,7 @@ fn eigen_marks(fb: &FloatBody) -> Vec<Mark> {
 
 /// The figure of a certificate of versions 1-3.
 pub fn figure(text: &str, encoding: Encoding) -> Result<ConeFigure, String> {
-    let cert = read_in(text, encoding).map_err(|r| format!("not a readable certificate: {}", r.message))?;
+    let cert = read_in(text, encoding).map_err(|r| format!("not a readable certificate: {}", r.message()))?;
     let CertBody::RegularPolygon { n, kappa, gamma } = &cert.body;
     let n = *n;
     if n == 2 {

@@ -6,6 +6,7 @@ use chatter::bodies::convex::{
     regular_polygon_exact, uniform_box,
 };
 use chatter::exact::{Algebraic, OrderedField, Q, Ring};
+use chatter_kernel::exact::OrderedField as _;
 use chatter_kernel::model::{ConvexBody, ConvexBodyError, Mat2, Vec2};
 use proptest::prelude::*;
 
@@ -147,7 +148,7 @@ proptest! {
             .map(|r| [&lm[0][0] * &r[0] + &lm[0][1] * &r[1], &lm[1][0] * &r[0] + &lm[1][1] * &r[1]])
             .collect();
         let body = polygon_plate(&p, q(1, 3)).unwrap();
-        let transported = body.affine_image(&lm).unwrap().body;
+        let transported = chatter::model::affine::affine_image(&body, &lm).unwrap().body;
         prop_assert!(same(&polygon_plate(&image_pts, q(1, 3)).unwrap(), &transported));
     }
 }
@@ -166,7 +167,7 @@ fn rectangle_plates_are_images_of_the_square_plate() {
     for (a, b) in [(1, 1), (2, 1), (4, 1), (150, 75), (3, 7)] {
         let (a, b) = (Q::int(a), Q::int(b));
         let l = [[&a / Q::int(2), &a / Q::int(2)], [-&b / Q::int(2), &b / Q::int(2)]];
-        let image = square_q.affine_image(&l).unwrap().body;
+        let image = chatter::model::affine::affine_image(&square_q, &l).unwrap().body;
         assert!(same(&image, &rectangle_plate(&a, &b, q(1, 4)).unwrap()), "a={a} b={b}");
     }
     // A box on a square face is the square body with kappa = (a^2 + c^2) / (6 a^2), transported.
@@ -174,7 +175,10 @@ fn rectangle_plates_are_images_of_the_square_plate() {
     let kappa = (&a * &a + &c * &c) / (Q::int(6) * &a * &a);
     let sq = ConvexBody::new(square_q.contacts().to_vec(), diag(kappa.clone(), kappa), q(1, 4)).unwrap();
     let l = [[&a / Q::int(2), &a / Q::int(2)], [-&a / Q::int(2), &a / Q::int(2)]];
-    assert!(same(&sq.affine_image(&l).unwrap().body, &uniform_box(&a, &a, &c, q(1, 4)).unwrap()));
+    assert!(same(
+        &chatter::model::affine::affine_image(&sq, &l).unwrap().body,
+        &uniform_box(&a, &a, &c, q(1, 4)).unwrap()
+    ));
 }
 
 #[test]
@@ -213,7 +217,7 @@ fn every_triangle_plate_is_an_image_of_the_equilateral_plate() {
         let l: Mat2<A> = std::array::from_fn(|r| {
             std::array::from_fn(|c| w[0][r].times(&inv[0][c]).plus(&w[1][r].times(&inv[1][c])))
         });
-        let image = eq.affine_image(&l).unwrap().body;
+        let image = chatter::model::affine::affine_image(&eq, &l).unwrap().body;
         assert!(same(&image, &plate), "{raw:?}");
     }
 }

@@ -7,6 +7,7 @@
 //! 2^-290 wide, from pi by Machin's formula and cos by its Taylor series, both with remainder
 //! bounds, in interval arithmetic with endpoints rounded outward to multiples of 2^-320.
 
+use chatter::exact::QField;
 use chatter::exact::{
     Algebraic, CosField, MAX_N, NumberError, OrderedField, ParseLimits, Q, Ring, cos_minimal_polynomial,
     parse_canonical, to_canonical,
@@ -14,6 +15,7 @@ use chatter::exact::{
 use chatter::spectral::number_field::{
     Nf, NumberField, cos_minimal_polynomial as spectral_minimal_polynomial,
 };
+use chatter_kernel::exact::OrderedField as _;
 use malachite::Integer;
 use malachite::base::num::arithmetic::traits::{Ceiling, Floor, PowerOf2};
 use malachite::rational::Rational;

@@ -1,7 +1,8 @@
 //! Tests of `exact::q`.
 
 use crate::common::q;
-use chatter::exact::{Field, Int, NumberError, OrderedField, Q, QExt, Ring, parse_user_number, to_canonical};
+use chatter::exact::{Field, Int, NumberError, Q, QExt, Ring, parse_user_number, to_canonical};
+use chatter_kernel::exact::OrderedField as _;
 use malachite::Integer;
 use proptest::prelude::*;
 

@@ -1,7 +1,8 @@
 //! Tests of `exact::user`.
 
 use crate::common::q;
-use chatter::exact::{OrderedField, Q, Ring, parse_user_number, to_canonical};
+use chatter::exact::{Q, Ring, parse_user_number, to_canonical};
+use chatter_kernel::exact::OrderedField as _;
 use proptest::prelude::*;
 
 fn pow10(e: u32) -> Q {

@@ -6,7 +6,8 @@
 use crate::common::q;
 use chatter::certify::{ClaimChoice, Request, certify};
 use chatter::exact::Q;
-use chatter_kernel::certificate::{Body, Certificate, Claim, Code, Locus, Param, read, write};
+use chatter::write::write;
+use chatter_kernel::certificate::{Body, Certificate, Claim, Code, Locus, Param, read};
 use chatter_kernel::verify::{Verdict, verify};
 
 fn boxed(n: u64, k: [&str; 2], g: [&str; 2]) -> Certificate {
@@ -80,7 +81,7 @@ fn a_box_is_rejected_at_the_corner_where_the_cone_fails() {
         }
         other => panic!("{other:?}: {r}"),
     }
-    assert!(r.message.starts_with("at the corner kappa = "), "{r}");
+    assert!(r.message().starts_with("at the corner kappa = "), "{r}");
     // The box itself is fine, and so is the cone at gamma = 1/50.
     assert!(accepted(&c));
     assert!(accepted(&at_point(&c, &q("3/25"), &q("1/50"))));

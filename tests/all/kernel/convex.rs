@@ -1,15 +1,13 @@
-//! Tests of `chatter_kernel::model::ConvexBody` (docs/model.md §11), one file per source file of
-//! `kernel/src/model/convex/`, plus the reduction to the regular polygons and both backends.
+//! Tests of general convex bodies with the tool: affine images (`chatter::model::affine`), the pair
+//! PCC quadratic against floats, the reduction to the regular polygons and both backends (the
+//! kernel's own tests of `ConvexBody` are in kernel/tests/convex).
 //! Shared here: exact random bodies and an independent statement of the kinematics (heights and
 //! speeds of the contacts straight from their coordinates, never through the kernel).
 
 mod affine;
 mod backends;
-mod cones;
-mod impact;
 mod pcc;
 mod reduction;
-mod shape;
 
 use chatter::exact::Q;
 use chatter_kernel::model::linalg::Vec3;

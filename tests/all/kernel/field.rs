@@ -5,7 +5,8 @@
 use crate::common::q;
 use chatter::certify::{Request, certify};
 use chatter::exact::{ParseLimits, Q};
-use chatter_kernel::certificate::{Body, Certificate, Code, Param, read, write};
+use chatter::write::write;
+use chatter_kernel::certificate::{Body, Certificate, Code, Param, read};
 use chatter_kernel::check::{check, check_in_field};
 use num_rational::BigRational;
 

@@ -1,7 +1,7 @@
 //! Tests of `chatter_kernel::model::Polygon`: contact covectors, impact maps, relabelling and step maps.
 
 use crate::common::{GAMMAS, KAPPAS, NS, body, q};
-use chatter::exact::{OrderedField, Q, QExt};
+use chatter::exact::{Q, QExt};
 use chatter::model::{kinetic_energy, square_paper_to_contact};
 use chatter_kernel::model::linalg::{Mat3, Vec3, char_poly, dot, identity, mat_mul, mat_vec};
 use chatter_kernel::model::{BodyError, Polygon as Body, rational_cos as cos_step};
@@ -290,5 +290,5 @@ fn the_beta_factor_is_one_plus_gamma_over_one_plus_kappa() {
     let b = body(4, "1/6", "1/100");
     assert_eq!(b.beta(), q("101/100") / q("7/6"));
     assert_eq!(b.impact_direction(0), [q("7/6"), q("1/6"), q("1/6")]);
-    assert_eq!(<Q as OrderedField>::from_ratio(3, 6), q("1/2"));
+    assert_eq!(<Q as chatter_kernel::exact::OrderedField>::from_ratio(3, 6), q("1/2"));
 }

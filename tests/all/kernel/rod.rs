@@ -76,7 +76,7 @@ fn rod_rejections_are_located() {
         },
         "{r}"
     );
-    assert!(r.message.contains("of K∩C_1") && r.message.contains("beyond generator 1"), "{r}");
+    assert!(r.message().contains("of K∩C_1") && r.message().contains("beyond generator 1"), "{r}");
     let up = rod_cert("1/3", "1/20", Claim::EffectivelyInvariant, &[("0", "-2"), ("1", "1")]);
     assert_eq!(both(&up).unwrap_err().code, Code::GeneratorNotBelow);
     let ray = rod_cert("1/3", "1/20", Claim::EffectivelyInvariant, &[("1", "-3"), ("2", "-6")]);
@@ -86,7 +86,7 @@ fn rod_rejections_are_located() {
     three.cone[0].0.push("-1".into());
     let r = both(&three).unwrap_err();
     assert_eq!(r.code, Code::WrongArity);
-    assert!(r.message.contains("expected 2 coordinates (u0, u1)"));
+    assert!(r.message().contains("expected 2 coordinates (u0, u1)"));
     // A cone in u0 < 0 is vacuous: no piece, effectively invariant, but not all-down.
     let vac = rod_cert("1/3", "1/20", Claim::EffectivelyInvariant, &[("-1", "-1"), ("-3/2", "-1/2")]);
     let a = both(&vac).unwrap();

@@ -4,6 +4,7 @@
 
 use super::{model as rational_model, random_rational_start};
 use crate::common::q;
+use chatter::exact::QField;
 use chatter::exact::{Q, QExt, Ring};
 use chatter::simulate::{
     Arithmetic, Engine, ExactEngine, Initial, Model, Nf, Options, Outcome, Shape, SplitMix64, Start, Step,
@@ -197,7 +198,7 @@ fn mirror_symmetric_starts_give_exact_ties_in_the_field() {
 /// -c, down to about 2^-200) and their magnitudes to a relative 2^-50.
 #[test]
 fn fast_signs_and_magnitudes_agree_with_the_kernel_on_tiny_elements() {
-    use chatter::exact::{CosField, OrderedField};
+    use chatter::exact::CosField;
     use chatter::simulate::SimField;
     for n in [5u64, 7, 8, 9, 11, 12, 16, 64] {
         let field = CosField::<Q>::new(n).unwrap();

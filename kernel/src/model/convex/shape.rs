@@ -58,36 +58,6 @@ pub enum ConvexBodyError {
     GammaOutOfRange,
 }
 
-impl std::fmt::Display for ConvexBodyError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        use ConvexBodyError as E;
-        match self {
-            E::TooFewContacts(n) => write!(f, "{n} contacts: a convex body needs at least 3"),
-            E::TooManyContacts(n) => write!(f, "{n} contacts: at most {MAX_CONTACTS} are supported"),
-            E::RepeatedContact { contact } => {
-                write!(f, "contacts {contact} and {} coincide", contact + 1)
-            }
-            E::Clockwise => write!(f, "the contacts are listed clockwise; list them counter-clockwise"),
-            E::CollinearContacts { contact } => {
-                write!(f, "contact {contact} lies on the line through its neighbours (not strictly convex)")
-            }
-            E::NotConvex { contact } => write!(f, "the contact polygon is not convex at contact {contact}"),
-            E::NotSimple { turns } => write!(f, "the contact polygon winds {turns} times (not simple)"),
-            E::OriginOnEdge { edge } => {
-                write!(f, "the centre of mass lies on edge {edge}: it must be strictly inside")
-            }
-            E::OriginOutside { edge } => {
-                write!(f, "the centre of mass lies outside the contact polygon (beyond edge {edge})")
-            }
-            E::InertiaNotSymmetric => write!(f, "the inertia tensor J must be symmetric"),
-            E::InertiaNotPositiveDefinite => write!(f, "the inertia tensor J must be positive definite"),
-            E::GammaOutOfRange => write!(f, "gamma must lie in [0, 1]"),
-        }
-    }
-}
-
-impl std::error::Error for ConvexBodyError {}
-
 /// (b - a) x (c - b): positive when a, b, c turn counter-clockwise.
 fn turn<F: OrderedField>(a: &Vec2<F>, b: &Vec2<F>, c: &Vec2<F>) -> F {
     let (d1, d2) = (sub(b, a), sub(c, b));

@@ -46,7 +46,7 @@ fn summary<F: OrderedField>(b: &ConvexBody<F>) -> Vec<String> {
     }
     out.extend(text(b.all_down_generators().iter().flatten()));
     let l = [[F::from_ratio(3, 2), F::from_ratio(1, 3)], [F::from_ratio(-1, 5), F::from_i64(2)]];
-    let img = b.affine_image(&l).expect("det > 0");
+    let img = chatter::model::affine::affine_image(b, &l).expect("det > 0");
     out.extend(text(img.body.inertia().iter().flatten()));
     out.extend(text(img.velocity_map.iter().flatten()));
     out.extend(text(img.body.impact(1).iter().flatten()));

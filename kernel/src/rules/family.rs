@@ -1,0 +1,229 @@
+//! Family certificates of a general convex body (feature `family`; docs/model.md §11.5,
+//! docs/certificate-format.md §13, why: docs/kernel-soundness.md §6). Rules, in the order they are
+//! checked:
+//!
+//! - the file: the header, a cone claim (`unknown-variant`), at most 64 contacts (`unsupported-body`) and cones (`wrong-arity`),
+//!   `max-generators` per cone and `max-total-digits` (`too-large`);
+//! - convex body: (A1) strictly convex counter-clockwise contacts, (A2) the origin strictly
+//!   inside, J symmetric positive definite, 0 <= γ <= 1 (`unsupported-body`,
+//!   `parameter-out-of-range`); range of γ: 0 < γ < 1 for the claims about drops;
+//! - count: one cone per contact, three coordinates per generator (`wrong-arity`);
+//! - K1: each K_i is a 3-D cone with every generator in v < 0 (`generator-not-below`,
+//!   `degenerate-cone`);
+//! - K2: I_j(K_i ∩ C_ij) ⊆ K_j for all i != j, on the vertices of K_i clipped by the four
+//!   covectors of C_ij (`image-not-below`, `image-outside`);
+//! - K3 (claims about drops): I_i(D) ⊆ K_i for every i (`initial-outside`);
+//! - K4 (`CompleteChatterFromAllDown`): for every adjacent pair (k, k+1) the quadratic factor of
+//!   det(tI - I_k I_{k+1}) has discriminant < 0 and constant term < 1 (`pcc-not-excluded`).
+//!
+//! Every geometric test is that of rules R1-R4 ([`super::cone`]) on integer-scaled vectors.
+
+use super::cone::{Cone, R2, R3, Target, check_image, cone_claim, int_mat, int_vec};
+use super::generators::{self, Generators};
+use super::outcome::Accepted;
+use crate::exact::{Field, ParseLimits, Ring, to_canonical};
+use crate::geometry::{ConvexPolygon, clip, hull};
+use crate::model::convex::{ConvexBody, ConvexBodyError, MAX_CONTACTS};
+use crate::model::linalg::{Vec3, mat_vec};
+use crate::model::pcc::PccExclusion;
+use crate::reject::{Code, Counted, Detail, Internal, Locus, Rejection};
+use crate::syntax::cone::Claim;
+use crate::syntax::family::{ConvexBodyText, ConvexCertificate};
+use crate::syntax::numbers::{at_most, in_time, number, total};
+use crate::syntax::{Kind, expect};
+
+/// Checks a family certificate exactly over the field `F`; the first failing check is reported.
+pub fn check<F: Field>(cert: &ConvexCertificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
+    prelude(cert, limits)?;
+    let body = body::<F>(cert, limits)?;
+    let g = body.gamma();
+    if cert.claim > Claim::EffectivelyInvariant && (g.is_zero() || *g == F::one()) {
+        let detail = Detail::GammaForClaim(to_canonical(g), cert.claim, true);
+        return Err(Rejection::at(Code::ParameterOutOfRange, "body.gamma", detail));
+    }
+    let n = body.n();
+    if cert.cones.len() != n {
+        return Err(Rejection::at(Code::WrongArity, "cones", Detail::ConeCount(cert.cones.len(), n, false)));
+    }
+    let mut bits = 0;
+    let mut cones = Vec::with_capacity(n);
+    for (i, written) in cert.cones.iter().enumerate() {
+        let gens = generators::read::<F>(
+            written,
+            &["omega_x", "omega_y", "v"],
+            |g| format!("cones[{i}][{g}]"),
+            limits,
+        )?;
+        bits = bits.max(gens.max_denominator_bits);
+        cones.push(cone::<F>(i, &gens)?);
+    }
+    in_time(limits, "building the cones")?;
+    let mut pieces = Vec::with_capacity(n * (n - 1));
+    for (i, k) in cones.iter().enumerate() {
+        for (j, target) in cones.iter().enumerate().filter(|(j, _)| *j != i) {
+            pieces.push(transition(&body, i, j, k, target, limits)?);
+        }
+    }
+    if cert.claim >= Claim::CcOrPccFromAllDown {
+        for (i, k) in cones.iter().enumerate() {
+            all_down(&body, i, k)?;
+        }
+    }
+    if cert.claim >= Claim::CompleteChatterFromAllDown {
+        (0..n).try_for_each(|k| pcc(&body, k))?;
+    }
+    Ok(accepted(cert, &body, &cones, pieces, bits))
+}
+
+/// The file's rules before the body: the header, the sizes of the body and of the cones.
+fn prelude(cert: &ConvexCertificate, limits: ParseLimits) -> Result<(), Rejection> {
+    expect(&cert.format, cert.version, Kind::Family)?;
+    cone_claim(cert.claim)?;
+    let ConvexBodyText::ConvexPolygon { contacts, .. } = &cert.body;
+    if contacts.len() > MAX_CONTACTS {
+        let detail = Detail::Convex(ConvexBodyError::TooManyContacts(contacts.len()));
+        return Err(Rejection::at(Code::UnsupportedBody, "body.contacts", detail));
+    }
+    for (i, c) in cert.cones.iter().enumerate() {
+        at_most("max-generators", c.len(), limits.max_generators, Counted::ConeGenerators(i))?;
+    }
+    if cert.cones.len() > MAX_CONTACTS {
+        return Err(Rejection::at(
+            Code::WrongArity,
+            "cones",
+            Detail::ConeCount(cert.cones.len(), MAX_CONTACTS, true),
+        ));
+    }
+    total(cert.numbers(), limits)
+}
+
+/// The body: canonical numbers, and the assumptions of docs/model.md §11.1 checked by
+/// [`ConvexBody::new`].
+fn body<F: Field>(cert: &ConvexCertificate, limits: ParseLimits) -> Result<ConvexBody<F>, Rejection> {
+    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma } = &cert.body;
+    let mut points = Vec::with_capacity(contacts.len());
+    for (k, (x, y)) in contacts.iter().enumerate() {
+        in_time(limits, "reading the contacts")?;
+        let x = number::<F>(&format!("body.contacts[{k}].x"), x, limits)?;
+        let y = number::<F>(&format!("body.contacts[{k}].y"), y, limits)?;
+        points.push([x, y]);
+    }
+    let jxx = number::<F>("body.inertia.Jxx", &inertia.0, limits)?;
+    let jxy = number::<F>("body.inertia.Jxy", &inertia.1, limits)?;
+    let jyy = number::<F>("body.inertia.Jyy", &inertia.2, limits)?;
+    let g = number::<F>("body.gamma", gamma, limits)?;
+    ConvexBody::new(points, [[jxx, jxy.clone()], [jxy, jyy]], g).map_err(|e| {
+        let (code, path) = match &e {
+            ConvexBodyError::GammaOutOfRange => (Code::ParameterOutOfRange, "body.gamma"),
+            ConvexBodyError::InertiaNotSymmetric | ConvexBodyError::InertiaNotPositiveDefinite => {
+                (Code::UnsupportedBody, "body.inertia")
+            }
+            _ => (Code::UnsupportedBody, "body.contacts"),
+        };
+        Rejection::at(code, path, Detail::Convex(e))
+    })
+}
+
+/// K1 for cone i: every generator has v < 0, and the generators span a 3-D cone.
+fn cone<F: Field>(i: usize, gens: &Generators<'_, F::Int>) -> Result<Cone<F::Int>, Rejection> {
+    let vectors: Vec<Vec3<F::Int>> =
+        gens.vectors.iter().map(|g| [g[0].clone(), g[1].clone(), g[2].clone()]).collect();
+    if let Some(g) = vectors.iter().position(|g| !g[2].is_negative()) {
+        let detail = Detail::NotBelow(gens.written[g].0.clone());
+        return Err(Rejection::new(
+            Code::GeneratorNotBelow,
+            Locus::ConvexGenerator { cone: i, index: g },
+            detail,
+        ));
+    }
+    let hull_idx = hull(&vectors);
+    if hull_idx.len() < 3 {
+        let detail = Detail::Degenerate(vectors.len(), hull_idx.len(), 3);
+        return Err(Rejection::new(Code::DegenerateCone, Locus::ConvexCone { cone: i }, detail));
+    }
+    let polygon = ConvexPolygon::new(hull_idx.iter().map(|&g| vectors[g].clone()).collect());
+    Ok(Cone { hull: hull_idx, polygon })
+}
+
+/// K2 for the pair (i, j): I_j(K_i ∩ C_ij) ⊆ K_j; the number of vertices checked.
+fn transition<F: Field>(
+    body: &ConvexBody<F>,
+    i: usize,
+    j: usize,
+    k: &Cone<F::Int>,
+    target: &Cone<F::Int>,
+    limits: ParseLimits,
+) -> Result<usize, Rejection> {
+    let Some(covectors) = body.next_contact_cone(i as i64, j as i64) else {
+        return Err(Rejection::new(Code::Internal, Locus::Nowhere, Detail::Internal(Internal::NoCone(i, j))));
+    };
+    let piece = covectors.iter().fold(k.polygon.vertices.clone(), |p, l| clip(&p, &int_vec(l)));
+    let map = int_mat(&body.impact(j as i64));
+    for (v, p) in piece.iter().enumerate() {
+        in_time(limits, "checking effective invariance (rule K2)")?;
+        let locus = |outside| Locus::Transition { from: i, to: j, vertex: v, outside };
+        let t = Target { point: p, locus: &locus, codes: R2, n: body.n(), corner: None };
+        check_image::<F>(target, &mat_vec(&map, p), &t)?;
+    }
+    Ok(piece.len())
+}
+
+/// K3 for cone i: I_i(D) ⊆ K_i, on the generators -m_{k,k+1} of D.
+fn all_down<F: Field>(body: &ConvexBody<F>, i: usize, k: &Cone<F::Int>) -> Result<(), Rejection> {
+    let map = int_mat(&body.impact(i as i64));
+    for (m, g) in body.all_down_generators().iter().enumerate() {
+        let g = int_vec(g);
+        let locus = |outside| Locus::ConvexAllDown { cone: i, generator: m, outside };
+        let t = Target { point: &g, locus: &locus, codes: R3, n: body.n(), corner: None };
+        check_image::<F>(k, &mat_vec(&map, &g), &t)?;
+    }
+    Ok(())
+}
+
+/// K4 for the adjacent pair (k, k+1): non-real roots and constant term q < 1 (Lemma 11.5(2)).
+fn pcc<F: Field>(body: &ConvexBody<F>, k: usize) -> Result<(), Rejection> {
+    let pair = Some((k, (k + 1) % body.n()));
+    let quad = body.pair_pcc_quadratic(k as i64).map_err(|at_one| {
+        let detail = Detail::Internal(Internal::NotARoot { value: Some(to_canonical(&at_one)), pair });
+        Rejection::new(Code::Internal, Locus::Nowhere, detail)
+    })?;
+    match quad.exclusion() {
+        PccExclusion::Excluded => Ok(()),
+        why => {
+            let pqd = Box::new([&quad.p, &quad.q, &quad.discriminant].map(to_canonical));
+            Err(Rejection::new(
+                Code::PccNotExcluded,
+                Locus::PccPair { pair: k },
+                Detail::Pcc(body.n(), pqd, why),
+            ))
+        }
+    }
+}
+
+/// What the accepted certificate reports: redundant generators counted through the cones in
+/// order, the pieces, and whether every K_i contains I_i(0, 0, -1).
+fn accepted<F: Field>(
+    cert: &ConvexCertificate,
+    body: &ConvexBody<F>,
+    cones: &[Cone<F::Int>],
+    pieces: Vec<usize>,
+    bits: u64,
+) -> Accepted {
+    let down = [F::Int::zero(), F::Int::zero(), F::Int::from_i64(-1)];
+    let contains = |(i, k): (usize, &Cone<F::Int>)| {
+        let t = mat_vec(&int_mat(&body.impact(i as i64)), &down);
+        t[2].is_negative() && k.polygon.contains(&t)
+    };
+    let (mut redundant, mut offset) = (Vec::new(), 0);
+    for (k, written) in cones.iter().zip(&cert.cones) {
+        let mut extreme = vec![false; written.len()];
+        k.hull.iter().for_each(|&g| extreme[g] = true);
+        redundant.extend((0..written.len()).filter(|&g| !extreme[g]).map(|g| offset + g));
+        offset += written.len();
+    }
+    let mut a = Accepted::cone(cert.claim, body.n(), offset, pieces);
+    a.redundant = redundant;
+    a.max_denominator_bits = bits;
+    a.contains_translation = cones.iter().enumerate().all(contains);
+    a
+}

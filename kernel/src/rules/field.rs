@@ -1,0 +1,97 @@
+//! Cone certificates of regular polygons whose cos(2 pi/n) is irrational (feature `field`,
+//! n = 5, 7, 8, ..., 64; docs/certificate-format.md §12): the body and the generators are read as
+//! elements of Q(cos 2 pi/n), and rules R1 to R4 of [`super::cone`] run unchanged over that field
+//! (why this is exact: docs/kernel-soundness.md §2, "Number fields"). Rules before them, in order:
+//!
+//! - body: 3 <= n <= 64 (`unsupported-body`), numbers (not intervals) for kappa and gamma
+//!   (`unsupported-body`);
+//! - version: a file with field elements says version 3 or more (`unsupported-version`);
+//! - numbers: canonical field elements (`bad-number`), then the body and the range of γ as for
+//!   every regular polygon, and three coordinates per generator (`wrong-arity`).
+
+use super::body::{body_error, gamma_range};
+use super::cone;
+use super::generators::Generators;
+use super::outcome::Accepted;
+use crate::exact::{Algebraic, CosField, Field, GENERATOR, Int, MAX_N, ParseLimits};
+use crate::geometry::Scalar;
+use crate::model::polygon::Polygon;
+use crate::reject::{Code, Detail, Needs, Rejection};
+use crate::syntax::cone::{Body, Certificate, Param};
+use crate::syntax::numbers::{in_time, number_error};
+use std::sync::Arc;
+
+/// The oldest format version that may write an element of a number field.
+pub const FIELD_VERSION: u64 = 3;
+
+impl<F: Field> Scalar for Algebraic<F> {
+    type R = Algebraic<F>;
+    fn scaled(xs: &[Self]) -> Vec<Self> {
+        xs.to_vec()
+    }
+    fn lift(r: &Self) -> Self {
+        r.clone()
+    }
+    fn text(&self) -> String {
+        self.to_string()
+    }
+}
+
+/// Rules R1 to R4 over Q(cos 2 pi/n), any n from 3 to 64.
+pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
+    let Body::RegularPolygon { n, kappa, gamma } = &cert.body;
+    let Some(field) = CosField::<F>::new(*n) else {
+        return Err(Rejection::at(Code::UnsupportedBody, "body.n", Detail::Contacts(*n, MAX_N)));
+    };
+    let (Param::Point(k), Param::Point(g)) = (kappa, gamma) else {
+        return Err(Rejection::at(Code::UnsupportedBody, "body", Detail::IntervalIrrational(*n)));
+    };
+    let written = cert.numbers().any(|t| t.contains(GENERATOR));
+    if cert.version < FIELD_VERSION && written {
+        let detail = Detail::Needs(Needs::FieldElements, cert.version);
+        return Err(Rejection::at(Code::UnsupportedVersion, "version", detail));
+    }
+    let kappa = element(&field, "body.kappa", k, limits)?;
+    let gamma = element(&field, "body.gamma", g, limits)?;
+    let body = Polygon::with_cosine(*n, field.generator(), kappa, gamma)
+        .map_err(|e| body_error(e, "body.kappa", "body.gamma"))?;
+    gamma_range(body.gamma(), "body.gamma", cert.claim)?;
+    let gens = generators(&field, cert, limits)?;
+    cone::check(&body, &gens, cert.claim, limits)
+}
+
+fn element<F: Field>(
+    field: &Arc<CosField<F>>,
+    path: &str,
+    s: &str,
+    limits: ParseLimits,
+) -> Result<Algebraic<F>, Rejection> {
+    field.parse(s, limits).map_err(|e| number_error(path.to_string(), s, e))
+}
+
+/// The generators as vectors of field elements (no scaling: the ring is the field itself), with
+/// the largest denominator of their coefficients in bits.
+fn generators<'a, F: Field>(
+    field: &Arc<CosField<F>>,
+    cert: &'a Certificate,
+    limits: ParseLimits,
+) -> Result<Generators<'a, Algebraic<F>>, Rejection> {
+    const NAMES: [&str; 3] = ["u0", "u1", "v"];
+    let mut vectors = Vec::with_capacity(cert.cone.len());
+    let mut bits = 0;
+    for (i, g) in cert.cone.iter().enumerate() {
+        in_time(limits, "reading the generators")?;
+        if g.0.len() != NAMES.len() {
+            let detail = Detail::Arity(&NAMES, g.0.len());
+            return Err(Rejection::at(Code::WrongArity, format!("cone[{i}]"), detail));
+        }
+        let mut v = Vec::with_capacity(3);
+        for (c, name) in g.0.iter().zip(NAMES) {
+            let x = element(field, &format!("cone[{i}].{name}"), c, limits)?;
+            bits = x.coeffs().iter().map(|a| a.denom().bit_length()).fold(bits, u64::max);
+            v.push(x);
+        }
+        vectors.push(v);
+    }
+    Ok(Generators { vectors, max_denominator_bits: bits, written: &cert.cone })
+}

@@ -1,0 +1,195 @@
+//! The schema of cone certificates (docs/certificate-format.md §2-§9, §12): a regular polygon or
+//! the rod, a claim and the generators of a cone K. Format `"chatter-certificate"`, versions 1
+//! (points), 2 (parameter intervals) and 3 (number-field elements). The numbers stay text here;
+//! the rules parse them with the canonical rules on each backend.
+
+use super::{Kind, Schema};
+use serde::de::{SeqAccess, Visitor};
+use serde::{Deserialize, Deserializer};
+use std::fmt;
+
+/// Value of the `format` field.
+pub const FORMAT: &str = "chatter-certificate";
+/// The newest version: version 2 adds parameter intervals (box certificates), version 3 elements
+/// of the number fields Q(cos 2 pi/n); a file is written with the oldest version that can
+/// express it.
+pub const VERSION: u64 = 3;
+/// The versions of the format.
+pub const VERSIONS: std::ops::RangeInclusive<u64> = 1..=VERSION;
+
+/// A certificate, numbers as canonical text.
+#[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
+#[serde(rename = "Certificate", deny_unknown_fields)]
+pub struct Certificate {
+    /// Always [`FORMAT`].
+    pub format: String,
+    /// 1 to [`VERSION`].
+    pub version: u64,
+    /// The falling body.
+    pub body: Body,
+    /// The coordinates of the generators.
+    pub coordinates: Coordinates,
+    /// What the certificate proves.
+    pub claim: Claim,
+    /// Generators of the cone K.
+    pub cone: Vec<Generator>,
+    /// Informational only, never trusted.
+    #[serde(default)]
+    pub producer: String,
+}
+
+impl Schema for Certificate {
+    const KIND: Kind = Kind::Cone;
+}
+
+impl Certificate {
+    /// Every number of the file as text, in order (for `max-total-digits`).
+    pub fn numbers(&self) -> impl Iterator<Item = &str> {
+        let Body::RegularPolygon { kappa, gamma, .. } = &self.body;
+        let params = kappa.texts().into_iter().chain(gamma.texts());
+        params.chain(self.cone.iter().flat_map(|g| g.0.iter().map(String::as_str)))
+    }
+}
+
+/// The falling body.
+#[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum Body {
+    /// Regular n-gon of contacts (circumradius 1), kappa = rho^2/R^2, restitution gamma.
+    RegularPolygon {
+        /// Number of contacts (2 for the rod).
+        n: u64,
+        /// kappa: a number, or a closed interval (version 2).
+        kappa: Param,
+        /// gamma: a number, or a closed interval (version 2).
+        gamma: Param,
+    },
+}
+
+/// A parameter: one number (`"1/6"`), or a closed interval of numbers written as a two-element
+/// list (`["1/10", "3/25"]`, version 2), each in canonical text.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Param {
+    /// One value.
+    Point(String),
+    /// The closed interval [lo, hi].
+    Interval(String, String),
+}
+
+impl Param {
+    /// The value of a point parameter.
+    pub fn as_point(&self) -> Option<&str> {
+        match self {
+            Param::Point(s) => Some(s),
+            Param::Interval(..) => None,
+        }
+    }
+
+    /// The numbers as written: one or two.
+    pub fn texts(&self) -> Vec<&str> {
+        match self {
+            Param::Point(s) => vec![s],
+            Param::Interval(a, b) => vec![a, b],
+        }
+    }
+}
+
+impl From<&str> for Param {
+    fn from(s: &str) -> Self {
+        Param::Point(s.to_string())
+    }
+}
+
+impl From<String> for Param {
+    fn from(s: String) -> Self {
+        Param::Point(s)
+    }
+}
+
+impl<'de> Deserialize<'de> for Param {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = Param;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a number such as \"1/6\", or an interval such as [\"1/10\", \"3/25\"]")
+            }
+            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<Param, E> {
+                Ok(Param::Point(v.to_string()))
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Param, A::Error> {
+                use serde::de::Error;
+                let lo: String = seq.next_element()?.ok_or_else(|| A::Error::invalid_length(0, &self))?;
+                let hi: String = seq.next_element()?.ok_or_else(|| A::Error::invalid_length(1, &self))?;
+                if seq.next_element::<String>()?.is_some() {
+                    return Err(A::Error::invalid_length(3, &self));
+                }
+                Ok(Param::Interval(lo, hi))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+/// The coordinates of the generators.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+pub enum Coordinates {
+    /// (u0, u1, v): normal velocities of contacts 0 and 1 and of the centre of mass.
+    ContactVelocities,
+}
+
+/// What the certificate proves (each claim includes the checks of the previous ones).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Deserialize)]
+pub enum Claim {
+    /// K lies in v <= 0 and S_j(K ∩ C_j) ⊆ K for j = 1..n-1 (docs/model.md §5 conditions 1-2).
+    EffectivelyInvariant,
+    /// Also I_0(D) ⊆ K: every drop with all contacts moving down ends in CC or PCC.
+    CcOrPccFromAllDown,
+    /// Also PCC excluded: every drop with all contacts moving down ends in CC.
+    CompleteChatterFromAllDown,
+    /// Orbit certificates only (docs/certificate-format.md §14): every motion whose state right after some impact is,
+    /// up to relabelling and the two scalings, a point of the set X ends in complete chatter,
+    /// following the pattern periodically (docs/orbit-certificates.md §4). Not a cone claim: it
+    /// is not in [`Claim::ALL`] and the cone kernels reject it.
+    CompleteChatterFromSet,
+}
+
+impl Claim {
+    /// The three claims, weakest first.
+    pub const ALL: [Claim; 3] =
+        [Claim::EffectivelyInvariant, Claim::CcOrPccFromAllDown, Claim::CompleteChatterFromAllDown];
+
+    /// The name used in certificates and output.
+    pub fn name(self) -> &'static str {
+        match self {
+            Claim::EffectivelyInvariant => "EffectivelyInvariant",
+            Claim::CcOrPccFromAllDown => "CcOrPccFromAllDown",
+            Claim::CompleteChatterFromAllDown => "CompleteChatterFromAllDown",
+            Claim::CompleteChatterFromSet => "CompleteChatterFromSet",
+        }
+    }
+}
+
+/// One generator of the cone: its coordinates as canonical rational text.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Generator(pub Vec<String>);
+
+impl<'de> Deserialize<'de> for Generator {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = Generator;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a tuple of coordinates such as (\"1\", \"-1/2\", \"-1\")")
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Generator, A::Error> {
+                let mut v = Vec::new();
+                while let Some(s) = seq.next_element::<String>()? {
+                    v.push(s);
+                }
+                Ok(Generator(v))
+            }
+        }
+        d.deserialize_tuple(3, V)
+    }
+}

@@ -1,0 +1,238 @@
+//! The syntax layer, written once for every kind of file (docs/certificate-format.md §2, §11):
+//! the strict lexical rules ([`strict`]), then the header (`format` and `version`, other fields
+//! ignored) naming the kind of the file, then the kind's serde schema with unknown and repeated
+//! fields denied, in RON or its JSON twin; the limits and canonical numbers ([`numbers`]). Each
+//! kind has its own format string; `("chatter-certificate", 4 | 5)` are legacy aliases of the
+//! family and orbit formats (docs/certificate-format.md §13, §14).
+
+pub mod cone;
+#[cfg(feature = "family")]
+pub mod family;
+pub mod numbers;
+#[cfg(feature = "orbit")]
+pub mod orbit;
+#[cfg(feature = "proof")]
+pub mod proof;
+#[cfg(feature = "refutation")]
+pub mod refutation;
+pub mod strict;
+
+use crate::reject::{Code, Detail, Locus, Needs, Rejection};
+use serde::Deserialize;
+use serde::de::DeserializeOwned;
+
+/// The text encodings of the formats: RON, or its JSON twin.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Encoding {
+    /// The RON syntax of docs/certificate-format.md §2.
+    Ron,
+    /// The JSON twin of docs/certificate-format.md §11.
+    Json,
+}
+
+/// The kinds of file, told apart by their header.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// A cone certificate of a regular polygon or the rod (docs/certificate-format.md §1-§9, §12).
+    Cone,
+    /// A family certificate of a general convex body (§13).
+    Family,
+    /// An orbit certificate (§14).
+    Orbit,
+    /// A refutation (§10).
+    Refutation,
+    /// A proof (docs/proof-format.md).
+    Proof,
+}
+
+/// Every header this build knows: (format, versions, kind), the legacy aliases included.
+const HEADERS: [(&str, [u64; 2], Kind); 7] = [
+    ("chatter-certificate", [1, 3], Kind::Cone),
+    ("chatter-certificate", [4, 4], Kind::Family),
+    ("chatter-certificate", [5, 5], Kind::Orbit),
+    ("chatter-family-certificate", [1, 1], Kind::Family),
+    ("chatter-orbit-certificate", [1, 1], Kind::Orbit),
+    ("chatter-refutation", [1, 1], Kind::Refutation),
+    ("chatter-proof", [1, 1], Kind::Proof),
+];
+
+impl Kind {
+    /// The format string a file of this kind is written with.
+    pub fn format(self) -> &'static str {
+        match self {
+            Kind::Cone => "chatter-certificate",
+            Kind::Family => "chatter-family-certificate",
+            Kind::Orbit => "chatter-orbit-certificate",
+            Kind::Refutation => "chatter-refutation",
+            Kind::Proof => "chatter-proof",
+        }
+    }
+
+    /// The Cargo feature that builds this kind (`None`: always built), and whether it is built.
+    fn feature(self) -> Option<(&'static str, bool)> {
+        match self {
+            Kind::Cone => None,
+            Kind::Family => Some(("family", cfg!(feature = "family"))),
+            Kind::Orbit => Some(("orbit", cfg!(feature = "orbit"))),
+            Kind::Refutation => Some(("refutation", cfg!(feature = "refutation"))),
+            Kind::Proof => Some(("proof", cfg!(feature = "proof"))),
+        }
+    }
+
+    /// The name of the file's top-level RON struct.
+    fn struct_name(self) -> &'static str {
+        match self {
+            Kind::Refutation => "Refutation",
+            Kind::Proof => "Proof",
+            _ => "Certificate",
+        }
+    }
+}
+
+/// A serde schema of one kind of file.
+pub trait Schema: DeserializeOwned {
+    /// The kind.
+    const KIND: Kind;
+}
+
+/// The header as written: `format` and `version`, `None` when absent.
+pub type Header = (Option<String>, Option<u64>);
+
+/// Which kind `(format, version)` names, for a reader of the kind `expected`.
+pub fn kind(header: &Header, expected: Kind) -> Result<Kind, Rejection> {
+    let Some(format) = &header.0 else { return Err(missing("format")) };
+    let known: Vec<_> = HEADERS.iter().filter(|h| h.0 == format).collect();
+    if known.is_empty() {
+        let detail = Detail::Format(expected.format(), Some(format.clone()));
+        return Err(Rejection::at(Code::WrongFormat, "format", detail));
+    }
+    let Some(version) = header.1 else { return Err(missing("version")) };
+    let Some(&&(_, _, kind)) = known.iter().find(|h| (h.1[0]..=h.1[1]).contains(&version)) else {
+        let reads = [known[0].1[0], known[known.len() - 1].1[1]];
+        return Err(Rejection::at(Code::UnsupportedVersion, "version", Detail::Version(version, reads)));
+    };
+    match kind.feature() {
+        Some((feature, false)) => {
+            let detail = Detail::Needs(Needs::Feature(feature), version);
+            Err(Rejection::at(Code::UnsupportedVersion, "version", detail))
+        }
+        _ => Ok(kind),
+    }
+}
+
+fn missing(field: &str) -> Rejection {
+    Rejection::at(Code::MissingField, field, Detail::Missing)
+}
+
+/// Checks a header held in memory (a file built by a program, not read): it must name `kind`.
+pub fn expect(format: &str, version: u64, kind: Kind) -> Result<(), Rejection> {
+    let found = self::kind(&(Some(format.to_string()), Some(version)), kind)?;
+    if found == kind { Ok(()) } else { Err(other_kind(found, format, version, kind)) }
+}
+
+/// A file of the kind `found` given to a reader of `expected`: `unsupported-version` when its
+/// format string is `expected`'s (a legacy alias), `wrong-format` otherwise.
+fn other_kind(found: Kind, format: &str, version: u64, expected: Kind) -> Rejection {
+    if format == expected.format() {
+        let detail = Detail::Needs(Needs::Kind(found.format()), version);
+        return Rejection::at(Code::UnsupportedVersion, "version", detail);
+    }
+    let detail = Detail::Format(expected.format(), Some(format.to_string()));
+    Rejection::at(Code::WrongFormat, "format", detail)
+}
+
+/// The strict syntax, then the header of the text and the kind it names (for a reader of the
+/// kind `expected`, whose struct name is tried first in RON).
+pub fn kind_of(text: &str, encoding: Encoding, expected: Kind) -> Result<(Kind, Header), Rejection> {
+    strict::check(text, encoding)?;
+    let header = match encoding {
+        Encoding::Ron => ron_header(text, expected)?,
+        Encoding::Json => {
+            let h: JsonHeader = serde_json::from_str(text).map_err(json_error)?;
+            (h.format, h.version)
+        }
+    };
+    Ok((kind(&header, expected)?, header))
+}
+
+/// Reads a file of the schema `T`: [`kind_of`], then the full schema. A file of another kind is
+/// refused (`wrong-format`, or `unsupported-version` for a legacy alias of the same format).
+pub fn read<T: Schema>(text: &str, encoding: Encoding) -> Result<T, Rejection> {
+    let (kind, (format, version)) = kind_of(text, encoding, T::KIND)?;
+    if kind != T::KIND {
+        return Err(other_kind(kind, &format.unwrap_or_default(), version.unwrap_or(0), T::KIND));
+    }
+    schema(text, encoding)
+}
+
+/// The full schema of `T` (unknown and repeated fields denied), once [`kind_of`] has named `T`'s
+/// kind.
+pub fn schema<T: Schema>(text: &str, encoding: Encoding) -> Result<T, Rejection> {
+    match encoding {
+        Encoding::Ron => ron::Options::default().from_str(text).map_err(ron_error),
+        Encoding::Json => serde_json::from_str(text).map_err(json_error),
+    }
+}
+
+macro_rules! headers {
+    ($($name:ident = $rename:literal),*) => {$(
+        #[derive(Deserialize)]
+        #[serde(rename = $rename)]
+        struct $name {
+            format: Option<String>,
+            version: Option<u64>,
+        }
+    )*};
+}
+headers!(CertificateHeader = "Certificate", RefutationHeader = "Refutation", ProofHeader = "Proof");
+
+/// The JSON header (objects have no struct names).
+#[derive(Deserialize)]
+struct JsonHeader {
+    format: Option<String>,
+    version: Option<u64>,
+}
+
+/// The RON header read leniently (unknown fields ignored, `Some` implicit): the struct name of
+/// `expected` first, then the others; the first attempt's error when none reads.
+fn ron_header(text: &str, expected: Kind) -> Result<Header, Rejection> {
+    let lenient = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
+    let attempt = |name: &str| match name {
+        "Refutation" => lenient.from_str::<RefutationHeader>(text).map(|h| (h.format, h.version)),
+        "Proof" => lenient.from_str::<ProofHeader>(text).map(|h| (h.format, h.version)),
+        _ => lenient.from_str::<CertificateHeader>(text).map(|h| (h.format, h.version)),
+    };
+    let first = attempt(expected.struct_name());
+    let others = ["Certificate", "Refutation", "Proof"].into_iter().filter(|n| *n != expected.struct_name());
+    first.or_else(|e| others.map(attempt).find_map(Result::ok).ok_or(e)).map_err(ron_error)
+}
+
+/// A RON error as a rejection: schema errors get their own codes, everything at its position.
+fn ron_error(e: ron::error::SpannedError) -> Rejection {
+    use ron::Error as E;
+    let code = match &e.code {
+        E::NoSuchStructField { .. } => Code::UnknownField,
+        E::MissingStructField { .. } => Code::MissingField,
+        E::NoSuchEnumVariant { .. } => Code::UnknownVariant,
+        E::DuplicateStructField { .. } => Code::DuplicateField,
+        _ => Code::Syntax,
+    };
+    let locus = Locus::Text { line: e.span.start.line, column: e.span.start.col };
+    Rejection::new(code, locus, Detail::Parser(e.code.to_string()))
+}
+
+/// A serde_json error as a rejection: serde's schema errors (by the fixed prefixes of its
+/// messages) get the same codes as from RON; everything at its position.
+fn json_error(e: serde_json::Error) -> Rejection {
+    let (line, column) = (e.line(), e.column());
+    let full = e.to_string();
+    let what = full.strip_suffix(&format!(" at line {line} column {column}")).unwrap_or(&full);
+    let codes = [
+        ("unknown field", Code::UnknownField),
+        ("missing field", Code::MissingField),
+        ("duplicate field", Code::DuplicateField),
+        ("unknown variant", Code::UnknownVariant),
+    ];
+    let code = codes.iter().find(|(prefix, _)| what.starts_with(prefix)).map_or(Code::Syntax, |c| c.1);
+    Rejection::new(code, Locus::Text { line, column }, Detail::Parser(what.to_string()))
+}

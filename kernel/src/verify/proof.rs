@@ -1,0 +1,17 @@
+//! Proofs on both backends (feature `proof`).
+
+use super::{BOTH, Verdict, agree};
+use crate::exact::ParseLimits;
+use crate::rules::proof::Checked;
+use crate::syntax::proof::ProofFile;
+use crate::syntax::{Encoding, read};
+
+/// Checks a proof on both backends.
+pub fn verify_proof(file: &ProofFile, limits: ParseLimits) -> Verdict<Checked> {
+    agree(BOTH.iter().map(|b| (b.name, (b.proof)(file, limits))))
+}
+
+/// Reads proof text (RON) and checks it on both backends.
+pub fn verify_proof_text(text: &str, limits: ParseLimits) -> Verdict<Checked> {
+    read(text, Encoding::Ron).map_or_else(Verdict::Rejected, |f| verify_proof(&f, limits))
+}
