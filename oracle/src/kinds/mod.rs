@@ -1,0 +1,6 @@
+//! The kinds of files and their rules, after the syntax and the header.
+
+pub mod cone;
+pub mod limits;
+pub mod numbers;
+pub mod refutation;

@@ -1,0 +1,52 @@
+//! The oracle against the kernel on the whole corpus: every file of `certificates/valid` and
+//! `certificates/invalid` (RON, JSON, gzip'd), with the expected codes of
+//! `certificates/invalid/expected.json`. Any disagreement fails with the file.
+
+mod common;
+
+use chatter_oracle::compare::Agreement;
+use common::{differential_file, root};
+use std::collections::BTreeMap;
+
+fn corpus(dir: &str) -> Vec<std::path::PathBuf> {
+    let mut files: Vec<_> = std::fs::read_dir(root().join(dir))
+        .expect("the corpus")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| p.file_name().is_some_and(|n| n != "expected.json"))
+        .collect();
+    files.sort();
+    files
+}
+
+#[test]
+fn every_corpus_file_gets_the_kernels_verdict_from_the_oracle() {
+    let expected: Vec<serde_json::Value> = serde_json::from_str(
+        &std::fs::read_to_string(root().join("certificates/invalid/expected.json")).expect("manifest"),
+    )
+    .expect("json");
+    let mut failures = vec![];
+    let mut tally: BTreeMap<String, usize> = BTreeMap::new();
+    for dir in ["certificates/valid", "certificates/invalid"] {
+        for path in corpus(dir) {
+            let (kernel, oracle, cmp) = differential_file(&path);
+            let name = path.file_name().unwrap().to_string_lossy().to_string();
+            match cmp {
+                Ok(a) => *tally.entry(format!("{a:?}")).or_default() += 1,
+                Err(f) => failures.push(format!("{}: {f}", path.display())),
+            }
+            if dir.ends_with("/valid") && !kernel.accepted {
+                failures.push(format!("{name}: the kernel rejects a valid corpus file: {kernel:?}"));
+            }
+            if let Some(e) = expected.iter().find(|e| e["file"] == name.as_str()) {
+                let code = e["code"].as_str().expect("a code");
+                let one_sided = oracle.sided == chatter_oracle::verdict::Sided::One;
+                if kernel.accepted || !(oracle.codes().contains(&code) || one_sided) {
+                    failures.push(format!("{name}: expected {code}, the oracle says {oracle:?}"));
+                }
+            }
+        }
+    }
+    eprintln!("corpus: {tally:?}");
+    assert!(failures.is_empty(), "{} disagreements:\n{}", failures.len(), failures.join("\n"));
+    assert!(tally.get(&format!("{:?}", Agreement::BothAccept)).copied().unwrap_or(0) >= 80, "{tally:?}");
+}
