@@ -18,6 +18,7 @@ pub mod arith;
 pub mod claim;
 pub mod compare;
 pub mod cone3;
+pub mod convex;
 pub mod kinds;
 pub mod plane;
 pub mod read;
@@ -82,7 +83,11 @@ fn judge_value(value: &Value, reader: Reader, limits: &Limits) -> Judgement {
             Err(f) => unread(f),
             Ok(file) => done(Kind::Refutation, Sided::Two, kinds::refutation::check(&file, limits)),
         },
-        Reader::Family | Reader::Orbit => {
+        Reader::Family => match kinds::family::read(value) {
+            Err(f) => unread(f),
+            Ok(file) => done(Kind::Family, Sided::Two, kinds::family::check(&file, limits)),
+        },
+        Reader::Orbit => {
             done(Kind::Unread, Sided::One, Err(verdict::Fail::new("unsupported-version", "not yet")))
         }
     }

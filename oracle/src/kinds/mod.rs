@@ -1,6 +1,7 @@
 //! The kinds of files and their rules, after the syntax and the header.
 
 pub mod cone;
+pub mod family;
 pub mod limits;
 pub mod numbers;
 pub mod refutation;
