@@ -144,7 +144,9 @@ pub fn compare(k: &KernelView, o: &Judgement) -> Result<Agreement, Finding> {
             format!("the kernel rejects ({code}: {}), the oracle accepts", k.message),
         )),
         (Outcome::Reject { codes, why }, false) => {
-            if codes.contains(&code) {
+            let content = ["pattern-not-forced", "set-not-invariant", "no-contraction"];
+            let both_content = content.contains(&code) && codes.iter().all(|c| content.contains(c));
+            if codes.contains(&code) || (o.sided == Sided::One && both_content) {
                 Ok(Agreement::BothReject)
             } else {
                 let detail = format!("kernel {code} ({}); oracle {codes:?}: {why}", k.message);

@@ -20,6 +20,7 @@ pub mod compare;
 pub mod cone3;
 pub mod convex;
 pub mod kinds;
+pub mod orbit;
 pub mod plane;
 pub mod read;
 pub mod regular;
@@ -87,8 +88,19 @@ fn judge_value(value: &Value, reader: Reader, limits: &Limits) -> Judgement {
             Err(f) => unread(f),
             Ok(file) => done(Kind::Family, Sided::Two, kinds::family::check(&file, limits)),
         },
-        Reader::Orbit => {
-            done(Kind::Unread, Sided::One, Err(verdict::Fail::new("unsupported-version", "not yet")))
-        }
+        Reader::Orbit => match kinds::orbit::read(value) {
+            Err(f) => unread(f),
+            Ok(file) => match kinds::orbit::rules(&file, limits) {
+                Err(f) => done(Kind::Orbit, Sided::Two, Err(f)),
+                Ok(orbit) => {
+                    let r = kinds::orbit::check(&orbit).map(|()| Report {
+                        claim: "CompleteChatterFromSet".into(),
+                        n: orbit.body.n as u64,
+                        ..Report::default()
+                    });
+                    done(Kind::Orbit, Sided::One, r)
+                }
+            },
+        },
     }
 }

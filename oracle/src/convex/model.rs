@@ -49,7 +49,9 @@ impl Body {
         let origin = (Num::int(&f, 0), Num::int(&f, 0));
         for k in 0..n {
             let (a, b) = (&contacts[k], &contacts[(k + 1) % n]);
-            if (0..n).any(|i| i != k && i != (k + 1) % n && !orient(a, b, &contacts[i]).is_positive()) || a == b {
+            if (0..n).any(|i| i != k && i != (k + 1) % n && !orient(a, b, &contacts[i]).is_positive())
+                || a == b
+            {
                 return Err(BodyFault::NotConvex);
             }
         }

@@ -12,9 +12,7 @@ fn polygons(cones: &[Vec<V3>]) -> Checked<Vec<Polygon2>> {
     cones
         .iter()
         .enumerate()
-        .map(|(i, c)| {
-            cone_polygon(c).map_err(|f| Fail { codes: f.codes, why: format!("K_{i}: {}", f.why) })
-        })
+        .map(|(i, c)| cone_polygon(c).map_err(|f| Fail { codes: f.codes, why: format!("K_{i}: {}", f.why) }))
         .collect()
 }
 
@@ -65,7 +63,10 @@ pub fn check_family(b: &Body, claim: Claim, cones: &[Vec<V3>], bits: u64) -> Che
     if claim >= Claim::CompleteChatterFromAllDown {
         for k in 0..b.n() as i64 {
             if !quadratic_factor(&b.pair_matrix(k)).excludes_pcc() {
-                return Err(Fail::new("pcc-not-excluded", format!("PCC of contacts {k} and {} is possible", k + 1)));
+                return Err(Fail::new(
+                    "pcc-not-excluded",
+                    format!("PCC of contacts {k} and {} is possible", k + 1),
+                ));
             }
         }
     }

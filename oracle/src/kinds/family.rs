@@ -37,7 +37,13 @@ fn body<'a>(value: &'a Value, f: &mut FamilyFile<'a>) -> Checked<()> {
 
 /// The schema of §13.
 pub fn read(v: &Value) -> Checked<FamilyFile<'_>> {
-    let mut f = FamilyFile { contacts: vec![], inertia: vec![], gamma: "", claim: Claim::EffectivelyInvariant, cones: vec![] };
+    let mut f = FamilyFile {
+        contacts: vec![],
+        inertia: vec![],
+        gamma: "",
+        claim: Claim::EffectivelyInvariant,
+        cones: vec![],
+    };
     let fields = [
         ("format", true),
         ("version", true),
@@ -94,7 +100,8 @@ fn the_body(f: &FamilyFile, limits: &Limits) -> Checked<Body> {
     if f.inertia.len() != 3 {
         return Err(Fail::new("wrong-arity", "the inertia is (Jxx, Jxy, Jyy)"));
     }
-    let j: Vec<Num> = f.inertia.iter().map(|s| element("body.inertia", s, &q, limits)).collect::<Checked<_>>()?;
+    let j: Vec<Num> =
+        f.inertia.iter().map(|s| element("body.inertia", s, &q, limits)).collect::<Checked<_>>()?;
     let gamma = element("body.gamma", f.gamma, &q, limits)?;
     Body::new(contacts, [j[0].clone(), j[1].clone(), j[2].clone()], gamma).map_err(|e| match e {
         BodyFault::Gamma => Fail::new("parameter-out-of-range", "gamma must lie in [0, 1]"),

@@ -4,4 +4,5 @@ pub mod cone;
 pub mod family;
 pub mod limits;
 pub mod numbers;
+pub mod orbit;
 pub mod refutation;
