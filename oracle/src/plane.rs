@@ -158,7 +158,7 @@ pub fn clip_vertices(poly: &[Pt], extra: &[HalfPlane]) -> Vec<Pt> {
     }
     let mut out: Vec<Pt> = vec![];
     for p in candidates {
-        if !out.contains(&p) && sides.iter().chain(extra).all(|h| h.holds(&p)) {
+        if extra.iter().chain(&sides).all(|h| h.holds(&p)) && !out.contains(&p) {
             out.push(p);
         }
     }

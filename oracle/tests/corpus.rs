@@ -50,3 +50,26 @@ fn every_corpus_file_gets_the_kernels_verdict_from_the_oracle() {
     assert!(failures.is_empty(), "{} disagreements:\n{}", failures.len(), failures.join("\n"));
     assert!(tally.get(&format!("{:?}", Agreement::BothAccept)).copied().unwrap_or(0) >= 80, "{tally:?}");
 }
+
+#[test]
+#[ignore = "a timing tool, not a test"]
+fn time_each_corpus_file() {
+    for dir in ["certificates/valid", "certificates/invalid"] {
+        for path in corpus(dir) {
+            let t = std::time::Instant::now();
+            let text = common::read_text(&path).unwrap_or_default();
+            let enc = chatter_oracle::read::Encoding::of_name(&path.to_string_lossy());
+            let o = chatter_oracle::judge(&text, enc);
+            let to = t.elapsed();
+            let t = std::time::Instant::now();
+            let _ = common::kernel_file(&path);
+            eprintln!(
+                "{:>8.3} {:>8.3} {} {:?}",
+                to.as_secs_f64(),
+                t.elapsed().as_secs_f64(),
+                path.display(),
+                o.kind
+            );
+        }
+    }
+}
