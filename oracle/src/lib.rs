@@ -20,6 +20,7 @@ pub mod compare;
 pub mod cone3;
 pub mod convex;
 pub mod kinds;
+pub mod mutate;
 pub mod orbit;
 pub mod plane;
 pub mod read;

@@ -7,6 +7,7 @@ pub mod header;
 pub mod parse;
 pub mod schema;
 pub mod value;
+pub mod write;
 
 pub use value::Value;
 

@@ -208,7 +208,7 @@ impl Parser<'_> {
 
     fn json_value(&mut self) -> R<Value> {
         match self.peek() {
-            Some(b'"') => Ok(Value::Str(self.string()?)),
+            Some(b'"') => Ok(Value::JsonStr(self.string()?)),
             Some(b'0'..=b'9') => Ok(Value::Int(self.integer()?)),
             Some(b'[') => {
                 self.at += 1;

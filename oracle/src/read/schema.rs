@@ -47,7 +47,7 @@ pub fn variant(v: &Value) -> Checked<(&str, Option<&Value>)> {
     match v {
         Value::Named { name, fields: None } => Ok((name, None)),
         Value::Named { name, fields: Some(_) } if !name.is_empty() => Ok((name, Some(v))),
-        Value::Str(name) => Ok((name, None)),
+        Value::JsonStr(name) => Ok((name, None)),
         Value::Object(m) if m.len() == 1 => Ok((&m[0].0, Some(&m[0].1))),
         other => Err(Fail::new("syntax", format!("expected an enum value, found a {}", other.kind()))),
     }
@@ -66,7 +66,7 @@ pub fn unit_variant<'a>(v: &'a Value, known: &[(&str, bool)]) -> Checked<&'a str
 /// A string.
 pub fn string(v: &Value) -> Checked<&str> {
     match v {
-        Value::Str(s) => Ok(s),
+        Value::Str(s) | Value::JsonStr(s) => Ok(s),
         other => Err(Fail::new("syntax", format!("expected a string, found a {}", other.kind()))),
     }
 }
@@ -103,7 +103,7 @@ pub fn strings(v: &Value) -> Checked<Vec<&str>> {
 /// A parameter: a number, or an interval `[lo, hi]` (§9; RON list or tuple, JSON array).
 pub fn param(v: &Value) -> Checked<Vec<&str>> {
     match v {
-        Value::Str(s) => Ok(vec![s]),
+        Value::Str(s) | Value::JsonStr(s) => Ok(vec![s]),
         Value::List(xs) | Value::Tuple(xs) | Value::Array(xs) if xs.len() == 2 => {
             xs.iter().map(string).collect()
         }

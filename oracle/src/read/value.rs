@@ -19,8 +19,11 @@ pub enum Value {
     List(Vec<Value>),
     /// A JSON array (a list or a tuple, as the schema expects).
     Array(Vec<Value>),
-    /// A string (no escapes exist in the strict syntax).
+    /// A RON string (no escapes exist in the strict syntax).
     Str(String),
+    /// A JSON string: also the form of a JSON enum value without fields (§11), where RON has an
+    /// identifier.
+    JsonStr(String),
     /// A plain decimal integer, as its digits.
     Int(String),
 }
@@ -35,7 +38,7 @@ impl Value {
             Value::Tuple(_) => "tuple",
             Value::List(_) => "list",
             Value::Array(_) => "array",
-            Value::Str(_) => "string",
+            Value::Str(_) | Value::JsonStr(_) => "string",
             Value::Int(_) => "integer",
         }
     }
