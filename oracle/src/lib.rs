@@ -19,6 +19,7 @@ pub mod claim;
 pub mod compare;
 pub mod cone3;
 pub mod convex;
+pub mod isolate;
 pub mod kinds;
 pub mod mutate;
 pub mod orbit;

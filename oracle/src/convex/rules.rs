@@ -8,7 +8,7 @@ use crate::regular::rules::{Polygon2, cone_polygon, misses};
 use crate::verdict::{Checked, Fail, Report};
 
 /// K1 for every cone, in order.
-fn polygons(cones: &[Vec<V3>]) -> Checked<Vec<Polygon2>> {
+pub fn polygons(cones: &[Vec<V3>]) -> Checked<Vec<Polygon2>> {
     cones
         .iter()
         .enumerate()
@@ -17,7 +17,7 @@ fn polygons(cones: &[Vec<V3>]) -> Checked<Vec<Polygon2>> {
 }
 
 /// K2: I_j(K_i ∩ C_ij) ⊆ K_j for all i ≠ j; the piece sizes in the order (i, j).
-fn transitions(b: &Body, ks: &[Polygon2]) -> Checked<Vec<usize>> {
+pub fn transitions(b: &Body, ks: &[Polygon2]) -> Checked<Vec<usize>> {
     let mut pieces = vec![];
     for i in 0..ks.len() {
         for j in (0..ks.len()).filter(|&j| j != i) {
@@ -42,7 +42,7 @@ fn transitions(b: &Body, ks: &[Polygon2]) -> Checked<Vec<usize>> {
 }
 
 /// K3: I_i(-m_{k,k+1}) ∈ K_i for all i, k.
-fn all_down(b: &Body, ks: &[Polygon2]) -> Checked<()> {
+pub fn all_down(b: &Body, ks: &[Polygon2]) -> Checked<()> {
     for (i, k) in ks.iter().enumerate() {
         for g in b.all_down() {
             if misses(k, &b.impact(i as i64, &g)).is_some() {

@@ -133,14 +133,23 @@ fn generators(
     Ok(out)
 }
 
-/// Every rule of a cone certificate after its schema.
-pub fn check(f: &ConeFile, limits: &Limits) -> Checked<(Kind, Report)> {
+/// A cone certificate after the file's rules: the model(s) and the generators.
+pub enum Parts {
+    /// A regular polygon at one point (rational or field).
+    Point(Polygon, Vec<[Num; 3]>),
+    /// The rod at one point.
+    Rod(Rod, Vec<[Rat; 2]>),
+    /// A box of a regular polygon (n ≥ 3) or of the rod (n = 2, generators (u0, u1, 0) unused).
+    Box(usize, [Rat; 2], [Rat; 2], Vec<[Num; 3]>, Vec<[Rat; 2]>),
+}
+
+/// The file's rules (limits, version, numbers, body, range of γ, arity), in the kernel's order.
+pub fn prepare(f: &ConeFile, limits: &Limits) -> Checked<(Parts, u64)> {
     claim_is_cone(f)?;
     size(f, limits)?;
     let interval = f.kappa.len() == 2 || f.gamma.len() == 2;
-    let irrational = f.n >= 5 && f.n != 6;
-    if irrational {
-        return check_field(f, interval, limits);
+    if f.n >= 5 && f.n != 6 {
+        return prepare_field(f, interval, limits);
     }
     if interval && f.version < 2 {
         return Err(Fail::new("unsupported-version", "parameter intervals need version 2"));
@@ -151,35 +160,52 @@ pub fn check(f: &ConeFile, limits: &Limits) -> Checked<(Kind, Report)> {
         return Err(Fail::new("unsupported-body", format!("n = {}", f.n)));
     }
     ranges(&k, &g, f.claim)?;
-    let arity = if f.n == 2 { 2 } else { 3 };
-    let gens = generators(f, arity, &q, limits)?;
+    let gens = generators(f, if f.n == 2 { 2 } else { 3 }, &q, limits)?;
     let bits = denominator_bits(gens.iter().flatten());
     let rat = |x: &Num| x.as_rational().expect("rational").clone();
     let (kr, gr): ([Rat; 2], [Rat; 2]) = ([rat(&k[0]), rat(&k[1])], [rat(&g[0]), rat(&g[1])]);
-    if f.n == 2 {
-        let gens: Vec<[Rat; 2]> = gens.iter().map(|g| [rat(&g[0]), rat(&g[1])]).collect();
-        if interval {
-            return Ok((Kind::Box, check_box(2, &kr, &gr, f.claim, &Gens::Rod(&gens), bits)?));
-        }
-        let rod = Rod { kappa: kr[0].clone(), gamma: gr[0].clone() };
-        return Ok((Kind::Rod, check_rod(&rod, f.claim, &gens, bits)?));
-    }
+    let rod_gens: Vec<[Rat; 2]> =
+        if f.n == 2 { gens.iter().map(|g| [rat(&g[0]), rat(&g[1])]).collect() } else { vec![] };
     let field = Field::cos(f.n as u32);
     let lift = |g: &Vec<Num>| -> [Num; 3] { std::array::from_fn(|i| Num::rational(&field, rat(&g[i]))) };
-    let gens: Vec<[Num; 3]> = gens.iter().map(lift).collect();
-    if interval {
-        return Ok((Kind::Box, check_box(f.n as usize, &kr, &gr, f.claim, &Gens::Polygon(&gens), bits)?));
+    let poly_gens: Vec<[Num; 3]> = if f.n == 2 { vec![] } else { gens.iter().map(lift).collect() };
+    let parts = match (interval, f.n) {
+        (true, n) => Parts::Box(n as usize, kr, gr, poly_gens, rod_gens),
+        (false, 2) => Parts::Rod(Rod { kappa: kr[0].clone(), gamma: gr[0].clone() }, rod_gens),
+        (false, n) => {
+            let b = Polygon::new(
+                n as usize,
+                Num::rational(&field, kr[0].clone()),
+                Num::rational(&field, gr[0].clone()),
+            );
+            Parts::Point(b, poly_gens)
+        }
+    };
+    Ok((parts, bits))
+}
+
+/// Every rule of a cone certificate after its schema.
+pub fn check(f: &ConeFile, limits: &Limits) -> Checked<(Kind, Report)> {
+    let (parts, bits) = prepare(f, limits)?;
+    match parts {
+        Parts::Point(b, gens) => Ok((Kind::Cone, check_point(&b, f.claim, &gens, bits)?)),
+        Parts::Rod(rod, gens) => Ok((Kind::Rod, check_rod(&rod, f.claim, &gens, bits)?)),
+        Parts::Box(2, k, g, _, gens) => {
+            Ok((Kind::Box, check_box(2, &k, &g, f.claim, &Gens::Rod(&gens), bits)?))
+        }
+        Parts::Box(n, k, g, gens, _) => {
+            Ok((Kind::Box, check_box(n, &k, &g, f.claim, &Gens::Polygon(&gens), bits)?))
+        }
     }
-    let b = Polygon::new(
-        f.n as usize,
-        Num::rational(&field, kr[0].clone()),
-        Num::rational(&field, gr[0].clone()),
-    );
-    Ok((Kind::Cone, check_point(&b, f.claim, &gens, bits)?))
+}
+
+/// The claim of a file.
+pub fn claim(f: &ConeFile) -> Claim {
+    f.claim
 }
 
 /// n = 5 and 7..64: Q(cos 2π/n) (§12).
-fn check_field(f: &ConeFile, interval: bool, limits: &Limits) -> Checked<(Kind, Report)> {
+fn prepare_field(f: &ConeFile, interval: bool, limits: &Limits) -> Checked<(Parts, u64)> {
     if f.n > 64 {
         return Err(Fail::new("unsupported-body", format!("n = {}", f.n)));
     }
@@ -197,8 +223,7 @@ fn check_field(f: &ConeFile, interval: bool, limits: &Limits) -> Checked<(Kind, 
     let gens = generators(f, 3, &field, limits)?;
     let bits = denominator_bits(gens.iter().flatten());
     let gens: Vec<[Num; 3]> = gens.into_iter().map(|g| [g[0].clone(), g[1].clone(), g[2].clone()]).collect();
-    let b = Polygon::new(f.n as usize, kappa, gamma);
-    Ok((Kind::Cone, check_point(&b, f.claim, &gens, bits)?))
+    Ok((Parts::Point(Polygon::new(f.n as usize, kappa, gamma), gens), bits))
 }
 
 /// Whether the claim is a cone claim (an orbit claim in a cone certificate is refused).

@@ -113,8 +113,34 @@ fn the_body(f: &FamilyFile, limits: &Limits) -> Checked<Body> {
     })
 }
 
+/// Every content rule evaluated on its own (K1 alone if it fails; then K2, K3, K4), for
+/// [`crate::isolate`].
+pub fn every_failure(v: &Value) -> Checked<Vec<&'static str>> {
+    let f = read(v)?;
+    let (b, cones, _) = prepare(&f, &Limits::default())?;
+    let ks = crate::convex::rules::polygons(&cones)?;
+    let mut out = vec![];
+    if let Err(e) = crate::convex::rules::transitions(&b, &ks) {
+        out.extend(e.codes);
+    }
+    if f.claim >= Claim::CcOrPccFromAllDown && crate::convex::rules::all_down(&b, &ks).is_err() {
+        out.push("initial-outside");
+    }
+    let pcc = |k: i64| crate::regular::pcc::quadratic_factor(&b.pair_matrix(k)).excludes_pcc();
+    if f.claim >= Claim::CompleteChatterFromAllDown && !(0..b.n() as i64).all(pcc) {
+        out.push("pcc-not-excluded");
+    }
+    Ok(out)
+}
+
 /// Every rule of a version-4 certificate after its schema.
 pub fn check(f: &FamilyFile, limits: &Limits) -> Checked<Report> {
+    let (b, cones, bits) = prepare(f, limits)?;
+    check_family(&b, f.claim, &cones, bits)
+}
+
+/// The file's rules of a version-4 certificate: the body, the range of γ, the cones' numbers.
+fn prepare(f: &FamilyFile, limits: &Limits) -> Checked<(Body, Vec<Vec<[Num; 3]>>, u64)> {
     if f.claim == Claim::CompleteChatterFromSet {
         return Err(Fail::new("unknown-variant", "CompleteChatterFromSet is an orbit claim"));
     }
@@ -142,5 +168,5 @@ pub fn check(f: &FamilyFile, limits: &Limits) -> Checked<Report> {
         cones.push(gens);
     }
     let bits = denominator_bits(cones.iter().flatten().flatten());
-    check_family(&b, f.claim, &cones, bits)
+    Ok((b, cones, bits))
 }

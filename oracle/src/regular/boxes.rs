@@ -175,3 +175,46 @@ pub fn check_box(
     report.region = Some([[t(&k[0]), t(&k[1])], [t(&g[0]), t(&g[1])]]);
     Ok(report)
 }
+
+/// Every rule on a box evaluated on its own (R1 alone if it fails; then R2 at the corners, R3 at
+/// the corners, R4), for [`crate::isolate`].
+pub fn box_failures(
+    n: usize,
+    k: &[Rat; 2],
+    g: &[Rat; 2],
+    claim: Claim,
+    gens: &Gens,
+) -> Checked<Vec<&'static str>> {
+    let cs = corners(k, g);
+    let shape = match gens {
+        Gens::Rod(g) => {
+            super::rod::interval(g)?;
+            Shape::Rod(g)
+        }
+        Gens::Polygon(g) => Shape::Polygon(cone_polygon(g)?),
+    };
+    let mut out = vec![];
+    let mut add = |r: Checked<bool>| {
+        if let Err(f) = r {
+            out.extend(f.codes);
+        }
+    };
+    for (kappa, gamma) in &cs {
+        add(at(n, kappa, gamma, &shape, Rules::Invariance, 0));
+    }
+    if claim >= Claim::CcOrPccFromAllDown {
+        for (kappa, gamma) in &cs {
+            add(at(n, kappa, gamma, &shape, Rules::AllDown, 0));
+        }
+    }
+    if claim == Claim::CompleteChatterFromAllDown && n >= 3 {
+        let c1 = Num::generator(&Field::cos(n as u32)).as_rational().expect("rational").clone();
+        let crosses = k[0] <= -c1.clone() && -c1 <= k[1];
+        if crosses || !cs.iter().all(|(kappa, gamma)| closed_form(n, kappa, gamma).is_negative()) {
+            out.push("pcc-not-excluded");
+        }
+    }
+    out.sort_unstable();
+    out.dedup();
+    Ok(out)
+}

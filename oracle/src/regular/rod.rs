@@ -45,8 +45,22 @@ pub fn position(p: &V2) -> Option<Rat> {
     w.is_positive().then(|| &p[0] / &w)
 }
 
-/// Rules R1 to R3 (R4 holds trivially for the rod: PCC is CC with two contacts).
-pub fn check_rod(rod: &Rod, claim: Claim, gens: &[V2], bits: u64) -> Checked<Report> {
+/// K for the rod: the interval [lo, hi] of s and the redundant generators (rule R1).
+pub struct Interval {
+    lo: Rat,
+    hi: Rat,
+    redundant: Vec<usize>,
+}
+
+impl Interval {
+    /// Whether a velocity is 0 or lies in K.
+    fn holds(&self, p: &V2) -> bool {
+        p.iter().all(Zero::is_zero) || position(p).is_some_and(|x| self.lo <= x && x <= self.hi)
+    }
+}
+
+/// Rule R1 for the rod: every generator has v < 0 and K has two distinct ends.
+pub fn interval(gens: &[V2]) -> Checked<Interval> {
     let mut s = vec![];
     for (i, g) in gens.iter().enumerate() {
         s.push(
@@ -62,18 +76,22 @@ pub fn check_rod(rod: &Rod, claim: Claim, gens: &[V2], bits: u64) -> Checked<Rep
     }
     let ends = [s.iter().position(|x| *x == lo), s.iter().position(|x| *x == hi)];
     let redundant = (0..s.len()).filter(|i| !ends.contains(&Some(*i))).collect();
-    let holds = |p: &V2| p.iter().all(Zero::is_zero) || position(p).is_some_and(|x| lo <= x && x <= hi);
-    // K ∩ C_1 = K ∩ {u0 ≥ 0}: the interval [max(lo, 0), hi] of s, whose ends are (s, -1 - s).
-    let piece: Vec<Rat> = match (hi.cmp(&Rat::zero()), lo.is_positive()) {
+    Ok(Interval { lo, hi, redundant })
+}
+
+/// Rule R2 for the rod: K ∩ C_1 = K ∩ {u0 ≥ 0} is [max(lo, 0), hi] in s, whose ends (s, -1 - s)
+/// map into K; returns the number of ends.
+pub fn invariance(rod: &Rod, k: &Interval) -> Checked<usize> {
+    let piece: Vec<Rat> = match (k.hi.cmp(&Rat::zero()), k.lo.is_positive()) {
         (std::cmp::Ordering::Less, _) => vec![],
-        (std::cmp::Ordering::Equal, _) => vec![hi.clone()],
-        (_, true) => vec![lo.clone(), hi.clone()],
-        (_, false) => vec![Rat::zero(), hi.clone()],
+        (std::cmp::Ordering::Equal, _) => vec![k.hi.clone()],
+        (_, true) => vec![k.lo.clone(), k.hi.clone()],
+        (_, false) => vec![Rat::zero(), k.hi.clone()],
     };
     let mut codes = vec![];
     for x in &piece {
         let img = rod.step(&[x.clone(), -(Rat::one() + x)]);
-        if !holds(&img) {
+        if !k.holds(&img) {
             let code = if position(&img).is_none() { "image-not-below" } else { "image-outside" };
             if !codes.contains(&code) {
                 codes.push(code);
@@ -83,24 +101,38 @@ pub fn check_rod(rod: &Rod, claim: Claim, gens: &[V2], bits: u64) -> Checked<Rep
     if !codes.is_empty() {
         return Err(Fail { codes, why: "an end of K ∩ C_1 maps outside K".into() });
     }
-    let minus_one = -Rat::one();
-    if claim >= Claim::CcOrPccFromAllDown {
-        for g in [[Rat::zero(), minus_one.clone()], [minus_one.clone(), Rat::zero()]] {
-            if !holds(&rod.impact(0, &g)) {
-                return Err(Fail::new("initial-outside", "I_0 of a generator of D is not in K"));
-            }
+    Ok(piece.len())
+}
+
+/// Rule R3 for the rod: I_0 of (0, -1) and (-1, 0) lie in K.
+pub fn all_down(rod: &Rod, k: &Interval) -> Checked<()> {
+    let m1 = -Rat::one();
+    for g in [[Rat::zero(), m1.clone()], [m1.clone(), Rat::zero()]] {
+        if !k.holds(&rod.impact(0, &g)) {
+            return Err(Fail::new("initial-outside", "I_0 of a generator of D is not in K"));
         }
     }
-    let translation = rod.impact(0, &[minus_one.clone(), minus_one]);
+    Ok(())
+}
+
+/// Rules R1 to R3 (R4 holds trivially for the rod: PCC is CC with two contacts).
+pub fn check_rod(rod: &Rod, claim: Claim, gens: &[V2], bits: u64) -> Checked<Report> {
+    let k = interval(gens)?;
+    let pieces = invariance(rod, &k)?;
+    if claim >= Claim::CcOrPccFromAllDown {
+        all_down(rod, &k)?;
+    }
+    let m1 = -Rat::one();
+    let translation = rod.impact(0, &[m1.clone(), m1]);
     Ok(Report {
         claim: claim.name().into(),
         n: 2,
         generators: Some(gens.len()),
-        redundant: Some(redundant),
-        pieces: Some(vec![piece.len()]),
+        redundant: Some(k.redundant.clone()),
+        pieces: Some(vec![pieces]),
         max_denominator_bits: Some(bits),
         pcc: None,
-        contains_translation: Some(position(&translation).is_some_and(|x| lo <= x && x <= hi)),
+        contains_translation: Some(position(&translation).is_some_and(|x| k.lo <= x && x <= k.hi)),
         region: None,
         refutation: None,
     })
