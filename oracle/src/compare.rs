@@ -155,3 +155,47 @@ pub fn compare(k: &KernelView, o: &Judgement) -> Result<Agreement, Finding> {
         }
     }
 }
+
+/// The kernel's claim that an orbit condition "fails at the centre" of a sub-box, checked
+/// exactly: `Some(true)` when the oracle's return map fails that condition at that point,
+/// `Some(false)` when it does not, `None` when the rejection makes no such claim.
+pub fn orbit_centre_confirmed(text: &str, encoding: crate::read::Encoding, k: &KernelView) -> Option<bool> {
+    use crate::arith::rational::parse_rational;
+    use crate::arith::{Field, Num};
+    use crate::kinds::{limits::Limits, orbit};
+    if k.accepted || !k.message.contains("fails at the centre") {
+        return None;
+    }
+    let locus = k.locus.as_ref()?;
+    let value = crate::read::parse::parse(text, encoding).ok()?;
+    let o = orbit::rules(&orbit::read(&value).ok()?, &Limits::default()).ok()?;
+    let q = Field::rationals();
+    let mut y = vec![];
+    for i in 0..3 {
+        let end = |j: usize| locus["sub_box"][i][j].as_str().and_then(|s| parse_rational(s, usize::MAX).ok());
+        let mid = (end(0)? + end(1)?) / parse_rational("2", 9).ok()?;
+        y.push(Num::rational(&q, mid));
+    }
+    let y = [y[0].clone(), y[1].clone(), y[2].clone()];
+    let code = k.code.as_deref()?;
+    Some(o.conditions(&y).is_err_and(|f| f.codes.contains(&code)))
+}
+
+/// Judges a text with the oracle and compares it with the kernel's verdict, checking an orbit
+/// rejection "at the centre" of a sub-box exactly.
+pub fn differential(
+    text: &str,
+    encoding: crate::read::Encoding,
+    k: &KernelView,
+) -> (Judgement, Result<Agreement, Finding>) {
+    let o = crate::judge(text, encoding);
+    let mut cmp = compare(k, &o);
+    if cmp.is_ok() && orbit_centre_confirmed(text, encoding, k) == Some(false) {
+        let detail = format!(
+            "the kernel says {} fails at the centre of its sub-box; exactly, it holds there",
+            k.code.as_deref().unwrap_or("")
+        );
+        cmp = Err(finding("kernel-centre-false", detail));
+    }
+    (o, cmp)
+}

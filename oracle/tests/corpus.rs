@@ -73,3 +73,42 @@ fn time_each_corpus_file() {
         }
     }
 }
+
+/// Inputs found by the fuzz target `oracle` (oracle/tests/data), kept as regression cases: each
+/// must now get compatible verdicts.
+#[test]
+fn fuzz_findings_stay_resolved() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data");
+    let mut n = 0;
+    for e in std::fs::read_dir(&dir).expect("tests/data") {
+        let path = e.expect("entry").path();
+        let (kernel, oracle, cmp) = differential_file(&path);
+        assert!(cmp.is_ok(), "{}: {cmp:?}\n{kernel:?}\n{oracle:?}", path.display());
+        n += 1;
+    }
+    assert!(n >= 1);
+}
+
+/// Where the kernel rejects an orbit certificate because a condition "fails at the centre of the
+/// sub-box", the oracle evaluates the return map exactly at that centre and sees the same
+/// condition fail (the kernel then claims a definite point, which the one-sided oracle can check).
+#[test]
+fn orbit_rejections_at_a_centre_are_confirmed_exactly() {
+    use chatter_oracle::compare::orbit_centre_confirmed;
+    use chatter_oracle::read::Encoding;
+    let mut confirmed = 0;
+    for path in corpus("certificates/invalid") {
+        let name = path.file_name().unwrap().to_string_lossy().to_string();
+        if !name.starts_with("orbit-") || !name.ends_with(".ron") {
+            continue;
+        }
+        let (kernel, _, _) = differential_file(&path);
+        let text = std::fs::read_to_string(&path).unwrap();
+        match orbit_centre_confirmed(&text, Encoding::Ron, &kernel) {
+            Some(true) => confirmed += 1,
+            Some(false) => panic!("{name}: the centre of the kernel's sub-box passes: {kernel:?}"),
+            None => {}
+        }
+    }
+    assert!(confirmed >= 4, "{confirmed} orbit rejections confirmed");
+}

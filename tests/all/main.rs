@@ -18,7 +18,6 @@ mod fuzz_smoke;
 mod json;
 mod kernel;
 mod model;
-mod oracle_convex;
 mod orbit;
 mod orbit_band;
 mod orbit_classify;

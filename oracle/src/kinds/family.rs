@@ -165,6 +165,9 @@ fn prepare(f: &FamilyFile, limits: &Limits) -> Checked<(Body, Vec<Vec<[Num; 3]>>
             let v: Vec<Num> = x.iter().map(|s| element(&path, s, &q, limits)).collect::<Checked<_>>()?;
             gens.push([v[0].clone(), v[1].clone(), v[2].clone()]);
         }
+        // K1 of each cone right after its numbers, before the next cone's (the kernel's order;
+        // §13 does not order the numbers of later cones against K1 of earlier ones).
+        crate::regular::rules::cone_polygon(&gens)?;
         cones.push(gens);
     }
     let bits = denominator_bits(cones.iter().flatten().flatten());

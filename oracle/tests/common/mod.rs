@@ -5,7 +5,7 @@
 #![allow(dead_code)]
 
 use chatter_kernel::verify::{MALACHITE, NUM, Verdict, format_of, verify_refutation_text, verify_text};
-use chatter_oracle::compare::{Agreement, Finding, KernelView, compare};
+use chatter_oracle::compare::{Agreement, Finding, KernelView, differential};
 use chatter_oracle::read::Encoding;
 use chatter_oracle::verdict::{Judgement, Report};
 use std::path::{Path, PathBuf};
@@ -114,15 +114,13 @@ pub fn differential_file(path: &Path) -> (KernelView, Judgement, Result<Agreemen
     let plain_ron = encoding == Encoding::Ron && !name.to_ascii_lowercase().ends_with(".gz");
     let text = read_text(path).unwrap_or_default();
     let kernel = if plain_ron { kernel_ron(&text) } else { kernel_file(path) };
-    let oracle = chatter_oracle::judge(&text, encoding);
-    let cmp = compare(&kernel, &oracle);
+    let (oracle, cmp) = differential(&text, encoding, &kernel);
     (kernel, oracle, cmp)
 }
 
 /// Both verdicts on RON text and their comparison.
 pub fn differential_ron(text: &str) -> (KernelView, Judgement, Result<Agreement, Finding>) {
     let kernel = kernel_ron(text);
-    let oracle = chatter_oracle::judge(text, Encoding::Ron);
-    let cmp = compare(&kernel, &oracle);
+    let (oracle, cmp) = differential(text, Encoding::Ron, &kernel);
     (kernel, oracle, cmp)
 }
