@@ -67,7 +67,7 @@ fn unread(f: verdict::Fail) -> Judgement {
 
 fn done(kind: Kind, sided: Sided, r: Checked<Report>) -> Judgement {
     let outcome = match r {
-        Ok(report) => Outcome::Accept(report),
+        Ok(report) => Outcome::Accept(Box::new(report)),
         Err(f) => Outcome::Reject { codes: f.codes, why: f.why },
     };
     Judgement { kind, sided, outcome }

@@ -60,7 +60,7 @@ pub struct Report {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Outcome {
     /// Every rule holds (for a one-sided kind: no counterexample was found).
-    Accept(Report),
+    Accept(Box<Report>),
     /// A rule fails: the codes the first failing rule may be reported with, and why.
     Reject {
         /// Rejection codes (kebab-case, docs/certificate-format.md §7) of the first failing rule.

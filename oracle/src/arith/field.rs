@@ -247,7 +247,7 @@ impl std::ops::Mul for &Num {
 impl std::ops::Div for &Num {
     type Output = Num;
     fn div(self, o: &Num) -> Num {
-        self * &o.inverse()
+        std::ops::Mul::mul(self, &o.inverse())
     }
 }
 

@@ -10,6 +10,9 @@ use crate::read::Value;
 use crate::read::schema::{integer, list, string, strings, unit_variant, variant, walk};
 use crate::verdict::{Checked, Fail, Report};
 
+/// The generators of every cone of a family.
+type Cones = Vec<Vec<[Num; 3]>>;
+
 /// A version-4 certificate as read.
 pub struct FamilyFile<'a> {
     contacts: Vec<Vec<&'a str>>,
@@ -140,7 +143,7 @@ pub fn check(f: &FamilyFile, limits: &Limits) -> Checked<Report> {
 }
 
 /// The file's rules of a version-4 certificate: the body, the range of γ, the cones' numbers.
-fn prepare(f: &FamilyFile, limits: &Limits) -> Checked<(Body, Vec<Vec<[Num; 3]>>, u64)> {
+fn prepare(f: &FamilyFile, limits: &Limits) -> Checked<(Body, Cones, u64)> {
     if f.claim == Claim::CompleteChatterFromSet {
         return Err(Fail::new("unknown-variant", "CompleteChatterFromSet is an orbit claim"));
     }

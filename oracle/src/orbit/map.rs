@@ -91,7 +91,7 @@ impl Orbit {
             return Err(fail("set-not-invariant", "R_P(x) is not in X".into()));
         }
         let contraction = [
-            (&beta <= &self.lambda, "beta <= lambda"),
+            (beta <= self.lambda, "beta <= lambda"),
             (alpha <= &self.rho * &beta, "alpha/beta <= rho"),
             (alpha <= self.lambda, "alpha <= lambda"),
             (total <= self.period, "T <= period"),

@@ -266,7 +266,7 @@ pub fn evaluate(cert: &Certificate) -> Verdict {
     let text = write(cert);
     let j = chatter_oracle::judge(&text, Encoding::Ron);
     let report = match &j.outcome {
-        chatter_oracle::verdict::Outcome::Accept(r) => Some(r.clone()),
+        chatter_oracle::verdict::Outcome::Accept(r) => Some((**r).clone()),
         _ => None,
     };
     Verdict {
