@@ -32,7 +32,9 @@ fn corpus() -> &'static [(String, Value)] {
         let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../certificates");
         let mut files: Vec<_> = ["valid", "invalid"]
             .iter()
-            .flat_map(|d| std::fs::read_dir(root.join(d)).expect("the corpus").map(|e| e.expect("entry").path()))
+            .flat_map(|d| {
+                std::fs::read_dir(root.join(d)).expect("the corpus").map(|e| e.expect("entry").path())
+            })
             .filter(|p| p.extension().is_some_and(|x| x == "ron"))
             .collect();
         files.sort();
@@ -68,7 +70,9 @@ fn kernel(text: &str) -> KernelView {
                 },
                 ..KernelView::default()
             },
-            Verdict::Rejected(r) => rejected(r.code.as_str(), serde_json::to_value(&r.locus).unwrap(), r.message),
+            Verdict::Rejected(r) => {
+                rejected(r.code.as_str(), serde_json::to_value(&r.locus).unwrap(), r.message)
+            }
             Verdict::Disagree(d) => KernelView { disagree: Some(d), ..KernelView::default() },
         };
     }
