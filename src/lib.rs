@@ -22,7 +22,6 @@ pub mod exact;
 pub mod exactify;
 pub mod finder;
 pub mod model;
-pub mod oracle;
 pub mod orbit;
 #[cfg(feature = "cli")]
 pub mod plot;

@@ -19,7 +19,6 @@ mod json;
 mod kernel;
 mod messages;
 mod model;
-mod oracle_convex;
 mod orbit;
 mod orbit_band;
 mod orbit_classify;

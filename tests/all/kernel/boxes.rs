@@ -148,5 +148,10 @@ fn pcc_exclusion_on_a_box_is_refused_where_the_discriminant_is_not_negative() {
     let Locus::PccRegion { kappa, gamma } = &r.locus else { panic!("{r}") };
     // The point named is one where the discriminant is >= 0, checked with the point model.
     assert_eq!(kappa[0], kappa[1]);
-    assert!(chatter::oracle::pcc_fails_at(4, &q(&kappa[0]), &q(&gamma[0])), "{r}");
+    // The square's PCC discriminant in closed form (docs/model.md §11.6, c_1 = 0): μ = κ/(1 + κ),
+    // p² - 4q = (1 + γ)² μ² ((1 + γ)² μ² - 4γ); R4 fails there when it is ≥ 0.
+    let (k, g) = (q(&kappa[0]), q(&gamma[0]));
+    let mu = &k / &(Q::int(1) + &k);
+    let e = &(&(Q::int(1) + &g) * &(Q::int(1) + &g)) * &(&mu * &mu);
+    assert!(&e * &(&e - &(Q::int(4) * &g)) >= Q::int(0), "{r}");
 }

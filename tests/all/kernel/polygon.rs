@@ -1,6 +1,5 @@
 //! Tests of `chatter_kernel::geometry`: exact homogeneous geometry against brute force on projected
-//! rational points (the helpers of `chatter::oracle`, re-exported as `kernel::brute`, which share
-//! nothing with the kernel).
+//! rational points (the 2-D helpers of `kernel::brute`, which share nothing with the kernel).
 
 use super::brute::{HalfPlane, Pt, ccw_hull, extreme_points, full_dimensional, in_hull, orient2, twice_area};
 use crate::common::q;

@@ -1,0 +1,201 @@
+//! Comparing the kernel's verdict with the oracle's. The kernel's verdict arrives as plain data
+//! ([`KernelView`], filled in by the differential tests and the fuzz target, which may depend on
+//! the kernel; this library does not). A [`Finding`] is a disagreement to report.
+
+use crate::verdict::{Judgement, Outcome, Report, Sided};
+
+/// The kernel's verdict as plain data.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct KernelView {
+    /// Whether every backend accepted.
+    pub accepted: bool,
+    /// The backends disagreed (an internal error of the kernel).
+    pub disagree: Option<String>,
+    /// The rejection code (kebab-case).
+    pub code: Option<String>,
+    /// The rejection's locus as JSON.
+    pub locus: Option<serde_json::Value>,
+    /// The rejection's message.
+    pub message: String,
+    /// The report of an accepted file (fields the kernel did not report are `None`).
+    pub report: Report,
+    /// For an accepted box claiming CC: the number of Bernstein boxes.
+    pub pcc_boxes: Option<usize>,
+    /// For an accepted orbit certificate: the number of sub-boxes shown.
+    pub orbit_boxes: Option<usize>,
+}
+
+/// A disagreement between the kernel and the oracle.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Finding {
+    /// `backends-disagree`, `kernel-accepts-false` (the kernel accepts, the oracle finds a rule
+    /// false), `oracle-accepts` (the kernel rejects what the oracle accepts, two-sided),
+    /// `wrong-code` (both reject, the kernel's code is not one the oracle's first failing rule
+    /// can give) or `wrong-report` (both accept, with different reports).
+    pub kind: &'static str,
+    /// What differs.
+    pub detail: String,
+}
+
+impl std::fmt::Display for Finding {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: {}", self.kind, self.detail)
+    }
+}
+
+/// What a comparison found when there was no disagreement.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Agreement {
+    /// Both accept (for a one-sided kind: the oracle found no counterexample).
+    BothAccept,
+    /// Both reject with a compatible code.
+    BothReject,
+    /// The kernel rejects as "not shown" (a box's PCC region, an orbit sub-box) what the oracle
+    /// accepts or cannot decide: the kernel is conservative there by design.
+    KernelConservative,
+    /// A limit (`too-large`, `time-limit`): no verdict on the content to compare.
+    Limit,
+}
+
+fn finding(kind: &'static str, detail: String) -> Finding {
+    Finding { kind, detail }
+}
+
+/// The kernel's abbreviation of long numbers in reports and messages
+/// (docs/certificate-format.md §5): first 16 and last 8 characters and the length.
+pub fn abbreviated(s: &str) -> String {
+    if s.len() <= 40 {
+        return s.to_string();
+    }
+    format!("{}...{} ({} characters)", &s[..16], &s[s.len() - 8..], s.len())
+}
+
+/// Whether a kernel rejection says that something was not shown rather than false: a box's R4
+/// on a region wider than a point, or an orbit condition "is not shown".
+fn not_shown(k: &KernelView) -> bool {
+    let code = k.code.as_deref().unwrap_or("");
+    let region_wide = k.locus.as_ref().is_some_and(|l| {
+        l["kind"] == "pcc-region" && (l["kappa"][0] != l["kappa"][1] || l["gamma"][0] != l["gamma"][1])
+    });
+    (code == "pcc-not-excluded" && region_wide) || k.message.contains("is not shown")
+}
+
+/// Compares the two reports of an accepted file, field by field where both have the field.
+/// Whether two optional report fields agree where both are present.
+fn both<T: PartialEq>(a: &Option<T>, b: &Option<T>) -> bool {
+    a.is_none() || b.is_none() || a == b
+}
+
+fn same_report(k: &Report, o: &Report) -> Result<(), String> {
+    let mut diffs = vec![];
+    let mut check = |name: &str, same: bool| {
+        if !same {
+            diffs.push(name.to_string());
+        }
+    };
+    check("claim", k.claim == o.claim);
+    check("n", k.n == o.n);
+    check("generators", both(&k.generators, &o.generators));
+    check("redundant", both(&k.redundant, &o.redundant));
+    check("max_denominator_bits", both(&k.max_denominator_bits, &o.max_denominator_bits));
+    check("pcc", both(&k.pcc, &o.pcc));
+    check("contains_translation", both(&k.contains_translation, &o.contains_translation));
+    check("region", both(&k.region, &o.region));
+    if let (Some(kp), Some(op)) = (&k.pieces, &o.pieces) {
+        // The kernel's clipped list may repeat a point of a degenerate piece.
+        let ok =
+            kp.len() == op.len() && kp.iter().zip(op).all(|(a, b)| if *b >= 3 { a == b } else { a >= b });
+        check("pieces", ok);
+    }
+    if let (Some(kr), Some(or)) = (&k.refutation, &o.refutation) {
+        let last: Vec<String> = or.1.iter().map(|s| abbreviated(s)).collect();
+        check("refutation", kr.0 == or.0 && kr.1 == last && kr.2 == or.2);
+    }
+    if diffs.is_empty() {
+        Ok(())
+    } else {
+        Err(format!("{} differ: kernel {k:?}, oracle {o:?}", diffs.join(", ")))
+    }
+}
+
+/// Compares a kernel verdict with the oracle's judgement of the same file.
+pub fn compare(k: &KernelView, o: &Judgement) -> Result<Agreement, Finding> {
+    if let Some(d) = &k.disagree {
+        return Err(finding("backends-disagree", d.clone()));
+    }
+    let code = k.code.as_deref().unwrap_or("");
+    if !k.accepted && (code == "too-large" || code == "time-limit") {
+        return Ok(Agreement::Limit);
+    }
+    match (&o.outcome, k.accepted) {
+        (Outcome::Accept(report), true) => {
+            same_report(&k.report, report).map_err(|d| finding("wrong-report", d))?;
+            Ok(Agreement::BothAccept)
+        }
+        (Outcome::Reject { codes, why }, true) => {
+            let detail = format!("the kernel accepts; the oracle finds {codes:?}: {why}");
+            Err(finding("kernel-accepts-false", detail))
+        }
+        (Outcome::Accept(_), false) if not_shown(k) || o.sided == Sided::One => {
+            Ok(Agreement::KernelConservative)
+        }
+        (Outcome::Accept(_), false) => Err(finding(
+            "oracle-accepts",
+            format!("the kernel rejects ({code}: {}), the oracle accepts", k.message),
+        )),
+        (Outcome::Reject { codes, why }, false) => {
+            let content = ["pattern-not-forced", "set-not-invariant", "no-contraction"];
+            let both_content = content.contains(&code) && codes.iter().all(|c| content.contains(c));
+            if codes.contains(&code) || (o.sided == Sided::One && both_content) {
+                Ok(Agreement::BothReject)
+            } else {
+                let detail = format!("kernel {code} ({}); oracle {codes:?}: {why}", k.message);
+                Err(finding("wrong-code", detail))
+            }
+        }
+    }
+}
+
+/// The kernel's claim that an orbit condition "fails at the centre" of a sub-box, checked
+/// exactly: `Some(true)` when the oracle's return map fails that condition at that point,
+/// `Some(false)` when it does not, `None` when the rejection makes no such claim.
+pub fn orbit_centre_confirmed(text: &str, encoding: crate::read::Encoding, k: &KernelView) -> Option<bool> {
+    use crate::arith::rational::parse_rational;
+    use crate::arith::{Field, Num};
+    use crate::kinds::{limits::Limits, orbit};
+    if k.accepted || !k.message.contains("fails at the centre") {
+        return None;
+    }
+    let locus = k.locus.as_ref()?;
+    let value = crate::read::parse::parse(text, encoding).ok()?;
+    let o = orbit::rules(&orbit::read(&value).ok()?, &Limits::default()).ok()?;
+    let q = Field::rationals();
+    let mut y = vec![];
+    for i in 0..3 {
+        let end = |j: usize| locus["sub_box"][i][j].as_str().and_then(|s| parse_rational(s, usize::MAX).ok());
+        let mid = (end(0)? + end(1)?) / parse_rational("2", 9).ok()?;
+        y.push(Num::rational(&q, mid));
+    }
+    let y = [y[0].clone(), y[1].clone(), y[2].clone()];
+    let code = k.code.as_deref()?;
+    Some(o.conditions(&y).is_err_and(|f| f.codes.contains(&code)))
+}
+
+/// Judges a text with the oracle and compares it with the kernel's verdict, checking an orbit
+/// rejection "at the centre" of a sub-box exactly.
+pub fn differential(
+    text: &str,
+    encoding: crate::read::Encoding,
+    k: &KernelView,
+) -> (Judgement, Result<Agreement, Finding>) {
+    let o = crate::judge(text, encoding);
+    let mut cmp = compare(k, &o);
+    if cmp.is_ok() && orbit_centre_confirmed(text, encoding, k) == Some(false) {
+        let detail = format!(
+            "the kernel says {} fails at the centre of its sub-box; exactly, it holds there",
+            k.code.as_deref().unwrap_or("")
+        );
+        cmp = Err(finding("kernel-centre-false", detail));
+    }
+    (o, cmp)
+}

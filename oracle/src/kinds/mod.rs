@@ -1,0 +1,8 @@
+//! The kinds of files and their rules, after the syntax and the header.
+
+pub mod cone;
+pub mod family;
+pub mod limits;
+pub mod numbers;
+pub mod orbit;
+pub mod refutation;

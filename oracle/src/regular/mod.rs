@@ -1,0 +1,7 @@
+//! Regular polygons and the rod (docs/model.md §2-§7): the model, the cone rules R1-R4, boxes.
+
+pub mod boxes;
+pub mod model;
+pub mod pcc;
+pub mod rod;
+pub mod rules;

@@ -1,0 +1,126 @@
+//! Shared helpers of the differential tests: the kernel's verdict as plain data, through its
+//! top-level text API only (`chatter_kernel::verify::{verify_text, verify_refutation_text,
+//! format_of, Verdict, MALACHITE, NUM}`), and for JSON and gzip'd files through the tool's
+//! `chatter::verify::verify_file`.
+#![allow(dead_code)]
+
+use chatter_kernel::verify::{MALACHITE, NUM, Verdict, format_of, verify_refutation_text, verify_text};
+use chatter_oracle::compare::{Agreement, Finding, KernelView, differential};
+use chatter_oracle::read::Encoding;
+use chatter_oracle::verdict::{Judgement, Report};
+use std::path::{Path, PathBuf};
+
+/// The repository root.
+pub fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("the oracle lives in the workspace").to_path_buf()
+}
+
+fn rejected(code: &str, locus: serde_json::Value, message: String) -> KernelView {
+    KernelView { code: Some(code.to_string()), locus: Some(locus), message, ..KernelView::default() }
+}
+
+/// The kernel (both backends) on RON text: a certificate, or a refutation when the text's
+/// `format` says so.
+pub fn kernel_ron(text: &str) -> KernelView {
+    if format_of(text).as_deref() == Some("chatter-refutation") {
+        return match verify_refutation_text(text, Default::default(), &[MALACHITE, NUM]) {
+            Verdict::Accepted(a) => KernelView {
+                accepted: true,
+                report: Report {
+                    claim: a.claim.name().to_string(),
+                    n: a.n,
+                    refutation: Some((a.points, a.last, a.v_positive)),
+                    ..Report::default()
+                },
+                ..KernelView::default()
+            },
+            Verdict::Rejected(r) => {
+                rejected(r.code.as_str(), serde_json::to_value(&r.locus).expect("json"), r.message)
+            }
+            Verdict::Disagree(d) => KernelView { disagree: Some(d), ..KernelView::default() },
+        };
+    }
+    match verify_text(text, Default::default(), &[MALACHITE, NUM]) {
+        Verdict::Accepted(a) => KernelView {
+            accepted: true,
+            report: Report {
+                claim: a.claim.name().to_string(),
+                n: a.n,
+                generators: a.orbit_boxes.is_none().then_some(a.generators),
+                redundant: a.orbit_boxes.is_none().then_some(a.redundant),
+                pieces: a.orbit_boxes.is_none().then_some(a.pieces),
+                max_denominator_bits: a.orbit_boxes.is_none().then_some(a.max_denominator_bits),
+                pcc: a.pcc,
+                contains_translation: a.orbit_boxes.is_none().then_some(a.contains_translation),
+                region: a.region,
+                refutation: None,
+            },
+            pcc_boxes: a.pcc_boxes,
+            orbit_boxes: a.orbit_boxes,
+            ..KernelView::default()
+        },
+        Verdict::Rejected(r) => {
+            rejected(r.code.as_str(), serde_json::to_value(&r.locus).expect("json"), r.message)
+        }
+        Verdict::Disagree(d) => KernelView { disagree: Some(d), ..KernelView::default() },
+    }
+}
+
+/// The kernel on a file through the tool's file reader (JSON, gzip, refutations).
+pub fn kernel_file(path: &Path) -> KernelView {
+    use chatter::verify::{Options, Status, verify_file};
+    let v = verify_file(path, &Options::new(vec![MALACHITE, NUM]));
+    if v.is_internal() {
+        return KernelView { disagree: v.reason, ..KernelView::default() };
+    }
+    match v.status {
+        Status::Ok => KernelView {
+            accepted: true,
+            report: Report {
+                claim: v.claim.unwrap_or_default().to_string(),
+                n: v.n.unwrap_or(0),
+                generators: v.generators,
+                redundant: v.redundant,
+                max_denominator_bits: v.max_denominator_bits,
+                contains_translation: v.contains_translation,
+                region: v.region,
+                refutation: v.refutation.map(|r| (r.points, r.last, r.v_positive)),
+                ..Report::default()
+            },
+            pcc_boxes: v.pcc_boxes,
+            orbit_boxes: v.orbit_boxes,
+            ..KernelView::default()
+        },
+        _ => rejected(
+            v.code.map(|c| c.as_str()).unwrap_or("error"),
+            serde_json::to_value(&v.locus).expect("json"),
+            v.reason.unwrap_or_default(),
+        ),
+    }
+}
+
+/// The text of a file, gunzipped when it is gzip'd (by the tool's reader).
+pub fn read_text(path: &Path) -> Option<String> {
+    match chatter::verify::read::read_input(path, 64 << 20) {
+        chatter::verify::read::Input::Text { text, .. } => Some(text),
+        _ => None,
+    }
+}
+
+/// Both verdicts on a file and their comparison.
+pub fn differential_file(path: &Path) -> (KernelView, Judgement, Result<Agreement, Finding>) {
+    let name = path.file_name().expect("a file").to_string_lossy().to_string();
+    let encoding = Encoding::of_name(&name);
+    let plain_ron = encoding == Encoding::Ron && !name.to_ascii_lowercase().ends_with(".gz");
+    let text = read_text(path).unwrap_or_default();
+    let kernel = if plain_ron { kernel_ron(&text) } else { kernel_file(path) };
+    let (oracle, cmp) = differential(&text, encoding, &kernel);
+    (kernel, oracle, cmp)
+}
+
+/// Both verdicts on RON text and their comparison.
+pub fn differential_ron(text: &str) -> (KernelView, Judgement, Result<Agreement, Finding>) {
+    let kernel = kernel_ron(text);
+    let (oracle, cmp) = differential(text, Encoding::Ron, &kernel);
+    (kernel, oracle, cmp)
+}
