@@ -51,7 +51,7 @@ fn random_certificate(rng: &mut Rng, n: usize, gamma: Q) -> Option<String> {
         .collect();
     let body = polygon_plate(&pts, gamma).ok()?;
     let cert = certify_convex(&ConvexRequest::new(body)).result.ok()?;
-    Some(ron::to_string(&cert).expect("RON").replace("\\'", "'"))
+    Some(chatter::write::write_convex(&cert))
 }
 
 fn strings_of(v: &Value) -> Vec<String> {

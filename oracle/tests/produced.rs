@@ -28,14 +28,6 @@ fn text_with_claim(ron_text: &str, field: &str, new: Option<&str>) -> String {
     format!("{}{new}{}", &ron_text[..at], &ron_text[end..])
 }
 
-/// A produced value as strict RON: serde's RON with the escaped apostrophes of free text undone
-/// (the strict syntax has no escapes, docs/certificate-format.md §2).
-fn to_ron<T: serde::Serialize>(x: &T) -> String {
-    let text = ron::to_string(x).expect("RON").replace("\\'", "'");
-    assert!(!text.contains('\\'), "an escape left in {text}");
-    text
-}
-
 struct Tally {
     counts: BTreeMap<String, usize>,
     failures: Vec<String>,
@@ -70,7 +62,7 @@ fn produced_certificates_and_refutations_get_the_same_verdicts() {
     for (n, k, g) in bodies {
         let report = certify(&Request::new(n, q(k), q(g)));
         let cert = report.result.unwrap_or_else(|e| panic!("certify n={n} kappa={k} gamma={g}: {e}"));
-        let text = to_ron(&cert);
+        let text = chatter::write::write(&cert);
         produced += 1;
         assert!(
             t.run(&format!("n={n} kappa={k} gamma={g}"), &text),
@@ -84,7 +76,7 @@ fn produced_certificates_and_refutations_get_the_same_verdicts() {
     let mut boxed = Request::new(4, q("1/10"), q("1/100"));
     boxed.upper = Some((q("3/25"), q("1/50")));
     let cert = certify(&boxed).result.expect("the documented box certifies");
-    let text = to_ron(&cert);
+    let text = chatter::write::write(&cert);
     produced += 1;
     assert!(t.run("box n=4", &text));
     for c in CLAIMS {
@@ -94,7 +86,7 @@ fn produced_certificates_and_refutations_get_the_same_verdicts() {
     let body = chatter::bodies::convex::rectangle_plate(&q("2"), &q("1"), q("1/50")).expect("a plate");
     let report =
         chatter::certify::convex::certify_convex(&chatter::certify::convex::ConvexRequest::new(body));
-    let text = to_ron(&report.result.expect("the plate certifies"));
+    let text = chatter::write::write_convex(&report.result.expect("the plate certifies"));
     produced += 1;
     assert!(t.run("rectangle 2x1", &text));
     for c in CLAIMS {
@@ -109,7 +101,7 @@ fn produced_certificates_and_refutations_get_the_same_verdicts() {
     ] {
         let r = chatter::refute::refute(n, &q(k), &q(g), claim(c), &cfg)
             .unwrap_or_else(|e| panic!("refute n={n}: {e}"));
-        let text = to_ron(&r);
+        let text = chatter::write::write_refutation(&r);
         produced += 1;
         assert!(t.run(&format!("refutation n={n}"), &text), "the tool's refutation is rejected\n{text}");
         for other in CLAIMS {
@@ -128,7 +120,7 @@ fn produced_certificates_and_refutations_get_the_same_verdicts() {
     use chatter_kernel::verify::{MALACHITE, NUM};
     let found =
         chatter::orbit::certify_orbit(&req, &[MALACHITE, NUM]).expect("the documented orbit certifies");
-    let text = to_ron(&found.certificate);
+    let text = chatter::write::write_orbit(&found.certificate);
     produced += 1;
     assert!(t.run("orbit n=3", &text));
     eprintln!("produced {produced} files; verdicts {:?}", t.counts);

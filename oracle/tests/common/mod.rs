@@ -1,10 +1,11 @@
 //! Shared helpers of the differential tests: the kernel's verdict as plain data, through its
 //! top-level text API only (`chatter_kernel::verify::{verify_text, verify_refutation_text,
-//! format_of, Verdict, MALACHITE, NUM}`), and for JSON and gzip'd files through the tool's
+//! Verdict, MALACHITE, NUM}`, with the tool's `chatter::verify::format_of`), and for JSON and gzip'd files through the tool's
 //! `chatter::verify::verify_file`.
 #![allow(dead_code)]
 
-use chatter_kernel::verify::{MALACHITE, NUM, Verdict, format_of, verify_refutation_text, verify_text};
+use chatter::verify::format::format_of;
+use chatter_kernel::verify::{MALACHITE, NUM, Verdict, verify_refutation_text, verify_text};
 use chatter_oracle::compare::{Agreement, Finding, KernelView, differential};
 use chatter_oracle::read::Encoding;
 use chatter_oracle::verdict::{Judgement, Report};
@@ -35,7 +36,7 @@ pub fn kernel_ron(text: &str) -> KernelView {
                 ..KernelView::default()
             },
             Verdict::Rejected(r) => {
-                rejected(r.code.as_str(), serde_json::to_value(&r.locus).expect("json"), r.message)
+                rejected(r.code.as_str(), serde_json::to_value(&r.locus).expect("json"), r.message())
             }
             Verdict::Disagree(d) => KernelView { disagree: Some(d), ..KernelView::default() },
         };
@@ -60,7 +61,7 @@ pub fn kernel_ron(text: &str) -> KernelView {
             ..KernelView::default()
         },
         Verdict::Rejected(r) => {
-            rejected(r.code.as_str(), serde_json::to_value(&r.locus).expect("json"), r.message)
+            rejected(r.code.as_str(), serde_json::to_value(&r.locus).expect("json"), r.message())
         }
         Verdict::Disagree(d) => KernelView { disagree: Some(d), ..KernelView::default() },
     }

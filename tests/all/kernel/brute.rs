@@ -4,7 +4,8 @@
 //! check.rs). The oracle derives its maps and cones from docs/model.md with its own code.
 
 use chatter::exact::Q;
-use chatter_kernel::certificate::{Certificate, Code, write};
+use chatter::write::write;
+use chatter_kernel::certificate::{Certificate, Code};
 use chatter_oracle::arith::Num;
 use chatter_oracle::arith::text::element_text;
 use chatter_oracle::kinds::cone::{Parts, prepare, read};
