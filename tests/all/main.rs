@@ -19,6 +19,7 @@ mod json;
 mod kernel;
 mod messages;
 mod model;
+mod modules;
 mod oracle_convex;
 mod orbit;
 mod orbit_band;
