@@ -1224,7 +1224,7 @@ pub mod mutation {
                 6 => Mutation::Duplicate { generator: r.byte(), at: r.byte() },
                 7 => Mutation::Swap { a: r.byte(), b: r.byte() },
                 8 => {
-                    if r.byte() % 2 == 0 {
+                    if r.byte().is_multiple_of(2) {
                         Mutation::Reverse
                     } else {
                         Mutation::Rotate { by: r.byte() }
@@ -1238,7 +1238,7 @@ pub mod mutation {
                 },
                 11 => Mutation::AddBetween { a: r.byte(), b: r.byte(), t: r.byte() % 17 },
                 12 => {
-                    if r.byte() % 2 == 0 {
+                    if r.byte().is_multiple_of(2) {
                         Mutation::UpgradeClaim
                     } else {
                         Mutation::SetClaim { claim: r.byte() }

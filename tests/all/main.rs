@@ -36,5 +36,6 @@ mod simulate;
 mod spectral;
 mod sweep;
 mod symbolic;
+mod toolchain;
 mod transport;
 mod verify;
