@@ -10,7 +10,8 @@
 //! - [`prove`]: drops decided with proofs (exact runs entering kernel-checked certified sets);
 //! - `plot`, `reproduce` (feature `cli`): the figures, and the paper's results regenerated with a report;
 //! - [`certify`], [`verify`], `cli` (feature `cli`): the pipeline and the command line;
-//! - [`report`]: the typed, versioned reports every `--json` output prints (docs/json.md).
+//! - [`report`]: the typed, versioned reports every `--json` output prints (docs/json.md), on
+//!   the shared vocabulary of [`json`].
 
 pub mod bodies;
 pub mod certify;
@@ -21,6 +22,7 @@ pub mod cover;
 pub mod exact;
 pub mod exactify;
 pub mod finder;
+pub mod json;
 pub mod model;
 pub mod orbit;
 #[cfg(feature = "cli")]

@@ -6,7 +6,6 @@ pub mod affine;
 pub mod float;
 
 use crate::exact::{OrderedField, Q};
-use crate::exactify::Exact;
 use chatter_kernel::model::Polygon as Body;
 use chatter_kernel::model::linalg::{Mat3, Vec3, neg, sub};
 use nalgebra::{Matrix3, Vector3};
@@ -34,13 +33,13 @@ pub fn square_paper_to_contact<F: OrderedField>() -> Mat3<F> {
 }
 
 /// `f64` copy of an exact matrix.
-pub fn mat_f64<E: Exact>(m: &Mat3<E>) -> Matrix3<f64> {
-    Matrix3::from_fn(|r, c| E::approx(&m[r][c]))
+pub fn mat_f64<E: OrderedField>(m: &Mat3<E>) -> Matrix3<f64> {
+    Matrix3::from_fn(|r, c| m[r][c].nearest_f64())
 }
 
 /// `f64` copy of an exact vector.
-pub fn vec_f64<E: Exact>(v: &Vec3<E>) -> Vector3<f64> {
-    Vector3::new(E::approx(&v[0]), E::approx(&v[1]), E::approx(&v[2]))
+pub fn vec_f64<E: OrderedField>(v: &Vec3<E>) -> Vector3<f64> {
+    Vector3::new(v[0].nearest_f64(), v[1].nearest_f64(), v[2].nearest_f64())
 }
 
 /// The maps and cones of a body in `f64`, for the untrusted search.
@@ -58,7 +57,7 @@ pub struct FloatBody {
 }
 
 impl FloatBody {
-    pub fn new<E: Exact>(b: &Body<E>) -> Self {
+    pub fn new<E: OrderedField>(b: &Body<E>) -> Self {
         let js = 1..b.n() as i64;
         FloatBody {
             n: b.n(),
@@ -87,7 +86,7 @@ impl FloatBody {
     /// The maps of several bodies with the same n (the corners of a box of parameters) as one:
     /// a cone is invariant under all of them iff it is for every point of the box
     /// (docs/kernel-soundness.md §2, "Boxes"). Steps are listed corner by corner.
-    pub fn corners<E: Exact>(bodies: &[Body<E>]) -> Self {
+    pub fn corners<E: OrderedField>(bodies: &[Body<E>]) -> Self {
         let mut all = FloatBody::new(&bodies[0]);
         for b in &bodies[1..] {
             let f = FloatBody::new(b);

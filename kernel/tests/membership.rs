@@ -2,6 +2,7 @@
 //! accepted cone certificate and in the set X of an accepted orbit certificate, against
 //! brute-force facts: the generators and the images I_0(D) lie in K, points beyond an edge do
 //! not, x* lies in X and points beyond δ along an axis do not; rejected certificates give no set.
+#![cfg(all(feature = "orbit", feature = "field"))]
 
 use chatter_kernel::certificate::{Encoding, read, read_orbit};
 use chatter_kernel::exact::{Algebraic, OrderedField, Ring, parse_canonical};

@@ -520,10 +520,10 @@ fn strongest_rational(req: &Request, shapes: &[Shape<Q>], notes: &mut Vec<String
 
 /// The exact models at the corners of the request (one for a point).
 fn shapes(req: &Request) -> Result<Vec<Shape<Q>>, Failure> {
-    if let Some((k1, g1)) = &req.upper {
-        if *k1 < req.kappa || *g1 < req.gamma {
-            return Err(Failure::Body("an interval is empty (its upper end is below its lower end)".into()));
-        }
+    if let Some((k1, g1)) = &req.upper
+        && (*k1 < req.kappa || *g1 < req.gamma)
+    {
+        return Err(Failure::Body("an interval is empty (its upper end is below its lower end)".into()));
     }
     req.corners()
         .into_iter()
@@ -566,10 +566,8 @@ fn try_claims<C>(
     for claim in claims {
         let a = attempt(claim, &mut timings);
         let stop = a.result.is_ok() || matches!(a.result, Err(Failure::Internal(_)));
-        if !stop {
-            if let (Err(e), ClaimChoice::Strongest) = (&a.result, choice) {
-                notes.push(format!("{} not certified: {e}", claim.name()));
-            }
+        if !stop && let (Err(e), ClaimChoice::Strongest) = (&a.result, choice) {
+            notes.push(format!("{} not certified: {e}", claim.name()));
         }
         last = Some(a);
         if stop {

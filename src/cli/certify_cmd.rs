@@ -219,10 +219,10 @@ pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
         Err(e) => return Outcome::Usage(e),
     };
     let report = certify(&v.req);
-    if let (Ok(cert), Some(path)) = (&report.result, &v.output) {
-        if let Err(e) = std::fs::write(path, write(cert)) {
-            return Outcome::Usage(format!("cannot write {}: {e}", path.display()));
-        }
+    if let (Ok(cert), Some(path)) = (&report.result, &v.output)
+        && let Err(e) = std::fs::write(path, write(cert))
+    {
+        return Outcome::Usage(format!("cannot write {}: {e}", path.display()));
     }
     if v.json {
         let output = v.output.as_ref().map(|p| p.display().to_string());

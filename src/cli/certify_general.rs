@@ -78,10 +78,10 @@ pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
         Err(e) => return Outcome::Usage(e),
     };
     let report = certify_convex(&v.req);
-    if let (Ok(cert), Some(path)) = (&report.result, &v.output) {
-        if let Err(e) = std::fs::write(path, write_convex(cert)) {
-            return Outcome::Usage(format!("cannot write {}: {e}", path.display()));
-        }
+    if let (Ok(cert), Some(path)) = (&report.result, &v.output)
+        && let Err(e) = std::fs::write(path, write_convex(cert))
+    {
+        return Outcome::Usage(format!("cannot write {}: {e}", path.display()));
     }
     if v.json {
         let output = v.output.as_ref().map(|p| p.display().to_string());

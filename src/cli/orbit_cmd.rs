@@ -109,10 +109,10 @@ pub fn run(a: OrbitArgs, env: &Env) -> Outcome {
     let start = Instant::now();
     let result = certify_orbit(&req, &env.backends);
     let elapsed = start.elapsed();
-    if let (Ok(found), Some(path)) = (&result, &a.output) {
-        if let Err(e) = std::fs::write(path, write_orbit(&found.certificate)) {
-            return Outcome::Usage(format!("cannot write {}: {e}", path.display()));
-        }
+    if let (Ok(found), Some(path)) = (&result, &a.output)
+        && let Err(e) = std::fs::write(path, write_orbit(&found.certificate))
+    {
+        return Outcome::Usage(format!("cannot write {}: {e}", path.display()));
     }
     match &result {
         Err(Failure::Body(s)) => return Outcome::Usage(s.clone()),

@@ -101,10 +101,10 @@ fn checked(a: &RefuteArgs, r: Refutation, env: &Env, start: Instant, [kq, gq]: [
         }
         Verdict::Disagree(s) => return Outcome::Internal(format!("the backends disagree: {s}")),
     };
-    if let Some(path) = &a.output {
-        if let Err(e) = std::fs::write(path, write(&r)) {
-            return Outcome::Usage(format!("cannot write {}: {e}", path.display()));
-        }
+    if let Some(path) = &a.output
+        && let Err(e) = std::fs::write(path, write(&r))
+    {
+        return Outcome::Usage(format!("cannot write {}: {e}", path.display()));
     }
     let chatter_kernel::certificate::Body::RegularPolygon { n, kappa, gamma } = &r.body;
     let (k, g) = (kappa.texts()[0].to_string(), gamma.texts()[0].to_string());

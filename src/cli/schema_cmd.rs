@@ -23,10 +23,10 @@ pub struct SchemaArgs {
 }
 
 pub fn run(a: SchemaArgs) -> Outcome {
-    if !a.check {
-        if let Err(e) = std::fs::create_dir_all(&a.out) {
-            return Outcome::Usage(format!("cannot create {}: {e}", a.out.display()));
-        }
+    if !a.check
+        && let Err(e) = std::fs::create_dir_all(&a.out)
+    {
+        return Outcome::Usage(format!("cannot create {}: {e}", a.out.display()));
     }
     let mut stale = 0;
     for (name, schema) in schemas() {

@@ -371,10 +371,10 @@ fn write_file(path: &PathBuf, text: &str) -> Result<(), String> {
 fn run_single(v: &Validated) -> cli::Outcome {
     let (mut report, run) =
         report::single(&v.model, &v.initial, v.arithmetic, &v.opts, v.sets.clone(), v.make_orbits);
-    if let Some(path) = &v.trajectory {
-        if let Err(e) = write_file(path, &record::csv(&run, v.model.shape())) {
-            return cli::Outcome::Usage(e.to_string());
-        }
+    if let Some(path) = &v.trajectory
+        && let Err(e) = write_file(path, &record::csv(&run, v.model.shape()))
+    {
+        return cli::Outcome::Usage(e.to_string());
     }
     if let Some(path) = &v.plot {
         let title = format!(

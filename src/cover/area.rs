@@ -58,6 +58,6 @@ pub fn cc_area(n: u64, kappa: &[Q; 2], gamma: &[Q; 2], intervals: usize) -> (f64
         h / 3.0 * (pts[0] + pts[k] + inner)
     };
     let fine = simpson(1);
-    let coarse = if m >= 4 && (m / 2) % 2 == 0 { simpson(2) } else { fine };
+    let coarse = if m >= 4 && (m / 2).is_multiple_of(2) { simpson(2) } else { fine };
     (fine, (fine - coarse).abs())
 }

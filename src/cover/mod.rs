@@ -233,10 +233,10 @@ fn decide(req: &CoverRequest, c: &Cell, t: &Timings) -> Outcome {
         let mut r = Request::boxed(req.n, c.kappa.clone(), c.gamma.clone()).survey();
         r.claim = ClaimChoice::StrongestAboutDrops;
         let r = Timings::add(&t.certify, || certify(&r));
-        if let Ok(cert) = r.result {
-            if cert.claim > Claim::EffectivelyInvariant {
-                return leaf(Status::Certified { claim: cert.claim, certificate: cert });
-            }
+        if let Ok(cert) = r.result
+            && cert.claim > Claim::EffectivelyInvariant
+        {
+            return leaf(Status::Certified { claim: cert.claim, certificate: cert });
         }
     }
     // Split: gamma first when the bottom touches gamma = 0 (no claim about drops holds there).

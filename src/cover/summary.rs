@@ -52,7 +52,7 @@ pub struct CoverSummary {
     pub findings: Findings,
 }
 
-impl crate::report::Report for CoverSummary {
+impl crate::json::Report for CoverSummary {
     const SCHEMA: &'static str = "chatter.cover/1";
 }
 
@@ -63,7 +63,7 @@ impl CoverSummary {
         let count = |s: &str| leaves.iter().filter(|l| l.status.name() == s).count();
         let certified_area = f(&t.certified_area);
         CoverSummary {
-            schema: <Self as crate::report::Report>::SCHEMA,
+            schema: <Self as crate::json::Report>::SCHEMA,
             n: req.n,
             kappa: [req.kappa[0].to_string(), req.kappa[1].to_string()],
             gamma: [req.gamma[0].to_string(), req.gamma[1].to_string()],

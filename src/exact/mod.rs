@@ -21,6 +21,12 @@ pub trait QField: chatter_kernel::exact::OrderedField {
     fn from_q(q: &Q) -> Self;
     /// Rational bounds lo <= self <= hi with hi - lo <= width (lo = hi = self for a rational).
     fn enclose(&self, width: &Q) -> (Q, Q);
+    /// The nearest float (for the untrusted float search): the midpoint of an enclosure of
+    /// width 2^-60, rounded.
+    fn nearest_f64(&self) -> f64 {
+        let (lo, hi) = self.enclose(&Q::new(1, 1 << 60));
+        ((lo + hi) / Q::int(2)).to_f64()
+    }
 }
 
 /// The exact ordered fields the tool computes in: the kernel's [`chatter_kernel::exact::OrderedField`]

@@ -166,6 +166,9 @@ impl QField for Q {
     fn enclose(&self, _width: &Q) -> (Q, Q) {
         (self.clone(), self.clone())
     }
+    fn nearest_f64(&self) -> f64 {
+        super::QExt::to_f64(self)
+    }
 }
 
 impl Field for Q {

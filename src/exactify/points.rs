@@ -96,8 +96,7 @@ pub type Nf = Algebraic<Q>;
 
 /// The nearest float of a field element (within 2^-60 before rounding).
 pub fn nf_f64(x: &Nf) -> f64 {
-    let (lo, hi) = x.enclose(&Q::new(1, 1 << 60));
-    ((lo + hi) / Q::int(2)).to_f64()
+    x.nearest_f64()
 }
 
 impl Exact for Nf {

@@ -137,10 +137,11 @@ pub fn rod(ctx: &Context, r: &mut Report) -> Result<(), String> {
     let kappas = [q(1, 10), q(1, 3), q(1, 2), q(9, 10)];
     for k in &kappas {
         let prof = rod_cc_profile(k);
-        if let (Some(mut g), Some(t)) = (goyal_threshold(k), prof.thresholds.first()) {
-            if prof.thresholds.len() == 1 && g.compare(&mut t.gamma.clone()) == std::cmp::Ordering::Equal {
-                same += 1;
-            }
+        if let (Some(mut g), Some(t)) = (goyal_threshold(k), prof.thresholds.first())
+            && prof.thresholds.len() == 1
+            && g.compare(&mut t.gamma.clone()) == std::cmp::Ordering::Equal
+        {
+            same += 1;
         }
     }
     let cert = certified(ctx, "rod-kappa1_3-gamma1_20", 2, third, q(1, 20))?;

@@ -49,7 +49,7 @@ pub fn cos_minimal_polynomial(n: usize) -> Poly<Q> {
         _ => {}
     }
     let mut p = chebyshev_t(n).sub(&Poly::constant(Q::int(1))).square_free();
-    for d in (1..n).filter(|d| n % d == 0) {
+    for d in (1..n).filter(|d| n.is_multiple_of(*d)) {
         p = p.div_exact(&cos_minimal_polynomial(d));
     }
     p.monic()

@@ -156,37 +156,80 @@ impl Shard {
     }
 
     /// K and N from a SLURM job array, counting as SLURM does: task IDs run from
-    /// SLURM_ARRAY_TASK_MIN in steps of SLURM_ARRAY_TASK_STEP, SLURM_ARRAY_TASK_COUNT of them
-    /// (`--array=0-9`, `--array=1-10` and `--array=0-18:2` all give shards 0..9 of 10).
+    /// SLURM_ARRAY_TASK_MIN to SLURM_ARRAY_TASK_MAX in steps of SLURM_ARRAY_TASK_STEP,
+    /// SLURM_ARRAY_TASK_COUNT of them (`--array=0-9`, `--array=1-10` and `--array=0-18:2` all give
+    /// shards 0..9 of 10; a `%` limit changes none of these variables).
+    ///
+    /// The variables must describe such a range, and the task ID must be on it: otherwise every
+    /// task of the array is refused with a message naming the variables and their values. A list
+    /// with gaps such as `--array=1,5,9` is the common case: SLURM reports MIN=1, MAX=9, STEP=1 and
+    /// COUNT=3, and 9 IDs from 1 to 9 are not 3 tasks. SLURM always sets all five variables; for a
+    /// hand-made environment MIN defaults to 0, STEP to 1 and MAX to MIN + (COUNT - 1) STEP.
     pub fn from_slurm(var: impl Fn(&str) -> Option<String>) -> Result<Shard, String> {
-        let get = |name: &str, default: Option<u64>| -> Result<u64, String> {
-            match var(name) {
-                Some(v) => {
-                    v.trim().parse().map_err(|_| format!("{name}={v:?} is not a non-negative integer"))
-                }
-                None => default.ok_or_else(|| {
-                    format!(
-                        "--shard auto needs a SLURM job array ({name} is not set; submit with sbatch --array)"
-                    )
-                }),
-            }
+        let get = |name: &str| -> Result<Option<u64>, String> {
+            var(name)
+                .map(|v| v.trim().parse().map_err(|_| format!("{name}={v:?} is not a non-negative integer")))
+                .transpose()
         };
-        let id = get("SLURM_ARRAY_TASK_ID", None)?;
-        let count = get("SLURM_ARRAY_TASK_COUNT", None)?;
-        let min = get("SLURM_ARRAY_TASK_MIN", Some(0))?;
-        let step = get("SLURM_ARRAY_TASK_STEP", Some(1))?.max(1);
-        if id < min || (id - min) % step != 0 {
+        let required = |name: &str| -> Result<u64, String> {
+            get(name)?.ok_or_else(|| {
+                format!(
+                    "--shard auto needs a SLURM job array ({name} is not set; submit with sbatch --array)"
+                )
+            })
+        };
+        let id = required("SLURM_ARRAY_TASK_ID")?;
+        let count = required("SLURM_ARRAY_TASK_COUNT")?;
+        let min = get("SLURM_ARRAY_TASK_MIN")?.unwrap_or(0);
+        let step = get("SLURM_ARRAY_TASK_STEP")?.unwrap_or(1);
+        let use_range = "submit a range (--array=0-31, --array=1-32 or --array=0-62:2, with any % limit) or use --shard K/N";
+        if count == 0 || count > u32::MAX as u64 {
             return Err(format!(
-                "SLURM_ARRAY_TASK_ID={id} is not in the array {min}, {min}+{step}, ... (an array with gaps such as --array=1,5,9 cannot be split evenly: use a range)"
+                "SLURM_ARRAY_TASK_COUNT={count} is not a number of tasks (1 to {})",
+                u32::MAX
             ));
         }
-        let k = (id - min) / step;
-        if count == 0 || k >= count || count > u32::MAX as u64 {
+        if step == 0 {
             return Err(format!(
-                "SLURM_ARRAY_TASK_ID={id} is task {k} of SLURM_ARRAY_TASK_COUNT={count}: out of range"
+                "SLURM_ARRAY_TASK_STEP={step}: the task IDs of an array are at least 1 apart"
             ));
         }
-        Ok(Shard { index: k as u32, count: count as u32 })
+        let max = match get("SLURM_ARRAY_TASK_MAX")? {
+            Some(max) => max,
+            None => (count - 1).checked_mul(step).and_then(|d| d.checked_add(min)).ok_or_else(|| {
+                format!("SLURM_ARRAY_TASK_MIN={min} + (SLURM_ARRAY_TASK_COUNT={count} - 1) x SLURM_ARRAY_TASK_STEP={step} overflows")
+            })?,
+        };
+        // The array itself: MIN, MIN + STEP, ..., MAX must be COUNT IDs.
+        if min > max {
+            return Err(format!(
+                "SLURM_ARRAY_TASK_MIN={min} is above SLURM_ARRAY_TASK_MAX={max}: not a job array; {use_range}"
+            ));
+        }
+        if (max - min) % step != 0 {
+            return Err(format!(
+                "SLURM_ARRAY_TASK_STEP={step} does not divide SLURM_ARRAY_TASK_MAX - SLURM_ARRAY_TASK_MIN = {max} - {min}: the task IDs do not form a range; {use_range}"
+            ));
+        }
+        let ids = (max - min) / step + 1;
+        if ids != count {
+            return Err(format!(
+                "SLURM_ARRAY_TASK_COUNT={count} but SLURM_ARRAY_TASK_MIN={min} to SLURM_ARRAY_TASK_MAX={max} in steps of SLURM_ARRAY_TASK_STEP={step} are {ids} IDs: the array has gaps (a list such as --array=1,5,9), so its tasks are not shards 0..{} of {count}; {use_range}",
+                count - 1
+            ));
+        }
+        // This task in it.
+        if id < min || id > max {
+            return Err(format!(
+                "SLURM_ARRAY_TASK_ID={id} is outside SLURM_ARRAY_TASK_MIN={min}..SLURM_ARRAY_TASK_MAX={max}"
+            ));
+        }
+        if (id - min) % step != 0 {
+            return Err(format!(
+                "SLURM_ARRAY_TASK_ID={id} is not SLURM_ARRAY_TASK_MIN={min} plus a multiple of SLURM_ARRAY_TASK_STEP={step}"
+            ));
+        }
+        Ok(Shard { index: ((id - min) / step) as u32, count: count as u32 })
     }
 
     /// The indices of this shard's points, in order.

@@ -245,7 +245,7 @@ impl Summary {
             })
             .collect();
         Summary {
-            schema: <Summary as crate::report::Report>::SCHEMA,
+            schema: <Summary as crate::json::Report>::SCHEMA,
             grid: grid.clone(),
             computed: computed.clone(),
             points: rows.len(),
@@ -261,6 +261,6 @@ impl Summary {
     }
 }
 
-impl crate::report::Report for Summary {
+impl crate::json::Report for Summary {
     const SCHEMA: &'static str = "chatter.map/1";
 }

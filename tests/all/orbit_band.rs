@@ -47,7 +47,10 @@ fn certified(kappa: &Q, gamma: &Q) -> bool {
             }
             // Its pattern is a phase of (2, 2, 1, 1), possibly repeated.
             let p: Vec<u64> = cert.pattern.clone();
-            assert!(p.len() % 4 == 0 && p.iter().filter(|&&j| j == 1).count() * 2 == p.len(), "{p:?}");
+            assert!(
+                p.len().is_multiple_of(4) && p.iter().filter(|&&j| j == 1).count() * 2 == p.len(),
+                "{p:?}"
+            );
             true
         }
         Err(_) => false,

@@ -2,8 +2,7 @@
 //! the main job really reproduces the paper's results with a report (run here through the built
 //! binary).
 
-use crate::common::{bin, root};
-use std::process::Command;
+use crate::common::{REPRODUCE_QUICK, reproduce_quick, root};
 
 fn first_block() -> Vec<String> {
     let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
@@ -17,7 +16,10 @@ fn readme_begins_with_the_main_job_and_the_test_command() {
     let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
     let block = first_block();
     assert_eq!(block.len(), 2, "exactly two commands: {block:?}");
-    assert!(readme.find("```sh").unwrap() < 40, "the commands come first");
+    // What the tool proves comes first, in a few lines, then the commands.
+    let before = &readme[..readme.find("```sh").unwrap()];
+    assert!(before.lines().count() <= 8, "the commands come within the first lines");
+    assert!(before.contains("proves") && before.contains("complete chatter"), "{before}");
     // CI runs the README's test command verbatim.
     let ci = std::fs::read_to_string(root().join(".ci/run")).unwrap();
     assert!(ci.lines().any(|l| l.trim() == block[1]), ".ci/run must run `{}`", block[1]);
@@ -25,20 +27,138 @@ fn readme_begins_with_the_main_job_and_the_test_command() {
 
 #[test]
 fn the_main_job_of_the_readme_works() {
-    let dir = tempfile::tempdir().unwrap();
     let block = first_block();
     let mut ran = 0;
     for step in block[0].split("&&") {
         let (_, args) = step.split_once("cargo run --release --").expect("each step runs chatter");
         let args: Vec<&str> = args.split_whitespace().collect();
-        let out = Command::new(bin()).args(&args).current_dir(dir.path()).output().unwrap();
-        let stdout = String::from_utf8_lossy(&out.stdout);
-        assert!(out.status.success(), "`chatter {}` failed: {stdout}", args.join(" "));
+        // The shared run of the tests (one per test process) is exactly this command, in an
+        // empty directory.
+        assert_eq!(args, REPRODUCE_QUICK, "README's main job is the command the tests run");
+        let run = reproduce_quick();
+        let stdout = String::from_utf8_lossy(&run.output.stdout);
+        assert!(run.output.status.success(), "`chatter {}` failed: {stdout}", args.join(" "));
         assert!(stdout.contains(" agree, ") && stdout.contains("report.html"), "{stdout}");
         ran += 1;
     }
     assert_eq!(ran, 1);
-    let report = std::fs::read_to_string(dir.path().join("out/report.md")).unwrap();
+    let out = reproduce_quick().dir.join("out");
+    let report = std::fs::read_to_string(out.join("report.md")).unwrap();
     assert!(report.contains("**agrees**") && report.contains("**differs**"));
-    assert!(dir.path().join("out/report.html").exists());
+    assert!(out.join("report.html").exists());
+}
+
+/// The relative links of a Markdown text: (target file, anchor).
+fn links(text: &str) -> Vec<(String, Option<String>)> {
+    let mut out = Vec::new();
+    for (i, _) in text.match_indices("](") {
+        let rest = &text[i + 2..];
+        let Some(end) = rest.find(')') else { continue };
+        let target = &rest[..end];
+        if target.contains("://") || target.starts_with("mailto:") || target.contains(char::is_whitespace) {
+            continue;
+        }
+        let (file, anchor) = match target.split_once('#') {
+            Some((f, a)) => (f.to_string(), Some(a.to_string())),
+            None => (target.to_string(), None),
+        };
+        out.push((file, anchor));
+    }
+    out
+}
+
+/// GitHub's anchor of a heading: lower case, spaces to `-`, other punctuation dropped.
+fn slug(heading: &str) -> String {
+    heading
+        .trim()
+        .to_lowercase()
+        .chars()
+        .filter_map(|c| match c {
+            ' ' => Some('-'),
+            c if c.is_alphanumeric() || c == '-' || c == '_' => Some(c),
+            _ => None,
+        })
+        .collect()
+}
+
+#[test]
+fn every_link_of_the_readme_and_the_docs_resolves() {
+    let mut pages = vec![root().join("README.md")];
+    for e in std::fs::read_dir(root().join("docs")).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_some_and(|x| x == "md") {
+            pages.push(p);
+        }
+    }
+    let mut checked = 0;
+    for page in &pages {
+        let text = std::fs::read_to_string(page).unwrap();
+        for (file, anchor) in links(&text) {
+            let target = if file.is_empty() { page.clone() } else { page.parent().unwrap().join(&file) };
+            assert!(
+                target.exists(),
+                "{}: link to {file} ({}) does not exist",
+                page.display(),
+                target.display()
+            );
+            if let Some(anchor) = anchor.filter(|_| target.extension().is_some_and(|x| x == "md")) {
+                let md = std::fs::read_to_string(&target).unwrap();
+                let found = md
+                    .lines()
+                    .filter_map(|l| l.strip_prefix('#'))
+                    .any(|h| slug(h.trim_start_matches('#')) == anchor);
+                assert!(found, "{}: no heading #{anchor} in {file}", page.display());
+            }
+            checked += 1;
+        }
+    }
+    assert!(checked >= 40, "{checked} links");
+    assert_eq!(
+        slug("7.4 Conjecture 2 and the square plate: no PCC orbit, and why"),
+        "74-conjecture-2-and-the-square-plate-no-pcc-orbit-and-why"
+    );
+}
+
+#[test]
+fn the_readme_shows_a_map_with_its_certificates_made_by_the_tool() {
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let first_screen: String = readme.lines().take(40).collect::<Vec<_>>().join("\n");
+    let start = first_screen.find("![").expect("a figure on the first screen");
+    let (file, _) = links(&first_screen[start..]).into_iter().next().unwrap();
+    let png = std::fs::read(root().join(&file)).unwrap();
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n", "{file} is a PNG");
+    let width = u32::from_be_bytes(png[16..20].try_into().unwrap());
+    let height = u32::from_be_bytes(png[20..24].try_into().unwrap());
+    assert!(width >= 1000 && height >= 600, "{file}: {width} x {height}");
+    // The command that made it, with certificates.
+    assert!(
+        first_screen.contains("--certify") && first_screen.contains("chatter plot map"),
+        "{first_screen}"
+    );
+    for link in ["docs/commands.md", "docs/findings.md", "docs/measurements.md"] {
+        assert!(first_screen.contains(&format!("]({link})")), "the first screen links {link}");
+    }
+}
+
+/// `#[test]` attributes (proptest's included) in the Rust sources of both crates.
+fn test_functions(dir: &std::path::Path) -> usize {
+    let mut n = 0;
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.is_dir() {
+            n += test_functions(&p);
+        } else if p.extension().is_some_and(|x| x == "rs") {
+            n += std::fs::read_to_string(&p).unwrap().lines().filter(|l| l.trim() == "#[test]").count();
+        }
+    }
+    n
+}
+
+#[test]
+fn the_readme_counts_the_tests() {
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let actual: usize =
+        ["src", "tests", "kernel/src", "kernel/tests"].iter().map(|d| test_functions(&root().join(d))).sum();
+    let said = readme.split("#[test]` functions").next().unwrap().rsplit(['(', ' ']).nth(1).unwrap();
+    assert_eq!(said.parse::<usize>().ok(), Some(actual), "README says {said} `#[test]` functions");
 }

@@ -104,11 +104,12 @@ fn hostile_edits_are_rejected_at_the_step() {
         for other in (1..4).filter(|o| *o != j) {
             let mut r = base.clone();
             r.points[i] = Step::Image { step: other, of };
-            if let Verdict::Rejected(x) = verdict(&r) {
-                if x.message().contains("is not in C_") && at(&x) == i {
-                    outside = Some(x);
-                    break 'search;
-                }
+            if let Verdict::Rejected(x) = verdict(&r)
+                && x.message().contains("is not in C_")
+                && at(&x) == i
+            {
+                outside = Some(x);
+                break 'search;
             }
         }
     }

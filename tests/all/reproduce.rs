@@ -1,7 +1,7 @@
 //! `chatter reproduce --quick`: the report is written, cites commands that really show its
 //! evidence, and renders in a real headless browser (Debian's chromium; CI installs it).
 
-use crate::common::bin;
+use crate::common::{bin, copy_dir, reproduce_quick};
 use std::path::Path;
 use std::process::{Command, Output};
 
@@ -41,10 +41,10 @@ fn browser(profile: &Path, args: &[&str]) -> Output {
 
 #[test]
 fn reproduce_quick_writes_a_report_that_a_browser_renders() {
-    let d = tempfile::tempdir().unwrap();
-    let o = chatter(&["reproduce", "--quick", "--out", "out"], d.path());
+    let run = reproduce_quick();
+    let o = &run.output;
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
-    let out = d.path().join("out");
+    let out = run.dir.join("out");
     let md = std::fs::read_to_string(out.join("report.md")).unwrap();
     for s in [
         "flat triangle plate",
@@ -84,6 +84,7 @@ fn reproduce_quick_writes_a_report_that_a_browser_renders() {
         return;
     };
     let profile = tempfile::tempdir().unwrap();
+    let d = tempfile::tempdir().unwrap();
     let url = format!("file://{}", out.join("report.html").display());
     let dom = browser(profile.path(), &["--dump-dom", &url]);
     let dom = String::from_utf8_lossy(&dom.stdout);
@@ -106,9 +107,11 @@ fn reproduce_quick_writes_a_report_that_a_browser_renders() {
 
 #[test]
 fn every_cited_command_runs_from_the_folder_the_report_names() {
+    let run = reproduce_quick();
+    assert_eq!(run.output.status.code(), Some(0));
+    // The commands write files into the folder: they run in a copy of it.
     let d = tempfile::tempdir().unwrap();
-    let o = chatter(&["reproduce", "--quick", "--out", "out"], d.path());
-    assert_eq!(o.status.code(), Some(0));
+    copy_dir(&run.dir.join("out"), &d.path().join("out"));
     let md = std::fs::read_to_string(d.path().join("out/report.md")).unwrap();
     // The report names the folder its commands run from: its own.
     let named = "Every “Shown by” command runs as written from this report's folder, `out` (`cd out` first)";

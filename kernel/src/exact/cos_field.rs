@@ -52,7 +52,7 @@ pub fn cos_minimal_polynomial<F: Field>(n: u64) -> Vec<F> {
     }
     let p = sub(&t1, &[one]);
     let mut psi = quotient(&p, &gcd(&p, &derivative(&p)));
-    for d in (1..n).filter(|d| n % d == 0) {
+    for d in (1..n).filter(|d| n.is_multiple_of(*d)) {
         psi = quotient(&psi, &cos_minimal_polynomial::<F>(d));
     }
     monic(&psi)

@@ -148,10 +148,10 @@ pub fn agree<T: PartialEq + std::fmt::Debug>(
     let mut first: Option<(&str, Result<T, Rejection>)> = None;
     let mut differ = None;
     for (name, r) in runs {
-        if let Err(e) = &r {
-            if e.code == Code::TimeLimit {
-                return Verdict::Rejected(e.clone());
-            }
+        if let Err(e) = &r
+            && e.code == Code::TimeLimit
+        {
+            return Verdict::Rejected(e.clone());
         }
         match &first {
             None => first = Some((name, r)),

@@ -323,3 +323,32 @@ fn help_documents_the_flags_and_the_axes() {
         assert!(out.contains(s), "map --help lacks {s}");
     }
 }
+
+#[test]
+fn shard_auto_refuses_every_task_of_an_array_with_gaps() {
+    // --array=1,5,9 as SLURM reports it in each task: no task runs, each says why and writes
+    // nothing (the real SLURM run of .ci/slurm/test.sh checks the same in the tasks' logs).
+    let d = tempfile::tempdir().unwrap();
+    for id in ["1", "5", "9"] {
+        let args: Vec<&str> = GRID.iter().copied().chain(["--shard", "auto", "--out", id]).collect();
+        let o = Command::new(bin())
+            .args(&args)
+            .current_dir(d.path())
+            .env("SLURM_ARRAY_TASK_ID", id)
+            .env("SLURM_ARRAY_TASK_MIN", "1")
+            .env("SLURM_ARRAY_TASK_MAX", "9")
+            .env("SLURM_ARRAY_TASK_STEP", "1")
+            .env("SLURM_ARRAY_TASK_COUNT", "3")
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(2), "task {id}: {}", stderr(&o));
+        let e = stderr(&o);
+        assert!(
+            e.contains(
+                "--shard auto: SLURM_ARRAY_TASK_COUNT=3 but SLURM_ARRAY_TASK_MIN=1 to SLURM_ARRAY_TASK_MAX=9"
+            ),
+            "task {id}: {e}"
+        );
+        assert!(!d.path().join(id).exists(), "task {id} wrote its folder");
+    }
+}

@@ -97,3 +97,114 @@ fn shard_auto_counts_as_slurm_does() {
     );
     assert!(slurm(&[("SLURM_ARRAY_TASK_ID", "x"), ("SLURM_ARRAY_TASK_COUNT", "4")]).is_err());
 }
+
+/// The five variables as SLURM sets them in every task (observed on slurm-wlm 22.05).
+fn array(id: u64, min: u64, max: u64, step: u64, count: u64) -> Result<Shard, String> {
+    let (id, min, max, step, count) =
+        (id.to_string(), min.to_string(), max.to_string(), step.to_string(), count.to_string());
+    slurm(&[
+        ("SLURM_ARRAY_TASK_ID", &id),
+        ("SLURM_ARRAY_TASK_MIN", &min),
+        ("SLURM_ARRAY_TASK_MAX", &max),
+        ("SLURM_ARRAY_TASK_STEP", &step),
+        ("SLURM_ARRAY_TASK_COUNT", &count),
+    ])
+}
+
+/// Asserts that the error names every `needle` (variables with their values).
+fn refused(r: Result<Shard, String>, needles: &[&str]) {
+    let e = r.expect_err("accepted");
+    for n in needles {
+        assert!(e.contains(n), "{n:?} not in {e:?}");
+    }
+}
+
+#[test]
+fn shard_auto_accepts_every_range_as_slurm_reports_it() {
+    let shards = |min, max, step, count, ids: &[u64]| -> Vec<Shard> {
+        ids.iter().map(|&id| array(id, min, max, step, count).unwrap()).collect()
+    };
+    let expect = |count| (0..count).map(|index| Shard { index, count }).collect::<Vec<_>>();
+    // --array=0-3 and --array=0-3%2 (a % limit sets nothing).
+    assert_eq!(shards(0, 3, 1, 4, &[0, 1, 2, 3]), expect(4));
+    // --array=0-6:3; --array=2-9:3, for which SLURM reports MAX=8.
+    assert_eq!(shards(0, 6, 3, 3, &[0, 3, 6]), expect(3));
+    assert_eq!(shards(2, 8, 3, 3, &[2, 5, 8]), expect(3));
+    // --array=3: one task; --array=1,2,3: a list without gaps is a range.
+    assert_eq!(shards(3, 3, 1, 1, &[3]), expect(1));
+    assert_eq!(shards(1, 3, 1, 3, &[1, 2, 3]), expect(3));
+}
+
+#[test]
+fn shard_auto_refuses_a_list_with_gaps() {
+    // --array=1,5,9: SLURM reports MIN=1, MAX=9, STEP=1, COUNT=3; every task is refused, also
+    // task 1, which alone would look like shard 0 of 3.
+    for id in [1, 5, 9] {
+        refused(
+            array(id, 1, 9, 1, 3),
+            &[
+                "SLURM_ARRAY_TASK_COUNT=3",
+                "SLURM_ARRAY_TASK_MIN=1",
+                "SLURM_ARRAY_TASK_MAX=9",
+                "are 9 IDs",
+                "--array=1,5,9",
+            ],
+        );
+    }
+    // --array=1,2,5: tasks 1 and 2 would otherwise run shards 0 and 1 of 3, and shard 2 never.
+    for id in [1, 2, 5] {
+        refused(array(id, 1, 5, 1, 3), &["SLURM_ARRAY_TASK_COUNT=3", "SLURM_ARRAY_TASK_MAX=5", "are 5 IDs"]);
+    }
+}
+
+#[test]
+fn shard_auto_refuses_a_count_that_does_not_match_the_ids() {
+    // COUNT says 4 but the IDs run 0..7.
+    refused(array(2, 0, 7, 1, 4), &["SLURM_ARRAY_TASK_COUNT=4", "SLURM_ARRAY_TASK_MAX=7", "are 8 IDs"]);
+    // COUNT says 8 but the IDs run 0..3.
+    refused(array(2, 0, 3, 1, 8), &["SLURM_ARRAY_TASK_COUNT=8", "SLURM_ARRAY_TASK_MAX=3", "are 4 IDs"]);
+    refused(array(0, 0, 0, 1, 0), &["SLURM_ARRAY_TASK_COUNT=0"]);
+}
+
+#[test]
+fn shard_auto_refuses_a_step_that_does_not_divide() {
+    refused(
+        array(0, 0, 7, 2, 4),
+        &["SLURM_ARRAY_TASK_STEP=2 does not divide", "SLURM_ARRAY_TASK_MAX - SLURM_ARRAY_TASK_MIN = 7 - 0"],
+    );
+    refused(array(0, 0, 6, 0, 4), &["SLURM_ARRAY_TASK_STEP=0"]);
+}
+
+#[test]
+fn shard_auto_refuses_min_above_max() {
+    refused(array(5, 5, 3, 1, 1), &["SLURM_ARRAY_TASK_MIN=5 is above SLURM_ARRAY_TASK_MAX=3"]);
+}
+
+#[test]
+fn shard_auto_refuses_a_task_id_outside_the_array() {
+    // --array=1-4 with a task ID below, above, or between the IDs of --array=0-6:2.
+    refused(array(0, 1, 4, 1, 4), &["SLURM_ARRAY_TASK_ID=0 is outside", "MIN=1..SLURM_ARRAY_TASK_MAX=4"]);
+    refused(array(5, 1, 4, 1, 4), &["SLURM_ARRAY_TASK_ID=5 is outside", "MIN=1..SLURM_ARRAY_TASK_MAX=4"]);
+    refused(
+        array(3, 0, 6, 2, 4),
+        &["SLURM_ARRAY_TASK_ID=3 is not SLURM_ARRAY_TASK_MIN=0 plus a multiple of SLURM_ARRAY_TASK_STEP=2"],
+    );
+    // Without MAX (a hand-made environment) it is MIN + (COUNT - 1) STEP.
+    refused(
+        slurm(&[("SLURM_ARRAY_TASK_ID", "4"), ("SLURM_ARRAY_TASK_COUNT", "4")]),
+        &["SLURM_ARRAY_TASK_ID=4 is outside SLURM_ARRAY_TASK_MIN=0..SLURM_ARRAY_TASK_MAX=3"],
+    );
+}
+
+#[test]
+fn shard_auto_names_a_missing_or_unreadable_variable() {
+    refused(slurm(&[("SLURM_ARRAY_TASK_ID", "1")]), &["SLURM_ARRAY_TASK_COUNT is not set", "sbatch --array"]);
+    refused(
+        slurm(&[
+            ("SLURM_ARRAY_TASK_ID", "1"),
+            ("SLURM_ARRAY_TASK_COUNT", "4"),
+            ("SLURM_ARRAY_TASK_MAX", "x"),
+        ]),
+        &["SLURM_ARRAY_TASK_MAX=\"x\" is not a non-negative integer"],
+    );
+}

@@ -1,0 +1,128 @@
+//! What the build promises: the workspace's `rust-version` is the true minimum (the highest
+//! `rust-version` declared by a dependency in Cargo.lock; clippy's `incompatible_msrv` lint, run by
+//! CI with `-D warnings`, checks our own use of the standard library against it), and the fuzz
+//! crate's lock file pins the workspace's versions, so that CI builds it in the same target
+//! directory without compiling any dependency twice (.ci/run).
+
+use crate::common::root;
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::PathBuf;
+
+/// (name, version, source) of every package of a Cargo.lock.
+fn locked(path: &str) -> Vec<(String, String, Option<String>)> {
+    let text = std::fs::read_to_string(root().join(path)).unwrap();
+    let mut out = Vec::new();
+    for block in text.split("[[package]]").skip(1) {
+        let field = |key: &str| {
+            block.lines().find_map(|l| {
+                l.strip_prefix(key)?.trim_start().strip_prefix("= \"")?.strip_suffix('"').map(str::to_string)
+            })
+        };
+        out.push((field("name").unwrap(), field("version").unwrap(), field("source")));
+    }
+    assert!(out.len() > 10, "{path}: {} packages", out.len());
+    out
+}
+
+/// A version "1.90" or "1.90.0" as (major, minor, patch).
+fn version(text: &str) -> (u32, u32, u32) {
+    let mut parts = text.split('.').map(|p| p.parse::<u32>().unwrap_or_else(|_| panic!("version {text:?}")));
+    (parts.next().unwrap(), parts.next().unwrap_or(0), parts.next().unwrap_or(0))
+}
+
+/// The `rust-version` of the `[package]` (or `[workspace.package]`) section of a manifest.
+fn rust_version(manifest: &str) -> Option<String> {
+    let mut section = "";
+    for line in manifest.lines() {
+        let line = line.trim();
+        if line.starts_with('[') {
+            section = line;
+        } else if (section == "[package]" || section == "[workspace.package]")
+            && let Some(v) = line.strip_prefix("rust-version")
+        {
+            return Some(v.trim_start().strip_prefix('=')?.trim().trim_matches('"').to_string());
+        }
+    }
+    None
+}
+
+fn cargo_home() -> PathBuf {
+    std::env::var_os("CARGO_HOME")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| PathBuf::from(std::env::var_os("HOME").expect("HOME")).join(".cargo"))
+}
+
+#[test]
+fn rust_version_is_the_highest_that_a_dependency_declares() {
+    let manifest = std::fs::read_to_string(root().join("Cargo.toml")).unwrap();
+    let ours = rust_version(&manifest).expect("Cargo.toml's [workspace.package] has a rust-version");
+    for member in ["kernel/Cargo.toml", "python/Cargo.toml"] {
+        let text = std::fs::read_to_string(root().join(member)).unwrap();
+        assert!(text.contains("rust-version.workspace = true"), "{member} inherits rust-version");
+    }
+    // The sources cargo unpacked to build this workspace (every package built on this platform).
+    let sources: Vec<PathBuf> = std::fs::read_dir(cargo_home().join("registry/src"))
+        .expect("the cargo registry's sources (the workspace was built from them)")
+        .map(|e| e.unwrap().path())
+        .collect();
+    let mut declared = BTreeMap::new();
+    let mut unpacked = 0;
+    for (name, v, source) in locked("Cargo.lock") {
+        if !source.is_some_and(|s| s.starts_with("registry+")) {
+            continue;
+        }
+        let Some(text) = sources
+            .iter()
+            .find_map(|s| std::fs::read_to_string(s.join(format!("{name}-{v}/Cargo.toml"))).ok())
+        else {
+            continue; // not built here (another platform's dependency)
+        };
+        unpacked += 1;
+        if let Some(rv) = rust_version(&text) {
+            declared.insert(format!("{name} {v}"), version(&rv));
+        }
+    }
+    assert!(unpacked >= 100 && declared.len() >= 50, "{unpacked} sources found, {} declare", declared.len());
+    let highest = *declared.values().max().unwrap();
+    let needing: BTreeSet<&String> =
+        declared.iter().filter(|(_, v)| **v == highest).map(|(p, _)| p).collect();
+    assert_eq!(
+        version(&ours),
+        highest,
+        "Cargo.toml says rust-version = {ours:?}; the dependencies need {}.{} ({needing:?})",
+        highest.0,
+        highest.1
+    );
+}
+
+#[test]
+fn the_fuzz_crate_locks_the_workspace_versions() {
+    let workspace: BTreeSet<(String, String)> =
+        locked("Cargo.lock").into_iter().map(|(n, v, _)| (n, v)).collect();
+    let names: BTreeSet<&String> = workspace.iter().map(|(n, _)| n).collect();
+    let fuzz = locked("fuzz/Cargo.lock");
+    let mut shared = 0;
+    for (name, v, _) in &fuzz {
+        if names.contains(name) {
+            assert!(
+                workspace.contains(&(name.clone(), v.clone())),
+                "fuzz/Cargo.lock has {name} {v}, Cargo.lock another version: run `cargo update --manifest-path fuzz/Cargo.toml -p {name} --precise VERSION`"
+            );
+            shared += 1;
+        }
+    }
+    assert!(shared >= 20, "{shared} packages shared");
+    // The same release profile, or every shared package would compile again.
+    let profile = |path: &str| {
+        let text = std::fs::read_to_string(root().join(path)).unwrap();
+        let start = text.find("[profile.release]").unwrap_or_else(|| panic!("{path}: no [profile.release]"));
+        text[start..]
+            .lines()
+            .skip(1)
+            .take_while(|l| !l.starts_with('['))
+            .filter(|l| !l.trim().is_empty())
+            .map(str::to_string)
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(profile("fuzz/Cargo.toml"), profile("Cargo.toml"));
+}
