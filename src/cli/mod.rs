@@ -43,7 +43,7 @@ pub enum Outcome {
 }
 
 impl Outcome {
-    /// The documented exit status (README, `chatter --help`).
+    /// The documented exit status (docs/commands.md, `chatter --help`).
     pub fn exit_code(&self) -> u8 {
         match self {
             Outcome::Success => 0,
