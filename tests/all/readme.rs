@@ -157,8 +157,10 @@ fn test_functions(dir: &std::path::Path) -> usize {
 #[test]
 fn the_readme_counts_the_tests() {
     let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
-    let actual: usize =
-        ["src", "tests", "kernel/src", "kernel/tests", "oracle/src", "oracle/tests"].iter().map(|d| test_functions(&root().join(d))).sum();
+    let actual: usize = ["src", "tests", "kernel/src", "kernel/tests", "oracle/src", "oracle/tests"]
+        .iter()
+        .map(|d| test_functions(&root().join(d)))
+        .sum();
     let said = readme.split("#[test]` functions").next().unwrap().rsplit(['(', ' ']).nth(1).unwrap();
     assert_eq!(said.parse::<usize>().ok(), Some(actual), "README says {said} `#[test]` functions");
 }

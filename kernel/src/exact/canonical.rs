@@ -10,7 +10,7 @@ use super::{Field, Int, Ring};
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ParseLimits {
     /// `max-digits`: largest number of decimal digits in one number (numerator and denominator
-    /// together).
+    /// together; for an element of a number field, of all its coefficients together).
     pub max_digits: usize,
     /// `max-total-digits`: largest number of digits of all the numbers of a file together.
     pub max_total_digits: usize,

@@ -1,14 +1,21 @@
 //! The real number fields Q(c), c = cos(2 pi/n), of the regular polygons (docs/certificate-format.md
 //! §12): an element is a polynomial in c of degree below d = deg Psi_n, Psi_n the minimal polynomial
 //! of c, computed (never tabulated) from Chebyshev's T_n. The sign of an element is decided by
-//! evaluating it in interval arithmetic on a rational interval that isolates c, halved until zero
-//! is excluded; this always ends for a non-zero element because Psi_n is irreducible.
+//! evaluating it in interval arithmetic on an interval that isolates c, at ever finer precisions
+//! until zero is excluded; this always ends for a non-zero element because Psi_n is irreducible.
+//!
+//! The work is integer arithmetic: y = 2c is an algebraic integer (its minimal polynomial
+//! Q(y) = 2^d Psi_n(y/2) is monic with integer coefficients), so a vector of elements has a
+//! positive multiple in Z[y] ([`AlgebraicInt`]), where sums, products and reductions modulo Q
+//! divide nothing. The isolating intervals of y have dyadic ends a/2^s, b/2^s; each precision
+//! is computed once per field and kept (roughly doubling s by a Newton step checked by the signs
+//! of Q at the new ends, or by bisection), so a sign costs a few integer Horner evaluations.
 
 use super::univariate::{count_roots, derivative, div_rem, eval, mul, rem, sturm_sequence, sub, trim};
-use super::{Field, NumberError, OrderedField, ParseLimits, Ring, parse_canonical, to_canonical};
+use super::{Field, Int, NumberError, OrderedField, ParseLimits, Ring, parse_canonical, to_canonical};
 use std::cmp::Ordering;
 use std::fmt;
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 
 /// The largest n whose field the kernel builds (deg Psi_n = phi(n)/2 <= 32).
 pub const MAX_N: u64 = 64;
@@ -59,13 +66,138 @@ pub fn cos_minimal_polynomial<F: Field>(n: u64) -> Vec<F> {
 }
 
 /// Q(cos 2 pi/n) with an isolating interval [lo, hi] of c, a root of Psi_n (rational endpoints,
-/// lo < c < hi, or lo = hi = c when c is rational).
+/// lo < c < hi, or lo = hi = c when c is rational), the minimal polynomial Q of y = 2c and the
+/// isolating intervals of y computed so far.
 #[derive(Debug)]
-pub struct CosField<F> {
+pub struct CosField<F: Field> {
     n: u64,
     minpoly: Vec<F>,
     lo: F,
     hi: F,
+    /// Q(y) = 2^d Psi_n(y/2): monic, integer coefficients, lowest first.
+    ymin: Vec<F::Int>,
+    /// Isolating intervals of y, ever more precise (level 0 from [lo, hi]).
+    levels: Mutex<Vec<Level<F::Int>>>,
+}
+
+/// y in (a/2^s, b/2^s), the only root of Q there, Q(a/2^s) and Q(b/2^s) non-zero and of opposite
+/// signs; `unit` = 2^s.
+#[derive(Clone, Debug)]
+struct Level<Z> {
+    a: Z,
+    b: Z,
+    s: u64,
+    unit: Z,
+}
+
+/// 2^s.
+fn pow2<Z: Int>(s: u64) -> Z {
+    let (mut result, mut base, mut e) = (Z::one(), Z::from_i64(2), s);
+    while e > 0 {
+        if e & 1 == 1 {
+            result = result.times(&base);
+        }
+        e >>= 1;
+        if e > 0 {
+            base = base.times(&base);
+        }
+    }
+    result
+}
+
+/// 2^(s d) q(x/2^s) for an integer polynomial q of degree d (the sign of q at x/2^s).
+fn eval_scaled<Z: Int>(q: &[Z], x: &Z, unit: &Z) -> Z {
+    let mut acc = Z::zero();
+    let mut pw = Z::one();
+    for (i, c) in q.iter().enumerate().rev() {
+        acc = acc.times(x).plus(&c.times(&pw));
+        if i > 0 {
+            pw = pw.times(unit);
+        }
+    }
+    acc
+}
+
+impl<Z: Int> Level<Z> {
+    fn new(a: Z, b: Z, s: u64) -> Self {
+        Level { a, b, s, unit: pow2(s) }
+    }
+
+    /// One bisection: the half in which Q changes sign.
+    fn halved(&self, q: &[Z]) -> Self {
+        let two = Z::from_i64(2);
+        let (a, b, mid) = (self.a.times(&two), self.b.times(&two), self.a.plus(&self.b));
+        let unit = self.unit.times(&two);
+        let at = |x: &Z| eval_scaled(q, x, &unit).sign();
+        let (sa, sm) = (at(&a), at(&mid));
+        if sm == Ordering::Equal {
+            // The root is the midpoint, a dyadic rational: impossible for d >= 2 (Q is irreducible).
+            unreachable!("an irrational root at a rational point");
+        }
+        let (a, b) = if sm == sa { (mid, b) } else { (a, mid) };
+        Level { a, b, s: self.s + 1, unit }
+    }
+
+    /// A Newton step from the midpoint to about twice the precision, kept only if Q changes sign
+    /// between the new ends and they lie inside this interval (so they isolate the same root).
+    fn newton(&self, q: &[Z]) -> Option<Self> {
+        let t = self.s + 1;
+        let s2 = 2 * self.s - 32;
+        let (m, unit_t) = (self.a.plus(&self.b), self.unit.times(&Z::from_i64(2)));
+        let dq: Vec<Z> = q.iter().enumerate().skip(1).map(|(i, c)| c.times(&Z::from_i64(i as i64))).collect();
+        // x0 = m/2^t; p0 = 2^(t d) Q(x0), p1 = 2^(t (d-1)) Q'(x0); x1 = (m p1 - p0) / (p1 2^t).
+        let (p0, p1) = (eval_scaled(q, &m, &unit_t), eval_scaled(&dq, &m, &unit_t));
+        if p1.is_zero() {
+            return None;
+        }
+        let (num, den) = (m.times(&p1).minus(&p0).times(&pow2(s2 - t)), p1);
+        let (num, den) = if den.is_negative() { (num.negated(), den.negated()) } else { (num, den) };
+        let x = num.div_floor(&den);
+        let (a, b) = (x.minus(&Z::one()), x.plus(&Z::from_i64(2)));
+        let up = pow2::<Z>(s2 - self.s);
+        if a < self.a.times(&up) || b > self.b.times(&up) {
+            return None;
+        }
+        let unit = pow2::<Z>(s2);
+        let (sa, sb) = (eval_scaled(q, &a, &unit).sign(), eval_scaled(q, &b, &unit).sign());
+        (sa != Ordering::Equal && sb != Ordering::Equal && sa != sb).then_some(Level { a, b, s: s2, unit })
+    }
+
+    /// The next level: at least about twice the precision (Newton where it converges, else
+    /// bisection, which always does).
+    fn next(&self, q: &[Z]) -> Self {
+        let target = 2 * self.s - 32;
+        let mut level = self.clone();
+        while level.s < target {
+            if let Some(finer) = level.newton(q) {
+                return finer;
+            }
+            level = level.halved(q);
+        }
+        level
+    }
+
+    /// The sign of p(y) (p in Z[y], lowest coefficient first) if the interval decides it:
+    /// 2^(s (m-1)) p(y) by Horner's rule in interval arithmetic, with 2^s y in [a, b].
+    fn sign_of(&self, p: &[Z]) -> Option<Ordering> {
+        let Some((top, rest)) = p.split_last() else { return Some(Ordering::Equal) };
+        let (mut lo, mut hi) = (top.clone(), top.clone());
+        let mut pw = Z::one();
+        for c in rest.iter().rev() {
+            pw = pw.times(&self.unit);
+            let prods = [lo.times(&self.a), lo.times(&self.b), hi.times(&self.a), hi.times(&self.b)];
+            let add = c.times(&pw);
+            lo = prods.iter().min().expect("four").plus(&add);
+            hi = prods.iter().max().expect("four").plus(&add);
+        }
+        if lo.is_positive() {
+            Some(Ordering::Greater)
+        } else if hi.is_negative() {
+            Some(Ordering::Less)
+        } else {
+            None
+        }
+    }
 }
 
 impl<F: Field> CosField<F> {
@@ -76,7 +208,45 @@ impl<F: Field> CosField<F> {
         }
         let minpoly = cos_minimal_polynomial::<F>(n);
         let (lo, hi) = isolate_largest(&minpoly);
-        Some(Arc::new(CosField { n, minpoly, lo, hi }))
+        let d = minpoly.len() - 1;
+        // Q(y) = sum psi_k 2^(d-k) y^k: integers, as 2 cos(2 pi/n) is an algebraic integer.
+        let ymin: Vec<F::Int> = (0..=d)
+            .map(|k| {
+                let x = minpoly[k].times(&F::from_int(&pow2(d as u64 - k as u64)));
+                assert!(x.denom() == F::Int::one(), "2 cos(2 pi/n) is an algebraic integer");
+                x.numer()
+            })
+            .collect();
+        // Level 0: y = 2c in (2 lo, 2 hi), whose denominators divide 2^64 (bisections of [-1, 1]).
+        let at = |x: &F| {
+            let scaled = x.times(&F::from_int(&pow2(65)));
+            assert!(scaled.denom() == F::Int::one(), "the ends of level 0 are multiples of 2^-65");
+            scaled.numer()
+        };
+        let levels = if d >= 2 { vec![Level::new(at(&lo), at(&hi), 64)] } else { Vec::new() };
+        Some(Arc::new(CosField { n, minpoly, lo, hi, ymin, levels: Mutex::new(levels) }))
+    }
+
+    /// The sign of the element p(y) of Z[y] (reduced modulo Q, not all zero unless zero): decided
+    /// on the isolating intervals of y, from the coarsest, each computed once and kept.
+    fn sign_of(&self, p: &[F::Int]) -> Ordering {
+        if p.len() <= 1 {
+            return p.first().map_or(Ordering::Equal, Ring::sign);
+        }
+        for i in 0.. {
+            let level = {
+                let mut levels = self.levels.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+                while levels.len() <= i {
+                    let next = levels.last().expect("level 0").next(&self.ymin);
+                    levels.push(next);
+                }
+                levels[i].clone()
+            };
+            if let Some(sign) = level.sign_of(p) {
+                return sign;
+            }
+        }
+        unreachable!("a non-zero element of a field has a sign")
     }
 
     /// n.
@@ -169,26 +339,39 @@ fn isolate_largest<F: Field>(p: &[F]) -> (F, F) {
 }
 
 /// Reads `t_0 + t_1 + ...`: terms joined by " + " or " - ", the first with an optional '-';
-/// a term is `R`, `R*c`, `R*c^k`, `c` or `c^k` with R an unsigned canonical rational.
+/// a term is `R`, `R*c`, `R*c^k`, `c` or `c^k` with R an unsigned canonical rational. The digit
+/// limit applies to the whole element: the digits of all its coefficients together, counted
+/// before any of them is converted.
 fn parse_terms<F: Field>(s: &str, degree: usize, limits: ParseLimits) -> Result<Vec<F>, NumberError> {
-    let mut coeffs = vec![F::zero(); degree];
     let (mut negative, mut rest) = match s.strip_prefix('-') {
         Some(r) => (true, r),
         None => (false, s),
     };
+    let mut terms = Vec::new();
     loop {
         let end = [" + ", " - "].iter().filter_map(|sep| rest.find(sep)).min().unwrap_or(rest.len());
-        let (r, k) = parse_term::<F>(&rest[..end], limits)?;
-        if k >= degree {
-            return Err(NumberError::PowerTooHigh { power: k, degree });
-        }
-        coeffs[k] = coeffs[k].plus(&if negative { r.negated() } else { r });
+        terms.push((negative, &rest[..end]));
         if end == rest.len() {
-            return Ok(coeffs);
+            break;
         }
         negative = rest[end..].starts_with(" - ");
         rest = &rest[end + 3..];
     }
+    let coefficient =
+        |t: &str| t.split_once(GENERATOR).map_or(t, |(r, _)| r).bytes().filter(u8::is_ascii_digit).count();
+    let digits: usize = terms.iter().map(|(_, t)| coefficient(t)).sum();
+    if digits > limits.max_digits {
+        return Err(NumberError::TooLong { digits, max: limits.max_digits });
+    }
+    let mut coeffs = vec![F::zero(); degree];
+    for (negative, t) in terms {
+        let (r, k) = parse_term::<F>(t, limits)?;
+        if k >= degree {
+            return Err(NumberError::PowerTooHigh { power: k, degree });
+        }
+        coeffs[k] = coeffs[k].plus(&if negative { r.negated() } else { r });
+    }
+    Ok(coeffs)
 }
 
 /// One unsigned term: its coefficient and its power of c.
@@ -223,7 +406,7 @@ fn parse_term<F: Field>(t: &str, limits: ParseLimits) -> Result<(F, usize), Numb
 /// An element of Q(cos 2 pi/n), or a rational (which belongs to every such field and carries no
 /// field).
 #[derive(Clone)]
-pub struct Algebraic<F> {
+pub struct Algebraic<F: Field> {
     field: Option<Arc<CosField<F>>>,
     /// Coefficients in c, lowest first, trimmed, fewer than the field's degree.
     c: Vec<F>,
@@ -377,17 +560,7 @@ impl<F: Field> Ring for Algebraic<F> {
     }
     fn sign(&self) -> Ordering {
         let Some(k) = &self.field else { return self.c.first().map_or(Ordering::Equal, Ring::sign) };
-        let mut around = k.interval();
-        loop {
-            let (a, b) = self.bounds_on(&around.0, &around.1);
-            if a.is_positive() {
-                return Ordering::Greater;
-            }
-            if b.is_negative() {
-                return Ordering::Less;
-            }
-            around = k.halved(around, 16);
-        }
+        k.sign_of(&integral(std::slice::from_ref(self))[0])
     }
 }
 
@@ -416,5 +589,158 @@ impl<F: Field> OrderedField for Algebraic<F> {
     }
     fn from_ratio(n: i64, d: i64) -> Self {
         Algebraic::rational(F::from_ratio(n, d))
+    }
+}
+
+/// A positive common multiple of the denominators of the coefficients of `xs`: their product,
+/// each distinct denominator once, a denominator dividing the product so far skipped, the
+/// product replaced by a denominator it divides (lcm would need gcds, slow on some backends).
+fn common_denominator<F: Field>(xs: &[Algebraic<F>]) -> F::Int {
+    let mut l = F::Int::one();
+    for q in xs.iter().flat_map(|x| x.c.iter().map(Field::denom)) {
+        let divides = |a: &F::Int, b: &F::Int| b.minus(&b.div_floor(a).times(a)).is_zero();
+        if divides(&q, &l) {
+            continue;
+        }
+        l = if divides(&l, &q) { q } else { l.times(&q) };
+    }
+    l
+}
+
+/// Positive multiples of the elements `xs`, one factor for all, in Z[y] (y = 2c): with D a common
+/// denominator of the coefficients a_k (of c^k) and d the degree, a_k c^k D 2^(d-1) =
+/// (a_k D 2^(d-1-k)) y^k.
+fn integral<F: Field>(xs: &[Algebraic<F>]) -> Vec<Vec<F::Int>> {
+    let d = xs.iter().find_map(|x| x.field.as_ref()).map_or(1, |k| k.degree());
+    let l = common_denominator(xs);
+    let twos: Vec<F::Int> = (0..d as u64).map(pow2).collect();
+    xs.iter()
+        .map(|x| {
+            let coeff =
+                |(k, a): (usize, &F)| a.numer().times(&l.div_exact(&a.denom())).times(&twos[d - 1 - k]);
+            x.c.iter().enumerate().map(coeff).collect()
+        })
+        .collect()
+}
+
+impl<F: Field> Algebraic<F> {
+    /// Positive multiples of `xs` with one common factor, as elements of Z[y], y = 2c (the
+    /// homogeneous coordinates of a vector of elements).
+    pub fn scaled(xs: &[Self]) -> Vec<AlgebraicInt<F>> {
+        let field = xs.iter().find_map(|x| x.field.clone());
+        integral(xs).into_iter().map(|c| AlgebraicInt::new(field.clone(), c)).collect()
+    }
+}
+
+/// An element of the ring Z[y], y = 2 cos(2 pi/n): a polynomial in y with integer coefficients,
+/// reduced modulo the monic minimal polynomial Q of y (so no arithmetic divides). Integer-scaled
+/// coordinates of vectors over Q(cos 2 pi/n), as the integers are for the rationals.
+#[derive(Clone)]
+pub struct AlgebraicInt<F: Field> {
+    field: Option<Arc<CosField<F>>>,
+    /// Coefficients in y, lowest first, trimmed, fewer than the field's degree.
+    y: Vec<F::Int>,
+}
+
+impl<F: Field> AlgebraicInt<F> {
+    fn new(field: Option<Arc<CosField<F>>>, mut y: Vec<F::Int>) -> Self {
+        while y.last().is_some_and(Ring::is_zero) {
+            y.pop();
+        }
+        let field = if y.len() > 1 { field } else { None };
+        AlgebraicInt { field, y }
+    }
+
+    /// The same number in Q(c): b_k y^k = b_k 2^k c^k.
+    pub fn to_algebraic(&self) -> Algebraic<F> {
+        let c = self.y.iter().enumerate().map(|(k, b)| F::from_int(&b.times(&pow2(k as u64)))).collect();
+        Algebraic::new(self.field.clone(), c)
+    }
+
+    fn field_with(&self, o: &Self) -> Option<Arc<CosField<F>>> {
+        match (&self.field, &o.field) {
+            (Some(a), Some(b)) => {
+                assert_eq!(a.n, b.n, "elements of two different fields are never combined");
+                Some(a.clone())
+            }
+            (a, b) => a.clone().or_else(|| b.clone()),
+        }
+    }
+}
+
+impl<F: Field> PartialEq for AlgebraicInt<F> {
+    fn eq(&self, o: &Self) -> bool {
+        self.y == o.y
+    }
+}
+impl<F: Field> Eq for AlgebraicInt<F> {}
+impl<F: Field> PartialOrd for AlgebraicInt<F> {
+    fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
+        Some(self.cmp(o))
+    }
+}
+impl<F: Field> Ord for AlgebraicInt<F> {
+    fn cmp(&self, o: &Self) -> Ordering {
+        self.minus(o).sign()
+    }
+}
+impl<F: Field> fmt::Display for AlgebraicInt<F> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.to_algebraic())
+    }
+}
+impl<F: Field> fmt::Debug for AlgebraicInt<F> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{:?}", self.to_algebraic())
+    }
+}
+
+impl<F: Field> Ring for AlgebraicInt<F> {
+    fn zero() -> Self {
+        AlgebraicInt { field: None, y: Vec::new() }
+    }
+    fn from_i64(v: i64) -> Self {
+        AlgebraicInt::new(None, vec![F::Int::from_i64(v)])
+    }
+    fn plus(&self, o: &Self) -> Self {
+        let at = |p: &[F::Int], i: usize| p.get(i).cloned().unwrap_or_else(F::Int::zero);
+        let n = self.y.len().max(o.y.len());
+        AlgebraicInt::new(self.field_with(o), (0..n).map(|i| at(&self.y, i).plus(&at(&o.y, i))).collect())
+    }
+    fn minus(&self, o: &Self) -> Self {
+        self.plus(&o.negated())
+    }
+    fn times(&self, o: &Self) -> Self {
+        if self.y.is_empty() || o.y.is_empty() {
+            return Self::zero();
+        }
+        let mut p = vec![F::Int::zero(); self.y.len() + o.y.len() - 1];
+        for (i, a) in self.y.iter().enumerate() {
+            for (j, b) in o.y.iter().enumerate() {
+                p[i + j] = p[i + j].plus(&a.times(b));
+            }
+        }
+        let field = self.field_with(o);
+        if let Some(k) = &field {
+            // Reduce modulo the monic Q: y^d = -(q_0 + ... + q_{d-1} y^{d-1}).
+            let d = k.ymin.len() - 1;
+            while p.len() > d {
+                let top = p.pop().expect("non-empty");
+                let shift = p.len() - d;
+                for (j, q) in k.ymin[..d].iter().enumerate() {
+                    p[shift + j] = p[shift + j].minus(&top.times(q));
+                }
+            }
+        }
+        AlgebraicInt::new(field, p)
+    }
+    fn negated(&self) -> Self {
+        AlgebraicInt { field: self.field.clone(), y: self.y.iter().map(Ring::negated).collect() }
+    }
+    fn sign(&self) -> Ordering {
+        match &self.field {
+            None => self.y.first().map_or(Ordering::Equal, Ring::sign),
+            Some(k) => k.sign_of(&self.y),
+        }
     }
 }

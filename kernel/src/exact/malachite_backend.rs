@@ -3,7 +3,7 @@
 
 use super::{Field, Int, OrderedField, Ring};
 use malachite::Integer;
-use malachite::base::num::arithmetic::traits::{DivExact, Gcd, Sign};
+use malachite::base::num::arithmetic::traits::{DivExact, DivMod, Gcd, Sign};
 use malachite::base::num::logic::traits::SignificantBits;
 use malachite::rational::Rational;
 use std::cmp::Ordering;
@@ -42,6 +42,9 @@ impl Int for Integer {
     }
     fn div_exact(&self, o: &Self) -> Self {
         DivExact::div_exact(self, o)
+    }
+    fn div_floor(&self, o: &Self) -> Self {
+        DivMod::div_mod(self, o).0
     }
     fn parse_digits(s: &str) -> Option<Self> {
         if s.is_empty() || !s.bytes().all(|b| b.is_ascii_digit()) {

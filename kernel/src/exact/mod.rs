@@ -46,7 +46,7 @@ pub mod univariate;
 
 pub use canonical::{NumberError, ParseLimits, parse_canonical, parse_canonical_parts, to_canonical};
 #[cfg(feature = "field")]
-pub use cos_field::{Algebraic, CosField, GENERATOR, MAX_N, cos_minimal_polynomial};
+pub use cos_field::{Algebraic, AlgebraicInt, CosField, GENERATOR, MAX_N, cos_minimal_polynomial};
 
 use std::cmp::Ordering;
 use std::fmt::{Debug, Display};
@@ -92,6 +92,8 @@ pub trait Int: Ring {
     fn gcd(&self, o: &Self) -> Self;
     /// Exact quotient; the caller guarantees `o` divides `self`.
     fn div_exact(&self, o: &Self) -> Self;
+    /// The quotient rounded towards minus infinity (`o` non-zero).
+    fn div_floor(&self, o: &Self) -> Self;
     /// Parses a non-empty string of ASCII decimal digits (no sign).
     fn parse_digits(s: &str) -> Option<Self>;
     /// Number of bits of the absolute value (0 for zero).

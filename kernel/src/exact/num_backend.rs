@@ -23,6 +23,9 @@ impl Int for BigInt {
         debug_assert!(Zero::is_zero(&r), "div_exact: inexact division");
         q
     }
+    fn div_floor(&self, o: &Self) -> Self {
+        num_integer::Integer::div_floor(self, o)
+    }
     fn parse_digits(s: &str) -> Option<Self> {
         if s.is_empty() || !s.bytes().all(|b| b.is_ascii_digit()) {
             return None;

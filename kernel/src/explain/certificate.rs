@@ -98,6 +98,7 @@ fn lexical(o: Offence) -> String {
         Offence::Sign => "signs outside strings are not part of the format (numbers are strings)",
         Offence::CharLiteral => "character literals are not part of the format",
         Offence::Map => "maps are not part of the format",
+        Offence::TupleInterval => "a parameter interval is a list [\"lo\", \"hi\"], not a tuple",
         Offence::Parenthesis => "parentheses are not part of the JSON twin (structs are objects)",
         Offence::Character(c) if c.is_ascii_graphic() => {
             return format!("the character {c:?} is not part of the format");

@@ -13,7 +13,7 @@ use super::body::{body_error, gamma_range};
 use super::cone;
 use super::generators::Generators;
 use super::outcome::Accepted;
-use crate::exact::{Algebraic, CosField, Field, GENERATOR, Int, MAX_N, ParseLimits};
+use crate::exact::{Algebraic, AlgebraicInt, CosField, Field, GENERATOR, Int, MAX_N, ParseLimits};
 use crate::geometry::Scalar;
 use crate::model::polygon::Polygon;
 use crate::reject::{Code, Detail, Needs, Rejection};
@@ -25,12 +25,12 @@ use std::sync::Arc;
 pub const FIELD_VERSION: u64 = 3;
 
 impl<F: Field> Scalar for Algebraic<F> {
-    type R = Algebraic<F>;
-    fn scaled(xs: &[Self]) -> Vec<Self> {
-        xs.to_vec()
+    type R = AlgebraicInt<F>;
+    fn scaled(xs: &[Self]) -> Vec<AlgebraicInt<F>> {
+        Algebraic::scaled(xs)
     }
-    fn lift(r: &Self) -> Self {
-        r.clone()
+    fn lift(r: &AlgebraicInt<F>) -> Self {
+        r.to_algebraic()
     }
     fn text(&self) -> String {
         self.to_string()
@@ -69,13 +69,13 @@ fn element<F: Field>(
     field.parse(s, limits).map_err(|e| number_error(path.to_string(), s, e))
 }
 
-/// The generators as vectors of field elements (no scaling: the ring is the field itself), with
-/// the largest denominator of their coefficients in bits.
+/// The generators as vectors of Z[2c] (each a positive multiple of the generator as written,
+/// [`Algebraic::scaled`]), with the largest denominator of their coefficients in bits.
 fn generators<'a, F: Field>(
     field: &Arc<CosField<F>>,
     cert: &'a Certificate,
     limits: ParseLimits,
-) -> Result<Generators<'a, Algebraic<F>>, Rejection> {
+) -> Result<Generators<'a, AlgebraicInt<F>>, Rejection> {
     const NAMES: [&str; 3] = ["u0", "u1", "v"];
     let mut vectors = Vec::with_capacity(cert.cone.len());
     let mut bits = 0;
@@ -91,7 +91,7 @@ fn generators<'a, F: Field>(
             bits = x.coeffs().iter().map(|a| a.denom().bit_length()).fold(bits, u64::max);
             v.push(x);
         }
-        vectors.push(v);
+        vectors.push(Algebraic::scaled(&v));
     }
     Ok(Generators { vectors, max_denominator_bits: bits, written: &cert.cone })
 }

@@ -7,7 +7,11 @@
 //!   punctuation `( ) [ ] : ,`;
 //! - between tokens: spaces, tabs, line feeds and carriage returns only;
 //! - not allowed: comments, raw or byte strings, escapes, `#![enable(...)]` headers, signs, floats,
-//!   hexadecimal, octal or binary integers, a byte order mark, and an empty file.
+//!   hexadecimal, octal or binary integers, a byte order mark, and an empty file;
+//! - a tuple `(...)` as the value of `kappa` or `gamma`: a parameter interval is a list
+//!   `["lo", "hi"]` (§2, §9). The schemas tell tuples from lists everywhere else (RON refuses
+//!   one for the other), but a parameter, a string or an interval, is read by its first token, and
+//!   RON hands a tuple and a list to that reader alike.
 //!
 //! The JSON twin has the same tokens with `{ }` instead of `( )` and no identifiers (so no
 //! `true`, `false` or `null`); the top-level value and the value of a key that starts with an
@@ -53,6 +57,8 @@ pub enum Offence {
     Map,
     /// `(` or `)` in JSON.
     Parenthesis,
+    /// A tuple `(...)` as the value of `kappa` or `gamma` (an interval is a list).
+    TupleInterval,
     /// Any other character outside a string.
     Character(char),
 }
@@ -116,6 +122,8 @@ pub fn check(text: &str, encoding: Encoding) -> Result<(), Rejection> {
     // JSON only: whether the next value must be an object, and the first character of the last
     // string read (of a key when a ':' follows).
     let (mut object_next, mut last_initial) = (true, None::<char>);
+    // RON only: the last identifier read is `kappa` or `gamma`, and then whether a ':' followed it.
+    let (mut parameter, mut parameter_value) = (false, false);
     let mut s = Cursor { chars: text.chars().collect(), i: 0, line: 1, col: 1 };
     while let Some(c) = s.peek(0) {
         let (l0, c0) = (s.line, s.col);
@@ -125,9 +133,14 @@ pub fn check(text: &str, encoding: Encoding) -> Result<(), Rejection> {
         } else if json && object_next && (starts_value || (open.contains(&c) && c != '{')) {
             return fail(l0, c0, Offence::NotObject);
         } else if open.contains(&c) {
+            if c == '(' && parameter_value {
+                return fail(l0, c0, Offence::TupleInterval);
+            }
+            (parameter_value, parameter) = (!json && c == ':' && parameter, false);
             object_next = json && c == ':' && last_initial.is_some_and(|d| d.is_ascii_uppercase());
             s.bump();
         } else if c == '"' {
+            (parameter, parameter_value) = (false, false);
             s.bump();
             last_initial = s.peek(0);
             loop {
@@ -150,10 +163,13 @@ pub fn check(text: &str, encoding: Encoding) -> Result<(), Rejection> {
                 return fail(l0, c0, Offence::JsonLiteral);
             }
             s.skip_while(|d| d.is_ascii_alphanumeric() || d == '_');
+            let name: String = s.chars[s.i - (s.col - c0)..s.i].iter().collect();
+            (parameter, parameter_value) = (name == "kappa" || name == "gamma", false);
             if matches!(s.peek(0), Some('"' | '#')) {
                 return fail(l0, c0, Offence::RawString);
             }
         } else if c.is_ascii_digit() {
+            (parameter, parameter_value) = (false, false);
             s.skip_while(|d| d.is_ascii_digit());
             if c == '0' && s.col - c0 > 1 {
                 return fail(l0, c0, Offence::LeadingZero);
