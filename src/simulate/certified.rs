@@ -16,10 +16,10 @@ use super::scalar::Nf;
 use super::{Model, Shape};
 use crate::exact::Q;
 use chatter_kernel::certificate::{Certificate, Claim, Encoding, OrbitCertificate, read_in, read_orbit};
-use chatter_kernel::syntax::{Kind, kind_of};
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::membership::{CertifiedCone, CertifiedOrbit, NotCertified};
 use chatter_kernel::model::linalg::Vec3;
+use chatter_kernel::syntax::{Kind, kind_of};
 use chatter_kernel::verify::Verdict;
 use std::sync::Arc;
 
