@@ -5,7 +5,7 @@
 //! cargo run --release --example orbit_band -- edge [STEPS]      # n = 3: bisection of the producer's edge
 //! cargo run --release --example orbit_band -- cycle             # n = 3: thresholds of S_1^2 S_2^2
 //! cargo run --release --example orbit_band -- search N [DROPS]  # n = 4, 5, 6: drops just above gamma*
-//! cargo run --release --example orbit_band -- sweep N [DROPS] [BUDGET]  # issue 22 §2: the band search
+//! cargo run --release --example orbit_band -- sweep N [DROPS] [BUDGET] [GAMMAS]  # issue 22 §2: the band search
 //! cargo run --release --example orbit_band -- pcc [N KAPPA G,G]  # default n = 4, kappa = 1/6: PCC orbit search
 //! cargo run --release --example orbit_band -- words N KAPPA R L  # patterns of length <= L whose
 //!                                                              # period map passes the cycle criterion at r gamma*
@@ -43,6 +43,7 @@ fn main() {
             arg(2).and_then(|s| s.parse().ok()).unwrap_or(5),
             arg(3).and_then(|s| s.parse().ok()).unwrap_or(300),
             arg(4).and_then(|s| s.parse().ok()).unwrap_or(3000),
+            arg(5).and_then(|s| s.parse().ok()).unwrap_or(24),
         ),
         "pcc" => pcc(
             arg(2).and_then(|s| s.parse().ok()).unwrap_or(4),
@@ -250,10 +251,11 @@ fn search(n: u64, runs: u64) {
 }
 
 /// The band search of issue 22 §2 (`chatter::orbit::search`): per κ, γ from γ* up to where every
-/// drop is ICC; the CC drops' cycles with their shares, and a certificate tried for each.
-fn sweep(n: u64, runs: u64, budget: usize) {
+/// drop is ICC; the CC drops' cycles with their shares, and a certificate tried for each. Every
+/// one of the `gammas` values is scanned (bands are islands: no early stop).
+fn sweep(n: u64, runs: u64, budget: usize, gammas: usize) {
     use chatter::orbit::search::{Plan, search_kappa};
-    let plan = Plan { runs, budget, ..Plan::full() };
+    let plan = Plan { runs, budget, gammas, icc_stop: gammas, ..Plan::full() };
     println!(
         "n = {n}: {runs} f64 drops per point ({budget} impacts), {} gammas per kappa from gamma*",
         plan.gammas

@@ -71,11 +71,16 @@ fn pentagon(ctx: &Context) -> Result<(String, bool), String> {
     let body = Polygon::with_cosine(5, cosine(5), Nf::from_q(&kappa), Nf::from_q(&gamma))
         .map_err(|e| e.to_string())?;
     let holds = crate::spectral::criteria::cc_criterion(&body).0;
-    let d = drops(5, &kappa, &gamma, PENTAGON_DROPS, 2000);
+    let ([cc, pcc, icc, other], cycles) =
+        crate::orbit::search::settle(5, &kappa, &gamma, PENTAGON_DROPS, 2000);
+    let shares: Vec<String> = cycles
+        .iter()
+        .map(|(p, k)| format!("{} ({k}/{PENTAGON_DROPS})", crate::orbit::band::steps_text(p)))
+        .collect();
     let head = format!(
-        "pentagon, κ = 961/25600, γ = 61/160: S₁'s criterion {} (exact, in Q(cos 2π/5)); drops {}",
+        "pentagon, κ = 961/25600, γ = 61/160: S₁'s criterion {} (exact, in Q(cos 2π/5)); {PENTAGON_DROPS} drops (f64 evidence, 2000 impacts): CC {cc}, PCC {pcc}, ICC {icc}, other {other}; cycles of the CC drops: {}",
         if holds { "holds" } else { "fails" },
-        d.text()
+        if shares.is_empty() { "none".to_string() } else { shares.join(", ") }
     );
     let name = "orbit-n5-kappa961_25600-gamma61_160";
     Ok(match orbit_certificate(ctx, name, (5, &kappa, &gamma), Some(vec![1, 1, 2, 4, 4, 3]))? {
