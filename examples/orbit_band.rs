@@ -5,6 +5,7 @@
 //! cargo run --release --example orbit_band -- edge [STEPS]      # n = 3: bisection of the producer's edge
 //! cargo run --release --example orbit_band -- cycle             # n = 3: thresholds of S_1^2 S_2^2
 //! cargo run --release --example orbit_band -- search N [DROPS]  # n = 4, 5, 6: drops just above gamma*
+//! cargo run --release --example orbit_band -- sweep N [DROPS] [BUDGET] [GAMMAS]  # issue 22 §2: the band search
 //! cargo run --release --example orbit_band -- pcc [N KAPPA G,G]  # default n = 4, kappa = 1/6: PCC orbit search
 //! cargo run --release --example orbit_band -- words N KAPPA R L  # patterns of length <= L whose
 //!                                                              # period map passes the cycle criterion at r gamma*
@@ -37,6 +38,12 @@ fn main() {
         "search" => search(
             arg(2).and_then(|s| s.parse().ok()).unwrap_or(4),
             arg(3).and_then(|s| s.parse().ok()).unwrap_or(20),
+        ),
+        "sweep" => sweep(
+            arg(2).and_then(|s| s.parse().ok()).unwrap_or(5),
+            arg(3).and_then(|s| s.parse().ok()).unwrap_or(300),
+            arg(4).and_then(|s| s.parse().ok()).unwrap_or(3000),
+            arg(5).and_then(|s| s.parse().ok()).unwrap_or(24),
         ),
         "pcc" => pcc(
             arg(2).and_then(|s| s.parse().ok()).unwrap_or(4),
@@ -241,6 +248,49 @@ fn search(n: u64, runs: u64) {
             println!("{kappa} | {:.6} | {r} | {gamma} | {} | {orbit}", th.0.to_f64(), d.text());
         }
     }
+}
+
+/// The band search of issue 22 §2 (`chatter::orbit::search`): per κ, γ from γ* up to where every
+/// drop is ICC; the CC drops' cycles with their shares, and a certificate tried for each. Every
+/// one of the `gammas` values is scanned (bands are islands: no early stop).
+fn sweep(n: u64, runs: u64, budget: usize, gammas: usize) {
+    use chatter::orbit::search::{Plan, search_kappa};
+    let plan = Plan { runs, budget, gammas, icc_stop: gammas, ..Plan::full() };
+    println!(
+        "n = {n}: {runs} f64 drops per point ({budget} impacts), {} gammas per kappa from gamma*",
+        plan.gammas
+    );
+    println!("kappa | gamma* | gamma | CC PCC ICC other | cycles (share: certificate, seconds)");
+    let (mut points, mut certified, start) = (0, 0, std::time::Instant::now());
+    for kappa in &plan.kappas {
+        for p in search_kappa(n, kappa, &plan, &[MALACHITE, NUM]) {
+            points += 1;
+            let cycles: Vec<String> = p
+                .cycles
+                .iter()
+                .map(|c| {
+                    let verdict = match &c.certificate {
+                        Ok((k, boxes)) => {
+                            certified += 1;
+                            format!("CERTIFIED ({k} period(s), {boxes} sub-boxes)")
+                        }
+                        Err(e) => format!("not certified: {}", e.chars().take(80).collect::<String>()),
+                    };
+                    format!(
+                        "{} ({}/{}: {verdict}, {:.1} s)",
+                        steps_text(&c.pattern),
+                        c.drops,
+                        runs,
+                        c.seconds
+                    )
+                })
+                .collect();
+            let star = p.gamma_star.as_ref().map_or("none".to_string(), |g| format!("{:.6}", g.to_f64()));
+            let [cc, pcc, icc, other] = p.outcomes;
+            println!("{kappa} | {star} | {} | {cc} {pcc} {icc} {other} | {}", p.gamma, cycles.join("; "));
+        }
+    }
+    println!("n = {n}: {points} points, {certified} certificates, {:.0} s", start.elapsed().as_secs_f64());
 }
 
 /// Below the PCC threshold (default n = 4, kappa = 1/6): fixed points of the two-contact patterns

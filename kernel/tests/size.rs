@@ -10,13 +10,14 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The kinds of verdict: name in the table, the rules file (under src/), the features.
-const KINDS: [(&str, &str, &[&str]); 8] = [
+const KINDS: [(&str, &str, &[&str]); 9] = [
     ("point certificates, n = 3, 4, 6", "rules/cone.rs", &[]),
     ("point certificates of the rod", "rules/rod.rs", &[]),
     ("box certificates", "rules/boxes.rs", &["boxes"]),
     ("number fields", "rules/field.rs", &["field"]),
     ("family certificates", "rules/family.rs", &["family"]),
-    ("orbit certificates", "rules/orbit.rs", &["orbit"]),
+    ("orbit certificates, n = 3, 4, 6", "rules/orbit.rs", &["orbit"]),
+    ("orbit certificates in number fields", "rules/orbit.rs", &["orbit", "field"]),
     ("refutations", "rules/refutation.rs", &["refutation"]),
     ("proofs", "rules/proof/mod.rs", &["proof"]),
 ];

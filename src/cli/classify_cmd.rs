@@ -15,9 +15,10 @@ use std::path::PathBuf;
 #[command(
     after_help = "Decides the paper's spectral criteria exactly (Sturm sequences, exact number fields for\n\
 n = 5, 7, 8, ...) and shows the evidence, the float finder's verdict and whether a certificate\n\
-can be produced. Where the CC criterion fails but simulated drops end in CC (n = 3, 4, 6), an\n\
-orbit certificate (docs/orbit-certificates.md): CC proved from an explicit set X of post-impact\n\
-states, not from every drop.\n\n\
+can be produced. Where the CC criterion fails but simulated drops end in CC, or 200 more drops\n\
+find a periodic pattern (a regular n-gon, 3 <= n <= 64), an orbit certificate\n\
+(docs/orbit-certificates.md): CC proved from an explicit set X of post-impact states, not from\n\
+every drop.\n\n\
 General bodies (--rectangle, --box, --polygon, --body; docs/model.md §11.11): the conjectural\n\
 criteria of the products of impact maps once around the polygon in both directions, the PCC\n\
 lemma per adjacent pair, simulated drops and the certificate.\n\nExamples:\n  chatter classify --n 3 --kappa 3/20 --gamma 1/20\n  chatter classify --n 3 --kappa 1/8 --gamma 3/20 --orbit-out orbit.ron\n  chatter classify --n 2 --kappa 1/3 --gamma 0.05 --velocity 0.1,-0.5\n  chatter classify --rectangle 2,1 --gamma 1/20\n  chatter classify --body phone --gamma 1/20"

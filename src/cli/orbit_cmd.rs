@@ -14,9 +14,11 @@ use std::time::{Duration, Instant};
 #[command(after_help = "Numbers are read exactly: 1/8, 0.15 (= 3/20).\n\n\
 Proves complete chatter from every state of a set X around an attracting periodic impact\n\
 pattern (not from every drop): docs/orbit-certificates.md.\n\n\
-Example:\n  chatter certify-orbit --n 3 --kappa 1/8 --gamma 3/20 --pattern 2,2,1,1 -o orbit.ron")]
+Examples:\n  chatter certify-orbit --n 3 --kappa 1/8 --gamma 3/20 --pattern 2,2,1,1 -o orbit.ron\n  \
+chatter certify-orbit --n 5 --kappa 961/25600 --gamma 61/160 --pattern 1,1,2,4,4,3 -o pentagon.ron")]
 pub struct OrbitArgs {
-    /// Number of contacts (3, 4 or 6).
+    /// Number of contacts, 3 to 64 (the body's constants in Q(cos 2 pi/n), enclosed by rationals,
+    /// where that cosine is irrational).
     #[arg(long, default_value_t = 3)]
     pub n: u64,
     /// kappa = rho^2/R^2.
@@ -78,16 +80,17 @@ fn parse_pattern(text: &str, n: u64) -> Result<Vec<usize>, String> {
 
 /// The validated request, or a usage error naming the flag.
 fn validate(a: &OrbitArgs) -> Result<Request, String> {
-    if ![3, 4, 6].contains(&a.n) {
+    if !(3..=crate::exact::MAX_N).contains(&a.n) {
         return Err(format!(
-            "--n: {} is not supported here: give n = 3, 4 or 6 (orbit certificates need a rational cos 2π/n)",
-            a.n
+            "--n: {} is not supported here: give 3 <= n <= {} (a regular n-gon)",
+            a.n,
+            crate::exact::MAX_N
         ));
     }
     let kappa = parse_user_number(&a.kappa).map_err(|e| format!("--kappa: {e}"))?;
     let gamma = parse_user_number(&a.gamma).map_err(|e| format!("--gamma: {e}"))?;
     if let Err(e) = crate::certify::check_body(a.n, &kappa, &gamma) {
-        return Err(super::body_error(&e, a.n, &kappa, &gamma, "n = 3, 4 or 6"));
+        return Err(super::body_error(&e, a.n, &kappa, &gamma, "3 <= n <= 64"));
     }
     let pattern = a.pattern.as_deref().map(|p| parse_pattern(p, a.n)).transpose()?;
     if a.max_depth > chatter_kernel::orbit::MAX_DEPTH {

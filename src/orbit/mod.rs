@@ -6,8 +6,10 @@
 //! backends.
 
 pub mod band;
+pub mod search;
 
 use crate::exact::{Q, QExt};
+use crate::model::float::FloatPolygon;
 use crate::simulate::{Initial, Model, Options, Shape, pattern, simulate};
 use chatter_kernel::certificate::{Claim, OrbitBody, OrbitCertificate, OrbitSet, Rejection};
 use chatter_kernel::exact::{ParseLimits, Ring, to_canonical};
@@ -17,7 +19,7 @@ use chatter_kernel::verify::{Backend, Verdict, verify_orbit_on};
 /// A request for an orbit certificate.
 #[derive(Clone, Debug)]
 pub struct Request {
-    /// Number of contacts (3, 4 or 6).
+    /// Number of contacts (3 to 64).
     pub n: u64,
     /// kappa.
     pub kappa: Q,
@@ -101,12 +103,36 @@ pub struct FloatMaps {
 }
 
 impl FloatMaps {
-    /// From the exact model.
+    /// From the exact model (n = 3, 4, 6).
     pub fn new(body: &Polygon<Q>) -> Self {
         let n = body.n();
         let contacts = (0..n).map(|k| body.contact(k as i64).clone().map(|x| x.to_f64())).collect();
         let impact0 = body.impact(0).map(|r| r.map(|x| x.to_f64()));
         FloatMaps { n, contacts, impact0 }
+    }
+
+    /// From the float model of any regular n-gon (docs/model.md §2-3).
+    pub fn of_float(body: &FloatPolygon) -> Self {
+        let n = body.n();
+        let contacts = (0..n)
+            .map(|k| {
+                let f = body.contact(k as i64);
+                [f[0], f[1], f[2]]
+            })
+            .collect();
+        let i0 = body.impact(0);
+        let impact0 = std::array::from_fn(|r| std::array::from_fn(|c| i0[(r, c)]));
+        FloatMaps { n, contacts, impact0 }
+    }
+
+    /// The body (n, κ, γ): from the exact model where cos 2π/n is rational (n = 3, 4, 6), else
+    /// from the float model.
+    pub fn of(n: u64, kappa: &Q, gamma: &Q) -> Result<Self, String> {
+        if let Ok(body) = Polygon::new(n, kappa.clone(), gamma.clone()) {
+            return Ok(FloatMaps::new(&body));
+        }
+        let body = FloatPolygon::new(n, kappa.to_f64(), gamma.to_f64()).map_err(|e| e.to_string())?;
+        Ok(FloatMaps::of_float(&body))
     }
 }
 
@@ -315,23 +341,49 @@ fn above(x: f64) -> Q {
 /// that the longest run of the largest step comes first (a canonical phase; the producer tries
 /// every phase anyway).
 pub fn find_pattern(req: &Request) -> Result<Vec<usize>, Failure> {
+    let (cc, any, seen) = scan_drops(req)?;
+    if let Some(p) = cc.or(any) {
+        return Ok(p);
+    }
+    let counts: Vec<String> = seen.iter().map(|(k, v)| format!("{k} {v}")).collect();
+    Err(Failure::NoPattern(format!(
+        "{} drops simulated, outcomes {} (seeds 1..{}, {PATTERN_IMPACTS} impacts each)",
+        req.drops.max(1),
+        counts.join(", "),
+        req.drops.max(1)
+    )))
+}
+
+/// The pattern of the first of the request's drops that ends in CC (`f64` evidence) and settles
+/// into a periodic pattern; `None` if none does (patterns of ICC transients do not count).
+pub fn find_cc_pattern(req: &Request) -> Option<Vec<usize>> {
+    scan_drops(req).ok()?.0
+}
+
+/// The drops of [`find_pattern`]: the first CC drop's pattern, the first pattern of any drop,
+/// and the outcome counts up to the first CC pattern.
+type Scan = (Option<Vec<usize>>, Option<Vec<usize>>, std::collections::BTreeMap<&'static str, usize>);
+
+fn scan_drops(req: &Request) -> Result<Scan, Failure> {
     let model = Model::new(Shape::Polygon(req.n), req.kappa.clone(), req.gamma.clone())
         .map_err(|e| Failure::Body(e.to_string()))?;
-    let mut seen = Vec::new();
+    let (mut any, mut seen) = (None, std::collections::BTreeMap::new());
     for seed in 1..=req.drops.max(1) {
-        let run = simulate(
-            &model,
-            &Initial::RandomDrop { seed },
-            crate::simulate::Arithmetic::Float,
-            &Options::new(600),
-        );
-        if let Some(p) = pattern::find(&run.sequence) {
-            return Ok(pattern::steps(&p.cycle, req.n as usize));
+        let options = Options::new(PATTERN_IMPACTS);
+        let run =
+            simulate(&model, &Initial::RandomDrop { seed }, crate::simulate::Arithmetic::Float, &options);
+        let steps = pattern::find(&run.sequence).map(|p| pattern::steps(&p.cycle, req.n as usize));
+        if run.outcome == crate::simulate::Outcome::Cc && steps.is_some() {
+            return Ok((steps, any, seen));
         }
-        seen.push(run.outcome.name());
+        any = any.or(steps);
+        *seen.entry(run.outcome.name()).or_default() += 1;
     }
-    Err(Failure::NoPattern(format!("{} drops simulated, outcomes {}", seen.len(), seen.join(", "))))
+    Ok((None, any, seen))
 }
+
+/// The impact budget of each drop [`find_pattern`] simulates.
+pub const PATTERN_IMPACTS: usize = 600;
 
 fn certificate(
     req: &Request,
@@ -657,9 +709,7 @@ pub fn certify_orbit_within(
     hints: &[[f64; 3]],
     halvings: u64,
 ) -> Result<Found, Failure> {
-    let body = Polygon::new(req.n, req.kappa.clone(), req.gamma.clone())
-        .map_err(|e| Failure::Body(e.to_string()))?;
-    let maps = FloatMaps::new(&body);
+    let maps = FloatMaps::of(req.n, &req.kappa, &req.gamma).map_err(Failure::Body)?;
     let given = match &req.pattern {
         Some(p) => {
             if p.is_empty() || p.iter().any(|&j| j == 0 || j >= req.n as usize) {

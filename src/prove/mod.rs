@@ -22,9 +22,9 @@ pub struct Proved {
     pub sets: Certified,
 }
 
-/// Whether the orbit producer can certify this body (rational cos 2π/n: n = 3, 4, 6).
+/// Whether the orbit producer can certify this body (a regular n-gon, 3 <= n <= 64).
 fn orbits_possible(model: &Model) -> bool {
-    matches!(model.shape(), Shape::Polygon(3 | 4 | 6))
+    matches!(model.shape(), Shape::Polygon(n) if (3..=crate::exact::MAX_N).contains(&n))
 }
 
 /// The canonical cycles of the drops that are undecided although the evidence says CC.

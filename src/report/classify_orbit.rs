@@ -8,7 +8,7 @@
 use super::classify::{Criterion, Drops};
 use super::orbit::Diagnostics;
 use super::{Number, Verdict};
-use crate::orbit::{Failure, Found, Request, certify_orbit, find_pattern};
+use crate::orbit::{Failure, Found, Request, certify_orbit, find_cc_pattern, find_pattern};
 use crate::simulate::Outcome;
 use chatter_kernel::certificate::Triple;
 use chatter_kernel::certificate::{OrbitCertificate, OrbitSet};
@@ -17,8 +17,9 @@ use schemars::JsonSchema;
 use serde::Serialize;
 
 /// Random drops the producer simulates to find the impact pattern (seeds 1..=ORBIT_DROPS, 600
-/// impacts each).
-pub const ORBIT_DROPS: u64 = 20;
+/// impacts each): enough to meet a cycle whose basin holds a few percent of the drops (the
+/// pentagon's, docs/orbit-certificates.md §7.3).
+pub const ORBIT_DROPS: u64 = 200;
 /// The deepest subdivision of X the producer may ask the kernel for. With it the producer makes
 /// at most 48 kernel calls per phase of the pattern (δ = 2^-4 down to 2^-27, subdivision 0
 /// and 1), each on at most 9 sub-boxes: a failed attempt ends in seconds, never hangs.
@@ -202,8 +203,9 @@ fn certified(found: Found, cc: &Criterion) -> OrbitSummary {
 }
 
 /// The orbit certificate at a regular polygon (n, kappa, gamma) where the CC criterion `cc`
-/// fails and some of the `drops` end in CC; `None` elsewhere (criterion holds, the rod, no CC
-/// drop). n = 3, 4, 6 only (rational cos 2π/n); other n are reported as not attempted.
+/// fails and some of the `drops` end in CC, or the producer's own [`ORBIT_DROPS`] drops find a
+/// periodic pattern; `None` elsewhere (criterion holds, the rod, neither). Every regular n-gon
+/// (3 <= n <= 64; Q(cos 2π/n) enclosed by rationals in the kernel).
 pub fn orbit_attempt(
     n: u64,
     kappa: &crate::exact::Q,
@@ -216,16 +218,7 @@ pub fn orbit_attempt(
     }
     let drops = drops?;
     let chatter = drops.counts.get(Outcome::Cc.name()).copied().unwrap_or(0);
-    if chatter == 0 {
-        return None;
-    }
-    if ![3, 4, 6].contains(&n) {
-        let why = format!(
-            "not attempted: orbit certificates exist for n = 3, 4 and 6 only (rational cos 2π/n), not n = {n}"
-        );
-        return Some(not_certified(None, "unsupported-body", why, chatter, drops.runs));
-    }
-    let req = Request {
+    let mut req = Request {
         n,
         kappa: kappa.clone(),
         gamma: gamma.clone(),
@@ -233,6 +226,10 @@ pub fn orbit_attempt(
         drops: ORBIT_DROPS,
         max_depth: ORBIT_DEPTH,
     };
+    if chatter == 0 {
+        // A small basin: the evidence drops may all miss it; the pattern search is longer.
+        req.pattern = Some(find_cc_pattern(&req)?);
+    }
     Some(attempt(req, cc, drops))
 }
 

@@ -137,7 +137,7 @@ pub struct CertifyOrbitReport {
     pub schema: &'static str,
     /// `certified` or `not-certified`.
     pub verdict: Verdict,
-    /// Number of contacts (3, 4 or 6).
+    /// Number of contacts (3 to 64).
     pub n: u64,
     pub kappa: Number,
     pub gamma: Number,

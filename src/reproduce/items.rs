@@ -258,17 +258,17 @@ pub fn pcc_n4(_ctx: &Context, r: &mut Report) -> Result<(), String> {
 /// The orbit certificate of the band point: made by the producer from the drops' pattern, written
 /// to certificates/NAME.ron, then read back and re-verified by the kernel on both backends (the
 /// producer's verdict is not trusted). `Ok(None)` with the producer's reason if it fails.
-fn orbit_certificate(
+pub(super) fn orbit_certificate(
     ctx: &Context,
     name: &str,
-    body: &Polygon<Q>,
+    (n, kappa, gamma): (u64, &Q, &Q),
     pattern: Option<Vec<usize>>,
 ) -> Result<Result<(String, crate::orbit::Found, usize), String>, String> {
     use crate::report::classify_orbit::{ORBIT_DEPTH, ORBIT_DROPS};
     let req = crate::orbit::Request {
-        n: body.n() as u64,
-        kappa: body.kappa().clone(),
-        gamma: body.gamma().clone(),
+        n,
+        kappa: kappa.clone(),
+        gamma: gamma.clone(),
         pattern,
         drops: ORBIT_DROPS,
         max_depth: ORBIT_DEPTH,
@@ -332,7 +332,7 @@ pub fn band(ctx: &Context, r: &mut Report) -> Result<(), String> {
     // The orbit certificate, with the pattern the drop settled into (the producer tries every
     // phase of it).
     let steps = found_cycle.map(|p| pattern::steps(&p.cycle, 3));
-    let orbit = orbit_certificate(ctx, "orbit-n3-kappa1_8-gamma3_20", &body, steps)?;
+    let orbit = orbit_certificate(ctx, "orbit-n3-kappa1_8-gamma3_20", (3, &kappa, &gamma), steps)?;
     let criterion = format!(
         "S₁'s dominant eigenvalue is {} (criterion {})",
         dominant.describe(),

@@ -187,3 +187,25 @@ fn the_band_ends_where_s1_squared_s2_squared_stops_having_a_real_positive_domina
         other => panic!("expected a saddle, got {:?}", other.map(|f| f.periods)),
     }
 }
+
+#[test]
+fn the_band_search_finds_the_pentagons_cycle_with_its_share_and_certifies_it() {
+    use chatter::orbit::search::{Plan, gamma_grid, search_point};
+    let plan = Plan { kappas: Vec::new(), gammas: 0, runs: 300, budget: 3000, icc_stop: 2 };
+    let (kappa, gamma) = (Q::new(961, 25600), Q::new(61, 160));
+    let p = search_point(5, &kappa, &gamma, &plan, &[MALACHITE, NUM]);
+    assert_eq!(p.outcomes.iter().sum::<u64>(), 300);
+    assert!(!p.all_icc());
+    // Every CC drop that settled is counted under its cycle; the 6-impact cycle is there.
+    let six = p.cycles.iter().find(|c| c.pattern.len() == 6).expect("the cycle of 6 impacts");
+    let mut steps = six.pattern.clone();
+    steps.sort();
+    assert_eq!(steps, vec![1, 1, 2, 3, 4, 4]);
+    assert!(six.drops >= 1 && six.drops <= p.outcomes[0], "{six:?}, outcomes {:?}", p.outcomes);
+    assert!(six.certificate.is_ok(), "{six:?}");
+    // The γ grid starts strictly above γ*, increases and stays below 1.
+    let star = cc_threshold(5, &kappa, 40).unwrap().1;
+    let grid = gamma_grid(&star, 12);
+    assert_eq!(grid.len(), 12);
+    assert!(grid[0] > star && grid.windows(2).all(|w| w[0] < w[1]) && grid[11] < Q::int(1));
+}

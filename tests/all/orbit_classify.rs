@@ -164,16 +164,37 @@ fn a_failed_orbit_attempt_reports_its_reason_and_claims_nothing() {
     assert_eq!(v["orbit"]["conjecture_1_refuted"], false);
     valid_classify(&v);
 
-    // n = 5 (irrational cos 2π/5) is outside the orbit kernel: reported as not attempted, at once.
-    let r5 = classify(&ClassifyRequest::new(5, q("1/5"), q("1/2"))).unwrap();
-    assert!(!r5.cc.holds);
-    let o = orbit_attempt(5, &q("1/5"), &q("1/2"), &r5.cc, Some(&drops)).expect("drops chatter");
-    assert_eq!((o.verdict, o.failure), (ReportVerdict::NotCertified, Some("unsupported-body")));
-    assert!(o.reason.unwrap().contains("n = 3, 4 and 6 only"));
-    // No CC drop, or the criterion holds: nothing is tried.
-    let mut none = drops.clone();
+    // No CC drop and no cycle in the producer's own drops (every drop ICC at γ = 1/5), or the
+    // criterion holds: nothing is tried.
+    let r = classify(&ClassifyRequest::new(3, q("1/8"), q("1/5"))).unwrap();
+    let mut none = r.drops.clone().unwrap();
     none.counts.insert("CC".into(), 0);
-    assert!(orbit_attempt(3, &q("1/8"), &q("3/20"), &r.cc, Some(&none)).is_none());
+    assert!(orbit_attempt(3, &q("1/8"), &q("1/5"), &r.cc, Some(&none)).is_none());
+}
+
+#[test]
+fn classify_at_the_pentagon_band_point_certifies_its_cycle_and_says_conjecture_1_fails_for_n_5() {
+    // Issue 22: about 2% of drops at n = 5, κ = 961/25600, γ = 61/160 settle into a cycle of 6
+    // impacts; classify's 20 evidence drops may all miss it, its pattern search does not.
+    let d = tempfile::tempdir().unwrap();
+    let args = ["classify", "--n", "5", "--kappa", "961/25600", "--gamma", "61/160"];
+    let o = chatter(&[&args[..], &["--json", "--orbit-out", "pentagon.ron"]].concat(), d.path());
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    valid_classify(&v);
+    assert_eq!(v["cc"]["holds"].as_bool(), Some(false), "S_1's criterion fails, decided exactly");
+    let orbit = &v["orbit"];
+    assert_eq!(orbit["verdict"], "certified", "{orbit}");
+    assert_eq!(orbit["conjecture_1_refuted"], true);
+    assert!(orbit["conjecture_1"].as_str().unwrap().starts_with("the paper's Conjecture 1"), "{orbit}");
+    let mut pattern: Vec<u64> =
+        orbit["pattern"].as_array().unwrap().iter().map(|x| x.as_u64().unwrap()).collect();
+    pattern.sort();
+    assert_eq!(pattern, vec![1, 1, 2, 3, 4, 4], "a phase of the 6-impact cycle 1,1,2,4,4,3");
+    assert!(verifies(&d.path().join("pentagon.ron")) >= 1);
+    let text = chatter(&args, d.path());
+    let lines = String::from_utf8_lossy(&text.stdout);
+    assert!(lines.contains("Conjecture 1 ((i) CC possible ⇒ (iii) S_1 criterion) is false here"), "{lines}");
 }
 
 /// Called by the existing `reproduce --quick` test (tests/all/reproduce.rs) on its output folder:

@@ -263,8 +263,8 @@ fn bad_input_to_certify_orbit_is_a_usage_error() {
     let long = vec!["1"; 65].join(",");
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (
-            vec!["--n", "5", "--kappa", "1/8", "--gamma", "3/20"],
-            "--n: 5 is not supported here: give n = 3, 4 or 6 (orbit certificates need a rational cos 2π/n)",
+            vec!["--n", "65", "--kappa", "1/8", "--gamma", "3/20"],
+            "--n: 65 is not supported here: give 3 <= n <= 64 (a regular n-gon)",
         ),
         (vec!["--n", "2", "--kappa", "1/8", "--gamma", "3/20"], "--n: 2"),
         (vec!["--kappa", "1/8", "--gamma", "3/2"], "--gamma: "),

@@ -8,9 +8,7 @@ use crate::rules::orbit::{Failure, MAX_PATTERN};
 /// The words of a failure of an orbit certificate (at a locus).
 pub(super) fn words(f: &Failure, locus: &Locus) -> String {
     match f {
-        Failure::Unsupported(n) => {
-            format!("n = {n}: orbit certificates need a rational cos(2 pi/n), n in {{3, 4, 6}}")
-        }
+        Failure::Unsupported(n) => format!("n = {n}: orbit certificates need {}", supported()),
         Failure::ConeClaim(c) => {
             format!("{} is a cone claim; an orbit certificate claims CompleteChatterFromSet", c.name())
         }
@@ -24,6 +22,18 @@ pub(super) fn words(f: &Failure, locus: &Locus) -> String {
         Failure::Singular => "the axes are linearly dependent".into(),
         Failure::Condition { quantity, wrong } => condition(*quantity, *wrong, locus),
     }
+}
+
+/// The n the kernel models for orbit certificates.
+#[cfg(feature = "field")]
+fn supported() -> String {
+    format!("3 <= n <= {}", crate::exact::MAX_N)
+}
+
+/// The n the kernel models for orbit certificates without number fields.
+#[cfg(not(feature = "field"))]
+fn supported() -> String {
+    "n in {3, 4, 6} (rational cos(2 pi/n); feature `field` for the others)".into()
 }
 
 /// "condition 1: ... fails at the centre of the sub-box y in [..] x [..] x [..]".

@@ -51,7 +51,8 @@ impl<F: OrderedField> Polygon<F> {
     }
 
     /// A body whose cos(2*pi/n) = `c1` is given by the caller (exact in any field, e.g. a number
-    /// field for n = 5). The kernel itself only uses [`Polygon::new`].
+    /// field for n = 5): the kernel's orbit certificates use it with c = cos 2π/n in Q(c)
+    /// (`orbit::constants`), every other kernel rule [`Polygon::new`].
     pub fn with_cosine(n: u64, c1: F, kappa: F, gamma: F) -> Result<Self, BodyError> {
         if n < 3 {
             return Err(BodyError::UnsupportedN(n));

@@ -103,6 +103,14 @@ impl<F: Field> Iv<F> {
     pub fn point(x: &F) -> Self {
         Iv::new(x.clone(), x.clone())
     }
+    /// The point x itself, not rounded (an exact constant of the model).
+    pub fn exact(x: &F) -> Self {
+        Iv { lo: x.clone(), hi: x.clone() }
+    }
+    /// Whether the interval is one point.
+    pub fn is_point(&self) -> bool {
+        self.lo == self.hi
+    }
     /// 0.
     pub fn zero() -> Self {
         Iv { lo: F::zero(), hi: F::zero() }
@@ -261,6 +269,19 @@ impl<F: Field> Centred<F> {
     /// Product with an exact scalar.
     pub fn scaled(&self, k: &F) -> Self {
         Centred { c: self.c.scaled(k), b: self.b.scaled(k), r: self.r.clone() }
+    }
+    /// A constant known by an enclosure `k` (zero gradient; docs/kernel-soundness.md §7.1).
+    pub fn enclosed(k: &Iv<F>) -> Self {
+        Centred { c: k.clone(), b: Dual { v: k.clone(), d: [Iv::zero(), Iv::zero(), Iv::zero()] }, r: None }
+    }
+    /// Product with a constant known by an enclosure `k`: [`Self::scaled`] when `k` is a point,
+    /// else interval products (each encloses the product for every constant in `k`).
+    pub fn scaled_by(&self, k: &Iv<F>) -> Self {
+        if k.is_point() {
+            return self.scaled(&k.lo);
+        }
+        let b = Dual { v: self.b.v.times(k), d: std::array::from_fn(|i| self.b.d[i].times(k)) };
+        Centred { c: self.c.times(k), b, r: self.r.clone() }
     }
     /// Quotient; `None` when the divisor's enclosure over Y contains 0.
     pub fn over(&self, o: &Self) -> Option<Self> {

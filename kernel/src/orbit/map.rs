@@ -1,32 +1,39 @@
 //! The return map R_P of a pattern P on the section Σ (docs/orbit-certificates.md §2), written
-//! once over any arithmetic ([`Num`]): exact rationals (the return map at a rational point) or
-//! intervals with gradients ([`Dual`], enclosures over a box). Every quantity whose sign a
+//! once over any arithmetic ([`Num`]): exact scalars (the return map at an exact point) or
+//! intervals with gradients ([`Centred`], enclosures over a box). Every quantity whose sign a
 //! condition needs is handed to the caller's `check` before it is used, in a fixed order.
 
-use super::interval::{Centred, Dual};
-use crate::exact::Field;
+use super::interval::{Centred, Iv};
+use crate::exact::{Field, OrderedField};
 use crate::model::linalg::Mat3;
 use crate::model::polygon::Polygon;
 
-/// The arithmetic the return map is written in.
-pub trait Num<F: Field>: Clone {
-    /// A rational constant.
-    fn cst(c: &F) -> Self;
+/// The arithmetic the return map is written in, with constants of type `K`: exact scalars
+/// (`K` itself, rationals or elements of Q(cos 2π/n)), or enclosures over a box ([`Centred`])
+/// with the body's constants known by rational enclosures (`K` = [`Iv`]).
+pub trait Num<K>: Clone {
+    /// A constant.
+    fn cst(c: &K) -> Self;
+    /// An integer constant.
+    fn int(v: i64) -> Self;
     /// Sum.
     fn add(&self, o: &Self) -> Self;
     /// Difference.
     fn sub(&self, o: &Self) -> Self;
     /// Product.
     fn mul(&self, o: &Self) -> Self;
-    /// Product with a rational constant.
-    fn scale(&self, c: &F) -> Self;
+    /// Product with a constant.
+    fn scale(&self, c: &K) -> Self;
     /// Quotient, `None` when the divisor is (or may be) 0.
     fn div(&self, o: &Self) -> Option<Self>;
 }
 
-impl<F: Field> Num<F> for F {
-    fn cst(c: &F) -> Self {
+impl<K: OrderedField> Num<K> for K {
+    fn cst(c: &K) -> Self {
         c.clone()
+    }
+    fn int(v: i64) -> Self {
+        K::from_i64(v)
     }
     fn add(&self, o: &Self) -> Self {
         self.plus(o)
@@ -37,7 +44,7 @@ impl<F: Field> Num<F> for F {
     fn mul(&self, o: &Self) -> Self {
         self.times(o)
     }
-    fn scale(&self, c: &F) -> Self {
+    fn scale(&self, c: &K) -> Self {
         self.times(c)
     }
     fn div(&self, o: &Self) -> Option<Self> {
@@ -45,9 +52,12 @@ impl<F: Field> Num<F> for F {
     }
 }
 
-impl<F: Field> Num<F> for Dual<F> {
-    fn cst(c: &F) -> Self {
-        Dual::constant(c)
+impl<F: Field> Num<Iv<F>> for Centred<F> {
+    fn cst(c: &Iv<F>) -> Self {
+        Centred::enclosed(c)
+    }
+    fn int(v: i64) -> Self {
+        Centred::constant(&F::from_i64(v))
     }
     fn add(&self, o: &Self) -> Self {
         self.plus(o)
@@ -58,29 +68,8 @@ impl<F: Field> Num<F> for Dual<F> {
     fn mul(&self, o: &Self) -> Self {
         self.times(o)
     }
-    fn scale(&self, c: &F) -> Self {
-        self.scaled(c)
-    }
-    fn div(&self, o: &Self) -> Option<Self> {
-        self.over(o)
-    }
-}
-
-impl<F: Field> Num<F> for Centred<F> {
-    fn cst(c: &F) -> Self {
-        Centred::constant(c)
-    }
-    fn add(&self, o: &Self) -> Self {
-        self.plus(o)
-    }
-    fn sub(&self, o: &Self) -> Self {
-        self.minus(o)
-    }
-    fn mul(&self, o: &Self) -> Self {
-        self.times(o)
-    }
-    fn scale(&self, c: &F) -> Self {
-        self.scaled(c)
+    fn scale(&self, c: &Iv<F>) -> Self {
+        self.scaled_by(c)
     }
     fn div(&self, o: &Self) -> Option<Self> {
         self.over(o)
@@ -174,20 +163,23 @@ pub enum Stop {
     Division(Quantity),
 }
 
-/// The body's constants the return map needs.
-#[derive(Clone, Debug)]
-pub struct Maps<F> {
+/// The body's constants the return map needs, exact or enclosed.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Maps<K> {
     /// n.
     pub n: usize,
     /// Contact covectors f_0..f_{n-1}.
-    pub contacts: Vec<[F; 3]>,
+    pub contacts: Vec<[K; 3]>,
     /// The impact map I_0.
-    pub impact0: Mat3<F>,
+    pub impact0: Mat3<K>,
 }
 
-impl<F: Field> Maps<F> {
-    /// The constants of a regular polygon.
-    pub fn new(body: &Polygon<F>) -> Self {
+impl<K: Clone> Maps<K> {
+    /// The constants of a regular polygon, exact.
+    pub fn new(body: &Polygon<K>) -> Self
+    where
+        K: OrderedField,
+    {
         let n = body.n();
         Maps {
             n,
@@ -196,7 +188,17 @@ impl<F: Field> Maps<F> {
         }
     }
 
-    fn dot<T: Num<F>>(&self, f: &[F; 3], x: &[T; 3]) -> T {
+    /// The same maps with every constant replaced by `f` of it (e.g. its enclosure).
+    pub fn map<L>(&self, f: impl Fn(&K) -> L) -> Maps<L> {
+        let row = |r: &[K; 3]| r.each_ref().map(&f);
+        Maps {
+            n: self.n,
+            contacts: self.contacts.iter().map(row).collect(),
+            impact0: self.impact0.each_ref().map(row),
+        }
+    }
+
+    fn dot<T: Num<K>>(&self, f: &[K; 3], x: &[T; 3]) -> T {
         x[0].scale(&f[0]).add(&x[1].scale(&f[1])).add(&x[2].scale(&f[2]))
     }
 }
@@ -218,13 +220,13 @@ pub struct Period<T> {
 
 /// The return map of `pattern` at x = (a, b, c) ∈ Σ; `check` sees every quantity of conditions 1
 /// and 2 whose sign is needed, in order, before it is used as a divisor.
-pub fn period<F: Field, T: Num<F>>(
-    maps: &Maps<F>,
+pub fn period<K: Clone, T: Num<K>>(
+    maps: &Maps<K>,
     pattern: &[usize],
     x: &[T; 3],
     check: &mut dyn FnMut(Quantity, &T) -> Result<(), Stop>,
 ) -> Result<Period<T>, Stop> {
-    let (zero, one) = (T::cst(&F::zero()), T::cst(&F::one()));
+    let (zero, one) = (T::int(0), T::int(1));
     let mut q = [zero.clone(), x[0].clone(), one.clone()];
     let mut p = [x[1].clone(), x[2].clone(), zero.sub(&one)];
     let mut time = zero.clone();

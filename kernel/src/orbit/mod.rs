@@ -1,8 +1,9 @@
 //! Orbit certificates' machinery (feature `orbit`; docs/orbit-certificates.md): the return map
-//! of an impact pattern on the section Σ ([`map`]), written once over exact rationals and over
-//! exact interval enclosures with gradients ([`interval`]). The acceptance rules are
-//! [`crate::rules::orbit`].
+//! of an impact pattern on the section Σ ([`map`]), written once over exact scalars and over
+//! exact interval enclosures with gradients ([`interval`]), the body's constants as rational
+//! enclosures for every n ([`constants`]). The acceptance rules are [`crate::rules::orbit`].
 
+pub mod constants;
 pub mod interval;
 pub mod map;
 
@@ -12,17 +13,22 @@ pub use crate::rules::orbit::{
 pub use interval::{Centred, Dual, Iv, PRECISION, round_down, round_up};
 pub use map::{Maps, Period, Quantity, Stop, period};
 
-use crate::exact::Field;
+use crate::exact::OrderedField;
 use crate::model::polygon::Polygon;
+pub use constants::enclosed_maps;
 
-/// The return map of the pattern at a rational point x = (a, b, c) of Σ, exactly: `Err` names the
-/// first quantity of conditions 1-2 that is not positive there.
-pub fn return_map<F: Field>(body: &Polygon<F>, pattern: &[usize], x: &[F; 3]) -> Result<Period<F>, Quantity> {
+/// The return map of the pattern at an exact point x = (a, b, c) of Σ (rationals, or elements
+/// of Q(cos 2π/n)): `Err` names the first quantity of conditions 1-2 that is not positive there.
+pub fn return_map<K: OrderedField>(
+    body: &Polygon<K>,
+    pattern: &[usize],
+    x: &[K; 3],
+) -> Result<Period<K>, Quantity> {
     let maps = Maps::new(body);
     if pattern.iter().any(|&j| j == 0 || j >= maps.n) {
         return Err(Quantity::Approach { step: 0, contact: 0 });
     }
-    let mut check = |q: Quantity, v: &F| if v.is_positive() { Ok(()) } else { Err(Stop::Failed(q)) };
+    let mut check = |q: Quantity, v: &K| if v.is_positive() { Ok(()) } else { Err(Stop::Failed(q)) };
     period(&maps, pattern, x, &mut check).map_err(|s| match s {
         Stop::Failed(q) | Stop::Division(q) => q,
     })

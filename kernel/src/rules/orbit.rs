@@ -1,7 +1,8 @@
 //! Orbit certificates (feature `orbit`; docs/orbit-certificates.md §3, docs/certificate-format.md
 //! §14, why: docs/kernel-soundness.md §7). Rules, in the order they are checked:
 //!
-//! - O1 (the file): the header, `max-total-digits`, the body n in {3, 4, 6} (`unsupported-body`)
+//! - O1 (the file): the header, `max-total-digits`, the body n in 3..=MAX_N with feature `field`
+//!   (its constants enclosed, docs/kernel-soundness.md §7.1), else n in {3, 4, 6} (`unsupported-body`)
 //!   with kappa > 0 and 0 <= gamma <= 1 (`parameter-out-of-range`), the claim
 //!   `CompleteChatterFromSet`, a pattern of 1 to [`MAX_PATTERN`] steps in 1..n-1, 0 < rho < 1,
 //!   0 < lambda < 1, period > 0 (`orbit-out-of-range`), subdivision <= [`MAX_DEPTH`]
@@ -18,7 +19,8 @@
 use super::outcome::Accepted;
 use crate::exact::{Field, ParseLimits, to_canonical};
 use crate::model::linalg::det3;
-use crate::model::polygon::{BodyError, Polygon};
+use crate::model::polygon::BodyError;
+use crate::orbit::constants::enclosed_maps;
 use crate::orbit::interval::{Centred, Iv};
 use crate::orbit::map::{Maps, Quantity, Stop, period};
 use crate::reject::{Code, Counted, Detail, Locus, Rejection};
@@ -37,7 +39,7 @@ pub const MAX_BOXES: usize = 20_000;
 /// Why an orbit certificate is rejected (besides numbers, limits and the body's parameters).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Failure {
-    /// n is not 3, 4 or 6.
+    /// n is not modelled (3..=MAX_N with feature `field`, else 3, 4 or 6).
     Unsupported(u64),
     /// A cone claim.
     ConeClaim(Claim),
@@ -90,8 +92,8 @@ pub fn check<F: Field>(cert: &OrbitCertificate, limits: ParseLimits) -> Result<A
 /// The checked content of an orbit certificate, exact.
 #[derive(Clone, Debug)]
 pub struct Orbit<F> {
-    /// The body's maps.
-    pub maps: Maps<F>,
+    /// The body's maps, enclosed (exact points for rational cos 2π/n).
+    pub maps: Maps<Iv<F>>,
     /// The pattern's steps.
     pub pattern: Vec<usize>,
     /// x*.
@@ -122,7 +124,7 @@ pub fn read_orbit_values<F: Field>(
     let OrbitBody::RegularPolygon { n, kappa, gamma } = &cert.body;
     let kappa: F = number("body.kappa", kappa, limits)?;
     let gamma: F = number("body.gamma", gamma, limits)?;
-    let body = Polygon::new(*n, kappa, gamma).map_err(|e| match e {
+    let maps = enclosed_maps(*n, kappa, gamma).map_err(|e| match e {
         BodyError::UnsupportedN(_) => fail(Code::UnsupportedBody, "body.n", Failure::Unsupported(*n)),
         BodyError::KappaNotPositive => {
             Rejection::at(Code::ParameterOutOfRange, "body.kappa", Detail::Body(e))
@@ -146,7 +148,6 @@ pub fn read_orbit_values<F: Field>(
     at_most("max-orbit-depth", cert.subdivision as usize, MAX_DEPTH as usize, Counted::Depth)?;
     let (centre, a, delta) = set::<F>(&cert.set, limits)?;
     let a_inv = inverse(&a).ok_or_else(|| fail(Code::DegenerateSet, "set.axes", Failure::Singular))?;
-    let maps = Maps::new(&body);
     Ok(Orbit { maps, pattern, centre, a, a_inv, delta, depth: cert.subdivision, rho, lambda, period })
 }
 

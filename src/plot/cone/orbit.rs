@@ -9,7 +9,6 @@ use crate::finder::geometry::{P2, hull};
 use crate::orbit::{FloatMaps, float_return};
 use crate::plot::map::body_name;
 use chatter_kernel::certificate::{Encoding, OrbitBody, OrbitSet, read_orbit};
-use chatter_kernel::model::Polygon;
 
 fn q(text: &str) -> Result<Q, String> {
     text.parse::<Q>().map_err(|e| format!("{text:?}: {e}"))
@@ -63,8 +62,7 @@ pub fn figure(text: &str, encoding: Encoding) -> Result<ConeFigure, String> {
     let cert =
         read_orbit(text, encoding).map_err(|r| format!("not a readable certificate: {}", r.message()))?;
     let OrbitBody::RegularPolygon { n, kappa, gamma } = &cert.body;
-    let body = Polygon::new(*n, q(kappa)?, q(gamma)?).map_err(|e| e.to_string())?;
-    let maps = FloatMaps::new(&body);
+    let maps = FloatMaps::of(*n, &q(kappa)?, &q(gamma)?)?;
     let pattern: Vec<usize> = cert.pattern.iter().map(|&j| j as usize).collect();
     let (pts, centre) = lattice(&cert.set)?;
     let x = hull(&pts.iter().map(velocity).collect::<Vec<_>>(), 0.0);
