@@ -587,10 +587,41 @@ pub fn evaluate_with(cert: &Certificate, limits: ParseLimits) -> Verdict {
         }
     }
     let is_box = cert.body.version_needed() > 1;
+    if let Some(b) = &cert.time_to_rest_bound {
+        if *n != 2 || is_box {
+            return Verdict::stopped(Code::TimeToRestNotShown);
+        }
+        let mut v = evaluate_point(*n, &k[0], &g[0], cert.claim, &gens);
+        match parse_number_code(b, limits) {
+            Err(c) => v.stage(vec![c]),
+            Ok(b) if !rod_time_to_rest_shown(&k[0], &g[0], cert.claim, &b) => {
+                v.stage(vec![Code::TimeToRestNotShown])
+            }
+            Ok(_) => {}
+        }
+        return v;
+    }
     if !is_box {
         return evaluate_point(*n, &k[0], &g[0], cert.claim, &gens);
     }
     evaluate_box(*n, &k, &g, cert.claim, &gens)
+}
+
+/// Rule T1 (docs/time-to-rest.md §2), formulated independently of the kernel: B > 0, a claim about
+/// drops, σ = (1 + γ)(1 − κ)/(1 + κ) > 0, Δ = σ² − 4γ ≥ 0 and λ_1 = (σ + √Δ)/2 ≥ 1/B, i.e.
+/// y = 2/B − σ ≤ 0 or Δ ≥ y².
+fn rod_time_to_rest_shown(kappa: &Q, gamma: &Q, claim: Claim, b: &Q) -> bool {
+    if claim == Claim::EffectivelyInvariant || *b <= zero() {
+        return false;
+    }
+    let one = Q::int(1);
+    let sigma = &(&(&one + gamma) * &(&one - kappa)) / &(&one + kappa);
+    let delta = &(&sigma * &sigma) - &(&Q::int(4) * gamma);
+    if sigma <= zero() || delta < zero() {
+        return false;
+    }
+    let y = &(&Q::int(2) / b) - &sigma;
+    y <= zero() || delta >= &y * &y
 }
 
 /// A parameter's bounds [lo, hi] (lo = hi for a number), or the code of its first bad number (or
@@ -1466,6 +1497,7 @@ mod tests {
             coordinates: Coordinates::ContactVelocities,
             claim,
             cone: gens.iter().map(|(a, b)| Generator(vec![a.to_string(), b.to_string()])).collect(),
+            time_to_rest_bound: None,
             producer: "test".into(),
         }
     }

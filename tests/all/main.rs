@@ -35,5 +35,6 @@ mod simulate;
 mod spectral;
 mod sweep;
 mod symbolic;
+mod time_to_rest;
 mod transport;
 mod verify;
