@@ -60,11 +60,7 @@ fn rod_s<F: Field>(u0: &Exact<F>, u1: &Exact<F>) -> Option<Exact<F>> {
 }
 
 /// Reads one accepted number as an element of the certificate's field.
-fn element<F: Field>(
-    field: &std::sync::Arc<CosField<F>>,
-    s: &str,
-    limits: ParseLimits,
-) -> Result<Exact<F>, NotCertified> {
+fn element<F: Field>(field: &std::sync::Arc<CosField<F>>, s: &str, limits: ParseLimits) -> Result<Exact<F>, NotCertified> {
     if field.degree() <= 1 {
         return parse_canonical::<F>(s, limits)
             .map(Exact::<F>::rational)
@@ -90,10 +86,7 @@ fn bounds<F: Field>(
 
 impl<F: Field> CertifiedCone<F> {
     /// Verifies `cert` on both backends and, if accepted, builds K (rule R1's polygon).
-    pub fn new(
-        cert: &Certificate,
-        limits: ParseLimits,
-    ) -> Result<(CertifiedCone<F>, Accepted), NotCertified> {
+    pub fn new(cert: &Certificate, limits: ParseLimits) -> Result<(CertifiedCone<F>, Accepted), NotCertified> {
         let accepted = match verify(cert, limits) {
             Verdict::Accepted(a) => a,
             v => return Err(NotCertified::Verdict(Box::new(v))),
@@ -173,8 +166,9 @@ impl<F: Field> CertifiedOrbit<F> {
             Verdict::Accepted(a) => a,
             v => return Err(NotCertified::Verdict(Box::new(v))),
         };
-        let orbit = read_orbit_values::<F>(cert, limits)
-            .map_err(|r| NotCertified::Unreadable(format!("{} at {:?}", r.code.as_str(), r.locus)))?;
+        let orbit = read_orbit_values::<F>(cert, limits).map_err(|r| {
+            NotCertified::Unreadable(format!("{} at {:?}", r.code.as_str(), r.locus))
+        })?;
         let e = |x: &F| Exact::<F>::rational(x.clone());
         let crate::certificate::OrbitBody::RegularPolygon { n, kappa, gamma } = &cert.body;
         let param = |s: &str| {

@@ -75,8 +75,7 @@ fn parallelepiped(text: &str) -> ([Q; 3], [[Q; 3]; 3], Q) {
 fn the_orbit_set_contains_its_centre_and_stops_at_delta_along_each_axis() {
     let text = file("certificates/valid/orbit-n3-kappa1_8-gamma3_20.ron");
     let cert = read_orbit(&text, Encoding::Ron).unwrap();
-    let (orbit, _) =
-        CertifiedOrbit::<Q>::new(&cert, Default::default()).unwrap_or_else(|_| panic!("accepted"));
+    let (orbit, _) = CertifiedOrbit::<Q>::new(&cert, Default::default()).unwrap_or_else(|_| panic!("accepted"));
     let (x, axes, delta) = parallelepiped(&text);
     // A state (q, p) with q = (0, a, 1) hc, p = (b, c, -1) w for x = (a, b, c), any hc, w > 0.
     let state = |x: &[Q; 3], hc: i64, w: i64| {

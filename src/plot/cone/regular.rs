@@ -4,13 +4,13 @@
 //! model of the n-gon.
 
 use super::{ConeFigure, Mark, Marker, Panel, Region, colour, s, window};
-use crate::exact::QField;
 use crate::exact::{GENERATOR, Q, QExt};
 use crate::finder::geometry::{P2, clip, hull, lift, project};
 use crate::model::FloatBody;
 use crate::model::float::FloatPolygon;
 use crate::plot::map::body_name;
 use chatter_kernel::certificate::{Body as CertBody, Encoding, read_in};
+use crate::exact::QField;
 use chatter_kernel::exact::{CosField, ParseLimits};
 use nalgebra::{Matrix3, Vector3};
 
