@@ -58,8 +58,12 @@ pub fn certificate_to_json(c: &Certificate) -> String {
         .iter()
         .map(|g| format!("[{}]", g.0.iter().map(|s| quoted(s)).collect::<Vec<_>>().join(", ")))
         .collect();
+    let bound = c
+        .time_to_rest_bound
+        .as_ref()
+        .map_or(String::new(), |b| format!("    \"time_to_rest_bound\": {},\n", quoted(b)));
     format!(
-        "{}    \"claim\": \"{}\",\n    \"cone\": {},\n    \"producer\": {}\n}}\n",
+        "{}    \"claim\": \"{}\",\n    \"cone\": {},\n{bound}    \"producer\": {}\n}}\n",
         head(&c.format, c.version, &c.body),
         c.claim.name(),
         list(&cone),

@@ -46,6 +46,9 @@ pub fn write(c: &Certificate) -> String {
         out.push_str(&format!("        ({}),\n", coords.join(", ")));
     }
     out.push_str("    ],\n");
+    if let Some(b) = &c.time_to_rest_bound {
+        out.push_str(&format!("    time_to_rest_bound: Some({}),\n", q(b)));
+    }
     out.push_str(&format!("    producer: {},\n", q(&c.producer)));
     out.push_str(")\n");
     out

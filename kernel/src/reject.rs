@@ -71,6 +71,8 @@ codes! {
     InitialOutside = "initial-outside",
     /// The PCC Lemma does not apply (rule R4, K4).
     PccNotExcluded = "pcc-not-excluded",
+    /// The optional `time_to_rest_bound` is not shown (rule T1, docs/time-to-rest.md §2).
+    TimeToRestNotShown = "time-to-rest-not-shown",
     /// A limit on the work a file may ask for is exceeded. No verdict on the content.
     TooLarge = "too-large",
     /// The time limit ran out. No verdict on the content.
@@ -381,6 +383,8 @@ pub enum Detail {
     /// The PCC quadratic t^2 + p t + q of rule R4 (or K4) does not exclude PCC (n, [p, q,
     /// p^2 - 4q] as canonical text, which condition fails).
     Pcc(usize, Box<[String; 3]>, PccExclusion),
+    /// Rule T1: the `time_to_rest_bound` B is not shown (why; B as written).
+    TimeToRest(TimeToRestFailure, String),
     /// Rule R4 on a box: a polynomial not shown negative on the sub-box of the locus (which,
     /// whether it is >= 0 at the sub-box's corner rather than not shown within, the limit).
     #[cfg(feature = "boxes")]
@@ -399,6 +403,23 @@ pub enum Detail {
     /// A proof's failure.
     #[cfg(feature = "proof")]
     Proof(ProofFailure),
+}
+
+/// Why rule T1 (docs/time-to-rest.md §2) does not show the bound B.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TimeToRestFailure {
+    /// Only point certificates of the rod (n = 2) may carry B: no theorem covers other bodies.
+    NotRod,
+    /// The claim is `EffectivelyInvariant`, which says nothing about drops.
+    Claim,
+    /// B <= 0.
+    NotPositive,
+    /// kappa >= 1, so sigma = (1 + gamma)(1 - kappa)/(1 + kappa) <= 0.
+    SigmaNotPositive,
+    /// sigma^2 - 4 gamma < 0: the roots lambda are not real.
+    ComplexRoots,
+    /// 1/B exceeds lambda_1, the larger root of lambda^2 - sigma lambda + gamma.
+    TooSmall,
 }
 
 /// An image that is not in the cone: the point mapped and its image, projected to the plane of

@@ -7,6 +7,7 @@
 pub mod bisect;
 pub mod convex;
 mod field;
+pub mod rest;
 pub mod transport;
 
 use crate::exact::{OrderedField, ParseLimits, Q, QField};
@@ -246,6 +247,7 @@ fn certificate(req: &Request, claim: Claim, cone: Vec<Generator>, how: &str) -> 
         coordinates: Coordinates::ContactVelocities,
         claim,
         cone,
+        time_to_rest_bound: rest::bound_for(req, claim).map(|b| b.to_string()),
         producer: format!("chatter {} certify ({how})", env!("CARGO_PKG_VERSION")),
     };
     cert.version = crate::write::VersionNeeded::version_needed(&cert);

@@ -11,13 +11,14 @@ use std::path::PathBuf;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum ClaimArg {
-    /// The strongest claim that can be certified (tries complete chatter first).
+    /// The strongest claim that can be certified (tries CompleteChatterFromAllDown first).
     Strongest,
     /// Conditions 1-2: K in v <= 0 and S_j(K ∩ C_j) ⊆ K.
     EffectivelyInvariant,
-    /// Also every all-down drop lands in K after its first impact: CC or PCC.
+    /// Also every all-down drop lands in K after its first impact: v <= 0 for ever, no ICC
+    /// (finite accumulation time not derived: docs/time-to-rest.md).
     CcOrPccFromAllDown,
-    /// Also PCC excluded: every all-down drop ends in complete chatter.
+    /// Also PCC excluded (the name is the file format's; finite accumulation time not derived).
     CompleteChatterFromAllDown,
 }
 
@@ -188,11 +189,17 @@ fn summary(v: &Validated, r: &Report) -> String {
                 .as_ref()
                 .map_or(String::from(" (no -o: not written)"), |p| format!(" -> {}", p.display()));
             format!(
-                "CERTIFIED {head} claim={}: {} generators, largest denominator {} bits, by {}; {times}{out}{notes}",
+                "CERTIFIED {head} claim={}: {} generators, largest denominator {} bits, by {}; {times}{out}\nproves: {}{notes}",
                 c.claim.name(),
                 c.cone.len(),
                 r.max_denominator_bits,
-                r.method.unwrap_or("?")
+                r.method.unwrap_or("?"),
+                crate::report::claims::proves_with(c.claim.name(), c.time_to_rest_bound.is_some())
+                    .unwrap_or("?")
+                    .to_string()
+                    + &c.time_to_rest_bound
+                        .as_ref()
+                        .map_or(String::new(), |b| format!("\ntime_to_rest_bound: {b}"))
             )
         }
         Err(e) => format!("NOT CERTIFIED {head}: {e}; {times}{notes}"),

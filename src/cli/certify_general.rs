@@ -59,12 +59,13 @@ fn summary(v: &Validated, r: &ConvexReport) -> String {
                 .map_or(String::from(" (no -o: not written)"), |p| format!(" -> {}", p.display()));
             let sizes: Vec<String> = c.cones.iter().map(|k| k.len().to_string()).collect();
             format!(
-                "CERTIFIED {head} claim={}: {} cones K_0..K_{} with {} generators, largest denominator {} bits, by the family finder + exactifier; {times}{out}{notes}",
+                "CERTIFIED {head} claim={}: {} cones K_0..K_{} with {} generators, largest denominator {} bits, by the family finder + exactifier; {times}{out}\nproves: {}{notes}",
                 c.claim.name(),
                 c.cones.len(),
                 c.cones.len() - 1,
                 sizes.join("/"),
-                r.max_denominator_bits
+                r.max_denominator_bits,
+                crate::report::claims::proves(c.claim.name()).unwrap_or("?")
             )
         }
         Err(e) => format!("NOT CERTIFIED {head}: {e}; {times}{notes}"),

@@ -312,6 +312,14 @@ fn single_text(v: &Validated, run: &Run) -> Vec<String> {
         time = format!("total time: {:.12} (at the last impact before the tie)", run.time);
     }
     lines.push(time);
+    if let Some(m) = crate::simulate::rest::measure(&v.model, &v.initial, run) {
+        let r = crate::report::simulate::TimeToRestReport::of(&m);
+        let verdict = if r.within { "within" } else { "VIOLATES" };
+        lines.push(format!(
+            "time to rest: T|v|/h = {:.6} (evidence, measured from the first impact) {verdict} the proved bound B = {} (docs/time-to-rest.md §2)",
+            r.measured, r.bound
+        ));
+    }
     if run.pcc_overruled > 0 {
         lines.push(format!(
             "note: in {} pair phase(s) the state came within eps of a multiple of m_(i,i+1) (the paper's \
@@ -456,6 +464,15 @@ fn run_many(v: &Validated, runs: u64) -> cli::Outcome {
         let by = r.decided_by.iter().map(|(k, c)| format!("{k} {c}")).collect::<Vec<_>>().join(", ");
         emit(&format!("decided by: {by}"));
         emit(&format!("mean impacts: {:.1}", r.mean_impacts));
+        if let Some(t) = &r.time_to_rest {
+            emit(&format!(
+                "time to rest: largest T|v|/h = {} over {} drops (evidence) against the proved bound B = {} (docs/time-to-rest.md §2): {} violations",
+                t.largest.map_or("-".to_string(), |x| format!("{x:.6}")),
+                t.measured,
+                t.bound,
+                t.violations
+            ));
+        }
         if v.sets.is_some() {
             for line in sets_lines(&r.certified_sets, &r.certificate_notes) {
                 emit(&line);

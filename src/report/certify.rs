@@ -28,6 +28,14 @@ pub struct CertifyReport {
     pub gamma: Interval,
     /// The claim certified (`EffectivelyInvariant`, `CcOrPccFromAllDown`, `CompleteChatterFromAllDown`).
     pub claim: Option<&'static str>,
+    /// What the claim proves, every assumption stated (`report::claims::proves`); null when not
+    /// certified.
+    pub proves: Option<&'static str>,
+    /// An exact bound B ("p/q") with T <= B h/|v| on the time until the impacts of an all-down drop
+    /// accumulate, h and v the centre's height and velocity just before the first impact (rule T1,
+    /// docs/time-to-rest.md §2): rod point certificates with a claim about drops; null otherwise
+    /// (no other cone or family certificate derives a finite accumulation time).
+    pub time_to_rest_bound: Option<String>,
     /// Generators of the cone.
     pub generators: Option<usize>,
     /// The largest denominator of the certificate's numbers, in bits.
@@ -68,6 +76,8 @@ pub fn of(req: &Request, r: &pipeline::Report, output: Option<String>, timings: 
         kappa_field: req.kappa_field.clone(),
         gamma: Interval::of(&req.gamma, gamma_hi),
         claim: cert.map(|c| c.claim.name()),
+        proves: cert.and_then(|c| super::claims::proves_with(c.claim.name(), c.time_to_rest_bound.is_some())),
+        time_to_rest_bound: cert.and_then(|c| c.time_to_rest_bound.clone()),
         generators: cert.map(|c| c.cone.len()),
         max_denominator_bits: cert.map(|_| r.max_denominator_bits),
         output: output.filter(|_| cert.is_some()),
@@ -103,6 +113,8 @@ pub fn of_convex(
         kappa_field: None,
         gamma: Interval::of(gamma, gamma),
         claim: cert.map(|c| c.claim.name()),
+        proves: cert.and_then(|c| super::claims::proves(c.claim.name())),
+        time_to_rest_bound: None,
         generators: cert.map(|c| c.cones.iter().map(Vec::len).sum()),
         max_denominator_bits: cert.map(|_| r.max_denominator_bits),
         output: output.filter(|_| cert.is_some()),

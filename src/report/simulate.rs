@@ -5,8 +5,8 @@
 use super::{Number, Report};
 use crate::simulate::pattern::find;
 use crate::simulate::{
-    Arithmetic, Brief, Certified, Decision, Initial, Model, Options, Outcome, Run, counts, evidence_counts,
-    proved_counts, simulate_many,
+    Arithmetic, Brief, Certified, Decision, Initial, Model, Options, Outcome, Run, SetKind, counts,
+    evidence_counts, proved_counts, simulate_many,
 };
 use schemars::JsonSchema;
 use serde::Serialize;
@@ -79,6 +79,10 @@ pub struct EnteredReport {
     pub kind: &'static str,
     /// The certificate's file, or how it was made.
     pub certificate: String,
+    /// Whether the set's theorem proves that the impacts accumulate at a finite time: true for
+    /// an orbit certificate; false for a cone certificate, which proves v <= 0 for ever (no
+    /// separation, impacts never stop) and no PCC, but not the finite time (docs/time-to-rest.md).
+    pub finite_time: bool,
 }
 
 /// The certified sets a run was checked against, and why any is missing.
@@ -159,6 +163,33 @@ pub struct SimulateReport {
     pub trajectory: Option<String>,
     /// The figure written (`--plot`).
     pub plot: Option<String>,
+    /// Rod drops with both ends moving down (docs/time-to-rest.md §2): the measured time to rest
+    /// against the theorem's bound (evidence: the time comes from this simulation); else null.
+    pub time_to_rest: Option<TimeToRestReport>,
+}
+
+/// A drop's time to rest against the bound B of T <= B h/|v| (docs/time-to-rest.md §2).
+#[derive(Clone, Debug, Serialize, JsonSchema)]
+pub struct TimeToRestReport {
+    /// B, exact ("p/q"), as rule T1 of the kernel checks it.
+    pub bound: String,
+    /// T|v|/h measured (evidence): T from the first impact to the accumulation point, h and v the
+    /// centre's height and velocity just before the first impact.
+    pub measured: f64,
+    /// Whether measured <= B (with a relative tolerance of 1e-9 for the f64 measurement).
+    pub within: bool,
+}
+
+impl TimeToRestReport {
+    /// The report of a measurement.
+    pub fn of(m: &crate::simulate::rest::Measured) -> Self {
+        let b = crate::exact::QExt::to_f64(&m.bound);
+        TimeToRestReport {
+            bound: m.bound.to_string(),
+            measured: m.ratio,
+            within: m.ratio <= b * (1.0 + 1e-9),
+        }
+    }
 }
 
 impl Report for SimulateReport {
@@ -198,6 +229,22 @@ pub struct SimulateBatchReport {
     /// Deciding test -> drops.
     pub decided_by: BTreeMap<String, usize>,
     pub mean_impacts: f64,
+    /// Rod bodies (docs/time-to-rest.md §2): the drops' measured T|v|/h against the bound B
+    /// (evidence); null for other bodies.
+    pub time_to_rest: Option<BatchTimeToRestReport>,
+}
+
+/// The batch's measured times to rest against B.
+#[derive(Clone, Debug, Serialize, JsonSchema)]
+pub struct BatchTimeToRestReport {
+    /// B, exact ("p/q"), as rule T1 checks it.
+    pub bound: String,
+    /// Drops measured (an accumulation time was estimated).
+    pub measured: usize,
+    /// The largest T|v|/h measured.
+    pub largest: Option<f64>,
+    /// Drops with T|v|/h > B (beyond a relative 1e-9): a violation would contradict the theorem.
+    pub violations: usize,
 }
 
 impl Report for SimulateBatchReport {
@@ -235,9 +282,12 @@ pub fn of_run(model: &Model, initial: &Initial, arithmetic: Arithmetic, run: &Ru
     let pattern =
         find(&run.sequence).map(|p| PatternReport { transient: p.transient, cycle: p.cycle, tail: p.tail });
     let entered = match &run.decision {
-        Decision::Certified { after, kind, name } => {
-            Some(EnteredReport { impact: *after, kind: kind.name(), certificate: name.clone() })
-        }
+        Decision::Certified { after, kind, name } => Some(EnteredReport {
+            impact: *after,
+            kind: kind.name(),
+            certificate: name.clone(),
+            finite_time: *kind == SetKind::Orbit,
+        }),
         _ => None,
     };
     SimulateReport {
@@ -264,6 +314,7 @@ pub fn of_run(model: &Model, initial: &Initial, arithmetic: Arithmetic, run: &Ru
         contact_counts: contact_counts(run, model.n()),
         total_time: run.time,
         accumulation_time: run.accumulation,
+        time_to_rest: crate::simulate::rest::measure(model, initial, run).as_ref().map(TimeToRestReport::of),
         log2_time_left_after_last_impact: run.tail_log2,
         contraction_bits_per_impact: run.contraction,
         simultaneous,
@@ -303,6 +354,22 @@ pub fn single(
         report.certificate_notes = sets.notes.clone();
     }
     (report, run)
+}
+
+/// The briefs' measured times to rest against the rod's bound (docs/time-to-rest.md §2).
+fn batch_time_to_rest(model: &Model, briefs: &[Brief]) -> Option<BatchTimeToRestReport> {
+    if !matches!(model.shape(), crate::simulate::Shape::Rod) {
+        return None;
+    }
+    let bound = crate::certify::rest::rod_bound(&model.kappa, &model.gamma)?;
+    let b = crate::exact::QExt::to_f64(&bound);
+    let ratios: Vec<f64> = briefs.iter().filter_map(|x| x.time_to_rest).collect();
+    Some(BatchTimeToRestReport {
+        bound: bound.to_string(),
+        measured: ratios.len(),
+        largest: ratios.iter().copied().reduce(f64::max),
+        violations: ratios.iter().filter(|&&r| r > b * (1.0 + 1e-9)).count(),
+    })
 }
 
 /// Simulates `runs` random drops with seeds `seed..seed + runs` in parallel, calling `tick`
@@ -359,5 +426,6 @@ pub fn batch(
         certificate_notes: sets.map(|s| s.notes).unwrap_or_default(),
         decided_by,
         mean_impacts: briefs.iter().map(|b| b.impacts as f64).sum::<f64>() / briefs.len().max(1) as f64,
+        time_to_rest: batch_time_to_rest(model, &briefs),
     }
 }

@@ -246,7 +246,7 @@ pub fn pcc_n4(_ctx: &Context, r: &mut Report) -> Result<(), String> {
     r.items.push(Item {
         title: "The PCC Lemma's condition for n ≥ 4".into(),
         paper: "Section on partial complete chatter: the conditions of the PCC Lemma (all eigenvalues of Sₙ₋₁S₁ real) “are never satisfied if n ≥ 4”; the square theorem relies on it.".into(),
-        ours: "the condition holds at small γ for the square, pentagon, hexagon, heptagon and octagon plates (and the maps for n = 4, 5 show the region); the square theorem actually proved is CC where the discriminant is negative and CC or PCC elsewhere".into(),
+        ours: "the condition holds at small γ for the square, pentagon, hexagon, heptagon and octagon plates (and the maps for n = 4, 5 show the region); the square theorem actually proved is: every all-down drop keeps v ≤ 0 for ever (never separates, impacts never stop), and PCC is excluded where the discriminant is negative; a finite accumulation time is not derived (docs/time-to-rest.md)".into(),
         verdict: Verdict::of(!holds),
         evidence,
         commands: vec!["chatter classify --n 4 --kappa 1/6 --gamma 0.001".into(), "chatter bodies".into()],
@@ -547,16 +547,16 @@ fn simulations_item(m: &MapRun, drops: u64, fig: FigureRef) -> Item {
         title: format!("Figure “simulations”, n = {}: random drops and the eigenvalue criterion", m.n),
         paper: "The 200-impact level curve (CC or PCC below it) follows the curve where S₁'s dominant eigenvalue stops being real and positive (Conjecture 1 (i) ⇔ (iii)).".into(),
         ours: format!(
-            "proved: drops end in CC or PCC where the criterion fails at {proved_off} points (Conjecture 1 (i) ⇒ (iii) false there); evidence only (f64, 200 impacts): at {evidence_off} points, of which the exact runs contradict the evidence at {contradicted} points; all drops ICC as evidence where the criterion holds at {icc_off} points (of {})",
+            "proved: drops chatter without separating (no ICC; impacts accumulating in finite time where an orbit certificate's set was entered, docs/time-to-rest.md) where the criterion fails at {proved_off} points (Conjecture 1 (i) ⇒ (iii) false there); evidence only (f64, 200 impacts): at {evidence_off} points, of which the exact runs contradict the evidence at {contradicted} points; all drops ICC as evidence where the criterion holds at {icc_off} points (of {})",
             s.points
         ),
         verdict: Verdict::of(proved_off == 0 && icc_off == 0),
         evidence: vec![
             format!("{drops} drops per point, seeded per point (the paper's protocol: velocity (R₁, R₂, −1), position (R₃, R₄, 1 + R₅), Rᵢ uniform on (0, 0.1)); each drop run in f64 for 200 impacts (evidence) and exactly for up to {} impacts (proof)", m.summary.computed.proof_budget),
-            "a drop is proved CC only when, after some impact, its exact state enters the cone K of a kernel-checked cone certificate (claim CompleteChatterFromAllDown) or the set X of a kernel-checked orbit certificate; ICC only by v > 0 exactly; PCC only by the exact pair proof; everything else is undecided".into(),
+            "a drop is proved CC only when, after some impact, its exact state enters the cone K of a kernel-checked cone certificate (claim CompleteChatterFromAllDown: v ≤ 0 for ever and no PCC; the finite accumulation time is not derived, docs/time-to-rest.md) or the set X of a kernel-checked orbit certificate (finite time proved); ICC only by v > 0 exactly; PCC only by the exact pair proof; everything else is undecided".into(),
             format!("proved outcomes over all points: {}", outcome_counts(s, "drops_proved")),
             format!("evidence over all points: {}", outcome_counts(s, "drops_evidence")),
-            format!("proved CC or PCC where the criterion fails: {}", listed("proved-chatter-criterion-fails", "none")),
+            format!("proved chatter (no ICC) where the criterion fails: {}", listed("proved-chatter-criterion-fails", "none")),
             format!("evidence of chatter where the criterion fails: {}", listed("simulated-chatter-criterion-fails", "none")),
             format!("exact runs contradicting the evidence: {}", listed("evidence-contradicted-by-proof", "none")),
         ],

@@ -2,9 +2,12 @@
 //! certificates, each accepted by the kernel on both backends before it is used, whose sets a
 //! post-impact state may enter (membership is decided by the kernel, `chatter_kernel::membership`).
 //!
-//! - a cone certificate proves CC from any post-impact velocity in its cone K when its claim
-//!   excludes PCC (`CompleteChatterFromAllDown`) and it holds for the body's n, κ, γ (a point
-//!   certificate with these exact values, or a box containing them);
+//! - a cone certificate proves, from any post-impact velocity in its cone K, that v ≤ 0 for ever
+//!   (no separation, impacts never stop) and no PCC, when its claim excludes PCC
+//!   (`CompleteChatterFromAllDown`) and it holds for the body's n, κ, γ (a point certificate with
+//!   these exact values, or a box containing them). It does not prove that the impacts accumulate
+//!   at a finite time (docs/time-to-rest.md §3: K may contain motions whose impacts never do); the
+//!   run's outcome is still named CC, and the report's `entered.finite_time` is false;
 //! - an orbit certificate proves CC from any post-impact state in its set X (claim
 //!   `CompleteChatterFromSet`, n, κ, γ equal).
 //!
@@ -51,7 +54,7 @@ enum Inner {
 #[derive(Clone, Debug)]
 pub enum Source {
     /// A cone certificate.
-    Cone(Certificate),
+    Cone(Box<Certificate>),
     /// An orbit certificate.
     Orbit(Box<OrbitCertificate>),
 }
@@ -140,7 +143,8 @@ impl Certified {
         if !cone.applies_to(n, &kappa, &gamma) {
             return Err(format!("it is not about n = {n}, kappa = {}, gamma = {}", model.kappa, model.gamma));
         }
-        let (kind, source, inner) = (SetKind::Cone, Source::Cone(cert.clone()), Inner::Cone(Box::new(cone)));
+        let (kind, source, inner) =
+            (SetKind::Cone, Source::Cone(Box::new(cert.clone())), Inner::Cone(Box::new(cone)));
         let set = Set { name: name.into(), kind, claim: cert.claim, source, inner };
         self.sets.push(Arc::new(set));
         Ok(())

@@ -235,13 +235,20 @@ impl Decision {
                  exactly 0 with gamma > 0); rerun with --exact"
             ),
             Decision::Certified { after, kind, name } => {
-                let what = match kind {
-                    SetKind::Cone => "the velocity lies in the cone K",
-                    SetKind::Orbit => "the state lies, up to relabelling and scaling, in the set X",
+                let (what, gives) = match kind {
+                    SetKind::Cone => (
+                        "the velocity lies in the cone K",
+                        "v <= 0 for ever from there (no separation, impacts never stop) and no PCC; \
+                         finite accumulation time: not derived by this certificate (docs/time-to-rest.md)",
+                    ),
+                    SetKind::Orbit => (
+                        "the state lies, up to relabelling and scaling, in the set X",
+                        "complete chatter from there, the impacts accumulating at a finite time",
+                    ),
                 };
                 format!(
                     "after impact {after} {what} of a kernel-checked {} certificate ({name}), whose \
-                     theorem gives complete chatter from there",
+                     theorem gives {gives}",
                     kind.name()
                 )
             }

@@ -43,6 +43,7 @@ pub mod pattern;
 pub mod pcc;
 pub mod record;
 pub mod regular;
+pub mod rest;
 pub mod scalar;
 pub mod snapshot;
 pub mod system;
@@ -260,6 +261,8 @@ pub struct Brief {
     pub impacts: usize,
     /// The steps of the periodic tail of the impact sequence, if it has one ([`pattern::find`]).
     pub cycle: Option<Vec<usize>>,
+    /// A rod drop's measured T|v|/h (evidence, [`rest::measure`]), set by [`simulate_many`].
+    pub time_to_rest: Option<f64>,
 }
 
 impl Brief {
@@ -274,6 +277,7 @@ impl Brief {
             decided_by: run.decision.key(),
             impacts: run.impacts,
             cycle,
+            time_to_rest: None,
         }
     }
 }
@@ -331,9 +335,12 @@ pub fn simulate_many_with(
         .into_par_iter()
         .map(|i| {
             let s = seed.wrapping_add(i);
-            let run = simulate_with(model, &Initial::RandomDrop { seed: s }, arithmetic, &opts, sets);
+            let initial = Initial::RandomDrop { seed: s };
+            let run = simulate_with(model, &initial, arithmetic, &opts, sets);
             tick();
-            Brief::of(s, &run, model.n())
+            let mut brief = Brief::of(s, &run, model.n());
+            brief.time_to_rest = rest::measure(model, &initial, &run).map(|m| m.ratio);
+            brief
         })
         .collect()
 }

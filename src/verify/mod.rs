@@ -53,6 +53,13 @@ pub struct FileVerdict {
     pub status: Status,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub claim: Option<&'static str>,
+    /// What the accepted certificate's claim proves, every assumption stated
+    /// (`report::claims::proves`; e.g. that a finite accumulation time is not derived).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub proves: Option<&'static str>,
+    /// Rule T1 (rod point certificates): the kernel-checked B of T <= B h/|v| (docs/time-to-rest.md §2).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub time_to_rest_bound: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub n: Option<u64>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -110,6 +117,8 @@ impl FileVerdict {
             path: path.display().to_string(),
             status,
             claim: None,
+            proves: None,
+            time_to_rest_bound: None,
             n: None,
             generators: None,
             redundant: None,
@@ -176,8 +185,18 @@ impl FileVerdict {
         } else {
             ""
         };
+        // Issue 24: a claim about drops says what it does not prove.
+        let finite = match (self.claim, &self.time_to_rest_bound) {
+            (_, Some(b)) => format!("; time to rest T <= {b} h/|v| for every all-down drop (rule T1)"),
+            (Some(c), None)
+                if c != "EffectivelyInvariant" && !crate::report::claims::derives_finite_time(c) =>
+            {
+                format!("; {}", crate::report::claims::FINITE_TIME_NOT_DERIVED)
+            }
+            _ => String::new(),
+        };
         format!(
-            "{}: OK ({}, n = {}{region}, {} generators{red}, denominators <= {} bits{pcc}{gzip}{vacuous})",
+            "{}: OK ({}, n = {}{region}, {} generators{red}, denominators <= {} bits{pcc}{gzip}{vacuous}{finite})",
             self.path,
             self.claim.unwrap_or("?"),
             self.n.unwrap_or(0),
@@ -193,6 +212,8 @@ pub fn verdict_of(path: &Path, verdict: Verdict) -> FileVerdict {
         Verdict::Accepted(a) => {
             let mut v = FileVerdict::new(path, Status::Ok);
             v.claim = Some(a.claim.name());
+            v.proves = crate::report::claims::proves_with(a.claim.name(), a.time_to_rest_bound.is_some());
+            v.time_to_rest_bound = a.time_to_rest_bound.clone();
             v.n = Some(a.n);
             v.generators = Some(a.generators);
             v.redundant = Some(a.redundant);

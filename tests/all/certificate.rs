@@ -14,6 +14,7 @@ fn sample() -> Certificate {
             Generator(vec!["0".into(), "-11/4".into(), "-1".into()]),
             Generator(vec!["1/20".into(), "3/4".into(), "-1".into()]),
         ],
+        time_to_rest_bound: None,
         producer: "a \"quoted\" producer\nwith a newline".into(),
     }
 }

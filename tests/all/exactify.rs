@@ -18,6 +18,7 @@ fn cert(n: u64, k: &str, g: &str, gens: &[[Q; 3]]) -> Certificate {
         coordinates: Coordinates::ContactVelocities,
         claim: Claim::EffectivelyInvariant,
         cone: gens.iter().map(|g| Generator(g.iter().map(Q::to_string).collect())).collect(),
+        time_to_rest_bound: None,
         producer: "test".into(),
     }
 }

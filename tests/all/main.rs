@@ -35,6 +35,7 @@ mod simulate;
 mod spectral;
 mod sweep;
 mod symbolic;
+mod time_to_rest;
 mod toolchain;
 mod transport;
 mod verify;

@@ -2,7 +2,7 @@
 
 use super::{abbreviate, quote, tuple};
 use crate::model::pcc::PccExclusion;
-use crate::reject::{Boundary, Counted, Detail, ImageFailure, Internal, Locus, Needs};
+use crate::reject::{Boundary, Counted, Detail, ImageFailure, Internal, Locus, Needs, TimeToRestFailure};
 use crate::syntax::strict::Offence;
 
 /// The words of a detail of the syntax layer or of a cone or family certificate.
@@ -65,6 +65,7 @@ pub(super) fn words(detail: &Detail, locus: &Locus) -> String {
         Detail::Degenerate(generators, rays, dimension) => degenerate(*generators, *rays, *dimension, locus),
         Detail::Image(f) => image(f, locus),
         Detail::Pcc(n, pqd, why) => pcc(*n, pqd, *why, locus),
+        Detail::TimeToRest(why, b) => time_to_rest(*why, b),
         #[cfg(feature = "boxes")]
         Detail::PccBox(polynomial, at_corner, max) => pcc_box(*polynomial, *at_corner, *max, locus),
         Detail::Internal(i) => internal(i),
@@ -73,6 +74,28 @@ pub(super) fn words(detail: &Detail, locus: &Locus) -> String {
         #[allow(unreachable_patterns)]
         _ => format!("{detail:?}"),
     }
+}
+
+/// Rule T1 (docs/time-to-rest.md §2), in words.
+fn time_to_rest(why: TimeToRestFailure, b: &str) -> String {
+    let b = abbreviate(b);
+    let reason = match why {
+        TimeToRestFailure::NotRod => {
+            "only a point certificate of the rod (n = 2) may carry it: for other bodies no theorem bounds the time to rest (docs/time-to-rest.md §4)"
+        }
+        TimeToRestFailure::Claim => "the claim EffectivelyInvariant says nothing about drops",
+        TimeToRestFailure::NotPositive => "B must be positive",
+        TimeToRestFailure::SigmaNotPositive => {
+            "kappa >= 1, so sigma = (1 + gamma)(1 - kappa)/(1 + kappa) <= 0"
+        }
+        TimeToRestFailure::ComplexRoots => {
+            "sigma^2 - 4 gamma < 0: the roots of lambda^2 - sigma lambda + gamma are not real"
+        }
+        TimeToRestFailure::TooSmall => {
+            "1/B exceeds lambda_1, the larger root of lambda^2 - sigma lambda + gamma, so B < 1/lambda_1"
+        }
+    };
+    format!("time_to_rest_bound B = {b} is not shown: {reason}")
 }
 
 /// What breaks the strict syntax, in words.

@@ -30,6 +30,8 @@ pub struct Accepted {
     pub pcc_boxes: Option<usize>,
     /// For an orbit certificate: the number of sub-boxes of X on which conditions 1-3 were shown.
     pub orbit_boxes: Option<usize>,
+    /// Rule T1: the bound B on the time to rest, canonical text, when the file carries it.
+    pub time_to_rest_bound: Option<String>,
 }
 
 impl Accepted {
@@ -47,6 +49,7 @@ impl Accepted {
             region: None,
             pcc_boxes: None,
             orbit_boxes: None,
+            time_to_rest_bound: None,
         }
     }
 }

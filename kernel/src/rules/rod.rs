@@ -8,14 +8,18 @@
 //! - R2: S_1(K ∩ C_1) ⊆ K on the ends of the piece K ∩ C_1 (`image-not-below`, `image-outside`);
 //! - R3 (`CcOrPccFromAllDown` and stronger): I_0(D) ⊆ K on the generators of D
 //!   (`initial-outside`);
-//! - R4 holds trivially: with two contacts PCC is CC.
+//! - R4 holds trivially: with two contacts PCC is CC;
+//! - T1 (optional field `time_to_rest_bound` B, claims about drops): 0 < κ < 1, Δ = σ² − 4γ ≥ 0
+//!   with σ = (1 + γ)(1 − κ)/(1 + κ), and 1/B ≤ λ_1, the larger root of λ² − σλ + γ
+//!   (`time-to-rest-not-shown`); then every all-down drop comes to rest by T ≤ B h/|v|
+//!   (docs/time-to-rest.md §2).
 
 use super::body::{body_error, gamma_range};
 use super::generators::{self, Generators};
 use super::outcome::{Accepted, Corner};
 use crate::exact::{Field, ParseLimits, Ring, scale_to_ints};
 use crate::model::rod::{Mat2, Rod, Vec2, mat2_vec};
-use crate::reject::{Boundary, Code, Detail, ImageFailure, Locus, Rejection};
+use crate::reject::{Boundary, Code, Detail, ImageFailure, Locus, Rejection, TimeToRestFailure};
 use crate::syntax::cone::{Certificate, Claim};
 use crate::syntax::numbers::{in_time, number};
 use std::cmp::Ordering;
@@ -38,7 +42,53 @@ pub fn check_point<F: Field>(
     if cert.claim >= Claim::CcOrPccFromAllDown {
         all_down(&rod, &k, None)?;
     }
-    Ok(accepted(&[&rod], &k, &gens, cert.claim, &piece))
+    let mut a = accepted(&[&rod], &k, &gens, cert.claim, &piece);
+    if let Some(b) = &cert.time_to_rest_bound {
+        a.time_to_rest_bound = Some(time_to_rest::<F>(b, rod.kappa(), rod.gamma(), cert.claim, limits)?);
+    }
+    Ok(a)
+}
+
+/// Rule T1 (docs/time-to-rest.md §2, Theorem): B is shown when 0 < κ < 1, σ² − 4γ ≥ 0 and
+/// 1/B ≤ λ_1, i.e. 1/B ≤ σ/2 or q(1/B) ≤ 0 with q(x) = x² − σx + γ (q increases beyond σ/2 and
+/// vanishes at λ_1). Returns B as canonical text.
+pub fn time_to_rest<F: Field>(
+    b: &str,
+    kappa: &F,
+    gamma: &F,
+    claim: Claim,
+    limits: ParseLimits,
+) -> Result<String, Rejection> {
+    let fail = |why| {
+        Err(Rejection::at(Code::TimeToRestNotShown, "time_to_rest_bound", Detail::TimeToRest(why, b.into())))
+    };
+    let bound: F = number("time_to_rest_bound", b, limits)?;
+    if claim < Claim::CcOrPccFromAllDown {
+        return fail(TimeToRestFailure::Claim);
+    }
+    if !bound.is_positive() {
+        return fail(TimeToRestFailure::NotPositive);
+    }
+    // σ = s/d with s = (1 + γ)(1 − κ) and d = 1 + κ > 0; every test is multiplied by a power of
+    // d > 0 and of B > 0, so no division is needed.
+    let one = F::from_ratio(1, 1);
+    let d = one.plus(kappa);
+    let s = one.plus(gamma).times(&one.minus(kappa));
+    if !s.is_positive() {
+        return fail(TimeToRestFailure::SigmaNotPositive);
+    }
+    // σ² − 4γ ≥ 0  ⇔  s² − 4γd² ≥ 0.
+    if s.times(&s).minus(&F::from_ratio(4, 1).times(gamma).times(&d).times(&d)).is_negative() {
+        return fail(TimeToRestFailure::ComplexRoots);
+    }
+    // 1/B ≤ σ/2 ⇔ 2d ≤ sB;  q(1/B) ≤ 0 ⇔ d − sB + γdB² ≤ 0.
+    let sb = s.times(&bound);
+    let below_half = !d.times(&F::from_ratio(2, 1)).minus(&sb).is_positive();
+    let q = d.minus(&sb).plus(&gamma.times(&d).times(&bound).times(&bound));
+    if !below_half && q.is_positive() {
+        return fail(TimeToRestFailure::TooSmall);
+    }
+    Ok(crate::exact::to_canonical(&bound))
 }
 
 /// K = [a, b] in s, with the indices of its end generators.

@@ -33,6 +33,10 @@ pub struct Certificate {
     pub claim: Claim,
     /// Generators of the cone K.
     pub cone: Vec<Generator>,
+    /// Optional (issue 24): B, canonical rational text, with T <= B h/|v| for the time T to rest
+    /// of every all-down drop (rule T1, rod point certificates only; docs/time-to-rest.md §2).
+    #[serde(default)]
+    pub time_to_rest_bound: Option<String>,
     /// Informational only, never trusted.
     #[serde(default)]
     pub producer: String,
@@ -143,9 +147,10 @@ pub enum Coordinates {
 pub enum Claim {
     /// K lies in v <= 0 and S_j(K ∩ C_j) ⊆ K for j = 1..n-1 (docs/model.md §5 conditions 1-2).
     EffectivelyInvariant,
-    /// Also I_0(D) ⊆ K: every drop with all contacts moving down ends in CC or PCC.
+    /// Also I_0(D) ⊆ K: every drop with all contacts moving down keeps v <= 0 for ever (not ICC);
+    /// a finite accumulation time is not derived (docs/time-to-rest.md).
     CcOrPccFromAllDown,
-    /// Also PCC excluded: every drop with all contacts moving down ends in CC.
+    /// Also PCC excluded; a finite accumulation time is not derived (docs/time-to-rest.md).
     CompleteChatterFromAllDown,
     /// Orbit certificates only (docs/certificate-format.md §14): every motion whose state right after some impact is,
     /// up to relabelling and the two scalings, a point of the set X ends in complete chatter,

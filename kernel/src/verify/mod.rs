@@ -6,9 +6,9 @@
 
 use crate::exact::{Field, ParseLimits};
 use crate::model::polygon::is_irrational;
-use crate::reject::{Code, Rejection};
 #[cfg(any(not(feature = "field"), not(feature = "boxes")))]
-use crate::reject::{Detail, Needs};
+use crate::reject::Needs;
+use crate::reject::{Code, Detail, Rejection, TimeToRestFailure};
 use crate::rules::outcome::Accepted;
 use crate::rules::{cone, rod};
 use crate::syntax::cone::{Body, Certificate, Param};
@@ -64,6 +64,12 @@ use crate::syntax::refutation::Refutation;
 pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
     cone::prelude(cert, limits)?;
     let Body::RegularPolygon { n, kappa, gamma } = &cert.body;
+    // Rule T1 covers only the rod at a point (docs/time-to-rest.md §2); elsewhere B is refused.
+    let rod_point = *n == 2 && matches!((kappa, gamma), (Param::Point(_), Param::Point(_)));
+    if let (Some(b), false) = (&cert.time_to_rest_bound, rod_point) {
+        let detail = Detail::TimeToRest(TimeToRestFailure::NotRod, b.clone());
+        return Err(Rejection::at(Code::TimeToRestNotShown, "time_to_rest_bound", detail));
+    }
     if is_irrational(*n) {
         #[cfg(feature = "field")]
         return field_rules::check::<F>(cert, limits);

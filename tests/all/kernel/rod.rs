@@ -16,6 +16,7 @@ fn rod_cert(kappa: &str, gamma: &str, claim: Claim, gens: &[(&str, &str)]) -> Ce
         coordinates: Coordinates::ContactVelocities,
         claim,
         cone: gens.iter().map(|(a, b)| Generator(vec![a.to_string(), b.to_string()])).collect(),
+        time_to_rest_bound: None,
         producer: "test".into(),
     }
 }

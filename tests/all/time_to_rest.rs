@@ -1,0 +1,209 @@
+//! Issue 24: what the certificates say about the time to rest (docs/time-to-rest.md). The output of
+//! `verify` and `certify` must not describe a cone certificate as proving a finite accumulation
+//! time; the rod's theorem (docs/time-to-rest.md §2) and the finding of §3 are checked exactly.
+
+use crate::common::{bin, q, root};
+use chatter::exact::Q;
+use chatter::report::claims::{FINITE_TIME_NOT_DERIVED, proves};
+use std::process::{Command, Output};
+
+fn chatter(args: &[&str], dir: &std::path::Path) -> Output {
+    Command::new(bin()).args(args).current_dir(dir).output().expect("run chatter")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+/// Claims whose certificates do not derive the finite time (cone, box, field and family kinds).
+const DROP_CLAIMS: [&str; 2] = ["CcOrPccFromAllDown", "CompleteChatterFromAllDown"];
+
+#[test]
+fn verify_says_that_no_cone_certificate_proves_a_finite_accumulation_time() {
+    let o = chatter(&["verify", "certificates/valid"], &root());
+    assert_eq!(o.status.code(), Some(0));
+    let out = stdout(&o);
+    let mut seen = 0;
+    for line in out.lines().filter(|l| l.contains(": OK (")) {
+        let about_drops = DROP_CLAIMS.iter().any(|c| line.contains(&format!("OK ({c},")));
+        assert_eq!(line.contains(FINITE_TIME_NOT_DERIVED), about_drops, "{line}");
+        seen += usize::from(about_drops);
+    }
+    assert!(seen >= 20, "the corpus has many certificates about drops: {seen}\n{out}");
+
+    let o = chatter(&["verify", "certificates/valid", "--json"], &root());
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    for f in v["files"].as_array().unwrap() {
+        let Some(claim) = f["claim"].as_str() else { continue };
+        let p = f["proves"].as_str().unwrap_or_else(|| panic!("no `proves` for {f}"));
+        assert_eq!(Some(p), proves(claim));
+        if DROP_CLAIMS.contains(&claim) {
+            assert!(p.contains(FINITE_TIME_NOT_DERIVED) && !p.contains("complete chatter"), "{p}");
+        }
+    }
+}
+
+#[test]
+fn certify_reports_what_the_claim_proves_and_no_time_to_rest_bound() {
+    let d = tempfile::tempdir().unwrap();
+    let o = chatter(&["certify", "--json"], d.path());
+    assert_eq!(o.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["claim"], "CompleteChatterFromAllDown");
+    assert!(v["proves"].as_str().unwrap().contains(FINITE_TIME_NOT_DERIVED), "{v}");
+    assert!(v["time_to_rest_bound"].is_null(), "no cone certificate derives a bound today");
+    let out = stdout(&chatter(&["certify"], d.path()));
+    let line = out.lines().find(|l| l.starts_with("proves: ")).unwrap_or_else(|| panic!("{out}"));
+    assert!(line.contains("PCC excluded") && line.ends_with(FINITE_TIME_NOT_DERIVED), "{line}");
+    // The help says which certificates prove the finite time.
+    let help = stdout(&chatter(&["--help"], d.path()));
+    assert!(help.contains("proved only by orbit certificates"), "{help}");
+}
+
+/// One exact flight of the rod (docs/model.md §7, §3 with n = 2): right after an impact at end 0,
+/// end 1 at height `h1` > 0, velocities `(u0, u1)` with u1 < 0. Returns the flight, end 0's height
+/// when end 1 lands, and the velocities after that impact, relabelled (end 1 becomes end 0).
+fn rod_flight(kappa: &Q, gamma: &Q, h1: &Q, [u0, u1]: [Q; 2]) -> (Q, Q, [Q; 2]) {
+    let one = Q::int(1);
+    let f = h1 / &(-&u1);
+    let h0 = &u0 * &f;
+    // u_j+ = u_j- - (1 + γ) u_k- (κ + c_{j-k}) / (1 + κ), c = cos π = -1.
+    let coupling = &(kappa - &one) / &(kappa + &one);
+    let other = &u0 - &(&(&(&one + gamma) * &u1) * &coupling);
+    (f, h0, [-(gamma * &u1), other])
+}
+
+/// docs/time-to-rest.md §2: at κ = 1/3, γ = 1/20 (σ = 21/40, λ_1 = 2/5, λ_2 = 1/8) every all-down
+/// drop's flights sum to T = H/(w_1 − λ_2 w_0) ≤ h/(λ_1|v|), checked on exact partial sums.
+#[test]
+fn the_rod_accumulates_its_impacts_at_the_time_of_the_theorem() {
+    let (kappa, gamma) = (q("1/3"), q("1/20"));
+    let (l1, l2) = (q("2/5"), q("1/8"));
+    let sigma = q("21/40");
+    assert_eq!(&l1 + &l2, sigma);
+    assert_eq!(&l1 * &l2, gamma);
+    let tiny = q("1/1000000000000000000000000");
+    for (w0, u, big_h) in [("1", "0", "1"), ("1", "3", "2"), ("5", "1/7", "1/3"), ("1/9", "4", "7")] {
+        let (w0, u, big_h) = (q(w0), q(u), q(big_h));
+        // The first impact, at end 0 with pre-impact speed w0; end 1 moves down at u.
+        let mut vel = [&gamma * &w0, -(&u + &(&sigma * &w0))];
+        let w1 = &u + &(&sigma * &w0);
+        let t = &big_h / &(&w1 - &(&l2 * &w0));
+        let v = (&w0 + &u) / Q::int(2);
+        let h = &big_h / &Q::int(2);
+        assert!(t <= &h / &(&l1 * &v), "the bound T <= h/(lambda_1 |v|)");
+        let (mut height, mut sum) = (big_h.clone(), Q::int(0));
+        for _ in 0..80 {
+            let (f, h0, next) = rod_flight(&kappa, &gamma, &height, vel);
+            assert!(next[1] < Q::int(0), "the other end always approaches (impacts never stop)");
+            sum = &sum + &f;
+            (height, vel) = (h0, next);
+        }
+        assert!(sum < t, "partial sums stay below T");
+        assert!(&t - &sum < &tiny * &t, "and reach it: T - sum = {}", &t - &sum);
+    }
+}
+
+/// docs/time-to-rest.md §3: on the generator (4/3, −10/3) of the corpus's accepted rod cone at
+/// κ = 1/3, γ = 1/20 (the λ_2 eigenvector) every flight is 16/5 times the previous one: infinitely
+/// many impacts in infinite time; at κ = 1/4, γ = 1/9 (Δ = 0) the generator (1, −3) gives equal
+/// flights.
+#[test]
+fn accepted_rod_cones_contain_motions_whose_impacts_never_accumulate() {
+    for (file, kappa, gamma, generator, ratio) in [
+        ("n2-kappa1_3-gamma1_20-complete-chatter-from-all-down.ron", "1/3", "1/20", ["4/3", "-10/3"], "16/5"),
+        ("n2-kappa1_4-gamma1_9-complete-chatter-from-all-down.ron", "1/4", "1/9", ["1", "-3"], "1"),
+    ] {
+        let text = std::fs::read_to_string(root().join("certificates/valid").join(file)).unwrap();
+        assert!(
+            text.contains(&format!("(\"{}\", \"{}\")", generator[0], generator[1])),
+            "{file} has the generator"
+        );
+        let (kappa, gamma) = (q(kappa), q(gamma));
+        let (mut height, mut vel, mut last) = (Q::int(1), [q(generator[0]), q(generator[1])], None::<Q>);
+        for _ in 0..30 {
+            let (f, h0, next) = rod_flight(&kappa, &gamma, &height, vel);
+            if let Some(prev) = last {
+                assert_eq!(&f / &prev, q(ratio));
+            }
+            (height, vel, last) = (h0, next, Some(f));
+        }
+    }
+}
+
+/// Rule T1 on each backend alone: B = 1/λ_1 exactly is accepted (κ = 1/3, γ = 1/20: 5/2; κ = 1/4,
+/// γ = 1/9, Δ = 0: 3), anything below is refused, and only the rod at a point may carry B.
+#[test]
+fn rule_t1_accepts_exactly_the_bounds_of_the_theorem_on_both_backends() {
+    use chatter_kernel::verify::{MALACHITE, NUM, Verdict, verify_text};
+    let rod = |kappa: &str, gamma: &str, claim: &str, gens: &str, b: &str| {
+        format!(
+            "Certificate(format: \"chatter-certificate\", version: 1, body: RegularPolygon(n: 2, kappa: \"{kappa}\", gamma: \"{gamma}\"), coordinates: ContactVelocities, claim: {claim}, cone: [{gens}], time_to_rest_bound: Some(\"{b}\"))"
+        )
+    };
+    let third = "(\"-10/3\", \"4/3\"), (\"4/3\", \"-10/3\")";
+    let quarter = "(\"-3\", \"1\"), (\"1\", \"-3\")";
+    let cases = [
+        (rod("1/3", "1/20", "CompleteChatterFromAllDown", third, "5/2"), Some("5/2")),
+        (rod("1/3", "1/20", "CcOrPccFromAllDown", third, "100"), Some("100")),
+        (rod("1/3", "1/20", "CompleteChatterFromAllDown", third, "2499999/1000000"), None),
+        (rod("1/3", "1/20", "EffectivelyInvariant", third, "5/2"), None),
+        (rod("1/3", "1/20", "CompleteChatterFromAllDown", third, "0"), None),
+        (rod("1/4", "1/9", "CompleteChatterFromAllDown", quarter, "3"), Some("3")),
+        (rod("1/4", "1/9", "CompleteChatterFromAllDown", quarter, "2999999/1000000"), None),
+    ];
+    for (text, expect) in &cases {
+        for b in [MALACHITE, NUM] {
+            match (verify_text(text, Default::default(), &[b]), expect) {
+                (Verdict::Accepted(a), Some(bound)) => {
+                    assert_eq!(a.time_to_rest_bound.as_deref(), Some(*bound))
+                }
+                (Verdict::Rejected(r), None) => {
+                    assert_eq!(r.code.as_str(), "time-to-rest-not-shown", "{text}")
+                }
+                (v, _) => panic!("{}: {text}: {v:?}", b.name),
+            }
+        }
+    }
+    // The pipeline writes B for rod point certificates and the kernel accepts it.
+    let d = tempfile::tempdir().unwrap();
+    let o = chatter(
+        &["certify", "--n", "2", "--kappa", "1/3", "--gamma", "1/20", "--json", "-o", "r.ron"],
+        d.path(),
+    );
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let b: Q = v["time_to_rest_bound"].as_str().unwrap_or_else(|| panic!("{v}")).parse().unwrap();
+    assert!(b >= q("5/2") && b < q("5000001/2000000"), "B = {b} is within 1e-6 of 1/lambda_1");
+    let out = stdout(&chatter(&["verify", "r.ron"], d.path()));
+    assert!(out.contains("time to rest T <= ") && !out.contains(FINITE_TIME_NOT_DERIVED), "{out}");
+}
+
+/// `chatter simulate` compares rod drops with the bound: no violation on the corpus's rod bodies
+/// (f64 evidence, 40 random drops each), and the measured ratio comes close to the sharp bound
+/// only from below.
+#[test]
+fn simulated_rod_drops_stay_within_the_bound_on_the_corpus_bodies() {
+    use chatter::simulate::rest::measure;
+    use chatter::simulate::{Arithmetic, Initial, Model, Options, Shape, simulate};
+    // Not κ = 1/4, γ = 1/9 (Δ = 0): its flights decay like 1/m², so the simulator cannot estimate
+    // the accumulation point from 400 impacts.
+    for (kappa, gamma) in [("1/3", "1/20"), ("1/3", "7/100"), ("1/10", "1/5")] {
+        let model = Model::new(Shape::Rod, q(kappa), q(gamma)).unwrap();
+        let opts = Options::new(400);
+        let mut measured = 0;
+        for seed in 0..40 {
+            let initial = Initial::RandomDrop { seed };
+            let run = simulate(&model, &initial, Arithmetic::Float, &opts);
+            if let Some(m) = measure(&model, &initial, &run) {
+                let b = chatter::exact::QExt::to_f64(&m.bound);
+                assert!(
+                    m.ratio > 0.5 && m.ratio <= b * (1.0 + 1e-9),
+                    "{kappa} {gamma} seed {seed}: {} > {b}",
+                    m.ratio
+                );
+                measured += 1;
+            }
+        }
+        assert!(measured >= 30, "{kappa} {gamma}: {measured} drops measured");
+    }
+}
