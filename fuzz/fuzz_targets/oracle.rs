@@ -17,7 +17,8 @@
 //! Run: `cd fuzz && RUSTC_BOOTSTRAP=1 cargo fuzz run oracle --sanitizer none -- -max_total_time=300`.
 #![no_main]
 
-use chatter_kernel::verify::{MALACHITE, NUM, Verdict, format_of, verify_refutation_text, verify_text};
+use chatter_kernel::syntax::{Encoding as KernelEncoding, Kind, kind_of};
+use chatter_kernel::verify::{MALACHITE, NUM, Verdict, verify_refutation_text, verify_text};
 use chatter_oracle::compare::{KernelView, differential};
 use chatter_oracle::mutate::{decode, mutated};
 use chatter_oracle::read::{Encoding, Value, parse::parse};
@@ -58,7 +59,7 @@ fn kernel(text: &str) -> KernelView {
         message,
         ..KernelView::default()
     };
-    if format_of(text).as_deref() == Some("chatter-refutation") {
+    if kind_of(text, KernelEncoding::Ron, Kind::Refutation).is_ok_and(|(kind, _)| kind == Kind::Refutation) {
         return match verify_refutation_text(text, Default::default(), &[MALACHITE, NUM]) {
             Verdict::Accepted(a) => KernelView {
                 accepted: true,
@@ -71,7 +72,7 @@ fn kernel(text: &str) -> KernelView {
                 ..KernelView::default()
             },
             Verdict::Rejected(r) => {
-                rejected(r.code.as_str(), serde_json::to_value(&r.locus).unwrap(), r.message)
+                rejected(r.code.as_str(), serde_json::to_value(&r.locus).unwrap(), r.message())
             }
             Verdict::Disagree(d) => KernelView { disagree: Some(d), ..KernelView::default() },
         };
@@ -98,7 +99,9 @@ fn kernel(text: &str) -> KernelView {
                 ..KernelView::default()
             }
         }
-        Verdict::Rejected(r) => rejected(r.code.as_str(), serde_json::to_value(&r.locus).unwrap(), r.message),
+        Verdict::Rejected(r) => {
+            rejected(r.code.as_str(), serde_json::to_value(&r.locus).unwrap(), r.message())
+        }
         Verdict::Disagree(d) => KernelView { disagree: Some(d), ..KernelView::default() },
     }
 }

@@ -84,7 +84,11 @@ def test_exact_simulation_in_a_number_field_agrees_with_f64():
     # The exact run's verdict is proved (or undecided); f64's is evidence (issue 22).
     assert e["evidence"]["outcome"] == f["outcome"] and f["proved"] is False and f["basis"] == "evidence"
     assert e["outcome"] in (f["outcome"], "undecided") and e["proved"] == (e["outcome"] != "undecided")
-    assert e["sequence"][:20] == f["sequence"][:20]
+    # The exact run stops once a proof is found (here: the state enters a certified cone), so its
+    # impacts are a prefix of the f64 run's.
+    n = len(e["sequence"])
+    assert n >= 1 and e["sequence"] == f["sequence"][:n]
+    assert e["outcome"] != "CC" or e["entered"]["impact"] == n
 
 
 def test_bodies_catalogue():

@@ -45,7 +45,7 @@ pub fn column(field: Field, r: &Row) -> Option<f64> {
     }
 }
 
-/// The legend's words for the PCC level line (they follow [`column`]).
+/// The legend's words for the PCC level line (they follow [`column()`]).
 pub fn pcc_line(proved: bool) -> &'static str {
     if proved {
         "PCC proved in half of the drops (sim_pcc_proved / sim_runs = 1/2)"

@@ -6,7 +6,7 @@
 //!
 //! The work is integer arithmetic: y = 2c is an algebraic integer (its minimal polynomial
 //! Q(y) = 2^d Psi_n(y/2) is monic with integer coefficients), so a vector of elements has a
-//! positive multiple in Z[y] ([`AlgebraicInt`]), where sums, products and reductions modulo Q
+//! positive multiple in Z\[y\] ([`AlgebraicInt`]), where sums, products and reductions modulo Q
 //! divide nothing. The isolating intervals of y have dyadic ends a/2^s, b/2^s; each precision
 //! is computed once per field and kept (roughly doubling s by a Newton step checked by the signs
 //! of Q at the new ends, or by bisection), so a sign costs a few integer Horner evaluations.
@@ -177,7 +177,7 @@ impl<Z: Int> Level<Z> {
         level
     }
 
-    /// The sign of p(y) (p in Z[y], lowest coefficient first) if the interval decides it:
+    /// The sign of p(y) (p in Z\[y\], lowest coefficient first) if the interval decides it:
     /// 2^(s (m-1)) p(y) by Horner's rule in interval arithmetic, with 2^s y in [a, b].
     fn sign_of(&self, p: &[Z]) -> Option<Ordering> {
         let Some((top, rest)) = p.split_last() else { return Some(Ordering::Equal) };
@@ -227,7 +227,7 @@ impl<F: Field> CosField<F> {
         Some(Arc::new(CosField { n, minpoly, lo, hi, ymin, levels: Mutex::new(levels) }))
     }
 
-    /// The sign of the element p(y) of Z[y] (reduced modulo Q, not all zero unless zero): decided
+    /// The sign of the element p(y) of Z\[y\] (reduced modulo Q, not all zero unless zero): decided
     /// on the isolating intervals of y, from the coarsest, each computed once and kept.
     fn sign_of(&self, p: &[F::Int]) -> Ordering {
         if p.len() <= 1 {
@@ -607,7 +607,7 @@ fn common_denominator<F: Field>(xs: &[Algebraic<F>]) -> F::Int {
     l
 }
 
-/// Positive multiples of the elements `xs`, one factor for all, in Z[y] (y = 2c): with D a common
+/// Positive multiples of the elements `xs`, one factor for all, in Z\[y\] (y = 2c): with D a common
 /// denominator of the coefficients a_k (of c^k) and d the degree, a_k c^k D 2^(d-1) =
 /// (a_k D 2^(d-1-k)) y^k.
 fn integral<F: Field>(xs: &[Algebraic<F>]) -> Vec<Vec<F::Int>> {
@@ -624,7 +624,7 @@ fn integral<F: Field>(xs: &[Algebraic<F>]) -> Vec<Vec<F::Int>> {
 }
 
 impl<F: Field> Algebraic<F> {
-    /// Positive multiples of `xs` with one common factor, as elements of Z[y], y = 2c (the
+    /// Positive multiples of `xs` with one common factor, as elements of Z\[y\], y = 2c (the
     /// homogeneous coordinates of a vector of elements).
     pub fn scaled(xs: &[Self]) -> Vec<AlgebraicInt<F>> {
         let field = xs.iter().find_map(|x| x.field.clone());
@@ -632,7 +632,7 @@ impl<F: Field> Algebraic<F> {
     }
 }
 
-/// An element of the ring Z[y], y = 2 cos(2 pi/n): a polynomial in y with integer coefficients,
+/// An element of the ring Z\[y\], y = 2 cos(2 pi/n): a polynomial in y with integer coefficients,
 /// reduced modulo the monic minimal polynomial Q of y (so no arithmetic divides). Integer-scaled
 /// coordinates of vectors over Q(cos 2 pi/n), as the integers are for the rationals.
 #[derive(Clone)]

@@ -33,7 +33,7 @@ pub fn cyclotomic(n: u32) -> Vec<BigInt> {
     let mut p: Poly = vec![BigInt::zero(); n as usize + 1];
     p[0] = -BigInt::one();
     p[n as usize] = BigInt::one();
-    for d in (1..n).filter(|d| n % d == 0) {
+    for d in (1..n).filter(|d| n.is_multiple_of(*d)) {
         p = divide_exact(&p, &cyclotomic(d));
     }
     p

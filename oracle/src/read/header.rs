@@ -5,8 +5,12 @@ use super::Value;
 use super::schema::{integer, record, string};
 use crate::verdict::{Checked, Fail};
 
-/// `format` of certificates.
+/// `format` of cone certificates (and the legacy headers of versions 4 and 5).
 pub const CERTIFICATE: &str = "chatter-certificate";
+/// `format` of family certificates of general convex bodies (§13).
+pub const FAMILY: &str = "chatter-family-certificate";
+/// `format` of orbit certificates (§14).
+pub const ORBIT: &str = "chatter-orbit-certificate";
 /// `format` of refutations (§10).
 pub const REFUTATION: &str = "chatter-refutation";
 
@@ -46,15 +50,16 @@ pub fn header(v: &Value) -> Checked<Reader> {
         return Err(Fail::new("syntax", format!("expected struct `{expected_name}`, found `{name}`")));
     }
     let format = format.ok_or_else(|| Fail::new("missing-field", "missing field `format`"))?;
-    if format != CERTIFICATE && !refutation {
+    if ![CERTIFICATE, FAMILY, ORBIT, REFUTATION].contains(&format) {
         return Err(Fail::new("wrong-format", format!("format {format:?}")));
     }
     let version = version.ok_or_else(|| Fail::new("missing-field", "missing field `version`"))?;
-    match (refutation, version) {
-        (true, 1) => Ok(Reader::Refutation),
-        (false, 1..=3) => Ok(Reader::Cone(version)),
-        (false, 4) => Ok(Reader::Family),
-        (false, 5) => Ok(Reader::Orbit),
+    // docs/certificate-format.md's header table, with the two legacy aliases of version 4 and 5.
+    match (format, version) {
+        (REFUTATION, 1) => Ok(Reader::Refutation),
+        (CERTIFICATE, 1..=3) => Ok(Reader::Cone(version)),
+        (CERTIFICATE, 4) | (FAMILY, 1) => Ok(Reader::Family),
+        (CERTIFICATE, 5) | (ORBIT, 1) => Ok(Reader::Orbit),
         _ => Err(Fail::new("unsupported-version", format!("version {version}"))),
     }
 }

@@ -78,7 +78,7 @@ pub struct Panel {
     pub seeds: Vec<P2>,
     pub seeds_legend: String,
     pub marks: Vec<Mark>,
-    /// The data window; see [`window::fit`].
+    /// The data window; see `window::fit`.
     pub window: (P2, P2),
     /// The vertical axis's magnification against the horizontal one (1 = same scale).
     pub stretch: f64,
