@@ -4,7 +4,7 @@
 
 use crate::common::{bin, q, root};
 use chatter::exact::Q;
-use chatter::report::claims::{FINITE_TIME_NOT_DERIVED, proves};
+use chatter::report::claims::{FINITE_TIME_NOT_DERIVED, proves_with};
 use std::process::{Command, Output};
 
 fn chatter(args: &[&str], dir: &std::path::Path) -> Output {
@@ -23,21 +23,33 @@ fn verify_says_that_no_cone_certificate_proves_a_finite_accumulation_time() {
     let o = chatter(&["verify", "certificates/valid"], &root());
     assert_eq!(o.status.code(), Some(0));
     let out = stdout(&o);
-    let mut seen = 0;
+    let (mut seen, mut bounded) = (0, 0);
     for line in out.lines().filter(|l| l.contains(": OK (")) {
         let about_drops = DROP_CLAIMS.iter().any(|c| line.contains(&format!("OK ({c},")));
-        assert_eq!(line.contains(FINITE_TIME_NOT_DERIVED), about_drops, "{line}");
+        // Only rod point certificates may carry a kernel-checked bound (rule T1).
+        let bound = line.contains("time to rest T <= ");
+        assert!(
+            !bound || (about_drops && line.contains("n = 2,") && !line.contains("for every kappa")),
+            "{line}"
+        );
+        assert_eq!(line.contains(FINITE_TIME_NOT_DERIVED), about_drops && !bound, "{line}");
         seen += usize::from(about_drops);
+        bounded += usize::from(bound);
     }
     assert!(seen >= 20, "the corpus has many certificates about drops: {seen}\n{out}");
+    assert_eq!(bounded, 8, "the rod's point certificates about drops carry B\n{out}");
 
     let o = chatter(&["verify", "certificates/valid", "--json"], &root());
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     for f in v["files"].as_array().unwrap() {
         let Some(claim) = f["claim"].as_str() else { continue };
+        if !f["refutation"].is_null() {
+            continue;
+        }
         let p = f["proves"].as_str().unwrap_or_else(|| panic!("no `proves` for {f}"));
-        assert_eq!(Some(p), proves(claim));
-        if DROP_CLAIMS.contains(&claim) {
+        let bound = f["time_to_rest_bound"].as_str();
+        assert_eq!(Some(p), proves_with(claim, bound.is_some()));
+        if DROP_CLAIMS.contains(&claim) && bound.is_none() {
             assert!(p.contains(FINITE_TIME_NOT_DERIVED) && !p.contains("complete chatter"), "{p}");
         }
     }
