@@ -15,6 +15,7 @@
 
 pub mod bodies;
 pub mod certify;
+pub mod claims;
 #[cfg(feature = "cli")]
 pub mod cli;
 pub mod convert;

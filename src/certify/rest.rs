@@ -92,7 +92,7 @@ mod tests {
         assert_eq!(rod_bound(&q("1/3"), &q("1/20")), Some(q("5/2")));
         // κ = 1/3, γ = 7/100: λ_1 irrational, B just above 1/λ_1 = 3.2579...
         let b = rod_bound(&q("1/3"), &q("7/100")).unwrap();
-        assert!(b > q("32578/10000") && b < q("32580/10000"), "{b}");
+        assert!(b > q("16289/5000") && b < q("1629/500"), "{b}");
         assert_eq!(rod_bound(&q("1/4"), &q("1/9")), Some(q("3")));
         assert_eq!(rod_bound(&q("1/4"), &q("1/8")), None, "Δ < 0: ICC");
         assert_eq!(rod_bound(&q("1"), &q("1/20")), None, "σ = 0");

@@ -194,7 +194,7 @@ fn summary(v: &Validated, r: &Report) -> String {
                 c.cone.len(),
                 r.max_denominator_bits,
                 r.method.unwrap_or("?"),
-                crate::report::claims::proves_with(c.claim.name(), c.time_to_rest_bound.is_some())
+                crate::claims::proves_with(c.claim.name(), c.time_to_rest_bound.is_some())
                     .unwrap_or("?")
                     .to_string()
                     + &c.time_to_rest_bound

@@ -65,7 +65,7 @@ fn summary(v: &Validated, r: &ConvexReport) -> String {
                 c.cones.len() - 1,
                 sizes.join("/"),
                 r.max_denominator_bits,
-                crate::report::claims::proves(c.claim.name()).unwrap_or("?")
+                crate::claims::proves(c.claim.name()).unwrap_or("?")
             )
         }
         Err(e) => format!("NOT CERTIFIED {head}: {e}; {times}{notes}"),

@@ -28,7 +28,7 @@ pub struct CertifyReport {
     pub gamma: Interval,
     /// The claim certified (`EffectivelyInvariant`, `CcOrPccFromAllDown`, `CompleteChatterFromAllDown`).
     pub claim: Option<&'static str>,
-    /// What the claim proves, every assumption stated (`report::claims::proves`); null when not
+    /// What the claim proves, every assumption stated (`claims::proves`); null when not
     /// certified.
     pub proves: Option<&'static str>,
     /// An exact bound B ("p/q") with T <= B h/|v| on the time until the impacts of an all-down drop
@@ -76,7 +76,7 @@ pub fn of(req: &Request, r: &pipeline::Report, output: Option<String>, timings: 
         kappa_field: req.kappa_field.clone(),
         gamma: Interval::of(&req.gamma, gamma_hi),
         claim: cert.map(|c| c.claim.name()),
-        proves: cert.and_then(|c| super::claims::proves_with(c.claim.name(), c.time_to_rest_bound.is_some())),
+        proves: cert.and_then(|c| crate::claims::proves_with(c.claim.name(), c.time_to_rest_bound.is_some())),
         time_to_rest_bound: cert.and_then(|c| c.time_to_rest_bound.clone()),
         generators: cert.map(|c| c.cone.len()),
         max_denominator_bits: cert.map(|_| r.max_denominator_bits),
@@ -113,7 +113,7 @@ pub fn of_convex(
         kappa_field: None,
         gamma: Interval::of(gamma, gamma),
         claim: cert.map(|c| c.claim.name()),
-        proves: cert.and_then(|c| super::claims::proves(c.claim.name())),
+        proves: cert.and_then(|c| crate::claims::proves(c.claim.name())),
         time_to_rest_bound: None,
         generators: cert.map(|c| c.cones.iter().map(Vec::len).sum()),
         max_denominator_bits: cert.map(|_| r.max_denominator_bits),

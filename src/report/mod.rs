@@ -19,7 +19,6 @@
 
 pub mod bodies;
 pub mod certify;
-pub mod claims;
 pub mod classify;
 pub mod classify_general;
 pub mod classify_orbit;

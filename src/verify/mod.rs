@@ -54,7 +54,7 @@ pub struct FileVerdict {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub claim: Option<&'static str>,
     /// What the accepted certificate's claim proves, every assumption stated
-    /// (`report::claims::proves`; e.g. that a finite accumulation time is not derived).
+    /// (`claims::proves`; e.g. that a finite accumulation time is not derived).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub proves: Option<&'static str>,
     /// Rule T1 (rod point certificates): the kernel-checked B of T <= B h/|v| (docs/time-to-rest.md §2).
@@ -188,10 +188,8 @@ impl FileVerdict {
         // Issue 24: a claim about drops says what it does not prove.
         let finite = match (self.claim, &self.time_to_rest_bound) {
             (_, Some(b)) => format!("; time to rest T <= {b} h/|v| for every all-down drop (rule T1)"),
-            (Some(c), None)
-                if c != "EffectivelyInvariant" && !crate::report::claims::derives_finite_time(c) =>
-            {
-                format!("; {}", crate::report::claims::FINITE_TIME_NOT_DERIVED)
+            (Some(c), None) if c != "EffectivelyInvariant" && !crate::claims::derives_finite_time(c) => {
+                format!("; {}", crate::claims::FINITE_TIME_NOT_DERIVED)
             }
             _ => String::new(),
         };
@@ -212,7 +210,7 @@ pub fn verdict_of(path: &Path, verdict: Verdict) -> FileVerdict {
         Verdict::Accepted(a) => {
             let mut v = FileVerdict::new(path, Status::Ok);
             v.claim = Some(a.claim.name());
-            v.proves = crate::report::claims::proves_with(a.claim.name(), a.time_to_rest_bound.is_some());
+            v.proves = crate::claims::proves_with(a.claim.name(), a.time_to_rest_bound.is_some());
             v.time_to_rest_bound = a.time_to_rest_bound.clone();
             v.n = Some(a.n);
             v.generators = Some(a.generators);

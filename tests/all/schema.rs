@@ -205,6 +205,11 @@ fn every_command_output_validates_against_its_schema() {
         ),
         (
             vec!["certify-orbit", "--n", "5", "--kappa", "1/8", "--gamma", "1/5", "--json"],
+            1,
+            "chatter.certify-orbit/1",
+        ),
+        (
+            vec!["certify-orbit", "--n", "1", "--kappa", "1/8", "--gamma", "1/5", "--json"],
             2,
             "chatter.error/1",
         ),
@@ -263,7 +268,7 @@ fn errors_under_json_are_json_on_stdout_with_the_same_exit_status() {
         (&["classify", "--n", "3", "--velocity", "1,2", "--json"], 2),
         (&["bodies", "--prism", "4", "--json"], 2),
         (&["check-proof", "missing.ron", "--json"], 2),
-        (&["certify-orbit", "--n", "5", "--kappa", "1/8", "--gamma", "3/20", "--json"], 2),
+        (&["certify-orbit", "--n", "65", "--kappa", "1/8", "--gamma", "3/20", "--json"], 2),
         (&["certify-orbit", "--kappa", "1/8", "--gamma", "3/20", "--pattern", "2,x", "--json"], 2),
     ] {
         let o = chatter(args, d.path());

@@ -3,8 +3,8 @@
 //! time; the rod's theorem (docs/time-to-rest.md §2) and the finding of §3 are checked exactly.
 
 use crate::common::{bin, q, root};
+use chatter::claims::{FINITE_TIME_NOT_DERIVED, proves_with};
 use chatter::exact::Q;
-use chatter::report::claims::{FINITE_TIME_NOT_DERIVED, proves_with};
 use std::process::{Command, Output};
 
 fn chatter(args: &[&str], dir: &std::path::Path) -> Output {

@@ -63,13 +63,8 @@ use crate::syntax::refutation::Refutation;
 /// body: the rod, a polygon with rational or irrational cos(2 pi/n), a point or a box.
 pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
     cone::prelude(cert, limits)?;
+    rod_only_bound(cert)?;
     let Body::RegularPolygon { n, kappa, gamma } = &cert.body;
-    // Rule T1 covers only the rod at a point (docs/time-to-rest.md §2); elsewhere B is refused.
-    let rod_point = *n == 2 && matches!((kappa, gamma), (Param::Point(_), Param::Point(_)));
-    if let (Some(b), false) = (&cert.time_to_rest_bound, rod_point) {
-        let detail = Detail::TimeToRest(TimeToRestFailure::NotRod, b.clone());
-        return Err(Rejection::at(Code::TimeToRestNotShown, "time_to_rest_bound", detail));
-    }
     if is_irrational(*n) {
         #[cfg(feature = "field")]
         return field_rules::check::<F>(cert, limits);
@@ -83,6 +78,19 @@ pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accept
         _ => boxes::check::<F>(cert, limits),
         #[cfg(not(feature = "boxes"))]
         _ => Err(not_built(Code::UnsupportedVersion, "version", "boxes", cert.version)),
+    }
+}
+
+/// Rule T1 covers only the rod at a point (docs/time-to-rest.md §2); elsewhere B is refused.
+fn rod_only_bound(cert: &Certificate) -> Result<(), Rejection> {
+    let Body::RegularPolygon { n, kappa, gamma } = &cert.body;
+    let rod_point = *n == 2 && matches!((kappa, gamma), (Param::Point(_), Param::Point(_)));
+    match &cert.time_to_rest_bound {
+        Some(b) if !rod_point => {
+            let detail = Detail::TimeToRest(TimeToRestFailure::NotRod, b.clone());
+            Err(Rejection::at(Code::TimeToRestNotShown, "time_to_rest_bound", detail))
+        }
+        _ => Ok(()),
     }
 }
 

@@ -219,7 +219,9 @@ fn every_n_up_to_64_simulates_in_f64() {
 }
 
 /// `--exact` works for every n (issue 10 §1; it was exit 2 for irrational cos 2 pi/n): the text
-/// names the field, the JSON report says `exact`, and the outcome is the `f64` one on these drops.
+/// names the field, the JSON report says `exact`, and the f64 evidence (CC) is proved here by an
+/// orbit certificate made on the fly in Q(cos 2 pi/n) (issue 22 §2): the exact run stops when its
+/// state enters the certificate's set X, after a prefix of the f64 run's impacts.
 #[test]
 fn exact_simulation_runs_in_the_number_field_for_every_n() {
     let d = tempfile::tempdir().unwrap();
@@ -229,17 +231,19 @@ fn exact_simulation_runs_in_the_number_field_for_every_n() {
         assert_eq!(o.status.code(), Some(0), "n = {n}: {}", stderr(&o));
         let text = stdout(&o);
         assert!(
-            // PCC is possible here (claims CcOrPccFromAllDown only), so CC stays evidence.
             text.contains(&format!("exact, in Q(cos 2pi/{n})"))
-                && text.contains("outcome: undecided (no proof within 300 impacts; evidence: CC"),
+                && text.contains("outcome: CC (proved)")
+                && text.contains("kernel-checked orbit certificate"),
             "{text}"
         );
         let e = json(&simulate(&[&args[..], &["--exact", "--json"]].concat(), d.path()));
         let f = json(&simulate(&[&args[..], &["--json"]].concat(), d.path()));
         assert_eq!((e["arithmetic"].as_str(), f["arithmetic"].as_str()), (Some("exact"), Some("f64")));
-        assert_eq!(e["evidence"]["outcome"], f["outcome"], "n = {n}");
-        assert_eq!((e["proved"].as_bool(), f["proved"].as_bool()), (Some(false), Some(false)), "n = {n}");
-        assert_eq!(e["sequence"].as_array().unwrap()[..40], f["sequence"].as_array().unwrap()[..40]);
+        assert_eq!((e["outcome"].as_str(), f["outcome"].as_str()), (Some("CC"), Some("CC")), "n = {n}");
+        assert_eq!((e["proved"].as_bool(), f["proved"].as_bool()), (Some(true), Some(false)), "n = {n}");
+        assert_eq!(e["entered"]["kind"], "orbit", "n = {n}");
+        let (es, fs) = (e["sequence"].as_array().unwrap(), f["sequence"].as_array().unwrap());
+        assert!(!es.is_empty() && es.len() < fs.len() && fs[..es.len()] == es[..], "n = {n}");
     }
     for n in ["0", "1", "65", "1000"] {
         let o = simulate(&["--n", n], d.path());
