@@ -21,8 +21,8 @@ import chatter  # noqa: E402
 N, STEPS = 3, 20
 # Point classes of the map, drawn in this order and these colours.
 CLASSES = [
-    ("certified: every drop ends in complete chatter", "#1b7837"),
-    ("certified: CC or PCC (weaker claim)", "#a6dba0"),
+    ("certified: no all-down drop separates or ends in PCC", "#1b7837"),
+    ("certified: no all-down drop separates (PCC possible)", "#a6dba0"),
     ("CC criterion holds, no certificate", "#fdb863"),
     ("CC criterion fails", "#d9d9d9"),
 ]

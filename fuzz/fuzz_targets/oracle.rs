@@ -96,6 +96,7 @@ fn kernel(text: &str) -> KernelView {
                 },
                 pcc_boxes: a.pcc_boxes,
                 orbit_boxes: a.orbit_boxes,
+                time_to_rest_bound: Some(a.time_to_rest_bound),
                 ..KernelView::default()
             }
         }

@@ -3,6 +3,8 @@
 //! n = 3, 4, 6; enclosures of irrational constants contain the exact elements of Q(cos 2π/n) and
 //! are narrow; the checker's verdicts survive widening the constants to proper intervals.
 
+#![cfg(all(feature = "orbit", feature = "field"))]
+
 use chatter_kernel::certificate::{Encoding, read_orbit};
 use chatter_kernel::exact::{Algebraic, CosField, OrderedField, ParseLimits, Ring, parse_canonical};
 use chatter_kernel::model::Polygon;
@@ -47,7 +49,7 @@ fn the_number_field_path_agrees_with_the_rational_path_for_n_3_4_6_on_both_backe
 
 #[test]
 fn enclosures_of_irrational_constants_contain_the_exact_elements_and_are_narrow() {
-    assert!(WIDTH_BITS >= 64, "narrower than the outward rounding's grid");
+    const { assert!(WIDTH_BITS >= 64, "narrower than the outward rounding's grid") };
     for n in [5u64, 7, 8, 9, 12, 64] {
         let field = CosField::<Q>::new(n).unwrap();
         let (kappa, gamma) =
@@ -166,4 +168,22 @@ fn the_pentagon_certificate_is_accepted_on_both_backends_with_the_same_sub_boxes
     let a = cover(&read_orbit_values::<Q>(&cert, limits).unwrap(), limits).unwrap();
     let b = cover(&read_orbit_values::<Nq>(&cert, limits).unwrap(), limits).unwrap();
     assert_eq!((a, b), (8, 8));
+}
+
+/// Issue 24: an accepted orbit certificate reports B = T̄/(1 − ρ) of its Theorem (the impacts
+/// accumulate within B h/|v|), the same on both backends, computed here by hand from the file.
+#[test]
+fn accepted_orbit_certificates_report_their_time_to_rest_bound() {
+    use chatter_kernel::verify::{Verdict, verify_orbit};
+    for rel in [
+        PENTAGON,
+        "certificates/valid/orbit-n3-kappa1_8-gamma3_20.ron",
+        "certificates/valid/orbit-n8-kappa1_100-gamma2_5.ron",
+    ] {
+        let cert = read_orbit(&file(rel), Encoding::Ron).unwrap();
+        let Verdict::Accepted(a) = verify_orbit(&cert, ParseLimits::default()) else { panic!("{rel}") };
+        let (rho, period) = (q(&cert.rho), q(&cert.period));
+        let b = period / (Q::from(1) - rho);
+        assert_eq!(a.time_to_rest_bound, Some(b.to_string()), "{rel}");
+    }
 }

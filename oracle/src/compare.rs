@@ -23,6 +23,10 @@ pub struct KernelView {
     pub pcc_boxes: Option<usize>,
     /// For an accepted orbit certificate: the number of sub-boxes shown.
     pub orbit_boxes: Option<usize>,
+    /// For an accepted file: the bound B on the time to rest as the kernel reports it (rule T1
+    /// of a rod, T̄/(1 - ρ) of an orbit certificate; `Some(None)`: no bound); `None` where the
+    /// caller did not read it (then it is not compared).
+    pub time_to_rest_bound: Option<Option<String>>,
 }
 
 /// A disagreement between the kernel and the oracle.
@@ -120,6 +124,18 @@ fn same_report(k: &Report, o: &Report) -> Result<(), String> {
     }
 }
 
+/// Compares the bound B on the time to rest of an accepted file, where the kernel's was read: the
+/// oracle has one for a rod whose `time_to_rest_bound` rule T1 shows, and for an orbit
+/// certificate (T̄/(1 - ρ)).
+fn same_bound(k: &KernelView, o: &Judgement) -> Result<(), String> {
+    match &k.time_to_rest_bound {
+        Some(kb) if *kb != o.time_to_rest_bound => {
+            Err(format!("time_to_rest_bound differs: kernel {kb:?}, oracle {:?}", o.time_to_rest_bound))
+        }
+        _ => Ok(()),
+    }
+}
+
 /// Compares a kernel verdict with the oracle's judgement of the same file.
 pub fn compare(k: &KernelView, o: &Judgement) -> Result<Agreement, Finding> {
     if let Some(d) = &k.disagree {
@@ -132,6 +148,7 @@ pub fn compare(k: &KernelView, o: &Judgement) -> Result<Agreement, Finding> {
     match (&o.outcome, k.accepted) {
         (Outcome::Accept(report), true) => {
             same_report(&k.report, report).map_err(|d| finding("wrong-report", d))?;
+            same_bound(k, o).map_err(|d| finding("wrong-report", d))?;
             Ok(Agreement::BothAccept)
         }
         (Outcome::Reject { codes, why }, true) => {
@@ -162,8 +179,8 @@ pub fn compare(k: &KernelView, o: &Judgement) -> Result<Agreement, Finding> {
 /// exactly: `Some(true)` when the oracle's return map fails that condition at that point,
 /// `Some(false)` when it does not, `None` when the rejection makes no such claim.
 pub fn orbit_centre_confirmed(text: &str, encoding: crate::read::Encoding, k: &KernelView) -> Option<bool> {
+    use crate::arith::Num;
     use crate::arith::rational::parse_rational;
-    use crate::arith::{Field, Num};
     use crate::kinds::{limits::Limits, orbit};
     if k.accepted || !k.message.contains("fails at the centre") {
         return None;
@@ -171,12 +188,13 @@ pub fn orbit_centre_confirmed(text: &str, encoding: crate::read::Encoding, k: &K
     let locus = k.locus.as_ref()?;
     let value = crate::read::parse::parse(text, encoding).ok()?;
     let o = orbit::rules(&orbit::read(&value).ok()?, &Limits::default()).ok()?;
-    let q = Field::rationals();
+    // The centre is rational; the return map runs in the body's field Q(cos 2π/n).
+    let field = o.delta.field.clone();
     let mut y = vec![];
     for i in 0..3 {
         let end = |j: usize| locus["sub_box"][i][j].as_str().and_then(|s| parse_rational(s, usize::MAX).ok());
         let mid = (end(0)? + end(1)?) / parse_rational("2", 9).ok()?;
-        y.push(Num::rational(&q, mid));
+        y.push(Num::rational(&field, mid));
     }
     let y = [y[0].clone(), y[1].clone(), y[2].clone()];
     let code = k.code.as_deref()?;

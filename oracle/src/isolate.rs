@@ -1,16 +1,17 @@
 //! Every content rule of a file's claim evaluated on its own (R1, then R2, R3 and R4 each
-//! regardless of the others; K1, then K2, K3, K4), for tests that a corpus file breaks exactly
-//! one rule (docs/kernel-soundness.md §5). Files that fail before the content rules give the
-//! codes of their first failing rule.
+//! regardless of the others, and the rod's T1; K1, then K2, K3, K4), for tests that a corpus
+//! file breaks exactly one rule (docs/kernel-soundness.md §5). Files that fail before the content
+//! rules give the codes of their first failing rule.
 
 use crate::claim::Claim;
-use crate::kinds::cone::{Parts, claim, prepare, read};
+use crate::kinds::cone::{Parts, bound, claim, prepare, read};
 use crate::kinds::limits::Limits;
 use crate::read::header::{Reader, header};
 use crate::read::parse::parse;
 use crate::read::{Encoding, Value};
 use crate::regular::boxes::{Gens, box_failures};
 use crate::regular::pcc::pcc_quadratic;
+use crate::regular::rest::time_to_rest;
 use crate::regular::{rod, rules};
 use crate::verdict::Checked;
 
@@ -57,6 +58,9 @@ fn cone_failures(value: &Value) -> Checked<Vec<&'static str>> {
             collect(&mut out, rod::invariance(&r, &k));
             if drops {
                 collect(&mut out, rod::all_down(&r, &k));
+            }
+            if let Some(b) = bound(&f) {
+                collect(&mut out, time_to_rest(&r, claim(&f), b, &Limits::default()));
             }
         }
         Parts::Box(2, k, g, _, gens) => out = box_failures(2, &k, &g, claim(&f), &Gens::Rod(&gens))?,

@@ -62,6 +62,7 @@ fn unread(f: verdict::Fail) -> Judgement {
         kind: Kind::Unread,
         sided: Sided::Two,
         outcome: Outcome::Reject { codes: f.codes, why: f.why },
+        time_to_rest_bound: None,
     }
 }
 
@@ -70,15 +71,17 @@ fn done(kind: Kind, sided: Sided, r: Checked<Report>) -> Judgement {
         Ok(report) => Outcome::Accept(Box::new(report)),
         Err(f) => Outcome::Reject { codes: f.codes, why: f.why },
     };
-    Judgement { kind, sided, outcome }
+    Judgement { kind, sided, outcome, time_to_rest_bound: None }
 }
 
 fn judge_value(value: &Value, reader: Reader, limits: &Limits) -> Judgement {
     match reader {
         Reader::Cone(_) => match kinds::cone::read(value) {
             Err(f) => unread(f),
-            Ok(file) => match kinds::cone::check(&file, limits) {
-                Ok((kind, report)) => done(kind, Sided::Two, Ok(report)),
+            Ok(file) => match kinds::cone::checked(&file, limits) {
+                Ok((kind, report, bound)) => {
+                    Judgement { time_to_rest_bound: bound, ..done(kind, Sided::Two, Ok(report)) }
+                }
                 Err(f) => done(Kind::Cone, Sided::Two, Err(f)),
             },
         },
@@ -100,7 +103,9 @@ fn judge_value(value: &Value, reader: Reader, limits: &Limits) -> Judgement {
                         n: orbit.body.n as u64,
                         ..Report::default()
                     });
-                    done(Kind::Orbit, Sided::One, r)
+                    let accepted = r.is_ok();
+                    let judged = done(Kind::Orbit, Sided::One, r);
+                    Judgement { time_to_rest_bound: accepted.then(|| orbit.time_to_rest()), ..judged }
                 }
             },
         },

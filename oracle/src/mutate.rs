@@ -188,7 +188,7 @@ fn nodes<'a>(v: &'a mut Value, pick: &dyn Fn(&Value) -> bool, out: &mut Vec<&'a 
                 nodes(x, pick, out);
             }
         }
-        Value::Tuple(xs) | Value::List(xs) | Value::Array(xs) => {
+        Value::Tuple(xs) | Value::List(xs) | Value::Array(xs) | Value::Wrapped { items: xs, .. } => {
             for x in xs {
                 nodes(x, pick, out);
             }

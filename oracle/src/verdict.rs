@@ -79,12 +79,18 @@ pub struct Judgement {
     pub sided: Sided,
     /// The verdict.
     pub outcome: Outcome,
+    /// The bound B on the time to rest, T ≤ B h/|v| (canonical text), of an accepted file: for a
+    /// rod point certificate, its `time_to_rest_bound` as rule T1 shows it; for an orbit
+    /// certificate T̄/(1 - ρ) (docs/certificate-format.md §5). Kept beside the [`Report`], whose
+    /// fields other crates fill in literally.
+    pub time_to_rest_bound: Option<String>,
 }
 
 impl Judgement {
     /// A two-sided rejection with one code.
     pub fn reject(kind: Kind, code: &'static str, why: impl Into<String>) -> Judgement {
-        Judgement { kind, sided: Sided::Two, outcome: Outcome::Reject { codes: vec![code], why: why.into() } }
+        let outcome = Outcome::Reject { codes: vec![code], why: why.into() };
+        Judgement { kind, sided: Sided::Two, outcome, time_to_rest_bound: None }
     }
 
     /// Whether the oracle accepts.

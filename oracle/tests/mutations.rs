@@ -11,7 +11,7 @@ use std::collections::BTreeMap;
 
 /// Base files: small certificates and refutations of every kind (the large ones cost seconds per
 /// mutation and are left to the fuzz target).
-const BASES: [&str; 16] = [
+const BASES: [&str; 17] = [
     "valid/doc-example-square.ron",
     "valid/image-on-edge-square.ron",
     "valid/n2-kappa1_4-gamma1_9-complete-chatter-from-all-down.ron",
@@ -28,6 +28,7 @@ const BASES: [&str; 16] = [
     "valid/refutation-n2-kappa1_3-gamma1_10.ron",
     "valid/refutation-n3-kappa1_8-gamma1_5-all-down.ron",
     "invalid/pcc-not-excluded.ron",
+    "invalid/rod-time-to-rest-bound-too-small.ron",
 ];
 
 /// splitmix64, for deterministic inputs.

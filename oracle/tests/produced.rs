@@ -108,21 +108,25 @@ fn produced_certificates_and_refutations_get_the_same_verdicts() {
             t.run(&format!("refutation n={n} as {other}"), &text_with_claim(&text, "refutes", Some(other)));
         }
     }
-    // An orbit certificate (§14).
-    let req = chatter::orbit::Request {
-        n: 3,
-        kappa: q("1/8"),
-        gamma: q("3/20"),
-        pattern: Some(vec![2, 2, 1, 1]),
-        drops: 0,
-        max_depth: 1,
-    };
+    // Orbit certificates (§14): the triangle's, and the pentagon's (its constants in Q(cos 2π/5)).
     use chatter_kernel::verify::{MALACHITE, NUM};
-    let found =
-        chatter::orbit::certify_orbit(&req, &[MALACHITE, NUM]).expect("the documented orbit certifies");
-    let text = chatter::write::write_orbit(&found.certificate);
-    produced += 1;
-    assert!(t.run("orbit n=3", &text));
+    for (n, k, g, pattern) in
+        [(3, "1/8", "3/20", vec![2, 2, 1, 1]), (5, "961/25600", "61/160", vec![1, 1, 2, 4, 4, 3])]
+    {
+        let req = chatter::orbit::Request {
+            n,
+            kappa: q(k),
+            gamma: q(g),
+            pattern: Some(pattern),
+            drops: 0,
+            max_depth: 1,
+        };
+        let found = chatter::orbit::certify_orbit(&req, &[MALACHITE, NUM])
+            .unwrap_or_else(|e| panic!("the documented orbit n = {n} certifies: {e:?}"));
+        let text = chatter::write::write_orbit(&found.certificate);
+        produced += 1;
+        assert!(t.run(&format!("orbit n={n}"), &text), "the tool's orbit certificate is rejected\n{text}");
+    }
     eprintln!("produced {produced} files; verdicts {:?}", t.counts);
     assert!(t.failures.is_empty(), "{} disagreements:\n{}", t.failures.len(), t.failures.join("\n\n"));
 }

@@ -118,3 +118,50 @@ fn issue11_a_rod_box_fails_r2_and_r3_at_different_corners_and_r2_is_reported() {
     assert_eq!(kernel.code.as_deref(), Some("image-outside"));
     assert_eq!(kernel.locus.unwrap()["corner"], 1);
 }
+
+/// Rows beside docs/kernel-soundness.md §5's table for the rules added with the time to rest and
+/// orbit certificates of every n: rule T1 (docs/certificate-format.md §8) and the pentagon's
+/// orbit files (§14; rule O1 and conditions 1-3 in Q(cos 2π/5)). Each file gets its code from
+/// the kernel and the oracle, and differs from a file both accept in that rule alone: a T1 file
+/// without its bound is accepted, an orbit file is the valid pentagon certificate with one line
+/// changed.
+#[test]
+fn the_time_to_rest_and_pentagon_orbit_files_break_only_their_rule() {
+    let invalid = |f: &str| root().join("certificates/invalid").join(f);
+    for (file, code) in [
+        ("rod-time-to-rest-bound-too-small.ron", "time-to-rest-not-shown"),
+        ("time-to-rest-bound-square.ron", "time-to-rest-not-shown"),
+    ] {
+        let (kernel, oracle, cmp) = differential_file(&invalid(file));
+        assert!(cmp.is_ok(), "{file}: {cmp:?}");
+        assert_eq!((kernel.code.as_deref(), oracle.codes()), (Some(code), &[code][..]), "{file}");
+        let text = std::fs::read_to_string(invalid(file)).unwrap();
+        assert_eq!(every_failure(&text, Encoding::Ron), [code], "{file}");
+        let without: String = text
+            .lines()
+            .filter(|l| !l.contains("time_to_rest_bound"))
+            .map(|l| l.to_string() + "\n")
+            .collect();
+        let (kernel, oracle, cmp) = differential_ron(&without);
+        assert!(kernel.accepted && oracle.accepted() && cmp.is_ok(), "{file} without its bound: {kernel:?}");
+    }
+    let valid =
+        std::fs::read_to_string(root().join("certificates/valid/orbit-n5-kappa961_25600-gamma61_160.ron"))
+            .unwrap();
+    let (kernel, oracle, _) = differential_ron(&valid);
+    assert!(kernel.accepted && oracle.accepted());
+    for (file, code) in [
+        ("orbit-n5-step-out-of-range.ron", "orbit-out-of-range"),
+        ("orbit-n5-pattern-step-changed.ron", "pattern-not-forced"),
+        ("orbit-n5-centre-off-orbit.ron", "set-not-invariant"),
+        ("orbit-n5-rho-too-small.ron", "no-contraction"),
+        ("orbit-n65.ron", "unsupported-body"),
+    ] {
+        let (kernel, oracle, cmp) = differential_file(&invalid(file));
+        assert!(cmp.is_ok(), "{file}: {cmp:?}");
+        assert_eq!((kernel.code.as_deref(), oracle.codes()), (Some(code), &[code][..]), "{file}");
+        let text = std::fs::read_to_string(invalid(file)).unwrap();
+        let changed = text.lines().zip(valid.lines()).filter(|(a, b)| a != b).count();
+        assert_eq!((changed, text.lines().count()), (1, valid.lines().count()), "{file}: one line changed");
+    }
+}

@@ -115,7 +115,8 @@ def classify(n, kappa, gamma, velocity=None, digits=12):
 
 
 def simulate(n, kappa, gamma, seed=0, impacts=200, exact=False, runs=None, position=None, velocity=None):
-    """Simulate a drop event by event and classify it (CC, PCC, ICC, undecided, simultaneous).
+    """Simulate a drop event by event and classify it (CC, PCC, ICC, undecided, simultaneous;
+    with exact=True also no-ICC-no-PCC).
 
     Without position/velocity the body is dropped as in the paper from ``seed``; ``runs=M``
     simulates M drops from seeds seed..seed+M-1 and returns their counts. impacts: the impact
@@ -123,9 +124,12 @@ def simulate(n, kappa, gamma, seed=0, impacts=200, exact=False, runs=None, posit
     Q(cos 2π/n) for other n). position, velocity: a given start in chatter's coordinates ((h0, h1, hc), (u0, u1, v); the rod two numbers).
 
     Returns the report of ``chatter simulate --json`` (docs/json.md): ``chatter.simulate/1``
-    with "outcome" ("CC", "PCC", "ICC", ...), "decided_by", "impacts", "start", "sequence",
-    "total_time", "accumulation_time", ...; with runs ``chatter.simulate-batch/1`` with
-    "counts", "decided_by", "mean_impacts". "kappa", "gamma" (and a given start's numbers) are
+    with "outcome" ("CC", "PCC", "ICC", "no-ICC-no-PCC", ...), "proved", "evidence", "entered",
+    "decided_by", "impacts", "start", "sequence", "total_time", "accumulation_time", ...; with
+    runs ``chatter.simulate-batch/1`` with "counts", "proved", "evidence", "decided_by",
+    "mean_impacts". An exact run proves "CC" only with a finite accumulation time (entering an
+    orbit certificate's set); entering a certified cone proves "no-ICC-no-PCC": the drop never
+    separates and never ends in PCC, but the finite time is not derived (docs/time-to-rest.md). "kappa", "gamma" (and a given start's numbers) are
     {"exact": Fraction, "f64": float}.
     """
     if runs is not None and (isinstance(runs, bool) or not isinstance(runs, int) or runs < 1):
@@ -164,7 +168,8 @@ def map(n, gamma, rho=None, kappa=None, certify=False, refute=False, simulate=No
     "grid", "computed", "points", "counts", "disagreement_kinds", "disagreements") with the
     points under "columns": a dict of lists named as the columns of points.csv: "index",
     "n", "rho", "kappa", "gamma", "cc_criterion", "pcc_criterion", "finder", "certified",
-    "claim", "refuted", "sim_runs", "sim_cc_evidence", ... (f64 drops: evidence), "mean_impacts", "sim_cc_proved", ...,
+    "claim", "refuted", "sim_runs", "sim_cc_evidence", ... (f64 drops: evidence), "mean_impacts", "sim_cc_proved",
+    "sim_no_icc_no_pcc_proved" (a certified cone entered: no ICC, no PCC, CC not proved), ...,
     "sim_undecided" (the exact runs' proofs), and
     "certificate"/"refutation" (RON text or None). Exact columns hold Fractions.
     numpy=True makes the columns numpy arrays instead, exact columns as float64.

@@ -67,9 +67,13 @@ def test_simulate_batch_and_exact_and_given_start():
     assert sum(b["decided_by"].values()) == 30 and b["mean_impacts"] > 0
     e = chatter.simulate(4, F(1, 6), F(1, 100), exact=True, impacts=50)
     assert e["arithmetic"] == "exact"
-    # The square plate at gamma = 1/100 has a cone certificate: every all-down drop is proved CC
-    # by entering its cone at the first impact.
-    assert e["outcome"] == "CC" and e["proved"] and e["entered"]["impact"] == 1 and e["entered"]["kind"] == "cone"
+    # The square plate at gamma = 1/100 has a cone certificate: every all-down drop enters its
+    # cone at the first impact, which proves no ICC and no PCC ("no-ICC-no-PCC"), not CC: the cone
+    # does not give the finite accumulation time (docs/time-to-rest.md). The evidence stays CC.
+    assert e["outcome"] == "no-ICC-no-PCC" and e["proved"] and e["evidence"]["outcome"] == "CC"
+    assert e["entered"]["impact"] == 1 and e["entered"]["kind"] == "cone" and e["entered"]["finite_time"] is False
+    b = chatter.simulate(4, F(1, 6), F(1, 100), exact=True, impacts=50, runs=3)
+    assert b["proved"]["no-ICC-no-PCC"] == 3 and b["proved"]["CC"] == 0 and b["evidence"]["CC"] == 3
     g = chatter.simulate(4, F(1, 6), F(1, 100), position=("1/2", "1/2", 1), velocity=(-1, -1, -1), exact=True)
     assert g["start"]["kind"] == "given"
     assert [exact(v) for v in g["start"]["velocity"]] == [F(-1)] * 3
@@ -83,12 +87,12 @@ def test_exact_simulation_in_a_number_field_agrees_with_f64():
     assert e["arithmetic"] == "exact" and f["arithmetic"] == "f64"
     # The exact run's verdict is proved (or undecided); f64's is evidence (issue 22).
     assert e["evidence"]["outcome"] == f["outcome"] and f["proved"] is False and f["basis"] == "evidence"
-    assert e["outcome"] in (f["outcome"], "undecided") and e["proved"] == (e["outcome"] != "undecided")
-    # The exact run stops once a proof is found (here: the state enters a certified cone), so its
-    # impacts are a prefix of the f64 run's.
+    # Here the state enters a certified cone: proved no ICC and no PCC, not CC (issue 24).
+    assert e["outcome"] == "no-ICC-no-PCC" and f["outcome"] == "CC" and e["proved"]
+    # The exact run stops once a proof is found, so its impacts are a prefix of the f64 run's.
     n = len(e["sequence"])
     assert n >= 1 and e["sequence"] == f["sequence"][:n]
-    assert e["outcome"] != "CC" or e["entered"]["impact"] == n
+    assert e["entered"]["impact"] == n and e["entered"]["finite_time"] is False
 
 
 def test_bodies_catalogue():
@@ -121,6 +125,14 @@ def test_map_columns():
         if cert:
             assert chatter.verify(cert).ok
     assert all(r == 3 for r in cols["sim_runs"])
+    # Issue 24: drops that enter a certified cone are proved no-ICC-no-PCC, a column apart from
+    # sim_cc_proved, which counts only CC with a finite accumulation time (orbit certificates).
+    for claim, cc, cone in zip(cols["claim"], cols["sim_cc_proved"], cols["sim_no_icc_no_pcc_proved"]):
+        if claim == "CompleteChatterFromAllDown":
+            assert (cc, cone) == (0, 3)
+    proved = m["counts"]["drops_proved"]
+    assert proved["no-ICC-no-PCC"] == sum(cols["sim_no_icc_no_pcc_proved"]) > 0
+    assert proved["CC"] == sum(cols["sim_cc_proved"])
     # the summary counts the columns' values
     assert sum(m["counts"]["finder"].values()) == 20
     assert m["counts"]["finder"].get("found", 0) == cols["finder"].count("found")

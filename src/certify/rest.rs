@@ -32,10 +32,11 @@ pub fn rod_bound(kappa: &Q, gamma: &Q) -> Option<Q> {
     let q = |x: &Q| &(&(x * x) - &(&s * x)) + gamma;
     // λ_1 is often rational (Δ a square): try the small rational nearest its f64 value.
     let (sf, df) = (QExt::to_f64(&s), QExt::to_f64(&delta));
-    if let Some(x) = small_rational_near(0.5 * (sf + df.sqrt())) {
-        if x > half && q(&x) == zero {
-            return Some(&one / &x);
-        }
+    if let Some(x) = small_rational_near(0.5 * (sf + df.sqrt()))
+        && x > half
+        && q(&x) == zero
+    {
+        return Some(&one / &x);
     }
     // q(σ/2) = −Δ/4 < 0 and q(1) = 1 − σ + γ > 0 (docs/time-to-rest.md, note on λ_1 < 1): bisect
     // keeping q(lo) ≤ 0 < q(hi), so lo ≤ λ_1 < hi.

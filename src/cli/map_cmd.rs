@@ -58,8 +58,9 @@ pub struct MapArgs {
     pub refute: bool,
     /// Also simulate RUNS of the paper's random drops per point: the paper's protocol in f64
     /// (200 impacts each; evidence) and, for each drop, an exact run that proves its outcome where
-    /// it can (CC by entering a kernel-checked cone or orbit certificate's set, ICC by v > 0, PCC
-    /// by the exact pair proof; docs/map.md).
+    /// it can (CC by entering a kernel-checked orbit certificate's set; no-ICC-no-PCC, not CC, by
+    /// entering a kernel-checked cone, whose finite accumulation time is not derived; ICC by v > 0;
+    /// PCC by the exact pair proof; docs/map.md).
     #[arg(long, value_name = "RUNS", allow_hyphen_values = true)]
     pub simulate: Option<String>,
     /// With --simulate: the impact budget of each exact run that proves a drop's outcome (0: no

@@ -26,8 +26,12 @@ pub const MAX_RUNS: u64 = 1_000_000;
 #[command(after_help = "Outcomes: CC (complete chatter: impacts accumulate, the body comes to rest), \
 PCC (two adjacent contacts chatter to rest, then all contacts land at once), ICC (the body leaves: \
 v > 0 or no contact approaches), simultaneous (two contacts land at the same instant: undecidable \
-in this model, never resolved), undecided (the budget cannot tell). The line `decided by` names \
-the test.\n\n\
+in this model, never resolved), undecided (the budget cannot tell). With --exact an outcome is \
+proved or undecided; no-ICC-no-PCC (\"no ICC, no PCC\") is proved when the state enters the cone \
+of a kernel-checked cone certificate: the body never separates and never ends in PCC, so it is CC \
+unless the impacts take infinite time, which is not excluded (docs/time-to-rest.md); CC is proved \
+only with a finite accumulation time (an orbit certificate's set, or the exact pair proof). The \
+line `decided by` names the test.\n\n\
 Without --position/--velocity the body is dropped as in the paper: velocity (R1, R2, -1) and \
 position (R3, R4, 1 + R5) in the paper's coordinates (omega_x, omega_y, v), (phi_x, phi_y, h), \
 R_i uniform on (0, 0.1) from --seed (SplitMix64: the same on every machine); the rod uses \
@@ -83,10 +87,10 @@ pub struct SimulateArgs {
     /// Epsilon of the paper's PCC criterion (state within eps of a multiple of m_(i,i+1)).
     #[arg(long, default_value_t = DEFAULT_PCC_EPSILON)]
     pub pcc_epsilon: f64,
-    /// With --exact: prove CC from these certificates only (cone certificates with claim
-    /// CompleteChatterFromAllDown, orbit certificates; RON or .json; each re-checked by the kernel
-    /// on both backends and required to be about this body). Without it, certificates are made on
-    /// the fly.
+    /// With --exact: prove outcomes from these certificates only (cone certificates with claim
+    /// CompleteChatterFromAllDown: no ICC and no PCC; orbit certificates: CC; RON or .json; each
+    /// re-checked by the kernel on both backends and required to be about this body). Without it,
+    /// certificates are made on the fly.
     #[arg(long, value_name = "FILE", num_args = 1..)]
     pub certificate: Vec<PathBuf>,
 }
@@ -331,13 +335,25 @@ fn single_text(v: &Validated, run: &Run) -> Vec<String> {
     lines
 }
 
-/// "outcome: CC (proved)", "outcome: undecided (no proof; evidence: CC, last v = ...)" or, in
-/// `f64`, "outcome: CC (evidence: f64 simulation proves nothing; rerun with --exact)".
+/// "outcome: CC (proved)", "outcome: no ICC, no PCC (proved; CC not proved: ...; evidence: CC
+/// ...)", "outcome: undecided (no proof; evidence: CC, last v = ...)" or, in `f64`, "outcome: CC
+/// (evidence: f64 simulation proves nothing; rerun with --exact)".
 fn verdict_line(v: &Validated, run: &Run) -> String {
-    if run.proved {
-        return format!("outcome: {} (proved)", run.outcome);
-    }
     let last_v = report::snapshot_v(&v.model, &run.last);
+    if run.proved && run.outcome == Outcome::NoIccNoPcc {
+        let evidence = crate::simulate::text::singular(format!(
+            "{} after {} impacts, last v = {last_v:.3e}",
+            run.evidence, run.impacts
+        ));
+        return format!(
+            "outcome: {} (proved; CC not proved: finite accumulation time not derived, docs/time-to-rest.md; \
+             evidence: {evidence})",
+            run.outcome.words()
+        );
+    }
+    if run.proved {
+        return format!("outcome: {} (proved)", run.outcome.words());
+    }
     match v.arithmetic {
         Arithmetic::Float => format!(
             "outcome: {} (evidence: an f64 simulation proves nothing; last v = {last_v:.3e}; --exact proves)",
@@ -355,15 +371,22 @@ fn sets_lines(sets: &[report::SetReport], notes: &[String]) -> Vec<String> {
     let mut lines: Vec<String> = sets
         .iter()
         .map(|s| {
+            let proves = match s.kind {
+                "cone" => "entering K proves no ICC and no PCC, not the finite accumulation time",
+                _ => "entering X proves CC, the impacts accumulating at a finite time",
+            };
             format!(
-                "certified set: {} ({}, claim {}, kernel-checked on both backends)",
+                "certified set: {} ({}, claim {}, kernel-checked on both backends): {proves}",
                 s.kind, s.certificate, s.claim
             )
         })
         .collect();
     lines.extend(notes.iter().map(|n| format!("note: {n}")));
     if sets.is_empty() {
-        lines.push("no certified set: CC cannot be proved here (ICC and PCC still can)".into());
+        lines.push(
+            "no certified set: neither CC nor no-ICC-no-PCC can be proved here (ICC and PCC still can)"
+                .into(),
+        );
     }
     lines
 }
@@ -447,18 +470,27 @@ fn run_many(v: &Validated, runs: u64) -> cli::Outcome {
             arithmetic_text(v.arithmetic, &v.model),
             r.budget
         ));
-        let list = |m: &std::collections::BTreeMap<String, usize>| {
+        let list = |outcomes: &[Outcome], m: &std::collections::BTreeMap<String, usize>| {
             let count = |o: &Outcome| m.get(o.name()).copied().unwrap_or(0);
-            Outcome::ALL.iter().map(|o| format!("{o} {}", count(o))).collect::<Vec<_>>().join(", ")
+            outcomes.iter().map(|o| format!("{o} {}", count(o))).collect::<Vec<_>>().join(", ")
         };
         match v.arithmetic {
             Arithmetic::Exact => {
-                emit(&format!("proved: {}", list(&r.proved)));
-                emit(&format!("evidence (the simulator's rules, not proofs): {}", list(&r.evidence)));
+                emit(&format!("proved: {}", list(&Outcome::ALL, &r.proved)));
+                if r.proved.get(Outcome::NoIccNoPcc.name()).is_some_and(|&k| k > 0) {
+                    emit(
+                        "no-ICC-no-PCC: entered a certified cone, so never separates and never ends in PCC; \
+                         CC not proved (finite accumulation time not derived, docs/time-to-rest.md)",
+                    );
+                }
+                emit(&format!(
+                    "evidence (the simulator's rules, not proofs): {}",
+                    list(&Outcome::EVIDENCE, &r.evidence)
+                ));
             }
             Arithmetic::Float => emit(&format!(
                 "outcomes (evidence: f64 simulation proves nothing; --exact proves): {}",
-                list(&r.counts)
+                list(&Outcome::EVIDENCE, &r.counts)
             )),
         }
         let by = r.decided_by.iter().map(|(k, c)| format!("{k} {c}")).collect::<Vec<_>>().join(", ");

@@ -90,6 +90,9 @@ pub struct Found {
     pub delta: f64,
     /// Sub-boxes the kernel examined with every sign shown.
     pub boxes: usize,
+    /// B = T̄/(1 − ρ) as the kernel derived it ("p/q"): the impacts accumulate within B h/|v| of
+    /// an impact after which the state lies in X (docs/orbit-certificates.md §4).
+    pub time_to_rest_bound: Option<String>,
     /// Kernel time of the final check over all backends, seconds.
     pub kernel_seconds: f64,
 }
@@ -793,6 +796,7 @@ pub fn certify_orbit_within(
                             scales: [alpha, beta, ratio, time],
                             delta: delta.to_f64(),
                             boxes: a.orbit_boxes.unwrap_or(0),
+                            time_to_rest_bound: a.time_to_rest_bound.clone(),
                             kernel_seconds,
                         }),
                         Verdict::Rejected(r) => {

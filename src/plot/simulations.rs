@@ -1,8 +1,10 @@
 //! The simulation map (figure "simulations"): over the finder's background, level lines of the
 //! mean number of impacts of the random drops in f64 (evidence, the paper's protocol: 25, 50,
 //! 100, 150, and the 200 level above which some drops end in ICC), the lines where half of the
-//! drops are *proved* to end in CC or PCC and in PCC (issue 22 §1: exact runs; evidence only when
-//! the map has no proofs, and then labelled so), the exact PCC and CC boundaries. Only what is
+//! drops are *proved* not to end in ICC (CC, PCC or no-ICC-no-PCC: a certified cone proves no ICC
+//! and no PCC but not the finite accumulation time of CC, issue 24) and to end in PCC (issue 22
+//! §1: exact runs; evidence only when the map has no proofs, and then labelled so), the exact PCC
+//! and CC boundaries. Only what is
 //! drawn gets a legend entry; each level line is labelled where it is farthest from the other
 //! curves.
 
@@ -10,6 +12,7 @@ use super::contour::{contours, ranges};
 use super::label::{Frame, place};
 use super::map::{CC, LEVEL, MapChart, MapFigure, PCC, curve_entry, sub};
 use super::{Entry, Sample, err};
+use crate::simulate::Outcome;
 use crate::sweep::curves::Polyline;
 use crate::sweep::point::PAPER_BUDGET;
 use crate::sweep::table::Row;
@@ -26,21 +29,25 @@ pub enum Field {
     /// The share of the drops proved to end in PCC (level 1/2), or found to as evidence when the
     /// map has no proofs.
     PccShare,
-    /// The share of the drops proved to end in CC or PCC (level 1/2).
+    /// The share of the drops proved not to end in ICC: proved CC, PCC, or no ICC and no PCC
+    /// (level 1/2).
     ChatterProved,
 }
 
 /// Which points.csv columns each level line is drawn from: `mean_impacts` (evidence),
 /// `sim_pcc_proved / sim_runs` (or `sim_pcc_evidence` without proofs) and
-/// `(sim_cc_proved + sim_pcc_proved) / sim_runs`.
+/// `(sim_cc_proved + sim_pcc_proved + sim_no_icc_no_pcc_proved) / sim_runs`.
 pub fn column(field: Field, r: &Row) -> Option<f64> {
     let s = r.sim.as_ref()?;
     let share = |k: u64| (s.runs > 0).then(|| k as f64 / s.runs as f64);
+    let pcc = Outcome::Pcc.index();
     match (field, s.proved) {
         (Field::MeanImpacts, _) => Some(s.mean_impacts()),
-        (Field::PccShare, Some(p)) => share(p[1]),
-        (Field::PccShare, None) => share(s.counts[1]),
-        (Field::ChatterProved, Some(p)) => share(p[0] + p[1]),
+        (Field::PccShare, Some(p)) => share(p[pcc]),
+        (Field::PccShare, None) => share(s.counts[pcc]),
+        (Field::ChatterProved, Some(p)) => {
+            share([Outcome::Cc, Outcome::Pcc, Outcome::NoIccNoPcc].iter().map(|o| p[o.index()]).sum())
+        }
         (Field::ChatterProved, None) => None,
     }
 }
@@ -62,8 +69,10 @@ pub fn title_of(drops: u64, proof_budget: usize) -> String {
     format!("{drops} drops per point (f64 evidence; exact proofs ≤ {proof_budget} impacts)")
 }
 
-/// The legend's words for the line where half the drops are proved to chatter.
-pub const CHATTER_LINE: &str = "CC or PCC proved in half of the drops (exact runs, certified sets)";
+/// The legend's words for the line where half the drops are proved not to end in ICC (proved CC,
+/// PCC, or no ICC and no PCC: CC is not claimed, as a cone entry does not prove the finite time).
+pub const CHATTER_LINE: &str =
+    "no ICC proved in half of the drops (proved CC, PCC, or no ICC and no PCC; exact runs, certified sets)";
 
 /// A level's label: "200" for the level just below the budget.
 fn label(level: f64) -> String {

@@ -311,7 +311,7 @@ fn finders(fb: &FloatBody) -> Finders {
 pub(crate) fn drops(model: &Model) -> Drops {
     let briefs = simulate_many(model, 0, SIM_RUNS, Arithmetic::Float, &Options::new(SIM_BUDGET), &|| {});
     let c = counts(&briefs);
-    let counts = Outcome::ALL.iter().zip(c).map(|(o, k)| (o.name().to_string(), k)).collect();
+    let counts = Outcome::EVIDENCE.iter().zip(c).map(|(o, k)| (o.name().to_string(), k)).collect();
     Drops { basis: "evidence", runs: SIM_RUNS, budget: SIM_BUDGET, counts }
 }
 
@@ -489,7 +489,8 @@ impl ClassifyReport {
 
     fn drops_lines(&self, d: &Drops, l: &mut Vec<String>) {
         let count = |o: Outcome| d.counts.get(o.name()).copied().unwrap_or(0);
-        let text: Vec<String> = Outcome::ALL.iter().map(|o| format!("{} {}", o.name(), count(*o))).collect();
+        let text: Vec<String> =
+            Outcome::EVIDENCE.iter().map(|o| format!("{} {}", o.name(), count(*o))).collect();
         l.push(format!(
             "simulation (evidence: {} random drops in f64, budget {} impacts; `chatter simulate --exact` proves): {}",
             d.runs,

@@ -256,7 +256,7 @@ fn pair_line(p: &PairPccReport) -> String {
 
 fn drops_lines(g: &GeneralClassify, d: &Drops, l: &mut Vec<String>) {
     let count = |o: Outcome| d.counts.get(o.name()).copied().unwrap_or(0);
-    let text: Vec<String> = Outcome::ALL.iter().map(|o| format!("{} {}", o.name(), count(*o))).collect();
+    let text: Vec<String> = Outcome::EVIDENCE.iter().map(|o| format!("{} {}", o.name(), count(*o))).collect();
     l.push(format!(
         "simulation (evidence: {} random drops in f64, budget {} impacts; `chatter simulate --exact` proves): {}",
         d.runs,

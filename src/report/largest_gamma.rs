@@ -66,7 +66,8 @@ impl Report for LargestGammaReport {
 /// `DROPS_ABOVE` random drops of `model` (seeds 0, 1, ...).
 pub fn drops(model: &Model) -> Drops {
     let briefs = simulate_many(model, 0, DROPS_ABOVE, Arithmetic::Float, &Options::new(DROP_BUDGET), &|| {});
-    let counts = Outcome::ALL.iter().zip(counts(&briefs)).map(|(o, k)| (o.name().to_string(), k)).collect();
+    let counts =
+        Outcome::EVIDENCE.iter().zip(counts(&briefs)).map(|(o, k)| (o.name().to_string(), k)).collect();
     Drops { basis: "evidence", runs: DROPS_ABOVE, budget: DROP_BUDGET, counts }
 }
 

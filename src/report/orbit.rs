@@ -118,6 +118,9 @@ pub struct KernelReport {
     pub sub_boxes: usize,
     /// The bignum backends that each accepted the certificate.
     pub backends: Vec<&'static str>,
+    /// B = T̄/(1 − ρ) ("p/q", derived by the kernel): from a post-impact state in X with centre
+    /// height h and velocity v < 0, the impacts accumulate within B h/|v| (issue 24).
+    pub time_to_rest_bound: Option<String>,
 }
 
 /// Wall-clock times in milliseconds, only with `--timings`.
@@ -224,6 +227,7 @@ pub fn of(
         kernel: found.map(|f| KernelReport {
             sub_boxes: f.boxes,
             backends: backends.iter().map(|b| b.name).collect(),
+            time_to_rest_bound: f.time_to_rest_bound.clone(),
         }),
         output: output.filter(|_| found.is_some()),
         reason: failure.map(Reason::of),

@@ -47,7 +47,8 @@ pub struct TieReport {
 /// What the evidence rules said (issue 22 §1): the paper's protocol, never a proof by itself.
 #[derive(Clone, Debug, Serialize, JsonSchema)]
 pub struct EvidenceReport {
-    /// `CC`, `PCC`, `ICC`, `undecided` or `simultaneous`, by the rule `decided_by`.
+    /// `CC`, `PCC`, `ICC`, `undecided` or `simultaneous`, by the rule `decided_by` (never
+    /// `no-ICC-no-PCC`: a cone entry's evidence is `CC`, the paper's Lemma on v).
     pub outcome: &'static str,
     /// The rule (e.g. `converging-intervals`, `v-positive`).
     pub decided_by: &'static str,
@@ -59,7 +60,8 @@ pub struct EvidenceReport {
     pub last_v: f64,
 }
 
-/// A set whose entry proves CC, with the certificate it comes from.
+/// A set whose entry proves a drop's outcome, with the certificate it comes from: a cone K proves
+/// no ICC and no PCC (`no-ICC-no-PCC`), an orbit certificate's set X proves CC.
 #[derive(Clone, Debug, Serialize, JsonSchema)]
 pub struct SetReport {
     /// `cone` (velocities in K) or `orbit` (normalised states in X).
@@ -115,16 +117,23 @@ pub fn evidence_of(model: &Model, run: &Run) -> EvidenceReport {
 pub struct SimulateReport {
     /// `chatter.simulate/1`.
     pub schema: &'static str,
-    /// The verdict: `CC`, `PCC`, `ICC`, `undecided` or `simultaneous`. With exact arithmetic it
-    /// is proved (`proved`) or `undecided`; in `f64` it is evidence (`proved` false).
+    /// The verdict: `CC`, `PCC`, `ICC`, `no-ICC-no-PCC`, `undecided` or `simultaneous`. With exact
+    /// arithmetic it is proved (`proved`) or `undecided`; in `f64` it is evidence (`proved`
+    /// false). `no-ICC-no-PCC` (exact runs only): proved never to separate and never to end in PCC
+    /// by entering a certified cone; CC unless the impacts take infinite time, the finite
+    /// accumulation time not being derived (docs/time-to-rest.md); `CC` is proved only with a
+    /// finite accumulation time (an orbit certificate's set, `entered.finite_time`, or the exact
+    /// pair proof).
     pub outcome: &'static str,
-    /// Whether `outcome` is proved (exact arithmetic, and for CC a kernel-checked certificate).
+    /// Whether `outcome` is proved (exact arithmetic; for CC and `no-ICC-no-PCC` a kernel-checked
+    /// certificate).
     pub proved: bool,
     /// `proof` or `evidence`.
     pub basis: &'static str,
     /// What the rules of the simulator say, as evidence.
     pub evidence: EvidenceReport,
-    /// Where the drop entered a certified set (the proof of CC), if it did.
+    /// Where the drop entered a certified set (the proof of CC for an orbit certificate's set, of
+    /// `no-ICC-no-PCC` for a cone), if it did.
     pub entered: Option<EnteredReport>,
     /// The certified sets the exact run was checked against (empty in `f64`).
     pub certified_sets: Vec<SetReport>,
@@ -216,11 +225,15 @@ pub struct SimulateBatchReport {
     /// `proof` (exact arithmetic: `counts` counts proved outcomes, the rest `undecided`) or
     /// `evidence` (`f64`: `counts` is evidence, nothing is proved).
     pub basis: &'static str,
-    /// Outcome (`CC`, `PCC`, `ICC`, `undecided`, `simultaneous`) -> drops: the verdicts.
+    /// Outcome (`CC`, `PCC`, `ICC`, `undecided`, `simultaneous`, `no-ICC-no-PCC`) -> drops: the
+    /// verdicts.
     pub counts: BTreeMap<String, usize>,
-    /// Proved outcome -> drops (a drop without a proof counts as `undecided`); all undecided in `f64`.
+    /// Proved outcome (the six of `counts`) -> drops (a drop without a proof counts as
+    /// `undecided`); all undecided in `f64`. `CC` counts only drops proved CC with a finite
+    /// accumulation time; a drop that entered a certified cone counts as `no-ICC-no-PCC`.
     pub proved: BTreeMap<String, usize>,
-    /// What the rules say as evidence (the paper's protocol) -> drops.
+    /// What the rules say as evidence (the paper's protocol) -> drops: `CC`, `PCC`, `ICC`,
+    /// `undecided`, `simultaneous` (a cone entry's evidence is `CC`).
     pub evidence: BTreeMap<String, usize>,
     /// The certified sets the exact runs were checked against (empty in `f64`).
     pub certified_sets: Vec<SetReport>,
@@ -401,8 +414,8 @@ pub fn batch(
         _ => (simulate_many(model, seed, runs, arithmetic, opts, tick), None),
     };
     let c = counts(&briefs);
-    let map = |c: [usize; 5]| -> BTreeMap<String, usize> {
-        Outcome::ALL.iter().zip(c).map(|(o, k)| (o.name().to_string(), k)).collect()
+    let map = |outcomes: &[Outcome], c: [usize; Outcome::COUNT]| -> BTreeMap<String, usize> {
+        outcomes.iter().zip(c).map(|(o, k)| (o.name().to_string(), k)).collect()
     };
     let mut decided_by = BTreeMap::new();
     for b in &briefs {
@@ -419,9 +432,9 @@ pub fn batch(
         arithmetic: arithmetic.name(),
         budget: opts.budget,
         basis: if arithmetic == Arithmetic::Exact { "proof" } else { "evidence" },
-        counts: map(c),
-        proved: map(proved_counts(&briefs)),
-        evidence: map(evidence_counts(&briefs)),
+        counts: map(&Outcome::ALL, c),
+        proved: map(&Outcome::ALL, proved_counts(&briefs)),
+        evidence: map(&Outcome::EVIDENCE, evidence_counts(&briefs)),
         certified_sets: sets.as_ref().map(set_reports).unwrap_or_default(),
         certificate_notes: sets.map(|s| s.notes).unwrap_or_default(),
         decided_by,

@@ -466,7 +466,7 @@ fn compute_map(ctx: &Context, n: u64) -> Result<(MapRun, [FigureRef; 2]), String
         crate::plot::simulations::title_of(ctx.plan.drops, crate::sweep::point::PROOF_BUDGET)
     );
     let caption = format!(
-        "n = {n}: level curves of the mean number of impacts of the random drops in f64 (evidence; the 200 level separates ICC), and where half of the drops are proved to chatter (exact runs entering kernel-checked certified sets)"
+        "n = {n}: level curves of the mean number of impacts of the random drops in f64 (evidence; the 200 level separates ICC), and where half of the drops are proved not to end in ICC (exact runs: proved CC, PCC, or no ICC and no PCC by entering a kernel-checked cone, whose finite accumulation time is not derived)"
     );
     let f2 = figure(ctx, &format!("simulations-n{n}"), &fig, &caption)?;
     let command = format!(
@@ -537,6 +537,7 @@ fn simulations_item(m: &MapRun, drops: u64, fig: FigureRef) -> Item {
     let s = &m.summary;
     let evidence_off = count(s, "simulated-chatter-criterion-fails");
     let proved_off = count(s, "proved-chatter-criterion-fails");
+    let no_icc_off = count(s, "proved-no-icc-criterion-fails");
     let contradicted = count(s, "evidence-contradicted-by-proof");
     let icc_off = count(s, "criterion-holds-all-icc");
     let listed = |kind: &str, none: &str| {
@@ -547,16 +548,17 @@ fn simulations_item(m: &MapRun, drops: u64, fig: FigureRef) -> Item {
         title: format!("Figure “simulations”, n = {}: random drops and the eigenvalue criterion", m.n),
         paper: "The 200-impact level curve (CC or PCC below it) follows the curve where S₁'s dominant eigenvalue stops being real and positive (Conjecture 1 (i) ⇔ (iii)).".into(),
         ours: format!(
-            "proved: drops chatter without separating (no ICC; impacts accumulating in finite time where an orbit certificate's set was entered, docs/time-to-rest.md) where the criterion fails at {proved_off} points (Conjecture 1 (i) ⇒ (iii) false there); evidence only (f64, 200 impacts): at {evidence_off} points, of which the exact runs contradict the evidence at {contradicted} points; all drops ICC as evidence where the criterion holds at {icc_off} points (of {})",
+            "proved: drops end in CC (impacts accumulating in finite time: an orbit certificate's set was entered) or PCC where the criterion fails at {proved_off} points (Conjecture 1 (i) ⇒ (iii) false there), and drops proved only never to separate nor end in PCC (no-ICC-no-PCC: a certified cone, finite accumulation time not derived, docs/time-to-rest.md) where it fails at {no_icc_off} points; evidence only (f64, 200 impacts): at {evidence_off} points, of which the exact runs contradict the evidence at {contradicted} points; all drops ICC as evidence where the criterion holds at {icc_off} points (of {})",
             s.points
         ),
-        verdict: Verdict::of(proved_off == 0 && icc_off == 0),
+        verdict: Verdict::of(proved_off == 0 && no_icc_off == 0 && icc_off == 0),
         evidence: vec![
             format!("{drops} drops per point, seeded per point (the paper's protocol: velocity (R₁, R₂, −1), position (R₃, R₄, 1 + R₅), Rᵢ uniform on (0, 0.1)); each drop run in f64 for 200 impacts (evidence) and exactly for up to {} impacts (proof)", m.summary.computed.proof_budget),
-            "a drop is proved CC only when, after some impact, its exact state enters the cone K of a kernel-checked cone certificate (claim CompleteChatterFromAllDown: v ≤ 0 for ever and no PCC; the finite accumulation time is not derived, docs/time-to-rest.md) or the set X of a kernel-checked orbit certificate (finite time proved); ICC only by v > 0 exactly; PCC only by the exact pair proof; everything else is undecided".into(),
+            "a drop is proved CC only when, after some impact, its exact state enters the set X of a kernel-checked orbit certificate (finite accumulation time proved); entering the cone K of a kernel-checked cone certificate (claim CompleteChatterFromAllDown: v ≤ 0 for ever and no PCC) proves no-ICC-no-PCC, not CC, as the finite accumulation time is not derived (docs/time-to-rest.md); ICC only by v > 0 exactly; PCC only by the exact pair proof; everything else is undecided".into(),
             format!("proved outcomes over all points: {}", outcome_counts(s, "drops_proved")),
             format!("evidence over all points: {}", outcome_counts(s, "drops_evidence")),
-            format!("proved chatter (no ICC) where the criterion fails: {}", listed("proved-chatter-criterion-fails", "none")),
+            format!("proved CC or PCC where the criterion fails: {}", listed("proved-chatter-criterion-fails", "none")),
+            format!("proved no-ICC-no-PCC (a certified cone) where the criterion fails: {}", listed("proved-no-icc-criterion-fails", "none")),
             format!("evidence of chatter where the criterion fails: {}", listed("simulated-chatter-criterion-fails", "none")),
             format!("exact runs contradicting the evidence: {}", listed("evidence-contradicted-by-proof", "none")),
         ],
@@ -589,7 +591,7 @@ fn pcc_item(m: &MapRun) -> Result<Item, String> {
             "PCC drops at {pcc_found} points, {pcc_off} of them where the PCC criterion fails; the PCC criterion holds at {pcc_holds} points"
         ),
         verdict: Verdict::of(ok),
-        evidence: vec![format!("maps/n{n}/points.csv columns sim_pcc and pcc_criterion")],
+        evidence: vec![format!("maps/n{n}/points.csv columns sim_pcc_evidence and pcc_criterion")],
         commands: vec![m.command.clone()],
         figures: vec![],
     })

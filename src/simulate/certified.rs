@@ -1,4 +1,4 @@
-//! Certified sets that turn a drop's outcome into a proof (issue 22 §1): cone and orbit
+//! Certified sets that turn a drop's outcome into a proof (issue 22 §1, issue 24): cone and orbit
 //! certificates, each accepted by the kernel on both backends before it is used, whose sets a
 //! post-impact state may enter (membership is decided by the kernel, `chatter_kernel::membership`).
 //!
@@ -6,8 +6,9 @@
 //!   (no separation, impacts never stop) and no PCC, when its claim excludes PCC
 //!   (`CompleteChatterFromAllDown`) and it holds for the body's n, κ, γ (a point certificate with
 //!   these exact values, or a box containing them). It does not prove that the impacts accumulate
-//!   at a finite time (docs/time-to-rest.md §3: K may contain motions whose impacts never do); the
-//!   run's outcome is still named CC, and the report's `entered.finite_time` is false;
+//!   at a finite time (docs/time-to-rest.md §3: K may contain motions whose impacts never do): the
+//!   run's proved outcome is `no-ICC-no-PCC` ([`super::Outcome::NoIccNoPcc`], not CC), and the
+//!   report's `entered.finite_time` is false;
 //! - an orbit certificate proves CC from any post-impact state in its set X (claim
 //!   `CompleteChatterFromSet`, n, κ, γ equal).
 //!
@@ -112,7 +113,7 @@ pub fn parameters(model: &Model) -> Option<(u64, Nf, Nf)> {
 }
 
 impl Certified {
-    /// No sets: no drop can be proved CC.
+    /// No sets: no drop can be proved CC (nor no ICC and no PCC).
     pub fn empty() -> Certified {
         Certified::default()
     }
@@ -135,7 +136,7 @@ impl Certified {
         };
         if cert.claim != Claim::CompleteChatterFromAllDown {
             return Err(format!(
-                "its claim {} does not exclude PCC: only CompleteChatterFromAllDown proves CC from K",
+                "its claim {} does not exclude PCC: only CompleteChatterFromAllDown proves no ICC and no PCC from K",
                 cert.claim.name()
             ));
         }

@@ -2,7 +2,8 @@
 //!
 //! **Proof or evidence** (issue 22 §1). In an exact engine, rules 1 and 2, an exact tie (rule 3),
 //! the exact pair proof (rule 4) and rule 4a are exact facts and theorems: their outcome is
-//! *proved* ([`Run::proved`]). Every other rule — the paper's PCC criterion, the converging
+//! *proved* ([`Run::proved`]); a cone entry (rule 4a) proves less than CC, and its outcome is
+//! [`Outcome::NoIccNoPcc`] (issue 24). Every other rule — the paper's PCC criterion, the converging
 //! intervals of rule 6, a pair that did not settle, a breakdown — is *evidence*: an exact run that
 //! ends on one is `undecided`, with the evidence kept in [`Run::evidence`] and [`Run::decision`],
 //! never counted as CC. Every verdict of an `f64` engine is evidence.
@@ -24,12 +25,18 @@
 //!    hold for a while (a pair phase that ends after tens of impacts, when the state is already
 //!    within 1e-16 of m_(i,i+1)); it is then overruled and counted in [`Run::pcc_overruled`].
 //!
-//!    Rule 4a. Exact engines on regular polygons and the rod, after every impact: CC when the
+//!    Rule 4a. Exact engines on regular polygons and the rod, after every impact: the
 //!    post-impact state, relabelled so that the contact that landed is contact 0, lies in a set
-//!    of [`super::certified::Certified`]: the velocity in the cone K of a kernel-checked cone
-//!    certificate whose claim excludes PCC, or the normalised state in the set X of a
-//!    kernel-checked orbit certificate (membership decided by `chatter_kernel::membership`).
-//!    Tested before rule 4 (in K or X with PCC excluded, the motion is CC).
+//!    of [`super::certified::Certified`] (membership decided by `chatter_kernel::membership`):
+//!    - the velocity in the cone K of a kernel-checked cone certificate whose claim excludes
+//!      PCC: proved no ICC (v <= 0 for ever, the impacts never stop) and no PCC, outcome
+//!      [`Outcome::NoIccNoPcc`]; not CC, as the finite accumulation time is not derived
+//!      (docs/time-to-rest.md §3). Its evidence is CC (the paper's Lemma on v, which asserts
+//!      that such a motion is CC or PCC);
+//!    - the normalised state in the set X of a kernel-checked orbit certificate: proved CC, the
+//!      impacts accumulating at a finite time.
+//!
+//!    Tested before rule 4 (in K or X, PCC is excluded).
 //!
 //! 5. `f64` only: an interval of exactly 0 with gamma > 0 cannot happen in exact dynamics after
 //!    the first impact; it means that heights were lost in rounding: "undecided".
@@ -59,7 +66,9 @@ pub const MIN_BUDGET_FOR_CC: usize = 16;
 /// Default ε of the paper's PCC criterion (the paper does not state its value).
 pub const DEFAULT_PCC_EPSILON: f64 = 1e-8;
 
-/// The five outcomes.
+/// The outcomes: the paper's three (CC, PCC, ICC), two outside its trichotomy (undecided: no
+/// rule could tell; simultaneous: an impact the model cannot resolve), and one that only a proof
+/// gives, weaker than CC ([`Outcome::NoIccNoPcc`], issue 24).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Outcome {
     Cc,
@@ -67,13 +76,39 @@ pub enum Outcome {
     Icc,
     Undecided,
     Simultaneous,
+    /// Proved never to separate (no ICC: v <= 0 for ever, the impacts never stop) and never to end
+    /// in PCC, by entering the cone K of a kernel-checked cone certificate; CC unless the impacts
+    /// take infinite time: the finite accumulation time is not derived (docs/time-to-rest.md §3).
+    /// Only exact runs give it, and only as a proof (never as evidence: the simulator's rules
+    /// then say CC).
+    NoIccNoPcc,
 }
 
 impl Outcome {
-    pub const ALL: [Outcome; 5] =
+    /// The number of outcomes.
+    pub const COUNT: usize = 6;
+
+    /// Every outcome, in the order of all outcome counts (`[_; Outcome::COUNT]` arrays).
+    pub const ALL: [Outcome; Outcome::COUNT] = [
+        Outcome::Cc,
+        Outcome::Pcc,
+        Outcome::Icc,
+        Outcome::Undecided,
+        Outcome::Simultaneous,
+        Outcome::NoIccNoPcc,
+    ];
+
+    /// The outcomes the simulator's rules give as evidence: all but [`Outcome::NoIccNoPcc`]. A
+    /// prefix of [`Outcome::ALL`], so `EVIDENCE.iter().zip(counts)` pairs each with its count.
+    pub const EVIDENCE: [Outcome; 5] =
         [Outcome::Cc, Outcome::Pcc, Outcome::Icc, Outcome::Undecided, Outcome::Simultaneous];
 
-    /// The name used in output and JSON.
+    /// The position in [`Outcome::ALL`] (and in every count array).
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    /// The name used in output, JSON and CSV.
     pub fn name(self) -> &'static str {
         match self {
             Outcome::Cc => "CC",
@@ -81,6 +116,25 @@ impl Outcome {
             Outcome::Icc => "ICC",
             Outcome::Undecided => "undecided",
             Outcome::Simultaneous => "simultaneous",
+            Outcome::NoIccNoPcc => "no-ICC-no-PCC",
+        }
+    }
+
+    /// The name in running text ("no ICC, no PCC" for [`Outcome::NoIccNoPcc`]).
+    pub fn words(self) -> &'static str {
+        match self {
+            Outcome::NoIccNoPcc => "no ICC, no PCC",
+            o => o.name(),
+        }
+    }
+
+    /// Whether this outcome, proved, contradicts the decided `evidence` (CC, PCC or ICC): a
+    /// different outcome, except that no ICC and no PCC is what CC evidence says too (CC is the
+    /// only outcome left, if the impacts accumulate in finite time).
+    pub fn contradicts(self, evidence: Outcome) -> bool {
+        match self {
+            Outcome::NoIccNoPcc => evidence != Outcome::Cc,
+            o => o != evidence,
         }
     }
 }
@@ -117,7 +171,8 @@ pub enum Decision {
     /// The `f64` state became non-finite or lost its heights in rounding (undecided).
     Breakdown { after: usize },
     /// Exact engines: the relabelled post-impact state after `after` impacts lies in a set that a
-    /// kernel-checked certificate certifies (CC, issue 22 §1).
+    /// kernel-checked certificate certifies (issue 22 §1): a cone K proves no ICC and no PCC
+    /// ([`Outcome::NoIccNoPcc`]), an orbit certificate's set X proves CC.
     Certified { after: usize, kind: SetKind, name: String },
 }
 
@@ -155,6 +210,16 @@ impl Decision {
                     | Decision::ExactPair { .. }
                     | Decision::Certified { .. }
             )
+    }
+
+    /// What a proof by this test proves when the rules' verdict is `evidence`: that verdict,
+    /// except for a cone entry, whose theorem gives no ICC and no PCC but not the finite
+    /// accumulation time that CC needs (docs/time-to-rest.md §3): [`Outcome::NoIccNoPcc`].
+    pub fn proved_outcome(&self, evidence: Outcome) -> Outcome {
+        match self {
+            Decision::Certified { kind: SetKind::Cone, .. } => Outcome::NoIccNoPcc,
+            _ => evidence,
+        }
     }
 
     /// One sentence naming the test and its evidence.
@@ -290,13 +355,14 @@ pub struct Record {
 /// The result of one simulation.
 #[derive(Clone, Debug)]
 pub struct Run {
-    /// The verdict: for exact engines proved (CC, PCC, ICC, an exact tie) or `Undecided`; for
-    /// `f64` engines the evidence of [`Run::evidence`] (never a proof).
+    /// The verdict: for exact engines proved (CC, PCC, ICC, no ICC and no PCC, an exact tie) or
+    /// `Undecided`; for `f64` engines the evidence of [`Run::evidence`] (never a proof).
     pub outcome: Outcome,
     /// Whether `outcome` is proved ([`Decision::is_proof`]).
     pub proved: bool,
     /// What the rules of the module doc say, proof or evidence (the paper's protocol): equal to
-    /// `outcome` when proved, e.g. CC by converging intervals when an exact run is undecided.
+    /// `outcome` when proved, except CC for a cone entry proved [`Outcome::NoIccNoPcc`]; e.g. CC
+    /// by converging intervals when an exact run is undecided. Never [`Outcome::NoIccNoPcc`].
     pub evidence: Outcome,
     pub decision: Decision,
     pub impacts: usize,
@@ -456,7 +522,8 @@ fn pair_tail(tail_log: &[f64; 3]) -> Option<f64> {
 /// The driver's state: the engine, the trace so far and the running evidence of the rules.
 struct Driver<'a, E: Engine> {
     eng: &'a mut E,
-    /// Sets whose entry proves CC (exact engines on regular polygons).
+    /// Sets whose entry proves no ICC and no PCC (a cone) or CC (an orbit certificate's set);
+    /// exact engines on regular polygons and the rod.
     certified: Option<&'a Certified>,
     fs: &'a FloatSystem,
     opts: Options,
@@ -480,8 +547,8 @@ pub fn drive<E: Engine>(eng: &mut E, fs: &FloatSystem, opts: &Options) -> Run {
     drive_with(eng, fs, opts, None)
 }
 
-/// [`drive`], where an exact engine also proves CC once a post-impact state enters one of the
-/// `certified` sets (rule 4a).
+/// [`drive`], where an exact engine also proves its outcome once a post-impact state enters one of
+/// the `certified` sets (rule 4a: no ICC and no PCC in a cone, CC in an orbit certificate's set).
 pub fn drive_with<E: Engine>(
     eng: &mut E,
     fs: &FloatSystem,
@@ -565,7 +632,9 @@ impl<'a, E: Engine> Driver<'a, E> {
         if self.alt >= PCC_MIN_RUN { self.pcc_tests(k + 1, contact) } else { None }
     }
 
-    /// Rule 4a (exact engines): CC once the relabelled post-impact state lies in a certified set.
+    /// Rule 4a (exact engines): the relabelled post-impact state lies in a certified set. The
+    /// verdict (the evidence) is CC; a cone entry proves only [`Outcome::NoIccNoPcc`]
+    /// ([`Decision::proved_outcome`]).
     fn entered(&self, after: usize) -> Option<Verdict> {
         let (q, p) = self.eng.relabelled()?;
         let set = self.certified?.entered(&q, &p)?;
@@ -693,7 +762,11 @@ impl<'a, E: Engine> Driver<'a, E> {
         let time = self.eng.time();
         let exact = self.eng.is_exact();
         let proved = decision.is_proof(exact);
-        let outcome = if exact && !proved { Outcome::Undecided } else { evidence };
+        let outcome = match (exact, proved) {
+            (true, false) => Outcome::Undecided,
+            (_, true) => decision.proved_outcome(evidence),
+            (false, false) => evidence,
+        };
         Run {
             outcome,
             proved,

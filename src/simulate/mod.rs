@@ -215,12 +215,14 @@ pub fn simulate_float(fs: &FloatSystem, start: &Start<f64>, opts: &Options) -> R
 }
 
 /// Simulates one drop exactly: in Q, or in Q(cos 2π/n) where the cosine is irrational. Without
-/// certified sets CC is never proved (such runs end `undecided`, with the evidence).
+/// certified sets neither CC nor "no ICC, no PCC" is ever proved (such runs end `undecided`, with
+/// the evidence).
 pub fn simulate_exact(model: &Model, start: &Start<Q>, opts: &Options) -> Run {
     simulate_exact_with(model, start, opts, None)
 }
 
-/// [`simulate_exact`] with sets whose entry proves CC (rule 4a of [`classify`]).
+/// [`simulate_exact`] with sets whose entry proves no ICC and no PCC (a cone) or CC (an orbit
+/// certificate's set; rule 4a of [`classify`]).
 pub fn simulate_exact_with(model: &Model, start: &Start<Q>, opts: &Options, sets: Option<&Certified>) -> Run {
     match model.exact_system() {
         ExactSystem::Rational(sys) => drive_with(&mut ExactEngine::new(sys, start), &model.float, opts, sets),
@@ -282,24 +284,26 @@ impl Brief {
     }
 }
 
-/// Outcome counts of many runs, in the order of [`Outcome::ALL`].
-pub fn counts(briefs: &[Brief]) -> [usize; 5] {
+/// Outcome counts of many runs, in the order of [`Outcome::ALL`] (a cone entry counts as
+/// [`Outcome::NoIccNoPcc`], never as CC).
+pub fn counts(briefs: &[Brief]) -> [usize; Outcome::COUNT] {
     count_by(briefs, |b| b.outcome)
 }
 
-/// Counts of the evidence ([`Brief::evidence`]) of many runs, in the order of [`Outcome::ALL`].
-pub fn evidence_counts(briefs: &[Brief]) -> [usize; 5] {
+/// Counts of the evidence ([`Brief::evidence`]) of many runs, in the order of [`Outcome::ALL`]
+/// (the count of [`Outcome::NoIccNoPcc`], never evidence, is 0).
+pub fn evidence_counts(briefs: &[Brief]) -> [usize; Outcome::COUNT] {
     count_by(briefs, |b| b.evidence)
 }
 
 /// Counts of the proved outcomes of many runs, in the order of [`Outcome::ALL`]: a run without a
 /// proof counts as `undecided`.
-pub fn proved_counts(briefs: &[Brief]) -> [usize; 5] {
+pub fn proved_counts(briefs: &[Brief]) -> [usize; Outcome::COUNT] {
     count_by(briefs, |b| if b.proved { b.outcome } else { Outcome::Undecided })
 }
 
-fn count_by(briefs: &[Brief], of: impl Fn(&Brief) -> Outcome) -> [usize; 5] {
-    let mut c = [0; 5];
+fn count_by(briefs: &[Brief], of: impl Fn(&Brief) -> Outcome) -> [usize; Outcome::COUNT] {
+    let mut c = [0; Outcome::COUNT];
     for b in briefs {
         c[Outcome::ALL.iter().position(|o| *o == of(b)).expect("known outcome")] += 1;
     }

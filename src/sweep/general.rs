@@ -20,8 +20,9 @@ pub struct GridPoint {
     pub certified: Option<Claim>,
     /// The pipeline's wall-clock time.
     pub time: Duration,
-    /// Drop outcomes in the order of [`Outcome::ALL`] (CC, PCC, ICC, undecided, simultaneous).
-    pub drops: [usize; 5],
+    /// Drop outcomes (f64: evidence) in the order of [`Outcome::ALL`] (CC, PCC, ICC, undecided,
+    /// simultaneous, and no-ICC-no-PCC, which f64 never gives).
+    pub drops: [usize; Outcome::COUNT],
 }
 
 impl GridPoint {
@@ -95,6 +96,6 @@ impl Agreement {
 }
 
 /// The outcome names of [`GridPoint::drops`].
-pub fn outcome_names() -> [&'static str; 5] {
+pub fn outcome_names() -> [&'static str; Outcome::COUNT] {
     Outcome::ALL.map(|o| o.name())
 }

@@ -41,12 +41,14 @@ pub const PROOF_BUDGET: usize = 300;
 pub struct SimStats {
     pub runs: u64,
     /// Evidence (the paper's 200-impact protocol in `f64`), in the order of [`Outcome::ALL`]:
-    /// CC, PCC, ICC, undecided, simultaneous.
-    pub counts: [u64; 5],
+    /// CC, PCC, ICC, undecided, simultaneous, and no-ICC-no-PCC (always 0: never evidence).
+    pub counts: [u64; Outcome::COUNT],
     /// Proved outcomes of the same drops (exact runs, issue 22 §1), in the same order; a drop
-    /// without a proof counts as undecided. `None` when no proofs were tried.
-    pub proved: Option<[u64; 5]>,
-    /// Drops whose proved outcome differs from their evidence.
+    /// without a proof counts as undecided, a drop that entered a certified cone as
+    /// no-ICC-no-PCC (CC only with a finite accumulation time). `None` when no proofs were tried.
+    pub proved: Option<[u64; Outcome::COUNT]>,
+    /// Drops whose proved outcome contradicts their decided evidence ([`Outcome::contradicts`]:
+    /// no-ICC-no-PCC does not contradict CC).
     pub contradicted: u64,
     /// Sum over the drops of the impacts before the drop ended, capped at the budget; a drop
     /// classified PCC counts as the full budget (the paper's runs would have continued it).
@@ -147,10 +149,10 @@ fn prove_point(
     evidence: &[Brief],
     budget: usize,
     certificate: Option<&str>,
-) -> ([u64; 5], u64, Option<String>) {
+) -> ([u64; Outcome::COUNT], u64, Option<String>) {
     let runs = evidence.len() as u64;
     let Ok(model) = Model::new(crate::simulate::Shape::Polygon(n), p.kappa.clone(), p.gamma.clone()) else {
-        return ([0, 0, 0, runs, 0], 0, None);
+        return (Outcome::ALL.map(|o| if o == Outcome::Undecided { runs } else { 0 }), 0, None);
     };
     let sets = match certificate.map(chatter_kernel::certificate::read) {
         Some(Ok(cert)) => {
@@ -177,7 +179,7 @@ fn prove_point(
         .briefs
         .iter()
         .zip(evidence)
-        .filter(|(b, e)| b.proved && decided(e.outcome) && b.outcome != e.outcome)
+        .filter(|(b, e)| b.proved && decided(e.outcome) && b.outcome.contradicts(e.outcome))
         .count();
     let orbit = proved.sets.sets().iter().find_map(|s| match &s.source {
         Source::Orbit(c) => Some(crate::write::write_orbit(c)),

@@ -35,7 +35,7 @@ pub struct Disagreement {
 }
 
 /// The kinds of disagreement, with what each means.
-pub const KINDS: [(&str, &str); 14] = [
+pub const KINDS: [(&str, &str); 15] = [
     (
         "finder-found-criterion-fails",
         "the float finder found a cone where S_1's dominant eigenvalue is not real and positive (Conjecture 1 (ii) => (iii), numerically)",
@@ -75,19 +75,23 @@ pub const KINDS: [(&str, &str); 14] = [
     ),
     (
         "proved-chatter-criterion-fails",
-        "a drop proved to end in CC (exact run entering a kernel-checked certified set) or PCC (exact pair proof) where the CC criterion fails: Conjecture 1 (i) => (iii) is false at this point",
+        "a drop proved to end in CC (exact run entering the set X of a kernel-checked orbit certificate, impacts accumulating at a finite time) or PCC (exact pair proof) where the CC criterion fails: Conjecture 1 (i) => (iii) is false at this point (drops proved only no-ICC-no-PCC are the kind proved-no-icc-criterion-fails)",
     ),
     (
         "evidence-contradicted-by-proof",
-        "a drop whose proved outcome differs from its f64 evidence (e.g. CC by converging intervals, proved ICC by v > 0 in the exact run)",
+        "a drop whose proved outcome contradicts its f64 evidence (e.g. CC by converging intervals, proved ICC by v > 0 in the exact run; no-ICC-no-PCC does not contradict CC)",
     ),
     (
         "evidence-cc-unproved",
-        "fewer drops proved CC than drops with CC as f64 evidence (the exact run entered no certified set within the proof budget)",
+        "fewer drops proved CC than drops with CC as f64 evidence: the exact run entered no orbit certificate's set within the proof budget (it entered a certified cone, which proves no-ICC-no-PCC but not the finite accumulation time, or no certified set)",
     ),
     (
         "certified-proved-icc",
         "a certificate covering every all-down drop, yet an all-down drop proved ICC: a contradiction between a kernel-checked certificate and an exact run (a bug to report)",
+    ),
+    (
+        "proved-no-icc-criterion-fails",
+        "a drop proved no-ICC-no-PCC (exact run entering the cone K of a kernel-checked cone certificate: it never separates and never ends in PCC; the finite accumulation time is not derived, so CC is not proved) where the CC criterion fails: K is effectively invariant there, a counterexample to Conjecture 1 (ii) => (iii)",
     ),
 ];
 
@@ -107,8 +111,10 @@ pub struct Summary {
     pub computed: Computed,
     pub points: usize,
     /// Counts of each column's values ("true", "false", finder verdicts, claims), and of the
-    /// drops' outcomes: `drops_evidence` (f64, the paper's protocol) and `drops_proved` (exact
-    /// runs; a drop without a proof counts as `undecided`).
+    /// drops' outcomes: `drops_evidence` (f64, the paper's protocol: `CC`, `PCC`, `ICC`,
+    /// `undecided`, `simultaneous`) and `drops_proved` (exact runs; a drop without a proof counts
+    /// as `undecided`; `CC` only with a finite accumulation time, a drop that entered a certified
+    /// cone as `no-ICC-no-PCC`).
     pub counts: BTreeMap<&'static str, BTreeMap<String, u64>>,
     /// Kind -> meaning and number of points.
     pub disagreement_kinds: BTreeMap<&'static str, KindCount>,
@@ -143,7 +149,7 @@ fn disagreements(r: &Row) -> Vec<(&'static str, String)> {
         out.push((KINDS[9].0, "refuted, finder found".to_string()));
     }
     if let Some(s) = &r.sim {
-        let [c, p, i, _, _] = s.counts;
+        let [c, p, i, _, _, _] = s.counts;
         if c + p > 0 && !cc {
             out.push((KINDS[4].0, format!("{c} CC and {p} PCC of {} drops, CC criterion fails", s.runs)));
         }
@@ -168,13 +174,19 @@ fn disagreements(r: &Row) -> Vec<(&'static str, String)> {
 fn proof_disagreements(
     r: &Row,
     s: &super::point::SimStats,
-    proved: &[u64; 5],
+    proved: &[u64; crate::simulate::Outcome::COUNT],
 ) -> Vec<(&'static str, String)> {
     let mut out = Vec::new();
-    let [c, p, i, _, _] = *proved;
+    let [c, p, i, _, _, none] = *proved;
     let claim = r.claim.clone().unwrap_or_default();
     if c + p > 0 && !r.cc_criterion {
         out.push((KINDS[10].0, format!("{c} CC and {p} PCC of {} drops proved, CC criterion fails", s.runs)));
+    }
+    if none > 0 && !r.cc_criterion {
+        out.push((
+            KINDS[14].0,
+            format!("{none} of {} drops proved no-ICC-no-PCC (certified cone), CC criterion fails", s.runs),
+        ));
     }
     if s.contradicted > 0 {
         out.push((
@@ -183,7 +195,11 @@ fn proof_disagreements(
         ));
     }
     if s.counts[0] > c {
-        out.push((KINDS[12].0, format!("{} drops CC as evidence, {c} proved CC", s.counts[0])));
+        let detail = format!(
+            "{} drops CC as evidence, {c} proved CC, {none} proved only no-ICC-no-PCC (finite time not derived)",
+            s.counts[0]
+        );
+        out.push((KINDS[12].0, detail));
     }
     if i > 0 && r.certified == Some(true) && claim != "EffectivelyInvariant" {
         out.push((KINDS[13].0, format!("certificate {claim}, {i} of {} drops proved ICC", s.runs)));
@@ -210,7 +226,8 @@ impl Summary {
                 bump(&mut counts, "refuted", c.to_string());
             }
             if let Some(s) = &r.sim {
-                for (name, k) in crate::simulate::Outcome::ALL.iter().zip(s.counts) {
+                // The f64 evidence is never no-ICC-no-PCC: its outcomes only.
+                for (name, k) in crate::simulate::Outcome::EVIDENCE.iter().zip(s.counts) {
                     *counts
                         .entry("drops_evidence")
                         .or_default()

@@ -4,11 +4,13 @@
 use super::grid::{Grid, Point};
 use super::point::{Evaluation, SimStats};
 use crate::exact::{Q, QExt};
+use crate::simulate::Outcome;
 
 /// The header of points.csv.
 pub const HEADER: &str = "index,n,rho,kappa,gamma,cc_criterion,pcc_criterion,finder,certified,claim,refuted,\
 sim_runs,sim_cc_evidence,sim_pcc_evidence,sim_icc_evidence,sim_undecided_evidence,sim_simultaneous_evidence,\
-mean_impacts,sim_cc_proved,sim_pcc_proved,sim_icc_proved,sim_simultaneous_proved,sim_undecided,sim_contradicted,\
+mean_impacts,sim_cc_proved,sim_no_icc_no_pcc_proved,sim_pcc_proved,sim_icc_proved,sim_simultaneous_proved,\
+sim_undecided,sim_contradicted,\
 certificate,refutation,orbit";
 
 /// One row of points.csv.
@@ -79,20 +81,23 @@ impl Row {
 
     /// Whether the simulated drops (if any) include CC or PCC as evidence.
     pub fn sim_chatter(&self) -> Option<bool> {
-        self.sim.as_ref().map(|s| s.counts[0] + s.counts[1] > 0)
+        self.sim.as_ref().map(|s| s.counts[Outcome::Cc.index()] + s.counts[Outcome::Pcc.index()] > 0)
     }
 
-    /// Whether some drop was proved to end in CC or PCC (`None`: no proofs tried).
-    pub fn proved_chatter(&self) -> Option<bool> {
-        self.sim.as_ref().and_then(|s| s.proved).map(|p| p[0] + p[1] > 0)
+    /// Whether some drop was proved never to separate: proved CC, PCC, or no ICC and no PCC
+    /// (a cone entry, finite accumulation time not derived); `None`: no proofs tried.
+    pub fn proved_no_icc(&self) -> Option<bool> {
+        let chatter = [Outcome::Cc, Outcome::Pcc, Outcome::NoIccNoPcc];
+        self.sim.as_ref().and_then(|s| s.proved).map(|p| chatter.iter().any(|o| p[o.index()] > 0))
     }
 
     /// The CSV line (without newline).
     pub fn to_csv(&self) -> String {
         let b = |x: Option<bool>| x.map(|v| v.to_string()).unwrap_or_default();
         let s = self.sim.as_ref();
-        let count = |i: usize| s.map(|s| s.counts[i].to_string()).unwrap_or_default();
-        let proved = |i: usize| s.and_then(|s| s.proved).map(|p| p[i].to_string()).unwrap_or_default();
+        let count = |o: Outcome| s.map(|s| s.counts[o.index()].to_string()).unwrap_or_default();
+        let proved =
+            |o: Outcome| s.and_then(|s| s.proved).map(|p| p[o.index()].to_string()).unwrap_or_default();
         let contradicted = s.filter(|s| s.proved.is_some()).map(|s| s.contradicted.to_string());
         [
             self.index.to_string(),
@@ -107,17 +112,18 @@ impl Row {
             self.claim.clone().unwrap_or_default(),
             b(self.refuted),
             s.map(|s| s.runs.to_string()).unwrap_or_default(),
-            count(0),
-            count(1),
-            count(2),
-            count(3),
-            count(4),
+            count(Outcome::Cc),
+            count(Outcome::Pcc),
+            count(Outcome::Icc),
+            count(Outcome::Undecided),
+            count(Outcome::Simultaneous),
             s.map(|s| format!("{}", s.mean_impacts())).unwrap_or_default(),
-            proved(0),
-            proved(1),
-            proved(2),
-            proved(4),
-            proved(3),
+            proved(Outcome::Cc),
+            proved(Outcome::NoIccNoPcc),
+            proved(Outcome::Pcc),
+            proved(Outcome::Icc),
+            proved(Outcome::Simultaneous),
+            proved(Outcome::Undecided),
             contradicted.unwrap_or_default(),
             self.certificate.clone().unwrap_or_default(),
             self.refutation.clone().unwrap_or_default(),
@@ -142,14 +148,29 @@ impl Row {
             None
         } else {
             let runs = int(f[11])?;
-            let counts = [int(f[12])?, int(f[13])?, int(f[14])?, int(f[15])?, int(f[16])?];
+            // The f64 evidence is never no-ICC-no-PCC (no column).
+            let counts = [int(f[12])?, int(f[13])?, int(f[14])?, int(f[15])?, int(f[16])?, 0];
             let mean: f64 = f[17].parse().map_err(|_| format!("{:?} is not a number", f[17]))?;
             let proved = if f[18].is_empty() {
                 None
             } else {
-                Some([int(f[18])?, int(f[19])?, int(f[20])?, int(f[22])?, int(f[21])?])
+                // Columns: CC, no-ICC-no-PCC, PCC, ICC, simultaneous, undecided.
+                let [cc, none, pcc, icc, sim, und] =
+                    [int(f[18])?, int(f[19])?, int(f[20])?, int(f[21])?, int(f[22])?, int(f[23])?];
+                let mut p = [0; Outcome::COUNT];
+                for (o, k) in [
+                    (Outcome::Cc, cc),
+                    (Outcome::NoIccNoPcc, none),
+                    (Outcome::Pcc, pcc),
+                    (Outcome::Icc, icc),
+                    (Outcome::Simultaneous, sim),
+                    (Outcome::Undecided, und),
+                ] {
+                    p[o.index()] = k;
+                }
+                Some(p)
             };
-            let contradicted = if f[23].is_empty() { 0 } else { int(f[23])? };
+            let contradicted = if f[24].is_empty() { 0 } else { int(f[24])? };
             Some(SimStats {
                 runs,
                 counts,
@@ -171,9 +192,9 @@ impl Row {
             claim: opt(f[9]),
             refuted: optb(f[10])?,
             sim,
-            certificate: opt(f[24]),
-            refutation: opt(f[25]),
-            orbit: opt(f[26]),
+            certificate: opt(f[25]),
+            refutation: opt(f[26]),
+            orbit: opt(f[27]),
         })
     }
 }

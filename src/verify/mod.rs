@@ -162,8 +162,11 @@ impl FileVerdict {
             );
         }
         if let Some(b) = self.orbit_boxes {
+            let time = self.time_to_rest_bound.as_ref().map_or(String::new(), |t| {
+                format!("; its impacts accumulate within T <= {t} h/|v| of that impact (time_to_rest_bound)")
+            });
             return format!(
-                "{}: OK ({}, n = {}: every state of the set X ends in complete chatter; conditions shown on {b} sub-boxes)",
+                "{}: OK ({}, n = {}: every state of the set X ends in complete chatter{time}; conditions shown on {b} sub-boxes)",
                 self.path,
                 self.claim.unwrap_or("?"),
                 self.n.unwrap_or(0)

@@ -191,6 +191,15 @@ fn verify_reports_an_orbit_certificate_by_its_sub_boxes() {
     assert_eq!(f["claim"], "CompleteChatterFromSet");
     assert!(f["orbit_boxes"].as_u64().unwrap() >= 1, "{f}");
     assert!(f.get("generators").is_none(), "an orbit certificate has no generators: {f}");
+    // Issue 24: B = T̄/(1 − ρ) of the orbit theorem, derived by the kernel from rho and period.
+    let cert =
+        std::fs::read_to_string(root().join("certificates/valid/orbit-n3-kappa1_8-gamma3_20.ron")).unwrap();
+    let field = |name: &str| {
+        let at = cert.find(&format!("{name}: \"")).unwrap() + name.len() + 3;
+        crate::common::q(&cert[at..at + cert[at..].find('"').unwrap()])
+    };
+    let b = field("period") / (chatter::exact::Q::int(1) - field("rho"));
+    assert_eq!(f["time_to_rest_bound"], b.to_string(), "{f}");
     let o = std::process::Command::new(crate::common::bin())
         .args(["verify", "certificates/valid/orbit-n3-kappa1_8-gamma3_20.ron"])
         .current_dir(root())
@@ -198,7 +207,9 @@ fn verify_reports_an_orbit_certificate_by_its_sub_boxes() {
         .unwrap();
     let line = String::from_utf8_lossy(&o.stdout);
     assert!(
-        line.contains("every state of the set X ends in complete chatter; conditions shown on"),
+        line.contains(
+            "every state of the set X ends in complete chatter; its impacts accumulate within T <= "
+        ) && line.contains(" h/|v| of that impact (time_to_rest_bound); conditions shown on"),
         "{line}"
     );
 }

@@ -145,7 +145,7 @@ fn synthetic(curves: Curves) -> MapFigure {
             let pcc = (share(x, g) * RUNS as f64).round() as u64;
             let sim = SimStats {
                 runs: RUNS,
-                counts: [RUNS - pcc, pcc, 0, 0, 0],
+                counts: [RUNS - pcc, pcc, 0, 0, 0, 0],
                 proved: None,
                 contradicted: 0,
                 impacts: (impacts(x, g) * RUNS as f64).round() as u64,

@@ -236,3 +236,140 @@ fn issue11_a_rod_box_checks_r2_at_every_corner_before_r3() {
     assert_eq!(r.code, Code::ImageOutside, "{r}");
     assert!(matches!(r.locus, Locus::Piece { corner: Some(1), .. }), "{:?}", r.locus);
 }
+
+/// `chatter` with `args` in `dir`: stdout, and the exit status.
+fn chatter_in(dir: &std::path::Path, args: &[&str]) -> (String, i32) {
+    let out = Command::new(bin()).args(args).current_dir(dir).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(out.status.code().is_some(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    (text, out.status.code().unwrap())
+}
+
+#[test]
+fn issue24_a_cone_entry_is_proved_no_icc_no_pcc_and_not_cc() {
+    // The reviewer's drop: it enters a kernel-checked cone at its first impact, which proves
+    // v <= 0 for ever and no PCC, not that the impacts accumulate at a finite time (CC).
+    use chatter::simulate::{Decision, Initial, Model, Options, SetKind, Shape, simulate_with};
+    let d = tempfile::tempdir().unwrap();
+    let args = ["simulate", "--n", "3", "--kappa", "3/20", "--gamma", "1/20", "--exact"];
+    let (text, code) = chatter_in(d.path(), &args);
+    assert_eq!(code, 0, "{text}");
+    assert!(
+        text.contains(
+            "outcome: no ICC, no PCC (proved; CC not proved: finite accumulation time not derived, \
+             docs/time-to-rest.md; evidence: CC after 1 impact"
+        ),
+        "{text}"
+    );
+    assert!(!text.contains("outcome: CC"), "{text}");
+    let (json, code) = chatter_in(d.path(), &[&args[..], &["--json"]].concat());
+    assert_eq!(code, 0, "{json}");
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(v["outcome"], "no-ICC-no-PCC", "{json}");
+    assert_eq!((v["proved"].as_bool(), v["basis"].as_str()), (Some(true), Some("proof")));
+    assert_eq!(v["evidence"]["outcome"], "CC", "the evidence stays visible as evidence");
+    assert_eq!(
+        (v["entered"]["kind"].as_str(), v["entered"]["finite_time"].as_bool()),
+        (Some("cone"), Some(false))
+    );
+    // The library says the same.
+    let model = Model::new(Shape::Polygon(3), q("3/20"), q("1/20")).unwrap();
+    let sets = chatter::prove::made(&model);
+    let initial = Initial::RandomDrop { seed: 0 };
+    let run = simulate_with(
+        &model,
+        &initial,
+        chatter::simulate::Arithmetic::Exact,
+        &Options::new(200),
+        Some(&sets),
+    );
+    assert_eq!(
+        (run.outcome, run.proved, run.evidence),
+        (chatter::simulate::Outcome::NoIccNoPcc, true, chatter::simulate::Outcome::Cc)
+    );
+    assert!(
+        matches!(run.decision, Decision::Certified { after: 1, kind: SetKind::Cone, .. }),
+        "{:?}",
+        run.decision
+    );
+    // A batch counts it apart from CC: proved no-ICC-no-PCC, evidence CC.
+    let (json, code) = chatter_in(d.path(), &[&args[..], &["--runs", "4", "--json"]].concat());
+    assert_eq!(code, 0, "{json}");
+    let b: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(
+        (b["proved"]["CC"].as_u64(), b["proved"]["no-ICC-no-PCC"].as_u64()),
+        (Some(0), Some(4)),
+        "{json}"
+    );
+    assert_eq!((b["counts"]["CC"].as_u64(), b["counts"]["no-ICC-no-PCC"].as_u64()), (Some(0), Some(4)));
+    assert_eq!(b["evidence"]["CC"], 4);
+    assert!(b["evidence"].get("no-ICC-no-PCC").is_none(), "never evidence: {json}");
+}
+
+#[test]
+fn issue24_an_orbit_entry_is_proved_cc_with_a_finite_time() {
+    // n = 5 has no cone excluding PCC here; an orbit certificate is made on the fly and the exact
+    // drop enters its set X after 6 impacts: CC, the impacts accumulating at a finite time.
+    let d = tempfile::tempdir().unwrap();
+    let args =
+        ["simulate", "--n", "5", "--kappa", "1/200", "--gamma", "1/100", "--impacts", "300", "--exact"];
+    let (text, code) = chatter_in(d.path(), &args);
+    assert_eq!(code, 0, "{text}");
+    assert!(
+        text.contains("outcome: CC (proved)") && text.contains("kernel-checked orbit certificate"),
+        "{text}"
+    );
+    let (json, code) = chatter_in(d.path(), &[&args[..], &["--json"]].concat());
+    assert_eq!(code, 0, "{json}");
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!((v["outcome"].as_str(), v["proved"].as_bool()), (Some("CC"), Some(true)), "{json}");
+    assert_eq!(v["entered"]["kind"], "orbit");
+    assert_eq!(v["entered"]["impact"], 6);
+    assert_eq!(v["entered"]["finite_time"], true);
+}
+
+#[test]
+fn issue24_map_columns_count_cone_entries_apart_from_cc() {
+    // One point (kappa = 3/20, gamma = 1/20) with a CompleteChatterFromAllDown certificate: its
+    // three drops enter the cone at their first impact, so they are proved no-ICC-no-PCC, not CC.
+    use chatter::sweep::table::{HEADER, parse_csv};
+    let d = tempfile::tempdir().unwrap();
+    let args = [
+        "map",
+        "--n",
+        "3",
+        "--kappa",
+        "0.1:0.2:1",
+        "--gamma",
+        "0:0.1:1",
+        "--certify",
+        "--simulate",
+        "3",
+        "--out",
+        "m",
+    ];
+    let (text, code) = chatter_in(d.path(), &args);
+    assert_eq!(code, 0, "{text}");
+    let csv = std::fs::read_to_string(d.path().join("m/points.csv")).unwrap();
+    let header: Vec<&str> = HEADER.split(',').collect();
+    let at =
+        |name: &str| header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("no column {name}"));
+    assert_eq!(at("sim_no_icc_no_pcc_proved"), at("sim_cc_proved") + 1);
+    let line: Vec<&str> = csv.lines().nth(1).unwrap().split(',').collect();
+    assert_eq!(line[at("claim")], "CompleteChatterFromAllDown");
+    assert_eq!(line[at("sim_cc_evidence")], "3", "the f64 evidence is CC");
+    assert_eq!((line[at("sim_cc_proved")], line[at("sim_no_icc_no_pcc_proved")]), ("0", "3"), "{csv}");
+    assert_eq!(line[at("sim_contradicted")], "0", "no-ICC-no-PCC does not contradict CC evidence");
+    let rows = parse_csv(&csv).unwrap();
+    let proved = rows[0].sim.as_ref().unwrap().proved.unwrap();
+    assert_eq!(proved[chatter::simulate::Outcome::NoIccNoPcc.index()], 3);
+    assert_eq!(rows[0].to_csv(), csv.lines().nth(1).unwrap(), "the row reads back");
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.path().join("m/summary.json")).unwrap()).unwrap();
+    assert_eq!(
+        (s["counts"]["drops_proved"]["CC"].as_u64(), s["counts"]["drops_proved"]["no-ICC-no-PCC"].as_u64()),
+        (Some(0), Some(3))
+    );
+    assert_eq!(s["disagreement_kinds"]["evidence-cc-unproved"]["points"], 1);
+    assert!(text.contains("drops_proved: CC 0, ICC 0, PCC 0, no-ICC-no-PCC 3"), "{text}");
+}

@@ -86,7 +86,15 @@ pub fn check<F: Field>(cert: &OrbitCertificate, limits: ParseLimits) -> Result<A
     let boxes = cover(&orbit, limits)?;
     let mut a = Accepted::cone(Claim::CompleteChatterFromSet, orbit.maps.n, 0, Vec::new());
     a.orbit_boxes = Some(boxes);
+    a.time_to_rest_bound = time_to_rest(&orbit).map(|b| crate::exact::to_canonical(&b));
     Ok(a)
+}
+
+/// B = T̄/(1 − ρ): from a state of X with centre height h and velocity v < 0 right after an
+/// impact, the impacts accumulate within time B h/|v| (docs/orbit-certificates.md §4, Theorem:
+/// period k lasts at most (h/|v|) ρ^k T̄). Rule O1 has shown 0 < ρ < 1 and T̄ > 0, so B > 0.
+fn time_to_rest<F: Field>(orbit: &Orbit<F>) -> Option<F> {
+    orbit.period.over(&F::one().minus(&orbit.rho))
 }
 
 /// The checked content of an orbit certificate, exact.

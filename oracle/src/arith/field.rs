@@ -129,18 +129,25 @@ impl Num {
         self.coef[1..].iter().all(Zero::is_zero).then(|| &self.coef[0])
     }
 
+    /// Interval Horner on the k-th enclosure of c: an interval that contains the element.
+    fn horner(&self, k: usize) -> (Rat, Rat) {
+        let c = self.field.enclosure(k);
+        let top = self.coef[self.coef.len() - 1].clone();
+        let mut acc = (top.clone(), top);
+        for a in self.coef.iter().rev().skip(1) {
+            let m = interval_mul(&acc, &c);
+            acc = (&m.0 + a, &m.1 + a);
+        }
+        acc
+    }
+
     /// The sign, exactly: rational elements directly, others by refining an enclosure of c.
     pub fn signum(&self) -> Ordering {
         if let Some(x) = self.as_rational() {
             return x.cmp(&Rat::zero());
         }
         for k in 0.. {
-            let c = self.field.enclosure(k);
-            let mut acc = (self.coef[self.coef.len() - 1].clone(), self.coef[self.coef.len() - 1].clone());
-            for a in self.coef.iter().rev().skip(1) {
-                let m = interval_mul(&acc, &c);
-                acc = (&m.0 + a, &m.1 + a);
-            }
+            let acc = self.horner(k);
             if acc.0.is_positive() {
                 return Ordering::Greater;
             }
@@ -149,6 +156,16 @@ impl Num {
             }
         }
         unreachable!("a non-zero element has a sign")
+    }
+
+    /// A rational interval [lo, hi] that contains the element's real value, narrower than
+    /// 2^-bits (a point for a rational element): interval Horner on ever finer enclosures of c.
+    pub fn enclosure(&self, bits: u32) -> (Rat, Rat) {
+        if let Some(x) = self.as_rational() {
+            return (x.clone(), x.clone());
+        }
+        let width = Rat::new(One::one(), num_bigint::BigInt::one() << bits);
+        (0..).map(|k| self.horner(k)).find(|(lo, hi)| hi - lo < width).expect("enclosures shrink")
     }
 
     /// Whether > 0.

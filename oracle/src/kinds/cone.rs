@@ -7,9 +7,10 @@ use super::numbers::{denominator_bits, element};
 use crate::arith::{Field, Num, Rat};
 use crate::claim::Claim;
 use crate::read::Value;
-use crate::read::schema::{integer, list, param, string, strings, unit_variant, variant, walk};
+use crate::read::schema::{integer, list, optional, param, string, strings, unit_variant, variant, walk};
 use crate::regular::boxes::{Gens, check_box};
 use crate::regular::model::Polygon;
+use crate::regular::rest::time_to_rest;
 use crate::regular::rod::{Rod, check_rod};
 use crate::regular::rules::check_point;
 use crate::verdict::{Checked, Fail, Kind, Report};
@@ -22,6 +23,8 @@ pub struct ConeFile<'a> {
     gamma: Vec<&'a str>,
     claim: Claim,
     cone: Vec<Vec<&'a str>>,
+    /// The optional `time_to_rest_bound` B as written (rule T1).
+    bound: Option<&'a str>,
 }
 
 fn claim_of(v: &Value) -> Checked<Claim> {
@@ -38,6 +41,7 @@ pub fn read(v: &Value) -> Checked<ConeFile<'_>> {
         gamma: vec![],
         claim: Claim::EffectivelyInvariant,
         cone: vec![],
+        bound: None,
     };
     let fields = [
         ("format", true),
@@ -46,6 +50,7 @@ pub fn read(v: &Value) -> Checked<ConeFile<'_>> {
         ("coordinates", true),
         ("claim", true),
         ("cone", true),
+        ("time_to_rest_bound", false),
         ("producer", false),
     ];
     walk(v, &fields, |name, value| {
@@ -55,6 +60,7 @@ pub fn read(v: &Value) -> Checked<ConeFile<'_>> {
             "body" => body(value, &mut f)?,
             "coordinates" => drop(unit_variant(value, &[("ContactVelocities", true)])?),
             "claim" => f.claim = claim_of(value)?,
+            "time_to_rest_bound" => f.bound = optional(value)?.map(string).transpose()?,
             _ => f.cone = list(value)?.iter().map(strings).collect::<Checked<_>>()?,
         }
         Ok(())
@@ -148,6 +154,12 @@ pub fn prepare(f: &ConeFile, limits: &Limits) -> Checked<(Parts, u64)> {
     claim_is_cone(f)?;
     size(f, limits)?;
     let interval = f.kappa.len() == 2 || f.gamma.len() == 2;
+    if f.bound.is_some() && (f.n != 2 || interval) {
+        return Err(Fail::new(
+            "time-to-rest-not-shown",
+            "time_to_rest_bound: rule T1 covers the rod at a point only (docs/time-to-rest.md §2)",
+        ));
+    }
     if f.n >= 5 && f.n != 6 {
         return prepare_field(f, interval, limits);
     }
@@ -186,15 +198,25 @@ pub fn prepare(f: &ConeFile, limits: &Limits) -> Checked<(Parts, u64)> {
 
 /// Every rule of a cone certificate after its schema.
 pub fn check(f: &ConeFile, limits: &Limits) -> Checked<(Kind, Report)> {
+    checked(f, limits).map(|(kind, report, _)| (kind, report))
+}
+
+/// Every rule of a cone certificate after its schema, with B of rule T1 (canonical text) when the
+/// file carries one and it is shown.
+pub fn checked(f: &ConeFile, limits: &Limits) -> Checked<(Kind, Report, Option<String>)> {
     let (parts, bits) = prepare(f, limits)?;
     match parts {
-        Parts::Point(b, gens) => Ok((Kind::Cone, check_point(&b, f.claim, &gens, bits)?)),
-        Parts::Rod(rod, gens) => Ok((Kind::Rod, check_rod(&rod, f.claim, &gens, bits)?)),
+        Parts::Point(b, gens) => Ok((Kind::Cone, check_point(&b, f.claim, &gens, bits)?, None)),
+        Parts::Rod(rod, gens) => {
+            let report = check_rod(&rod, f.claim, &gens, bits)?;
+            let bound = f.bound.map(|b| time_to_rest(&rod, f.claim, b, limits)).transpose()?;
+            Ok((Kind::Rod, report, bound))
+        }
         Parts::Box(2, k, g, _, gens) => {
-            Ok((Kind::Box, check_box(2, &k, &g, f.claim, &Gens::Rod(&gens), bits)?))
+            Ok((Kind::Box, check_box(2, &k, &g, f.claim, &Gens::Rod(&gens), bits)?, None))
         }
         Parts::Box(n, k, g, gens, _) => {
-            Ok((Kind::Box, check_box(n, &k, &g, f.claim, &Gens::Polygon(&gens), bits)?))
+            Ok((Kind::Box, check_box(n, &k, &g, f.claim, &Gens::Polygon(&gens), bits)?, None))
         }
     }
 }
@@ -202,6 +224,11 @@ pub fn check(f: &ConeFile, limits: &Limits) -> Checked<(Kind, Report)> {
 /// The claim of a file.
 pub fn claim(f: &ConeFile) -> Claim {
     f.claim
+}
+
+/// The text of the file's `time_to_rest_bound`, when it carries one.
+pub fn bound<'a>(f: &ConeFile<'a>) -> Option<&'a str> {
+    f.bound
 }
 
 /// n = 5 and 7..64: Q(cos 2π/n) (§12).

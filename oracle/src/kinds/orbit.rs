@@ -1,9 +1,13 @@
 //! Orbit certificates, version 5 (docs/certificate-format.md §14): the schema, rule O1 (the
 //! file's rules, decided exactly: two-sided), then conditions 1-3 at rational sample points of X
 //! (one-sided: a failing point proves the certificate false, passing points prove nothing).
+//! Every regular n from 3 to 64: where cos 2π/n is irrational the return map is evaluated
+//! exactly in Q(cos 2π/n) (`crate::arith::field`), signs decided on the oracle's own rational
+//! enclosures of cos 2π/n (`crate::arith::enclosure`).
 
 use super::limits::Limits;
 use super::numbers::element;
+use crate::arith::text::element_text;
 use crate::arith::{Field, Num};
 use crate::claim::Claim;
 use crate::orbit::map::Orbit;
@@ -211,10 +215,10 @@ pub fn rules(f: &OrbitFile, limits: &Limits) -> Checked<Orbit> {
     let q = Field::rationals();
     let kappa = element("body.kappa", f.kappa, &q, limits)?;
     let gamma = element("body.gamma", f.gamma, &q, limits)?;
-    if !matches!(f.n, 3 | 4 | 6) {
+    if !(3..=MAX_N).contains(&f.n) {
         return Err(Fail::new(
             "unsupported-body",
-            format!("n = {}: orbit certificates need n in 3, 4, 6", f.n),
+            format!("n = {}: orbit certificates need 3 <= n <= {MAX_N}", f.n),
         ));
     }
     if !kappa.is_positive() || gamma.is_negative() || gamma > Num::int(&q, 1) {
@@ -243,12 +247,28 @@ pub fn rules(f: &OrbitFile, limits: &Limits) -> Checked<Orbit> {
     }
     let (centre, a, delta) = the_set(f, &q, limits)?;
     let a_inv = inverse(&a).ok_or_else(|| Fail::new("degenerate-set", "the axes are linearly dependent"))?;
+    // Every number of the file is rational; the body's constants live in Q(cos 2π/n), so the
+    // return map is evaluated there, exactly, with every datum lifted into that field.
     let field = Field::cos(f.n as u32);
     let to = |x: &Num| Num::rational(&field, x.as_rational().expect("rational").clone());
+    let v3 = |x: &V3| -> V3 { std::array::from_fn(|i| to(&x[i])) };
     let body = Polygon::new(f.n as usize, to(&kappa), to(&gamma));
     let pattern = f.pattern.iter().map(|&j| j as i64).collect();
-    Ok(Orbit { body, pattern, centre, a, a_inv, delta, rho, lambda, period })
+    Ok(Orbit {
+        body,
+        pattern,
+        centre: v3(&centre),
+        a: std::array::from_fn(|r| v3(&a[r])),
+        a_inv: std::array::from_fn(|r| v3(&a_inv[r])),
+        delta: to(&delta),
+        rho: to(&rho),
+        lambda: to(&lambda),
+        period: to(&period),
+    })
 }
+
+/// The largest n of a regular polygon (docs/certificate-format.md §12 and §14).
+pub const MAX_N: u64 = 64;
 
 /// Number of pseudo-random sample points, besides the 54 grid points.
 pub const RANDOM_SAMPLES: usize = 40;
@@ -256,7 +276,10 @@ pub const RANDOM_SAMPLES: usize = 40;
 /// Conditions 1-3 at the sample points: the first failure found.
 pub fn check(o: &Orbit) -> Checked<()> {
     for y in samples(&o.delta, RANDOM_SAMPLES) {
-        o.conditions(&y).map_err(|f| Fail { codes: f.codes, why: format!("{} at y = {y:?}", f.why) })?;
+        o.conditions(&y).map_err(|f| {
+            let at: Vec<String> = y.iter().map(element_text).collect();
+            Fail { codes: f.codes, why: format!("{} at y = ({})", f.why, at.join(", ")) }
+        })?;
     }
     Ok(())
 }

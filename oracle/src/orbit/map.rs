@@ -4,6 +4,7 @@
 //! impact at j, then rename). Heights transform like speeds (docs/model.md §2).
 
 use crate::arith::Num;
+use crate::arith::text::element_text;
 use crate::regular::model::{Polygon, V3};
 use crate::verdict::{Checked, Fail};
 
@@ -28,6 +29,20 @@ pub struct Orbit {
     pub lambda: Num,
     /// T̄.
     pub period: Num,
+}
+
+/// One period of the return map at a point, exactly: R_P(x), the position and velocity scales
+/// α = hc(q_m) and β = -v(p_m), and the flight time T(x) (docs/orbit-certificates.md §2).
+#[derive(Clone, Debug)]
+pub struct Period {
+    /// R_P(x).
+    pub image: V3,
+    /// α.
+    pub alpha: Num,
+    /// β.
+    pub beta: Num,
+    /// T.
+    pub total: Num,
 }
 
 fn mat_vec(m: &[V3; 3], x: &V3) -> V3 {
@@ -64,8 +79,17 @@ impl Orbit {
         Ok(&hj / &uj.neg())
     }
 
-    /// Conditions 1-3 at the point with parameters y (x = x* + A y).
-    pub fn conditions(&self, y: &V3) -> Checked<()> {
+    /// B = T̄/(1 - ρ) (canonical text): by the theorem of docs/orbit-certificates.md §4, period k
+    /// from a state of X with scales A_0 = hc, B_0 = -v lasts at most (A_0/B_0) ρ^k T̄, so the
+    /// impacts accumulate within B h/|v| (docs/certificate-format.md §5).
+    pub fn time_to_rest(&self) -> String {
+        let one = Num::int(&self.rho.field, 1);
+        element_text(&(&self.period / &(&one - &self.rho)))
+    }
+
+    /// One period of the pattern from x = x* + A y, with condition 1 at every step and the
+    /// positivity of α and β (condition 2) checked before they are divided by.
+    pub fn period(&self, y: &V3) -> Checked<Period> {
         let b = &self.body;
         let f = &self.delta.field;
         let x = self.point(y);
@@ -85,6 +109,12 @@ impl Orbit {
             return Err(fail("set-not-invariant", "alpha or beta is not positive".into()));
         }
         let image: V3 = [&q[1] / &alpha, &p[0] / &beta, &p[1] / &beta];
+        Ok(Period { image, alpha, beta, total })
+    }
+
+    /// Conditions 1-3 at the point with parameters y (x = x* + A y).
+    pub fn conditions(&self, y: &V3) -> Checked<()> {
+        let Period { image, alpha, beta, total } = self.period(y)?;
         let diff: V3 = std::array::from_fn(|i| &image[i] - &self.centre[i]);
         let y2 = mat_vec(&self.a_inv, &diff);
         if y2.iter().any(|c| c > &self.delta || c < &self.delta.neg()) {

@@ -28,38 +28,56 @@ pub enum Reader {
 }
 
 /// Reads `format` and `version` and picks the reader. The top-level struct's name, when written,
-/// must be `Certificate` for certificates and `Refutation` for refutations.
+/// must be `Certificate` for certificates and `Refutation` for refutations (checked after the
+/// header, as the kernel reads the header under any of its three struct names).
 pub fn header(v: &Value) -> Checked<Reader> {
+    // A struct name other than the three the kernel's lenient header reader tries is refused
+    // first; one of them that is not the kind's own, after the header (the kind's schema).
+    let named = match v {
+        Value::Named { name, .. } if !name.is_empty() => Some(name.as_str()),
+        _ => None,
+    };
+    if let Some(name) = named
+        && !["Certificate", "Refutation", "Proof"].contains(&name)
+    {
+        return Err(Fail::new("syntax", format!("unknown struct `{name}`")));
+    }
     let (mut format, mut version) = (None, None);
     for (name, value) in record(v)? {
+        // The kernel reads the RON header leniently, as optional fields with `Some` implicit:
+        // `Some(x)` is x there and `None` an absent field; the kind's schema refuses both later.
+        let value = match value {
+            Value::Wrapped { name, items } if name == "Some" && items.len() == 1 => Some(&items[0]),
+            Value::Named { name, fields: None } if name == "None" => None,
+            other => Some(other),
+        };
         let slot_is_set = match name.as_str() {
-            "format" => format.replace(string(value)?).is_some(),
-            "version" => version.replace(integer(value)?).is_some(),
+            "format" => format.replace(value.map(string).transpose()?).is_some(),
+            "version" => version.replace(value.map(integer).transpose()?).is_some(),
             _ => false,
         };
         if slot_is_set {
             return Err(Fail::new("duplicate-field", format!("duplicate field `{name}`")));
         }
     }
-    let refutation = format == Some(REFUTATION);
-    let expected_name = if refutation { "Refutation" } else { "Certificate" };
-    if let Value::Named { name, .. } = v
-        && !name.is_empty()
+    let format = format.flatten().ok_or_else(|| Fail::new("missing-field", "missing field `format`"))?;
+    if ![CERTIFICATE, FAMILY, ORBIT, REFUTATION].contains(&format) {
+        return Err(Fail::new("wrong-format", format!("format {format:?}")));
+    }
+    let version = version.flatten().ok_or_else(|| Fail::new("missing-field", "missing field `version`"))?;
+    // docs/certificate-format.md's header table, with the two legacy aliases of version 4 and 5.
+    let reader = match (format, version) {
+        (REFUTATION, 1) => Reader::Refutation,
+        (CERTIFICATE, 1..=3) => Reader::Cone(version),
+        (CERTIFICATE, 4) | (FAMILY, 1) => Reader::Family,
+        (CERTIFICATE, 5) | (ORBIT, 1) => Reader::Orbit,
+        _ => return Err(Fail::new("unsupported-version", format!("version {version}"))),
+    };
+    let expected_name = if reader == Reader::Refutation { "Refutation" } else { "Certificate" };
+    if let Some(name) = named
         && name != expected_name
     {
         return Err(Fail::new("syntax", format!("expected struct `{expected_name}`, found `{name}`")));
     }
-    let format = format.ok_or_else(|| Fail::new("missing-field", "missing field `format`"))?;
-    if ![CERTIFICATE, FAMILY, ORBIT, REFUTATION].contains(&format) {
-        return Err(Fail::new("wrong-format", format!("format {format:?}")));
-    }
-    let version = version.ok_or_else(|| Fail::new("missing-field", "missing field `version`"))?;
-    // docs/certificate-format.md's header table, with the two legacy aliases of version 4 and 5.
-    match (format, version) {
-        (REFUTATION, 1) => Ok(Reader::Refutation),
-        (CERTIFICATE, 1..=3) => Ok(Reader::Cone(version)),
-        (CERTIFICATE, 4) | (FAMILY, 1) => Ok(Reader::Family),
-        (CERTIFICATE, 5) | (ORBIT, 1) => Ok(Reader::Orbit),
-        _ => Err(Fail::new("unsupported-version", format!("version {version}"))),
-    }
+    Ok(reader)
 }

@@ -156,8 +156,15 @@ impl Parser<'_> {
                 let save = self.at;
                 self.ws();
                 if self.eat(b'(') {
-                    let fields = self.ron_seq(b')', Self::ron_field)?;
-                    return Ok(Value::Named { name, fields: Some(fields) });
+                    self.ws();
+                    // `Name(field: ...)` or `Name()`: a struct; `Name(value, ...)`: a value wrapped
+                    // in an identifier, such as `Some("5/2")` (RON's optional value).
+                    if self.at_field() || self.peek() == Some(b')') {
+                        let fields = self.ron_seq(b')', Self::ron_field)?;
+                        return Ok(Value::Named { name, fields: Some(fields) });
+                    }
+                    let items = self.ron_seq(b')', Self::ron_value)?;
+                    return Ok(Value::Wrapped { name, items });
                 }
                 self.at = save;
                 Ok(Value::Named { name, fields: None })

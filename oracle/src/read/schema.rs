@@ -47,6 +47,7 @@ pub fn variant(v: &Value) -> Checked<(&str, Option<&Value>)> {
     match v {
         Value::Named { name, fields: None } => Ok((name, None)),
         Value::Named { name, fields: Some(_) } if !name.is_empty() => Ok((name, Some(v))),
+        Value::Wrapped { name, .. } => Ok((name, Some(v))),
         Value::JsonStr(name) => Ok((name, None)),
         Value::Object(m) if m.len() == 1 => Ok((&m[0].0, Some(&m[0].1))),
         other => Err(Fail::new("syntax", format!("expected an enum value, found a {}", other.kind()))),
@@ -110,5 +111,16 @@ pub fn param(v: &Value) -> Checked<Vec<&str>> {
         other => {
             Err(Fail::new("syntax", format!("expected a number or an interval, found a {}", other.kind())))
         }
+    }
+}
+
+/// An optional field's value (docs/certificate-format.md §2 and §11): RON `None` or `Some(x)`;
+/// in JSON the value itself (the strict JSON syntax has no `null`). Anything else is `syntax`.
+pub fn optional(v: &Value) -> Checked<Option<&Value>> {
+    match v {
+        Value::Named { name, fields: None } if name == "None" => Ok(None),
+        Value::Wrapped { name, items } if name == "Some" && items.len() == 1 => Ok(Some(&items[0])),
+        Value::JsonStr(_) | Value::Array(_) | Value::Object(_) => Ok(Some(v)),
+        other => Err(Fail::new("syntax", format!("expected an optional value, found a {}", other.kind()))),
     }
 }

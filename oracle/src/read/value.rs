@@ -13,6 +13,14 @@ pub enum Value {
     },
     /// A JSON object: members in textual order.
     Object(Vec<(String, Value)>),
+    /// A RON identifier followed by a parenthesised list of values (`Some("5/2")`): an optional
+    /// field's value when the identifier is `Some`, otherwise an enum value of the wrong form.
+    Wrapped {
+        /// The identifier.
+        name: String,
+        /// The values inside the parentheses.
+        items: Vec<Value>,
+    },
     /// A RON tuple `( ... )`.
     Tuple(Vec<Value>),
     /// A RON list `[ ... ]`.
@@ -34,6 +42,7 @@ impl Value {
         match self {
             Value::Named { fields: None, .. } => "identifier",
             Value::Named { .. } => "struct",
+            Value::Wrapped { .. } => "wrapped value",
             Value::Object(_) => "object",
             Value::Tuple(_) => "tuple",
             Value::List(_) => "list",

@@ -29,6 +29,10 @@ fn write_into(v: &Value, indent: usize, out: &mut String) {
             out.push_str(&close);
             out.push(')');
         }
+        Value::Wrapped { name, items } => {
+            out.push_str(name);
+            seq(items, "(", ")", indent, out);
+        }
         Value::Tuple(xs) => seq(xs, "(", ")", indent, out),
         Value::List(xs) | Value::Array(xs) => seq(xs, "[", "]", indent, out),
         Value::Str(s) | Value::JsonStr(s) => out.push_str(&format!("\"{s}\"")),

@@ -58,6 +58,7 @@ pub fn kernel_ron(text: &str) -> KernelView {
             },
             pcc_boxes: a.pcc_boxes,
             orbit_boxes: a.orbit_boxes,
+            time_to_rest_bound: Some(a.time_to_rest_bound),
             ..KernelView::default()
         },
         Verdict::Rejected(r) => {
@@ -90,6 +91,7 @@ pub fn kernel_file(path: &Path) -> KernelView {
             },
             pcc_boxes: v.pcc_boxes,
             orbit_boxes: v.orbit_boxes,
+            time_to_rest_bound: Some(v.time_to_rest_bound),
             ..KernelView::default()
         },
         _ => rejected(

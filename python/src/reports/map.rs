@@ -5,6 +5,7 @@
 
 use crate::fail::Fail;
 use chatter::report::{self, map::MapSummary};
+use chatter::simulate::Outcome;
 use chatter::sweep::grid::{Axis, Grid, Shard, Variable};
 use chatter::sweep::point::Tasks;
 use chatter::sweep::table::Row;
@@ -51,8 +52,8 @@ fn request(a: &Args) -> Result<Request, Fail> {
 /// One point as a JSON object with the columns of points.csv.
 fn point(row: &Row, done: &Done, variable: Variable) -> Map<String, Value> {
     let sim = row.sim.as_ref();
-    let count = |i: usize| sim.map(|s| s.counts[i]);
-    let proved = |i: usize| sim.and_then(|s| s.proved).map(|p| p[i]);
+    let count = |o: Outcome| sim.map(|s| s.counts[o.index()]);
+    let proved = |o: Outcome| sim.and_then(|s| s.proved).map(|p| p[o.index()]);
     let rho = match variable {
         Variable::Rho => json!(row.rho),
         Variable::Kappa => json!(row.rho.parse::<f64>().ok()),
@@ -62,11 +63,14 @@ fn point(row: &Row, done: &Done, variable: Variable) -> Map<String, Value> {
         "kappa": row.kappa.to_string(), "gamma": row.gamma.to_string(),
         "cc_criterion": row.cc_criterion, "pcc_criterion": row.pcc_criterion,
         "finder": row.finder, "certified": row.certified, "claim": row.claim, "refuted": row.refuted,
-        "sim_runs": sim.map(|s| s.runs), "sim_cc_evidence": count(0), "sim_pcc_evidence": count(1),
-        "sim_icc_evidence": count(2), "sim_undecided_evidence": count(3), "sim_simultaneous_evidence": count(4),
+        "sim_runs": sim.map(|s| s.runs), "sim_cc_evidence": count(Outcome::Cc),
+        "sim_pcc_evidence": count(Outcome::Pcc), "sim_icc_evidence": count(Outcome::Icc),
+        "sim_undecided_evidence": count(Outcome::Undecided),
+        "sim_simultaneous_evidence": count(Outcome::Simultaneous),
         "mean_impacts": sim.map(|s| s.mean_impacts()),
-        "sim_cc_proved": proved(0), "sim_pcc_proved": proved(1), "sim_icc_proved": proved(2),
-        "sim_simultaneous_proved": proved(4), "sim_undecided": proved(3),
+        "sim_cc_proved": proved(Outcome::Cc), "sim_no_icc_no_pcc_proved": proved(Outcome::NoIccNoPcc),
+        "sim_pcc_proved": proved(Outcome::Pcc), "sim_icc_proved": proved(Outcome::Icc),
+        "sim_simultaneous_proved": proved(Outcome::Simultaneous), "sim_undecided": proved(Outcome::Undecided),
         "sim_contradicted": sim.filter(|s| s.proved.is_some()).map(|s| s.contradicted),
         "certificate": done.certificate, "refutation": done.refutation, "orbit": done.orbit,
     });

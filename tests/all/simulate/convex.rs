@@ -221,7 +221,7 @@ fn the_rectangle_plate_classifies_like_the_square_on_a_grid_of_gamma() {
         };
         let (cs, cr) = (count(&square), count(&rect));
         // The dominant outcome agrees (the random drops themselves are not transported here).
-        let top = |c: [usize; 5]| (0..5).max_by_key(|&i| c[i]).unwrap();
+        let top = |c: [usize; 6]| (0..6).max_by_key(|&i| c[i]).unwrap();
         assert_eq!(top(cs), top(cr), "gamma {gamma}: square {cs:?}, rectangle {cr:?}");
     }
 }

@@ -43,12 +43,17 @@ fn rod_threshold_from_simulation_brackets_7_minus_4_sqrt_3() {
     let above = "37/500"; // 0.0740
     for arithmetic in [Arithmetic::Float, Arithmetic::Exact] {
         let b = rod_translation(below, 200, arithmetic);
-        assert_eq!(b.outcome, Outcome::Cc, "{arithmetic:?} below: {}", b.decision.describe());
-        // f64: converging intervals (evidence); exact: the rod's certified cone entered at impact 1.
+        assert_eq!(b.evidence, Outcome::Cc, "{arithmetic:?} below: {}", b.decision.describe());
+        // f64: CC by converging intervals (evidence); exact: the rod's certified cone entered at
+        // impact 1, which proves no ICC and no PCC, not CC (issue 24: no finite time from a cone).
         match arithmetic {
-            Arithmetic::Float => assert!(matches!(b.decision, Decision::Converging { .. }) && !b.proved),
+            Arithmetic::Float => {
+                assert!(matches!(b.decision, Decision::Converging { .. }) && !b.proved);
+                assert_eq!(b.outcome, Outcome::Cc);
+            }
             Arithmetic::Exact => {
-                assert!(matches!(b.decision, Decision::Certified { after: 1, .. }) && b.proved)
+                assert!(matches!(b.decision, Decision::Certified { after: 1, .. }) && b.proved);
+                assert_eq!(b.outcome, Outcome::NoIccNoPcc);
             }
         }
         let a = rod_translation(above, 200, arithmetic);
@@ -206,4 +211,23 @@ fn the_triangle_plate_chatters_beyond_the_s1_criterion() {
         let r = simulate_float(&m.float, &random_drop(&m.float, seed), &Options::new(600));
         assert_eq!(r.outcome, Outcome::Icc, "seed {seed}: {}", r.decision.describe());
     }
+}
+
+#[test]
+fn outcome_counts_keep_no_icc_no_pcc_apart_from_cc() {
+    // Issue 24: every count array is in the order of Outcome::ALL, the evidence outcomes are its
+    // prefix (so zipping them with a count array is right), and no-ICC-no-PCC is never evidence.
+    for (i, o) in Outcome::ALL.iter().enumerate() {
+        assert_eq!(o.index(), i, "{o}");
+    }
+    assert_eq!(Outcome::EVIDENCE[..], Outcome::ALL[..Outcome::EVIDENCE.len()]);
+    assert!(!Outcome::EVIDENCE.contains(&Outcome::NoIccNoPcc));
+    assert_eq!(
+        (Outcome::NoIccNoPcc.name(), Outcome::NoIccNoPcc.words()),
+        ("no-ICC-no-PCC", "no ICC, no PCC")
+    );
+    // A cone entry agrees with CC evidence and contradicts PCC and ICC evidence.
+    assert!(!Outcome::NoIccNoPcc.contradicts(Outcome::Cc));
+    assert!(Outcome::NoIccNoPcc.contradicts(Outcome::Pcc) && Outcome::NoIccNoPcc.contradicts(Outcome::Icc));
+    assert!(Outcome::Icc.contradicts(Outcome::Cc) && !Outcome::Cc.contradicts(Outcome::Cc));
 }

@@ -1,6 +1,7 @@
 //! Issue 22 §1: a drop's verdict is a proof or is called evidence. Exact runs prove CC only by
-//! entering a kernel-checked certified set, ICC by v > 0, PCC by the exact pair proof; `f64`
-//! runs prove nothing.
+//! entering the set X of a kernel-checked orbit certificate (issue 24: a certified cone proves no
+//! ICC and no PCC, `no-ICC-no-PCC`, but not the finite accumulation time of CC), ICC by v > 0,
+//! PCC by the exact pair proof; `f64` runs prove nothing.
 
 use crate::common::{bin, q, root};
 use chatter::simulate::certified::{Certified, SetKind};
@@ -37,7 +38,12 @@ fn an_all_down_drop_at_a_certified_point_enters_the_cone_at_its_first_impact() {
         assert_eq!(sets.sets().len(), 1, "n = {n}: a cone certificate is made: {:?}", sets.notes);
         for seed in 0..5 {
             let run = exact(&model, seed, 200, &sets);
-            assert!(run.proved && run.outcome == Outcome::Cc, "n = {n}, seed {seed}: {:?}", run.decision);
+            // Proved no ICC and no PCC, not CC (the cone gives no finite time); CC is the evidence.
+            assert!(
+                run.proved && run.outcome == Outcome::NoIccNoPcc && run.evidence == Outcome::Cc,
+                "n = {n}, seed {seed}: {:?}",
+                run.decision
+            );
             // I_0(D) ⊆ K: every all-down drop's first post-impact velocity lies in K.
             assert!(
                 matches!(run.decision, Decision::Certified { after: 1, kind: SetKind::Cone, .. }),
@@ -87,6 +93,33 @@ fn a_pentagon_drop_that_the_paper_protocol_calls_cc_is_proved_icc() {
     assert_eq!((exact200.outcome, exact200.evidence), (Outcome::Undecided, Outcome::Cc));
     let long = exact(&model, 5, 1000, &Certified::empty());
     assert_eq!((long.outcome, long.proved), (Outcome::Icc, true), "{:?}", long.decision);
+}
+
+/// Issue 22: drops at the pentagon's and the octagon's band points, where S_1's criterion fails,
+/// are proved CC in Q(cos 2π/n) by the corpus's orbit certificates (seeds whose f64 runs settle
+/// into the certified cycle; most drops there end in ICC; at n = 8 the mirror cycle 6,6,6,6 of
+/// other seeds is not the certificate's, up to rotation). Without the certificate: no proof.
+#[test]
+fn pentagon_and_octagon_band_drops_are_proved_cc_by_the_corpus_orbit_certificates() {
+    for (n, kappa, gamma, file, seeds) in [
+        (5, "961/25600", "61/160", "orbit-n5-kappa961_25600-gamma61_160.ron", [29, 68]),
+        (8, "1/100", "2/5", "orbit-n8-kappa1_100-gamma2_5.ron", [15, 43]),
+    ] {
+        let model = polygon(n, kappa, gamma);
+        let mut sets = Certified::empty();
+        sets.add_file(&model, &root().join("certificates/valid").join(file)).unwrap();
+        for seed in seeds {
+            let run = exact(&model, seed, 400, &sets);
+            assert!(run.proved && run.outcome == Outcome::Cc, "n = {n}, seed {seed}: {:?}", run.decision);
+            assert!(matches!(run.decision, Decision::Certified { kind: SetKind::Orbit, .. }));
+            let bare = exact(&model, seed, 150, &Certified::empty());
+            assert!(
+                !(bare.proved && bare.outcome == Outcome::Cc),
+                "n = {n}, seed {seed}: {:?}",
+                bare.decision
+            );
+        }
+    }
 }
 
 #[test]
@@ -146,7 +179,11 @@ fn chatter(args: &[&str]) -> (String, i32) {
 fn the_command_says_proof_or_evidence_in_text_and_json() {
     let (text, code) = chatter(&["simulate", "--n", "3", "--kappa", "1/8", "--gamma", "1/10", "--exact"]);
     assert_eq!(code, 0, "{text}");
-    assert!(text.contains("outcome: CC (proved)"), "{text}");
+    assert!(
+        text.contains("outcome: no ICC, no PCC (proved; CC not proved: finite accumulation time not derived"),
+        "{text}"
+    );
+    assert!(!text.contains("outcome: CC"), "{text}");
     assert!(text.contains("after impact 1 the velocity lies in the cone K"), "{text}");
     let (text, _) = chatter(&["simulate", "--n", "3", "--kappa", "1/8", "--gamma", "1/10"]);
     assert!(text.contains("outcome: CC (evidence: an f64 simulation proves nothing"), "{text}");

@@ -13,7 +13,7 @@ fn model(n: u64, kappa: &str, gamma: &str) -> Model {
 }
 
 /// Outcome counts of `runs` random drops from seed 0 in `f64`.
-fn batch(m: &Model, runs: u64, budget: usize) -> [usize; 5] {
+fn batch(m: &Model, runs: u64, budget: usize) -> [usize; Outcome::COUNT] {
     counts(&simulate_many(m, 0, runs, Arithmetic::Float, &Options::new(budget), &|| {}))
 }
 
@@ -37,7 +37,7 @@ fn simulation_runs_and_classifies_for_n_5_7_8_12() {
         assert_eq!((m.n(), m.shape()), (n as usize, Shape::Polygon(n)));
         let (cc, _) = criteria(n, &q(kappa), &q("1/100"));
         let c = batch(&m, 20, 2000);
-        let expected = if cc { [20, 0, 0, 0, 0] } else { [0, 0, 20, 0, 0] };
+        let expected = if cc { [20, 0, 0, 0, 0, 0] } else { [0, 0, 20, 0, 0, 0] };
         assert_eq!(c, expected, "n = {n}, kappa = {kappa}: CC criterion {cc}");
     }
 }

@@ -1,4 +1,5 @@
 use crate::common::{bin, q};
+use chatter::simulate::Outcome;
 use chatter::sweep::table::{HEADER, parse_csv};
 use chatter_kernel::model::Polygon;
 use std::collections::BTreeMap;
@@ -154,11 +155,15 @@ fn rows_hold_the_exact_criteria_and_verified_certificates() {
         let s = r.sim.as_ref().unwrap();
         assert_eq!((s.runs, s.counts.iter().sum::<u64>()), (3, 3));
         // Issue 22: the same drops run exactly; a certificate excluding PCC proves every all-down
-        // drop CC (it enters K at its first impact), and no drop is proved CC without a set.
+        // drop no-ICC-no-PCC (it enters K at its first impact; issue 24: not CC, the cone gives no
+        // finite time), and no drop is proved CC without an orbit certificate.
         let proved = s.proved.expect("proofs run by default");
         assert_eq!(proved.iter().sum::<u64>(), 3, "row {i}");
         if r.claim.as_deref() == Some("CompleteChatterFromAllDown") {
-            assert_eq!(proved[0], 3, "row {i}: {proved:?}");
+            assert_eq!(proved[Outcome::NoIccNoPcc.index()], 3, "row {i}: {proved:?}");
+        }
+        if r.orbit.is_none() {
+            assert_eq!(proved[Outcome::Cc.index()], 0, "row {i}: CC proved without an orbit certificate");
         }
         if r.certified != Some(true) && r.orbit.is_none() {
             assert_eq!(proved[0], 0, "row {i}: CC proved without a certified set");
@@ -208,7 +213,7 @@ fn the_n3_band_is_a_disagreement_in_the_summary() {
     // Issue 22: the drops are also proved CC, by an orbit certificate made for their pattern and
     // written under orbits/, which the kernel re-checks from the file.
     assert_eq!(s["disagreement_kinds"]["proved-chatter-criterion-fails"]["points"], 1);
-    assert_eq!(rows[0].sim.as_ref().unwrap().proved, Some([10, 0, 0, 0, 0]));
+    assert_eq!(rows[0].sim.as_ref().unwrap().proved, Some([10, 0, 0, 0, 0, 0]));
     let orbit = rows[0].orbit.clone().expect("an orbit certificate was made");
     let o = chatter(&["verify", &format!("band/{orbit}")], d.path());
     assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
