@@ -7,7 +7,9 @@ use super::numbers::{denominator_bits, element};
 use crate::arith::{Field, Num, Rat};
 use crate::claim::Claim;
 use crate::read::Value;
-use crate::read::schema::{integer, list, optional, param, string, strings, unit_variant, variant, walk};
+use crate::read::schema::{
+    integer, list, optional, param, regular_polygon, string, strings, unit_variant, walk,
+};
 use crate::regular::boxes::{Gens, check_box};
 use crate::regular::model::Polygon;
 use crate::regular::rest::time_to_rest;
@@ -69,12 +71,7 @@ pub fn read(v: &Value) -> Checked<ConeFile<'_>> {
 }
 
 fn body<'a>(value: &'a Value, f: &mut ConeFile<'a>) -> Checked<()> {
-    let (name, fields) = variant(value)?;
-    if name != "RegularPolygon" {
-        return Err(Fail::new("unknown-variant", format!("unknown body `{name}`")));
-    }
-    let fields = fields.ok_or_else(|| Fail::new("syntax", "RegularPolygon needs its fields"))?;
-    walk(fields, &[("n", true), ("kappa", true), ("gamma", true)], |name, v| {
+    regular_polygon(value, |name, v| {
         match name {
             "n" => f.n = integer(v)?,
             "kappa" => f.kappa = param(v)?,

@@ -13,7 +13,7 @@ use crate::claim::Claim;
 use crate::orbit::map::Orbit;
 use crate::orbit::sample::samples;
 use crate::read::Value;
-use crate::read::schema::{integer, list, string, tuple, unit_variant, variant, walk};
+use crate::read::schema::{integer, list, regular_polygon, string, tuple, unit_variant, variant, walk};
 use crate::regular::model::{Polygon, V3};
 use crate::verdict::{Checked, Fail};
 
@@ -115,12 +115,7 @@ pub fn read(v: &Value) -> Checked<OrbitFile<'_>> {
             "format" | "producer" => drop(string(value)?),
             "version" => drop(integer(value)?),
             "body" => {
-                let (b, fields) = variant(value)?;
-                if b != "RegularPolygon" {
-                    return Err(Fail::new("unknown-variant", format!("unknown body `{b}`")));
-                }
-                let fields = fields.ok_or_else(|| Fail::new("syntax", "RegularPolygon needs its fields"))?;
-                walk(fields, &[("n", true), ("kappa", true), ("gamma", true)], |k, v| {
+                regular_polygon(value, |k, v| {
                     match k {
                         "n" => f.n = integer(v)?,
                         "kappa" => f.kappa = string(v)?,

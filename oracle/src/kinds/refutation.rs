@@ -10,7 +10,9 @@ use crate::arith::{Field, Num, Rat};
 use crate::claim::Claim;
 use crate::cone3::dot;
 use crate::read::Value;
-use crate::read::schema::{integer, list, param, string, tuple, unit_variant, variant, walk};
+use crate::read::schema::{
+    integer, list, param, regular_polygon, string, tuple, unit_variant, variant, walk,
+};
 use crate::regular::model::Polygon;
 use crate::regular::rod::Rod;
 use crate::verdict::{Checked, Fail, Report};
@@ -95,13 +97,8 @@ pub fn read(v: &Value) -> Checked<RefutationFile<'_>> {
             "format" | "producer" => drop(string(value)?),
             "version" => drop(integer(value)?),
             "body" => {
-                let (b, fields) = variant(value)?;
-                if b != "RegularPolygon" {
-                    return Err(Fail::new("unknown-variant", format!("unknown body `{b}`")));
-                }
-                let fields = fields.ok_or_else(|| Fail::new("syntax", "RegularPolygon needs its fields"))?;
-                walk(fields, &[("n", true), ("kappa", true), ("gamma", true)], |f, v| {
-                    match f {
+                regular_polygon(value, |k, v| {
+                    match k {
                         "n" => r.n = integer(v)?,
                         "kappa" => r.kappa = param(v)?,
                         _ => r.gamma = param(v)?,

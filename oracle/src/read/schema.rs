@@ -124,3 +124,17 @@ pub fn optional(v: &Value) -> Checked<Option<&Value>> {
         other => Err(Fail::new("syntax", format!("expected an optional value, found a {}", other.kind()))),
     }
 }
+
+/// The body `RegularPolygon(n: .., kappa: .., gamma: ..)` of cone, orbit and refutation files:
+/// `each` receives each of its three fields.
+pub fn regular_polygon<'a>(
+    value: &'a Value,
+    each: impl FnMut(&str, &'a Value) -> Checked<()>,
+) -> Checked<()> {
+    let (name, fields) = variant(value)?;
+    if name != "RegularPolygon" {
+        return Err(Fail::new("unknown-variant", format!("unknown body `{name}`")));
+    }
+    let fields = fields.ok_or_else(|| Fail::new("syntax", "RegularPolygon needs its fields"))?;
+    walk(fields, &[("n", true), ("kappa", true), ("gamma", true)], each)
+}

@@ -10,25 +10,9 @@ fn write_into(v: &Value, indent: usize, out: &mut String) {
         Value::Named { name, fields: None } => out.push_str(name),
         Value::Named { name, fields: Some(fs) } => {
             out.push_str(name);
-            out.push_str("(\n");
-            for (k, x) in fs {
-                out.push_str(&format!("{pad}{k}: "));
-                write_into(x, indent + 1, out);
-                out.push_str(",\n");
-            }
-            out.push_str(&close);
-            out.push(')');
+            fields_into(fs, &pad, &close, indent, out);
         }
-        Value::Object(fs) => {
-            out.push_str("(\n");
-            for (k, x) in fs {
-                out.push_str(&format!("{pad}{k}: "));
-                write_into(x, indent + 1, out);
-                out.push_str(",\n");
-            }
-            out.push_str(&close);
-            out.push(')');
-        }
+        Value::Object(fs) => fields_into(fs, &pad, &close, indent, out),
         Value::Wrapped { name, items } => {
             out.push_str(name);
             seq(items, "(", ")", indent, out);
@@ -72,4 +56,16 @@ pub fn to_ron(v: &Value) -> String {
     let mut s = to_ron_at(v, 0);
     s.push('\n');
     s
+}
+
+/// `(\n    k: v,\n ... )`: the fields of a struct, one per line at the next indent.
+fn fields_into(fs: &[(String, Value)], pad: &str, close: &str, indent: usize, out: &mut String) {
+    out.push_str("(\n");
+    for (k, x) in fs {
+        out.push_str(&format!("{pad}{k}: "));
+        write_into(x, indent + 1, out);
+        out.push_str(",\n");
+    }
+    out.push_str(close);
+    out.push(')');
 }
