@@ -55,22 +55,3 @@ pub fn proves_with(name: &str, bound: bool) -> Option<&'static str> {
 pub fn derives_finite_time(name: &str) -> bool {
     name == "CompleteChatterFromSet"
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Issue 24: no cone-type claim may be described as proving complete chatter in finite time.
-    #[test]
-    fn cone_claims_state_that_finite_time_is_not_derived() {
-        for name in ["CcOrPccFromAllDown", "CompleteChatterFromAllDown"] {
-            let t = proves(name).unwrap();
-            assert!(t.contains(FINITE_TIME_NOT_DERIVED), "{name}: {t}");
-            assert!(!t.contains("complete chatter") && !t.contains("CC or PCC"), "{name}: {t}");
-            assert!(!derives_finite_time(name));
-        }
-        assert!(proves("CompleteChatterFromSet").unwrap().contains("finite time"));
-        assert!(derives_finite_time("CompleteChatterFromSet"));
-        assert!(proves("CompleteChatter").is_none());
-    }
-}

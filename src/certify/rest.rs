@@ -78,24 +78,3 @@ pub fn bound_for(req: &Request, claim: Claim) -> Option<Q> {
     }
     rod_bound(&req.kappa, &req.gamma)
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn q(s: &str) -> Q {
-        s.parse().unwrap()
-    }
-
-    #[test]
-    fn the_bound_is_sharp_at_rational_roots_and_absent_outside_the_theorem() {
-        // κ = 1/3, γ = 1/20: λ_1 = 2/5; κ = 1/4, γ = 1/9: Δ = 0, λ = 1/3 (exact).
-        assert_eq!(rod_bound(&q("1/3"), &q("1/20")), Some(q("5/2")));
-        // κ = 1/3, γ = 7/100: λ_1 irrational, B just above 1/λ_1 = 3.2579...
-        let b = rod_bound(&q("1/3"), &q("7/100")).unwrap();
-        assert!(b > q("16289/5000") && b < q("1629/500"), "{b}");
-        assert_eq!(rod_bound(&q("1/4"), &q("1/9")), Some(q("3")));
-        assert_eq!(rod_bound(&q("1/4"), &q("1/8")), None, "Δ < 0: ICC");
-        assert_eq!(rod_bound(&q("1"), &q("1/20")), None, "σ = 0");
-    }
-}

@@ -3,6 +3,7 @@
 //! run already made.
 
 use super::{Number, Report};
+use crate::exact::{QExt, Rounding};
 use crate::simulate::pattern::find;
 use crate::simulate::{
     Arithmetic, Brief, Certified, Decision, Initial, Model, Options, Outcome, Run, SetKind, counts,
@@ -85,6 +86,10 @@ pub struct EnteredReport {
     /// an orbit certificate; false for a cone certificate, which proves v <= 0 for ever (no
     /// separation, impacts never stop) and no PCC, but not the finite time (docs/time-to-rest.md).
     pub finite_time: bool,
+    /// For an orbit certificate: a proved upper bound of the time, from the start, at which the
+    /// impacts accumulate (decimal, rounded up): the exact time of the entering impact, rounded
+    /// up, plus the certificate's `time_to_rest_bound` B times h/|v| at that impact. Null for a cone.
+    pub time_to_rest_bound: Option<String>,
 }
 
 /// The certified sets a run was checked against, and why any is missing.
@@ -295,11 +300,12 @@ pub fn of_run(model: &Model, initial: &Initial, arithmetic: Arithmetic, run: &Ru
     let pattern =
         find(&run.sequence).map(|p| PatternReport { transient: p.transient, cycle: p.cycle, tail: p.tail });
     let entered = match &run.decision {
-        Decision::Certified { after, kind, name } => Some(EnteredReport {
+        Decision::Certified { after, kind, name, rest_by } => Some(EnteredReport {
             impact: *after,
             kind: kind.name(),
             certificate: name.clone(),
             finite_time: *kind == SetKind::Orbit,
+            time_to_rest_bound: rest_by.as_ref().map(|t| t.decimal(9, Rounding::Up)),
         }),
         _ => None,
     };

@@ -70,6 +70,10 @@ pub struct Set {
     pub claim: Claim,
     /// The certificate.
     pub source: Source,
+    /// B of an orbit certificate, derived by the kernel (`time_to_rest_bound`): from a post-impact
+    /// state in X with centre height h and velocity v < 0, the impacts accumulate within B h/|v|
+    /// (docs/kernel-soundness.md §7 item 6). `None` for a cone, which proves no finite time.
+    pub time_to_rest_bound: Option<Q>,
     inner: Inner,
 }
 
@@ -146,7 +150,7 @@ impl Certified {
         }
         let (kind, source, inner) =
             (SetKind::Cone, Source::Cone(Box::new(cert.clone())), Inner::Cone(Box::new(cone)));
-        let set = Set { name: name.into(), kind, claim: cert.claim, source, inner };
+        let set = Set { name: name.into(), kind, claim: cert.claim, source, time_to_rest_bound: None, inner };
         self.sets.push(Arc::new(set));
         Ok(())
     }
@@ -156,14 +160,16 @@ impl Certified {
         let Some((n, kappa, gamma)) = parameters(model) else {
             return Err("proofs by certified sets need a regular polygon (n >= 3)".into());
         };
-        let (orbit, _) = CertifiedOrbit::new(cert, ParseLimits::default()).map_err(not_certified)?;
+        let (orbit, accepted) = CertifiedOrbit::new(cert, ParseLimits::default()).map_err(not_certified)?;
         if !orbit.applies_to(n, &kappa, &gamma) {
             return Err(format!("it is not about n = {n}, kappa = {}, gamma = {}", model.kappa, model.gamma));
         }
         let claim = Claim::CompleteChatterFromSet;
         let (kind, source, inner) =
             (SetKind::Orbit, Source::Orbit(Box::new(cert.clone())), Inner::Orbit(Box::new(orbit)));
-        self.sets.push(Arc::new(Set { name: name.into(), kind, claim, source, inner }));
+        let bound = accepted.time_to_rest_bound.as_deref().map(str::parse::<Q>).transpose();
+        let time_to_rest_bound = bound.map_err(|e| format!("its time_to_rest_bound cannot be read: {e}"))?;
+        self.sets.push(Arc::new(Set { name: name.into(), kind, claim, source, time_to_rest_bound, inner }));
         Ok(())
     }
 

@@ -54,6 +54,7 @@ use super::engine::{Engine, Step};
 use super::pcc::{PairSummary, PaperPcc, paper_criterion};
 use super::snapshot::{Scaled, Snapshot};
 use super::system::FloatSystem;
+use crate::exact::{Q, QExt, Rounding};
 // Formerly defined here; its old path keeps working.
 pub use super::text::singular;
 
@@ -172,8 +173,10 @@ pub enum Decision {
     Breakdown { after: usize },
     /// Exact engines: the relabelled post-impact state after `after` impacts lies in a set that a
     /// kernel-checked certificate certifies (issue 22 §1): a cone K proves no ICC and no PCC
-    /// ([`Outcome::NoIccNoPcc`]), an orbit certificate's set X proves CC.
-    Certified { after: usize, kind: SetKind, name: String },
+    /// ([`Outcome::NoIccNoPcc`]), an orbit certificate's set X proves CC, and `rest_by` bounds the
+    /// time of the accumulation point from the start: the exact time of impact `after`, rounded
+    /// up, plus B h/|v| there (B the certificate's `time_to_rest_bound`; docs/time-to-rest.md §1).
+    Certified { after: usize, kind: SetKind, name: String, rest_by: Option<Q> },
 }
 
 impl Decision {
@@ -299,7 +302,14 @@ impl Decision {
                 "f64 precision exhausted after {after} impacts (state not finite, or an interval of \
                  exactly 0 with gamma > 0); rerun with --exact"
             ),
-            Decision::Certified { after, kind, name } => {
+            Decision::Certified { after, kind, name, rest_by } => {
+                let by = rest_by.as_ref().map_or(String::new(), |t| {
+                    format!(
+                        "; the impacts accumulate by t <= {} (the exact time of impact {after}, rounded up, \
+                         plus the certificate's time_to_rest_bound times h/|v| there)",
+                        t.decimal(6, Rounding::Up)
+                    )
+                });
                 let (what, gives) = match kind {
                     SetKind::Cone => (
                         "the velocity lies in the cone K",
@@ -313,7 +323,7 @@ impl Decision {
                 };
                 format!(
                     "after impact {after} {what} of a kernel-checked {} certificate ({name}), whose \
-                     theorem gives {gives}",
+                     theorem gives {gives}{by}",
                     kind.name()
                 )
             }
@@ -638,7 +648,11 @@ impl<'a, E: Engine> Driver<'a, E> {
     fn entered(&self, after: usize) -> Option<Verdict> {
         let (q, p) = self.eng.relabelled()?;
         let set = self.certified?.entered(&q, &p)?;
-        let decision = Decision::Certified { after, kind: set.kind, name: set.name.clone() };
+        let rest_by = set
+            .time_to_rest_bound
+            .as_ref()
+            .and_then(|b| Some(&self.eng.time_above()? + &(b * &self.eng.centre_ratio_above()?)));
+        let decision = Decision::Certified { after, kind: set.kind, name: set.name.clone(), rest_by };
         Some(Verdict::cc(decision))
     }
 

@@ -5,6 +5,7 @@
 use super::pcc::PairSummary;
 use super::scalar::Nf;
 pub use super::snapshot::{LOG2_ZERO, Scaled, Snapshot, pow2};
+use crate::exact::Q;
 use chatter_kernel::model::linalg::Vec3;
 
 /// What happened at one event.
@@ -31,6 +32,16 @@ pub trait Engine {
     fn at_rest(&self) -> bool;
     /// Time since the start at the last impact (`f64`).
     fn time(&self) -> f64;
+    /// Exact engines: a rational upper bound of the time since the start at the last impact (the
+    /// sum of the exact intervals, each rounded up). `None` for `f64` engines.
+    fn time_above(&self) -> Option<Q> {
+        None
+    }
+    /// Exact engines, while the centre moves down (v < 0): a rational upper bound of h/|v|, the
+    /// centre's height over its speed. `None` otherwise.
+    fn centre_ratio_above(&self) -> Option<Q> {
+        None
+    }
     /// The current state, normalised.
     fn snapshot(&self) -> Snapshot;
     /// The exact pair-chatter test of [`super::pcc::prove_pair_chatter`] (exact engines only).

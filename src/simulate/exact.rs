@@ -9,7 +9,7 @@ use super::scalar::{Nf, SimField};
 pub use super::snapshot::scaled; // formerly defined here
 use super::snapshot::{Scaled, Snapshot};
 use super::system::System;
-use crate::exact::Q;
+use crate::exact::{Q, QExt};
 use chatter_kernel::model::linalg::Vec3;
 
 /// An exact vector as (v_m, e) with v = v_m · 2^e and the largest |component| of v_m in [1, 2).
@@ -64,13 +64,19 @@ pub struct ExactEngine<'a, F: SimField = Q> {
     /// Time of the last impact: the sum of the exact intervals, each rounded to `f64` (an exact
     /// sum would carry the product of all denominators).
     time: f64,
+    /// An upper bound of the same time: the exact intervals rounded up to dyadics k/2^TIME_BITS.
+    time_above: Q,
 }
+
+/// Bits of the dyadics that bound each interval from above in [`ExactEngine::time_above`]: every
+/// interval adds at most 2^-200 to the bound, and the bound's digits stay bounded.
+const TIME_BITS: u64 = 200;
 
 impl<'a, F: SimField> ExactEngine<'a, F> {
     /// The engine at a start given in rationals (also for a system over Q(cos 2π/n)).
     pub fn new(sys: &'a System<F>, start: &Start<Q>) -> ExactEngine<'a, F> {
         let (q, p) = (start.q.clone().map(|x| F::from_q(&x)), start.p.clone().map(|x| F::from_q(&x)));
-        ExactEngine { sys, q, p, last: None, time: 0.0 }
+        ExactEngine { sys, q, p, last: None, time: 0.0, time_above: Q::int(0) }
     }
 
     /// The exact state (q, p).
@@ -137,6 +143,7 @@ impl<F: SimField> Engine for ExactEngine<'_, F> {
             return Step::Tie { contacts: at, dt, exact: true };
         }
         self.time += dt.to_f64();
+        self.time_above = &self.time_above + &t.rational_above().ceil_dyadic(TIME_BITS);
         self.apply(at[0], &t, &w);
         Step::Impact { contact: at[0], dt }
     }
@@ -151,6 +158,18 @@ impl<F: SimField> Engine for ExactEngine<'_, F> {
 
     fn time(&self) -> f64 {
         self.time
+    }
+
+    fn time_above(&self) -> Option<Q> {
+        Some(self.time_above.clone())
+    }
+
+    fn centre_ratio_above(&self) -> Option<Q> {
+        let (h, v) = (dot(&self.sys.centre, &self.q), dot(&self.sys.centre, &self.p));
+        if !v.below_zero() || h.below_zero() {
+            return None;
+        }
+        h.over(&v.negated()).map(|r| if r.is_exactly_zero() { Q::int(0) } else { r.rational_above() })
     }
 
     fn snapshot(&self) -> Snapshot {

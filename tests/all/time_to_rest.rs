@@ -3,7 +3,8 @@
 //! time; the rod's theorem (docs/time-to-rest.md §2) and the finding of §3 are checked exactly.
 
 use crate::common::{bin, q, root};
-use chatter::claims::{FINITE_TIME_NOT_DERIVED, proves_with};
+use chatter::certify::rest::rod_bound;
+use chatter::claims::{FINITE_TIME_NOT_DERIVED, derives_finite_time, proves, proves_with};
 use chatter::exact::Q;
 use std::process::{Command, Output};
 
@@ -218,4 +219,32 @@ fn simulated_rod_drops_stay_within_the_bound_on_the_corpus_bodies() {
         }
         assert!(measured >= 30, "{kappa} {gamma}: {measured} drops measured");
     }
+}
+
+/// Issue 24: no cone-type claim may be described as proving complete chatter in finite time.
+#[test]
+fn cone_claims_state_that_finite_time_is_not_derived() {
+    for name in DROP_CLAIMS {
+        let t = proves(name).unwrap();
+        assert!(t.contains(FINITE_TIME_NOT_DERIVED), "{name}: {t}");
+        assert!(!t.contains("complete chatter") && !t.contains("CC or PCC"), "{name}: {t}");
+        assert!(!derives_finite_time(name));
+    }
+    assert!(proves("CompleteChatterFromSet").unwrap().contains("finite time"));
+    assert!(derives_finite_time("CompleteChatterFromSet"));
+    assert!(proves("CompleteChatter").is_none());
+}
+
+/// The rod's bound B of rule T1 (docs/time-to-rest.md §2): exactly 1/λ_1 at rational roots, just
+/// above it otherwise, absent outside the theorem's hypotheses.
+#[test]
+fn the_bound_is_sharp_at_rational_roots_and_absent_outside_the_theorem() {
+    // κ = 1/3, γ = 1/20: λ_1 = 2/5; κ = 1/4, γ = 1/9: Δ = 0, λ = 1/3 (exact).
+    assert_eq!(rod_bound(&q("1/3"), &q("1/20")), Some(q("5/2")));
+    // κ = 1/3, γ = 7/100: λ_1 irrational, B just above 1/λ_1 = 3.2579...
+    let b = rod_bound(&q("1/3"), &q("7/100")).unwrap();
+    assert!(b > q("16289/5000") && b < q("1629/500"), "{b}");
+    assert_eq!(rod_bound(&q("1/4"), &q("1/9")), Some(q("3")));
+    assert_eq!(rod_bound(&q("1/4"), &q("1/8")), None, "Δ < 0: ICC");
+    assert_eq!(rod_bound(&q("1"), &q("1/20")), None, "σ = 0");
 }

@@ -231,3 +231,39 @@ fn the_command_refuses_certificates_that_cannot_serve() {
     assert_eq!(code, 2, "{text}");
     assert!(text.contains("rejected by the kernel"), "{text}");
 }
+
+/// Issue 24 §1: a drop proved CC by entering an orbit certificate's set X carries a proved bound
+/// on its time to rest (the exact time of the entering impact, rounded up, plus B h/|v| there),
+/// and the accumulation time that an `f64` run of the same drop estimates never exceeds it (on
+/// every orbit certificate of the corpus with drops that enter it: n = 3, 5, 8).
+#[test]
+fn orbit_entries_bound_the_time_to_rest_and_simulations_respect_the_bound() {
+    let cases: [(u64, &str, &str, &str, &[u64]); 3] = [
+        (3, "1/8", "3/20", "orbit-n3-kappa1_8-gamma3_20.ron", &[0, 1, 2, 3]),
+        (5, "961/25600", "61/160", "orbit-n5-kappa961_25600-gamma61_160.ron", &[29, 68]),
+        (8, "1/100", "2/5", "orbit-n8-kappa1_100-gamma2_5.ron", &[15, 43]),
+    ];
+    let mut compared = 0;
+    for (n, kappa, gamma, file, seeds) in cases {
+        let model = polygon(n, kappa, gamma);
+        let mut sets = Certified::empty();
+        sets.add_file(&model, &root().join("certificates/valid").join(file)).unwrap();
+        for &seed in seeds {
+            let run = exact(&model, seed, 400, &sets);
+            let Decision::Certified { kind: SetKind::Orbit, rest_by: Some(bound), .. } = &run.decision else {
+                panic!("n = {n}, seed {seed}: no orbit entry with a bound: {:?}", run.decision);
+            };
+            let bound = chatter::exact::QExt::to_f64(bound);
+            // run.time sums the exact intervals rounded to f64: within rounding of the exact time.
+            let entry = run.time * (1.0 - 1e-12);
+            assert!(bound >= entry && bound.is_finite(), "n = {n}, seed {seed}: {bound} vs {}", run.time);
+            let float =
+                simulate(&model, &Initial::RandomDrop { seed }, Arithmetic::Float, &Options::new(3000));
+            if let (Outcome::Cc, Some(t)) = (float.evidence, float.accumulation) {
+                assert!(t <= bound * (1.0 + 1e-9), "n = {n}, seed {seed}: simulated {t} > proved {bound}");
+                compared += 1;
+            }
+        }
+    }
+    assert!(compared >= 4, "only {compared} drops had an f64 accumulation estimate to compare");
+}
