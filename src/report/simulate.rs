@@ -83,12 +83,15 @@ pub struct EnteredReport {
     /// The certificate's file, or how it was made.
     pub certificate: String,
     /// Whether the set's theorem proves that the impacts accumulate at a finite time: true for
-    /// an orbit certificate; false for a cone certificate, which proves v <= 0 for ever (no
-    /// separation, impacts never stop) and no PCC, but not the finite time (docs/time-to-rest.md).
+    /// an orbit certificate, and for a rod cone certificate with rule T1 when the drop was
+    /// all-down at its first impact; false for any other cone entry, which proves v <= 0 for ever
+    /// (no separation, impacts never stop) and no PCC, but not the finite time (docs/time-to-rest.md).
     pub finite_time: bool,
-    /// For an orbit certificate: a proved upper bound of the time, from the start, at which the
-    /// impacts accumulate (decimal, rounded up): the exact time of the entering impact, rounded
-    /// up, plus the certificate's `time_to_rest_bound` B times h/|v| at that impact. Null for a cone.
+    /// A proved upper bound of the time, from the start, at which the impacts accumulate (decimal,
+    /// rounded up). For an orbit certificate: the exact time of the entering impact, rounded up,
+    /// plus its `time_to_rest_bound` B times h/|v| at that impact. For a rod cone certificate
+    /// with rule T1 and a drop all-down at its first impact: the same at the first impact
+    /// (docs/time-to-rest.md §2). Null for every other cone entry.
     pub time_to_rest_bound: Option<String>,
 }
 
@@ -304,7 +307,7 @@ pub fn of_run(model: &Model, initial: &Initial, arithmetic: Arithmetic, run: &Ru
             impact: *after,
             kind: kind.name(),
             certificate: name.clone(),
-            finite_time: *kind == SetKind::Orbit,
+            finite_time: *kind == SetKind::Orbit || rest_by.is_some(),
             time_to_rest_bound: rest_by.as_ref().map(|t| t.decimal(9, Rounding::Up)),
         }),
         _ => None,

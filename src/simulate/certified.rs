@@ -72,7 +72,10 @@ pub struct Set {
     pub source: Source,
     /// B of an orbit certificate, derived by the kernel (`time_to_rest_bound`): from a post-impact
     /// state in X with centre height h and velocity v < 0, the impacts accumulate within B h/|v|
-    /// (docs/kernel-soundness.md §7 item 6). `None` for a cone, which proves no finite time.
+    /// (docs/kernel-soundness.md §7 item 6). For a rod cone certificate, the B that the kernel's
+    /// rule T1 checked: every all-down drop accumulates its impacts within B h/|v| of its first
+    /// impact (h, v there; docs/time-to-rest.md §2), whatever K. `None` for every other cone,
+    /// which proves no finite time.
     pub time_to_rest_bound: Option<Q>,
     inner: Inner,
 }
@@ -150,7 +153,9 @@ impl Certified {
         }
         let (kind, source, inner) =
             (SetKind::Cone, Source::Cone(Box::new(cert.clone())), Inner::Cone(Box::new(cone)));
-        let set = Set { name: name.into(), kind, claim: cert.claim, source, time_to_rest_bound: None, inner };
+        let bound = cert.time_to_rest_bound.as_deref().map(str::parse::<Q>).transpose();
+        let time_to_rest_bound = bound.map_err(|e| format!("its time_to_rest_bound cannot be read: {e}"))?;
+        let set = Set { name: name.into(), kind, claim: cert.claim, source, time_to_rest_bound, inner };
         self.sets.push(Arc::new(set));
         Ok(())
     }

@@ -217,10 +217,11 @@ impl Decision {
 
     /// What a proof by this test proves when the rules' verdict is `evidence`: that verdict,
     /// except for a cone entry, whose theorem gives no ICC and no PCC but not the finite
-    /// accumulation time that CC needs (docs/time-to-rest.md §3): [`Outcome::NoIccNoPcc`].
+    /// accumulation time that CC needs (docs/time-to-rest.md §3): [`Outcome::NoIccNoPcc`]; a rod
+    /// certificate with rule T1 does give it for an all-down drop (`rest_by`, §2): CC.
     pub fn proved_outcome(&self, evidence: Outcome) -> Outcome {
         match self {
-            Decision::Certified { kind: SetKind::Cone, .. } => Outcome::NoIccNoPcc,
+            Decision::Certified { kind: SetKind::Cone, rest_by: None, .. } => Outcome::NoIccNoPcc,
             _ => evidence,
         }
     }
@@ -303,22 +304,30 @@ impl Decision {
                  exactly 0 with gamma > 0); rerun with --exact"
             ),
             Decision::Certified { after, kind, name, rest_by } => {
-                let by = rest_by.as_ref().map_or(String::new(), |t| {
+                let by = |when: &str, t: &Q| {
                     format!(
-                        "; the impacts accumulate by t <= {} (the exact time of impact {after}, rounded up, \
-                         plus the certificate's time_to_rest_bound times h/|v| there)",
+                        "; the impacts accumulate by t <= {} (the exact time of {when}, rounded up, plus \
+                         the certificate's time_to_rest_bound times h/|v| there)",
                         t.decimal(6, Rounding::Up)
                     )
-                });
-                let (what, gives) = match kind {
-                    SetKind::Cone => (
+                };
+                let (what, gives, by) = match (kind, rest_by) {
+                    (SetKind::Cone, None) => (
                         "the velocity lies in the cone K",
                         "v <= 0 for ever from there (no separation, impacts never stop) and no PCC; \
                          finite accumulation time: not derived by this certificate (docs/time-to-rest.md)",
+                        String::new(),
                     ),
-                    SetKind::Orbit => (
+                    (SetKind::Cone, Some(t)) => (
+                        "the velocity lies in the cone K",
+                        "no separation and no PCC; with its rule T1, complete chatter in finite time for \
+                         this drop, all-down at its first impact (docs/time-to-rest.md §2)",
+                        by("the first impact", t),
+                    ),
+                    (SetKind::Orbit, t) => (
                         "the state lies, up to relabelling and scaling, in the set X",
                         "complete chatter from there, the impacts accumulating at a finite time",
+                        t.as_ref().map_or(String::new(), |t| by(&format!("impact {after}"), t)),
                     ),
                 };
                 format!(
@@ -648,12 +657,22 @@ impl<'a, E: Engine> Driver<'a, E> {
     fn entered(&self, after: usize) -> Option<Verdict> {
         let (q, p) = self.eng.relabelled()?;
         let set = self.certified?.entered(&q, &p)?;
-        let rest_by = set
-            .time_to_rest_bound
-            .as_ref()
-            .and_then(|b| Some(&self.eng.time_above()? + &(b * &self.eng.centre_ratio_above()?)));
+        let rest_by = set.time_to_rest_bound.as_ref().and_then(|b| self.rest_by(set.kind, b));
         let decision = Decision::Certified { after, kind: set.kind, name: set.name.clone(), rest_by };
         Some(Verdict::cc(decision))
+    }
+
+    /// The proved time of the accumulation point, from the start, by a set with bound B: for an
+    /// orbit set, the time of this impact plus B h/|v| now (docs/kernel-soundness.md §7 item 6);
+    /// for a rod cone certificate with rule T1, whose theorem covers every all-down drop, the
+    /// time of the first impact plus B h/|v| there, if the drop was all-down (docs/time-to-rest.md
+    /// §2). Rational upper bounds throughout.
+    fn rest_by(&self, kind: SetKind, b: &Q) -> Option<Q> {
+        let (t, ratio) = match kind {
+            SetKind::Orbit => (self.eng.time_above()?, self.eng.centre_ratio_above()?),
+            SetKind::Cone => self.eng.first_drop()?,
+        };
+        Some(&t + &(b * &ratio))
     }
 
     /// Records the (k+1)-th impact: its interval, the alternation length, the sequence, the record.

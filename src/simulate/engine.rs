@@ -42,6 +42,12 @@ pub trait Engine {
     fn centre_ratio_above(&self) -> Option<Q> {
         None
     }
+    /// Exact engines, once the first impact happened: if every contact moved down or rested just
+    /// before it (an all-down drop), rational upper bounds of the time of that impact and of h/|v|
+    /// there. `None` otherwise.
+    fn first_drop(&self) -> Option<(Q, Q)> {
+        None
+    }
     /// The current state, normalised.
     fn snapshot(&self) -> Snapshot;
     /// The exact pair-chatter test of [`super::pcc::prove_pair_chatter`] (exact engines only).

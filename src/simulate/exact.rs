@@ -66,6 +66,9 @@ pub struct ExactEngine<'a, F: SimField = Q> {
     time: f64,
     /// An upper bound of the same time: the exact intervals rounded up to dyadics k/2^TIME_BITS.
     time_above: Q,
+    /// At the first impact, if every contact was moving down or at rest just before it (an
+    /// all-down drop): rational upper bounds of its time and of h/|v| there.
+    first_drop: Option<(Q, Q)>,
 }
 
 /// Bits of the dyadics that bound each interval from above in [`ExactEngine::time_above`]: every
@@ -76,7 +79,7 @@ impl<'a, F: SimField> ExactEngine<'a, F> {
     /// The engine at a start given in rationals (also for a system over Q(cos 2π/n)).
     pub fn new(sys: &'a System<F>, start: &Start<Q>) -> ExactEngine<'a, F> {
         let (q, p) = (start.q.clone().map(|x| F::from_q(&x)), start.p.clone().map(|x| F::from_q(&x)));
-        ExactEngine { sys, q, p, last: None, time: 0.0, time_above: Q::int(0) }
+        ExactEngine { sys, q, p, last: None, time: 0.0, time_above: Q::int(0), first_drop: None }
     }
 
     /// The exact state (q, p).
@@ -120,6 +123,18 @@ impl<'a, F: SimField> ExactEngine<'a, F> {
         best
     }
 
+    /// Before the first impact, after a flight of `t`: a rational upper bound of h/|v| if every
+    /// contact moves down or rests (docs/time-to-rest.md §2: the rod theorem's drops).
+    fn all_down_ratio(&self, t: &F) -> Option<Q> {
+        if self.sys.contacts.iter().any(|c| dot(c, &self.p).fast_sign() == std::cmp::Ordering::Greater) {
+            return None;
+        }
+        let v = dot(&self.sys.centre, &self.p);
+        let h = dot(&self.sys.centre, &self.q).plus(&t.times(&v));
+        (v.below_zero() && h.fast_sign() == std::cmp::Ordering::Greater)
+            .then(|| h.over(&v.negated()).expect("v < 0").rational_above())
+    }
+
     /// Moves for time t and applies the impact at k with pre-impact normal velocity -w.
     fn apply(&mut self, k: usize, t: &F, w: &F) {
         for ((q, p), kick) in self.q.iter_mut().zip(self.p.iter_mut()).zip(&self.sys.kicks[k]) {
@@ -144,6 +159,9 @@ impl<F: SimField> Engine for ExactEngine<'_, F> {
         }
         self.time += dt.to_f64();
         self.time_above = &self.time_above + &t.rational_above().ceil_dyadic(TIME_BITS);
+        if self.last.is_none() {
+            self.first_drop = self.all_down_ratio(&t).map(|r| (self.time_above.clone(), r));
+        }
         self.apply(at[0], &t, &w);
         Step::Impact { contact: at[0], dt }
     }
@@ -162,6 +180,10 @@ impl<F: SimField> Engine for ExactEngine<'_, F> {
 
     fn time_above(&self) -> Option<Q> {
         Some(self.time_above.clone())
+    }
+
+    fn first_drop(&self) -> Option<(Q, Q)> {
+        self.first_drop.clone()
     }
 
     fn centre_ratio_above(&self) -> Option<Q> {

@@ -272,6 +272,7 @@ fn issue24_a_cone_entry_is_proved_no_icc_no_pcc_and_not_cc() {
         (v["entered"]["kind"].as_str(), v["entered"]["finite_time"].as_bool()),
         (Some("cone"), Some(false))
     );
+    assert!(v["entered"]["time_to_rest_bound"].is_null(), "a cone bounds no time: {json}");
     // The library says the same.
     let model = Model::new(Shape::Polygon(3), q("3/20"), q("1/20")).unwrap();
     let sets = chatter::prove::made(&model);

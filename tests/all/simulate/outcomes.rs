@@ -45,15 +45,24 @@ fn rod_threshold_from_simulation_brackets_7_minus_4_sqrt_3() {
         let b = rod_translation(below, 200, arithmetic);
         assert_eq!(b.evidence, Outcome::Cc, "{arithmetic:?} below: {}", b.decision.describe());
         // f64: CC by converging intervals (evidence); exact: the rod's certified cone entered at
-        // impact 1, which proves no ICC and no PCC, not CC (issue 24: no finite time from a cone).
+        // impact 1. A cone alone proves no ICC and no PCC, not CC (issue 24), but the rod's
+        // certificate carries rule T1, whose theorem gives this all-down drop a finite time to
+        // rest (docs/time-to-rest.md §2): CC, proved, with the bound t_1 + B h/|v|.
         match arithmetic {
             Arithmetic::Float => {
                 assert!(matches!(b.decision, Decision::Converging { .. }) && !b.proved);
                 assert_eq!(b.outcome, Outcome::Cc);
             }
             Arithmetic::Exact => {
-                assert!(matches!(b.decision, Decision::Certified { after: 1, .. }) && b.proved);
-                assert_eq!(b.outcome, Outcome::NoIccNoPcc);
+                let Decision::Certified { after: 1, rest_by: Some(t), .. } = &b.decision else {
+                    panic!("no T1 bound: {:?}", b.decision);
+                };
+                assert!(b.proved && b.outcome == Outcome::Cc, "{:?}", b.decision);
+                assert!(b.decision.describe().contains("rule T1"), "{}", b.decision.describe());
+                // The f64 run of the same drop accumulates before the proved time.
+                let f = rod_translation(below, 400, Arithmetic::Float);
+                let (t, float) = (chatter::exact::QExt::to_f64(t), f.accumulation.expect("an estimate"));
+                assert!(float <= t * (1.0 + 1e-9) && t < 3.0 * float, "simulated {float}, proved {t}");
             }
         }
         let a = rod_translation(above, 200, arithmetic);
