@@ -103,3 +103,23 @@ fn every_file_of_rules_starts_with_its_rules_and_their_codes() {
         assert!(codes.iter().any(|c| head.contains(c.as_str())), "{kind}: the rules name their codes");
     }
 }
+
+/// The loci of the kinds beyond point certificates (`reject/kinds.rs`) are written in JSON as
+/// every other locus: `kind` and the fields, with no trace of the nesting.
+#[test]
+#[cfg(all(feature = "family", feature = "orbit"))]
+fn the_loci_of_the_other_kinds_are_written_as_before() {
+    use chatter_kernel::reject::{KindLocus, Locus};
+    let json = |l: Locus| serde_json::to_value(l).unwrap();
+    let step = Locus::from(KindLocus::Step { index: 3, id: "q1".into() });
+    assert_eq!(json(step), serde_json::json!({"kind": "step", "index": 3, "id": "q1"}));
+    let pair = Locus::from(KindLocus::PccPair { pair: 2 });
+    assert_eq!(json(pair), serde_json::json!({"kind": "pcc-pair", "pair": 2}));
+    let sub_box = Box::new([["0", "1"], ["1/2", "1"], ["0", "1/4"]].map(|r| r.map(String::from)));
+    let orbit = Locus::from(KindLocus::OrbitBox { sub_box, depth: 1, step: None, contact: None });
+    assert_eq!(
+        json(orbit),
+        serde_json::json!({"kind": "orbit-box", "sub_box": [["0", "1"], ["1/2", "1"], ["0", "1/4"]], "depth": 1})
+    );
+    assert_eq!(json(Locus::Cone), serde_json::json!({"kind": "cone"}));
+}
