@@ -2,7 +2,7 @@
 //! with subdivision (docs/kernel-soundness.md §2, "Boxes"). A polynomial is dense: `c[i][j]` is
 //! the coefficient of kappa^i gamma^j.
 
-use crate::exact::OrderedField;
+use crate::exact::{Field, Int, OrderedField, Ring, scale_to_ints};
 
 /// A polynomial in (kappa, gamma) with coefficients in `F`.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -141,6 +141,78 @@ impl<F: OrderedField> Bi<F> {
     }
 }
 
+impl<F: Field> Bi<F> {
+    /// Positive multiples of the Bernstein coefficients on `rect` (each of the sign of the
+    /// coefficient of [`Bi::bernstein`]), in integers, so that no fraction is reduced: with
+    /// kappa = (A + B t)/D, gamma = (C + E s)/G over t, s in [0, 1] and L a common denominator
+    /// of the coefficients, L D^dk G^dg p is an integer polynomial in (t, s), and its Bernstein
+    /// coefficients times the lcm of the binomials C(dk, k) and of C(dg, l) are integers.
+    pub fn bernstein_scaled(&self, rect: &Rect<F>) -> Vec<Vec<F::Int>> {
+        let (dk, dg) = self.degrees();
+        let z = scale_to_ints(&self.c.iter().flatten().cloned().collect::<Vec<F>>());
+        let (pk, pg) = (integer_powers(&rect.kappa, dk), integer_powers(&rect.gamma, dg));
+        let mut sub = vec![vec![F::Int::zero(); dg + 1]; dk + 1];
+        for (i, row) in z.chunks(dg + 1).enumerate() {
+            for (j, x) in row.iter().enumerate().filter(|(_, x)| !x.is_zero()) {
+                for (a, u) in pk[i].iter().enumerate() {
+                    let xu = x.times(u);
+                    for (b, w) in pg[j].iter().enumerate() {
+                        sub[a][b] = sub[a][b].plus(&xu.times(w));
+                    }
+                }
+            }
+        }
+        let rows: Vec<Vec<F::Int>> = sub.iter().map(|r| to_bernstein_scaled(r, dg)).collect();
+        let cols: Vec<Vec<F::Int>> = (0..=dg)
+            .map(|j| to_bernstein_scaled(&rows.iter().map(|r| r[j].clone()).collect::<Vec<_>>(), dk))
+            .collect();
+        (0..=dk).map(|i| (0..=dg).map(|j| cols[j][i].clone()).collect()).collect()
+    }
+}
+
+/// For [lo, hi] = [a0/b0, a1/b1]: x = (A + B t)/D with D = b0 b1 > 0, and the integer
+/// coefficients in t of (A + B t)^i D^(e - i), i = 0..=e.
+fn integer_powers<F: Field>(r: &[F; 2], e: usize) -> Vec<Vec<F::Int>> {
+    let d = r[0].denom().times(&r[1].denom());
+    let a = r[0].numer().times(&r[1].denom());
+    let b = r[1].numer().times(&r[0].denom()).minus(&a);
+    let mut powers = vec![vec![F::Int::one()]];
+    for _ in 0..e {
+        let p = powers.last().expect("one");
+        let mut q = vec![F::Int::zero(); p.len() + 1];
+        for (k, x) in p.iter().enumerate() {
+            q[k] = q[k].plus(&x.times(&a));
+            q[k + 1] = q[k + 1].plus(&x.times(&b));
+        }
+        powers.push(q);
+    }
+    let mut d_pow = F::Int::one();
+    for i in (0..=e).rev() {
+        powers[i] = powers[i].iter().map(|x| x.times(&d_pow)).collect();
+        d_pow = d_pow.times(&d);
+    }
+    powers
+}
+
+/// The Bernstein coefficients of degree `d` of the power coefficients `a`, times W = lcm of the
+/// C(d, k): b_i W = sum_k C(i, k) (W / C(d, k)) a_k.
+fn to_bernstein_scaled<Z: Int>(a: &[Z], d: usize) -> Vec<Z> {
+    let gcd = |mut x: i64, mut y: i64| {
+        while y != 0 {
+            (x, y) = (y, x % y);
+        }
+        x
+    };
+    let w = (0..=d).fold(1i64, |l, k| l / gcd(l, binomial(d, k)) * binomial(d, k));
+    (0..=d)
+        .map(|i| {
+            (0..=i).fold(Z::zero(), |acc, k| {
+                acc.plus(&Z::from_i64(binomial(i, k) * (w / binomial(d, k))).times(&a[k]))
+            })
+        })
+        .collect()
+}
+
 /// The coefficients of (a0 + a1 s)^e in s, lowest first.
 fn powers_of_affine<F: OrderedField>(a: &[F; 2], e: usize) -> Vec<F> {
     let mut p = vec![F::one()];
@@ -183,17 +255,13 @@ pub enum NotNegative<F> {
 /// Proves `p < 0` on `rect`: every Bernstein coefficient negative on every box of a subdivision
 /// into quarters (breadth first, at most `max_boxes` boxes examined). Returns the number of boxes
 /// examined.
-pub fn negative_on<F: OrderedField>(
-    p: &Bi<F>,
-    rect: &Rect<F>,
-    max_boxes: usize,
-) -> Result<usize, NotNegative<F>> {
+pub fn negative_on<F: Field>(p: &Bi<F>, rect: &Rect<F>, max_boxes: usize) -> Result<usize, NotNegative<F>> {
     let mut queue = std::collections::VecDeque::from([rect.clone()]);
     let mut examined = 0;
     while let Some(r) = queue.pop_front() {
         examined += 1;
-        let b = p.bernstein(&r);
-        if b.iter().flatten().all(F::is_negative) {
+        let b = p.bernstein_scaled(&r);
+        if b.iter().flatten().all(Ring::is_negative) {
             continue;
         }
         // The corner coefficients are the values at the corners.

@@ -49,6 +49,8 @@ pub mod certificate {
     pub use crate::reject::{
         Boundary, Code, Counted, Detail, ImageFailure, Internal, Locus, Needs, Rejection,
     };
+    #[cfg(feature = "kinds")]
+    pub use crate::reject::{KindDetail, KindLocus};
     pub use crate::syntax::Encoding;
     pub use crate::syntax::cone::{
         Body, Certificate, Claim, Coordinates, FORMAT, Generator, Param, VERSION, VERSIONS,

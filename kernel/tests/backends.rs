@@ -369,3 +369,25 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// The num backend's gcd (Lehmer's, issue 23 §3) is malachite's, on long numbers with a long
+    /// common factor, and its fractions stay reduced as malachite's.
+    #[test]
+    fn the_num_backends_gcd_and_fractions_agree_with_malachite(
+        a in "[1-9][0-9]{0,300}", b in "[1-9][0-9]{0,300}", c in "[1-9][0-9]{0,120}",
+    ) {
+        let (x, y, z) = (BigInt::parse_digits(&a).unwrap(), BigInt::parse_digits(&b).unwrap(), BigInt::parse_digits(&c).unwrap());
+        let (u, v, w) = (Integer::parse_digits(&a).unwrap(), Integer::parse_digits(&b).unwrap(), Integer::parse_digits(&c).unwrap());
+        let num = x.times(&z).gcd(&y.times(&z).negated());
+        prop_assert_eq!(num.to_string(), u.times(&w).gcd(&v.times(&w)).to_string());
+        let q = BigRational::from_fraction(&x.times(&z), &y.times(&z).negated());
+        let m = Q::from_fraction(&u.times(&w), &v.times(&w).negated());
+        prop_assert_eq!(to_canonical(&q), to_canonical(&m));
+        let r = q.plus(&BigRational::from_fraction(&z, &y)).times(&q).over(&BigRational::from_fraction(&x, &z)).unwrap();
+        let s = m.plus(&Q::from_fraction(&w, &v)).times(&m).over(&Q::from_fraction(&u, &w)).unwrap();
+        prop_assert_eq!(to_canonical(&r), to_canonical(&s));
+    }
+}

@@ -65,6 +65,20 @@ proptest! {
         prop_assert_eq!(&b[0][dg], &at(&r.kappa[0], &r.gamma[1]));
     }
 
+    /// The integer Bernstein coefficients used by `negative_on` (no fraction reduced, issue 23
+    /// §3) have the signs of the rational ones, on boxes with unrelated denominators.
+    #[test]
+    fn the_integer_bernstein_coefficients_have_the_signs_of_the_rational_ones(
+        c in prop::collection::vec(prop::collection::vec(-20i64..20, 4), 4),
+        k0 in -50i64..50, dk in 1i64..40, kd in 1i64..30, g0 in -50i64..50, dg in 1i64..40, gd in 1i64..30,
+    ) {
+        let p = poly(&c).times(&Bi::constant(q(3, 7)));
+        let r = rect(q(k0, kd), q(k0, kd).plus(&q(dk, 17)), q(g0, gd), q(g0, gd).plus(&q(dg, 13)));
+        let signs = |b: Vec<Vec<Q>>| b.iter().flatten().map(Ring::sign).collect::<Vec<_>>();
+        let scaled = p.bernstein_scaled(&r).iter().flatten().map(Ring::sign).collect::<Vec<_>>();
+        prop_assert_eq!(signs(p.bernstein(&r)), scaled);
+    }
+
     /// `negative_on` never claims a polynomial negative on a box where it is not: whenever it
     /// succeeds, a grid of points of the box is negative.
     #[test]

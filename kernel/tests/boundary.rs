@@ -86,14 +86,14 @@ fn the_numbers_do_not_depend_on_the_rules_or_the_proof_checker() {
 #[test]
 fn every_file_of_rules_starts_with_its_rules_and_their_codes() {
     let codes: Vec<String> =
-        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("src/reject.rs"))
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("src/reject/mod.rs"))
             .unwrap()
             .lines()
             .filter_map(|l| {
                 l.trim().split(" = \"").nth(1).map(|c| format!("`{}`", c.trim_end_matches("\",")))
             })
             .collect();
-    assert!(codes.len() > 20, "the codes of reject.rs");
+    assert!(codes.len() > 20, "the codes of reject/mod.rs");
     let kinds = ["cone", "rod", "boxes", "field", "family", "orbit", "refutation", "proof/mod"];
     for kind in kinds {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("src/rules/{kind}.rs"));
@@ -102,4 +102,24 @@ fn every_file_of_rules_starts_with_its_rules_and_their_codes() {
         assert!(head.lines().filter(|l| l.starts_with("//! -")).count() >= 2, "{kind}: a list of rules");
         assert!(codes.iter().any(|c| head.contains(c.as_str())), "{kind}: the rules name their codes");
     }
+}
+
+/// The loci of the kinds beyond point certificates (`reject/kinds.rs`) are written in JSON as
+/// every other locus: `kind` and the fields, with no trace of the nesting.
+#[test]
+#[cfg(all(feature = "family", feature = "orbit"))]
+fn the_loci_of_the_other_kinds_are_written_as_before() {
+    use chatter_kernel::reject::{KindLocus, Locus};
+    let json = |l: Locus| serde_json::to_value(l).unwrap();
+    let step = Locus::from(KindLocus::Step { index: 3, id: "q1".into() });
+    assert_eq!(json(step), serde_json::json!({"kind": "step", "index": 3, "id": "q1"}));
+    let pair = Locus::from(KindLocus::PccPair { pair: 2 });
+    assert_eq!(json(pair), serde_json::json!({"kind": "pcc-pair", "pair": 2}));
+    let sub_box = Box::new([["0", "1"], ["1/2", "1"], ["0", "1/4"]].map(|r| r.map(String::from)));
+    let orbit = Locus::from(KindLocus::OrbitBox { sub_box, depth: 1, step: None, contact: None });
+    assert_eq!(
+        json(orbit),
+        serde_json::json!({"kind": "orbit-box", "sub_box": [["0", "1"], ["1/2", "1"], ["0", "1/4"]], "depth": 1})
+    );
+    assert_eq!(json(Locus::Cone), serde_json::json!({"kind": "cone"}));
 }

@@ -101,3 +101,28 @@ fn the_digit_limit_applies_to_a_whole_field_element() {
     assert_eq!(r.code, Code::TooLarge);
     assert_eq!(r.locus, Locus::Field { path: "body.kappa".into() });
 }
+
+/// At the limit exactly: the exponents of c do not count, and the limit is checked before the
+/// spelling, so a non-canonical element beyond it is `too-large` (as in chatter-oracle).
+#[test]
+fn the_digit_limit_of_an_element_counts_its_coefficients_only_and_comes_first() {
+    let half = format!("1/{}", "3".repeat(4_999));
+    let at_limit = format!("{half} + {half}*c^2");
+    let field = CosField::<Rational>::new(7).unwrap();
+    assert!(field.parse(&at_limit, ParseLimits::digits(10_000)).is_ok());
+    let one_less = ParseLimits::digits(9_999);
+    assert_eq!(
+        field.parse(&at_limit, one_less).err(),
+        Some(NumberError::TooLong { digits: 10_000, max: 9_999 })
+    );
+    let swapped = format!("{half}*c^2 + {half}");
+    let field = CosField::<BigRational>::new(7).unwrap();
+    assert_eq!(
+        field.parse(&swapped, one_less).err(),
+        Some(NumberError::TooLong { digits: 10_000, max: 9_999 })
+    );
+    assert!(matches!(
+        field.parse(&swapped, ParseLimits::digits(10_000)),
+        Err(NumberError::NotCanonical { .. })
+    ));
+}

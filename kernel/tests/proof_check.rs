@@ -4,7 +4,7 @@
 
 use chatter_kernel::exact::{ParseLimits, Ring};
 use chatter_kernel::proof::{Failure, ProofFile, Step, check, read};
-use chatter_kernel::reject::{Code, Detail, Locus};
+use chatter_kernel::reject::{Code, Detail, KindDetail, KindLocus, Locus};
 use chatter_kernel::verify::{Verdict, verify_proof};
 use malachite::rational::Rational as Q;
 
@@ -17,8 +17,10 @@ fn fails_at(f: &ProofFile) -> Option<usize> {
     match check::<Q>(f, ParseLimits::default()) {
         Ok(_) => None,
         Err(r) => match &r.locus {
-            Locus::Step { index, .. } => {
-                let Detail::Proof(f) = r.detail.as_ref() else { panic!("not a proof's failure: {r}") };
+            Locus::Kind(KindLocus::Step { index, .. }) => {
+                let Detail::Kind(KindDetail::Proof(f)) = r.detail.as_ref() else {
+                    panic!("not a proof's failure: {r}")
+                };
                 assert_eq!(r.code, f.code(), "{r}");
                 Some(*index)
             }
@@ -169,7 +171,7 @@ fn a_missing_obligation_fails_the_rule_that_needs_it() {
     let r = check::<Q>(&f, ParseLimits::default()).unwrap_err();
     assert_eq!(r.code, Code::SignNotProved, "{r}");
     assert!(
-        matches!(r.detail.as_ref(), Detail::Proof(Failure::NoStep(key, _)) if key == "K.S3.q1.left"),
+        matches!(r.detail.as_ref(), Detail::Kind(KindDetail::Proof(Failure::NoStep(key, _))) if key == "K.S3.q1.left"),
         "{r}"
     );
     assert!(r.message().contains("no step `K.S3.q1.left`"), "{r}");
@@ -202,7 +204,7 @@ fn hypotheses_are_about_the_parameters_and_include_kappa_positive() {
     let mut f = committed();
     f.hypotheses.retain(|h| h.expr != "k");
     let r = check::<Q>(&f, ParseLimits::default()).unwrap_err();
-    assert!(matches!(r.detail.as_ref(), Detail::Proof(Failure::KappaHypothesis)), "{r}");
+    assert!(matches!(r.detail.as_ref(), Detail::Kind(KindDetail::Proof(Failure::KappaHypothesis))), "{r}");
 }
 
 #[test]

@@ -4,7 +4,7 @@
 
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::proof::{Failure, Hypothesis, ProofFile, Step, check, read};
-use chatter_kernel::reject::{Code, Detail, Rejection};
+use chatter_kernel::reject::{Code, Detail, KindDetail, Rejection};
 use malachite::rational::Rational as Q;
 
 fn committed() -> ProofFile {
@@ -24,7 +24,9 @@ fn rejection(f: &ProofFile) -> Rejection {
 
 /// The proof's failure in a rejection.
 fn failure(r: &Rejection) -> &Failure {
-    let Detail::Proof(f) = r.detail.as_ref() else { panic!("not a proof's failure: {r:?}") };
+    let Detail::Kind(KindDetail::Proof(f)) = r.detail.as_ref() else {
+        panic!("not a proof's failure: {r:?}")
+    };
     f
 }
 

@@ -1,7 +1,8 @@
 //! The lines a reviewer must read to trust one kind of verdict (docs/kernel-soundness.md §4),
 //! measured: the non-blank, non-comment lines of every source file reached from the kind's rules
 //! by `mod` declarations and by `crate::`, `super::` and `self::` paths (in `use` statements or
-//! inline), with the Cargo features of that kind only. `verify/mod.rs`, which dispatches to every
+//! inline), with the Cargo features of that kind only (and those they enable, as Cargo.toml
+//! says). `verify/mod.rs`, which dispatches to every
 //! kind, is read too, but its paths into other kinds' rules are not followed. The table in
 //! docs/kernel-soundness.md §4 must be the measurement, and point certificates must stay under
 //! their targets.
@@ -26,7 +27,7 @@ const KINDS: [(&str, &str, &[&str]); 9] = [
 /// rules. Issue 23 asks for under 1,500 and under 300: the rules meet theirs; the whole is held
 /// at its measurement (docs/kernel-soundness.md §4 says where the lines are) so that it cannot
 /// grow unseen.
-const POINT_BUDGET: (usize, usize) = (1_864, 299);
+const POINT_BUDGET: (usize, usize) = (1_810, 294);
 
 fn src() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
@@ -148,7 +149,11 @@ fn references(file: &Path, features: &[&str]) -> Vec<PathBuf> {
     let mut out = Vec::new();
     let mut i = 0;
     while i < lines.len() {
-        let line = lines[i].split("//").next().unwrap().trim();
+        let mut line = lines[i].split("//").next().unwrap().trim().to_string();
+        while line.starts_with("#[cfg(") && !line.ends_with(")]") && i + 1 < lines.len() {
+            i += 1;
+            line.push_str(lines[i].trim());
+        }
         if let Some(pred) = line.strip_prefix("#[cfg(").and_then(|p| p.strip_suffix(")]")) {
             i += 1;
             if !holds(pred, features) {
@@ -157,6 +162,7 @@ fn references(file: &Path, features: &[&str]) -> Vec<PathBuf> {
             continue;
         }
         let stmt = line
+            .as_str()
             .trim_start_matches("pub(crate) ")
             .trim_start_matches("pub(super) ")
             .trim_start_matches("pub ");
@@ -174,7 +180,7 @@ fn references(file: &Path, features: &[&str]) -> Vec<PathBuf> {
                 expand(tree.trim_end().trim_end_matches(';')).iter().filter_map(|p| resolve(p, &here)),
             );
         } else {
-            out.extend(inline_paths(line).iter().filter_map(|p| resolve(p, &here)));
+            out.extend(inline_paths(&line).iter().filter_map(|p| resolve(p, &here)));
         }
         i += 1;
     }
@@ -218,8 +224,27 @@ fn inline_paths(line: &str) -> Vec<String> {
     out
 }
 
+/// `features` and the features they enable, as kernel/Cargo.toml's `[features]` says.
+fn enabled<'a>(features: &[&'a str], toml: &'a str) -> Vec<&'a str> {
+    let mut on = features.to_vec();
+    let mut grew = true;
+    while grew {
+        grew = false;
+        for (name, list) in toml.lines().filter_map(|l| l.split_once(" = [")) {
+            for f in list.trim_end_matches(']').split(',').map(|f| f.trim().trim_matches('"')) {
+                if on.contains(&name) && !f.is_empty() && !on.contains(&f) {
+                    (on, grew) = ([on, vec![f]].concat(), true);
+                }
+            }
+        }
+    }
+    on
+}
+
 /// The files a reviewer of one kind reads: reached from its rules and from verify/mod.rs.
 fn reached(rules: &str, features: &[&str]) -> BTreeSet<PathBuf> {
+    let toml = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("Cargo.toml")).unwrap();
+    let features = &enabled(features, &toml)[..];
     let (verify, entry) = (src().join("verify/mod.rs"), src().join(rules));
     let (rules_dir, outcome) = (src().join("rules"), src().join("rules/outcome.rs"));
     let mut seen = BTreeSet::new();
@@ -254,7 +279,11 @@ fn measure() -> BTreeMap<&'static str, (usize, usize, usize)> {
 #[test]
 fn point_certificates_stay_within_their_budget_with_fewer_than_300_lines_of_rules() {
     let (_, lines, rules) = measure()["point certificates, n = 3, 4, 6"];
-    assert!(lines <= POINT_BUDGET.0, "{lines} lines to read for a point certificate");
+    let files: Vec<String> = reached("rules/cone.rs", &[])
+        .iter()
+        .map(|f| format!("{} {}", code_lines(&std::fs::read_to_string(f).unwrap()), f.display()))
+        .collect();
+    assert!(lines <= POINT_BUDGET.0, "{lines} lines to read for a point certificate: {files:#?}");
     assert!(rules <= POINT_BUDGET.1, "{rules} lines of rules for a point certificate");
 }
 

@@ -4,7 +4,7 @@
 
 use chatter_oracle::arith::cyclotomic::cos_minimal_polynomial;
 use chatter_oracle::arith::enclosure::cos_bounds;
-use chatter_oracle::arith::rational::{Rat, parse_rational, ratio, rational_text};
+use chatter_oracle::arith::rational::{NumberFault, Rat, parse_rational, ratio, rational_text};
 use chatter_oracle::arith::text::{element_text, parse_number};
 use chatter_oracle::arith::{Field, Num};
 use chatter_oracle::cone3::dot;
@@ -40,6 +40,21 @@ fn numbers_follow_the_canonical_rules() {
     let long = format!("1{}/3", "0".repeat(9998));
     assert!(parse_rational(&long, 10_000).is_ok());
     assert!(parse_rational(&format!("1{long}"), 10_000).is_err());
+}
+
+/// max-digits bounds a whole element: its coefficients' digits together, the exponents of c not
+/// counted, checked before the terms are read (as the kernel does; before, the oracle counted the
+/// exponents and checked last).
+#[test]
+fn the_digit_limit_counts_the_coefficients_of_a_whole_element() {
+    let f = Field::cos(7);
+    let half = format!("1/{}", "3".repeat(4_999));
+    let at_limit = format!("{half} + {half}*c^2");
+    assert!(parse_number(&at_limit, &f, 10_000).is_ok(), "10,000 coefficient digits and an exponent");
+    assert_eq!(parse_number(&at_limit, &f, 9_999).err(), Some(NumberFault::TooLong));
+    let not_canonical = format!("{half}*c^2 + {half}");
+    assert_eq!(parse_number(&not_canonical, &f, 9_999).err(), Some(NumberFault::TooLong));
+    assert_eq!(parse_number(&not_canonical, &f, 10_000).err(), Some(NumberFault::Bad));
 }
 
 #[test]

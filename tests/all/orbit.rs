@@ -7,7 +7,9 @@ use chatter::exact::{ParseLimits, Q};
 use chatter::orbit::{Request, certify_orbit};
 use chatter::simulate::{Engine, ExactEngine, Model, Shape, Step};
 use chatter::write::write_orbit;
-use chatter_kernel::certificate::{Claim, Code, Encoding, Locus, OrbitCertificate, OrbitSet, read_orbit};
+use chatter_kernel::certificate::{
+    Claim, Code, Encoding, KindLocus, Locus, OrbitCertificate, OrbitSet, read_orbit,
+};
 use chatter_kernel::exact::{OrderedField, Ring, parse_canonical};
 use chatter_kernel::model::Polygon;
 use chatter_kernel::orbit::return_map;
@@ -97,14 +99,14 @@ fn the_valid_corpus_file_is_accepted_and_tampering_is_rejected_with_the_conditio
     centre.0 = "2301/1000".into();
     let r = rejected(&c);
     assert_eq!(r.code, Code::SetNotInvariant, "{r}");
-    assert!(matches!(r.locus, Locus::OrbitBox { depth: 0, .. }), "{:?}", r.locus);
+    assert!(matches!(r.locus, Locus::Kind(KindLocus::OrbitBox { depth: 0, .. })), "{:?}", r.locus);
     // delta enlarged until a condition fails on a sub-box.
     let mut c = valid();
     let OrbitSet::Parallelepiped { delta, .. } = &mut c.set else { panic!("a parallelepiped") };
     *delta = "1/8".into();
     let r = rejected(&c);
     assert!(matches!(r.code, Code::PatternNotForced | Code::SetNotInvariant | Code::NoContraction), "{r}");
-    assert!(matches!(r.locus, Locus::OrbitBox { .. }), "{:?}", r.locus);
+    assert!(matches!(r.locus, Locus::Kind(KindLocus::OrbitBox { .. })), "{:?}", r.locus);
     // The enlarged set is accepted neither with more subdivision allowed: the failure is real.
     c.subdivision = 3;
     assert!(matches!(verify_orbit(&c, ParseLimits::default()), Verdict::Rejected(_)));

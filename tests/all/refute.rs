@@ -7,7 +7,7 @@ use chatter::certify::{Request, certify};
 use chatter::exact::Q;
 use chatter::refute::{NoRefutation, RefuteConfig, refute};
 use chatter::write::write_refutation as write;
-use chatter_kernel::certificate::{Body, Claim, Code, Locus};
+use chatter_kernel::certificate::{Body, Claim, Code, KindLocus, Locus};
 use chatter_kernel::refute::{Refutation, Step};
 use chatter_kernel::syntax::{Encoding, read as read_in};
 
@@ -72,7 +72,7 @@ fn first(r: &Refutation, kind: fn(&Step) -> bool) -> usize {
 fn hostile_edits_are_rejected_at_the_step() {
     let base = made(4, "1/6", "3/100", Claim::EffectivelyInvariant);
     let at = |x: &chatter_kernel::certificate::Rejection| match &x.locus {
-        Locus::Step { index, .. } => *index,
+        Locus::Kind(KindLocus::Step { index, .. }) => *index,
         other => panic!("{other:?}"),
     };
     // A negative coefficient.

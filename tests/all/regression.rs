@@ -9,7 +9,7 @@ use chatter_kernel::certificate::{Claim, Code, Locus};
 use chatter_kernel::check::check;
 use chatter_kernel::exact::{Field, OrderedField, Ring};
 use chatter_kernel::model::{Rod, Shape};
-use chatter_kernel::verify::{Backend, MALACHITE, Verdict, verify};
+use chatter_kernel::verify::{Backend, Kinds, MALACHITE, Verdict, verify};
 use clap::Parser;
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -83,14 +83,7 @@ impl Field for Liar {
     }
 }
 
-const LIAR: Backend = Backend {
-    name: "liar",
-    check: check::<Liar>,
-    refute: chatter_kernel::refute::check::<Liar>,
-    convex: chatter_kernel::check::check_convex::<Liar>,
-    orbit: chatter_kernel::orbit::check_orbit::<Liar>,
-    proof: chatter_kernel::proof::check::<Liar>,
-};
+const LIAR: Backend = Backend { name: "liar", check: check::<Liar>, kinds: Kinds::of::<Liar>() };
 
 fn outcome(args: &[&str], env: &Env) -> Outcome {
     let mut argv = vec!["chatter"];

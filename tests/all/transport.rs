@@ -11,8 +11,8 @@ use chatter::certify::{Request, certify};
 use chatter::exact::Q;
 use chatter::write::write_convex;
 use chatter_kernel::certificate::{
-    Body, Certificate, Claim, Code, ConvexBodyText, ConvexCertificate, Encoding, Generator, Locus, Param,
-    read_convex,
+    Body, Certificate, Claim, Code, ConvexBodyText, ConvexCertificate, Encoding, Generator, KindLocus, Locus,
+    Param, read_convex,
 };
 use chatter_kernel::exact::{OrderedField, ParseLimits, Ring};
 use chatter_kernel::model::{ConvexBody, Vec2};
@@ -262,7 +262,7 @@ fn pcc_of_an_adjacent_pair_is_reported_at_its_pair() {
     match both(&t) {
         Verdict::Rejected(r) => {
             assert_eq!(r.code, Code::PccNotExcluded, "{r}");
-            assert!(matches!(r.locus, Locus::PccPair { .. }), "{r:?}");
+            assert!(matches!(r.locus, Locus::Kind(KindLocus::PccPair { .. })), "{r:?}");
         }
         other => panic!("{other:?}"),
     }
@@ -277,12 +277,15 @@ fn rule_k1_to_k3_loci_name_the_cone_and_the_generator() {
     let mut t = good.clone();
     t.cones[2][1].0[2] = "0".into();
     let Verdict::Rejected(r) = both(&t) else { panic!() };
-    assert_eq!((r.code, r.locus), (Code::GeneratorNotBelow, Locus::ConvexGenerator { cone: 2, index: 1 }));
+    assert_eq!(
+        (r.code, r.locus),
+        (Code::GeneratorNotBelow, Locus::Kind(KindLocus::ConvexGenerator { cone: 2, index: 1 }))
+    );
     // K1: a flat cone.
     let mut t = good.clone();
     t.cones[3].truncate(2);
     let Verdict::Rejected(r) = both(&t) else { panic!() };
-    assert_eq!((r.code, r.locus), (Code::DegenerateCone, Locus::ConvexCone { cone: 3 }));
+    assert_eq!((r.code, r.locus), (Code::DegenerateCone, Locus::Kind(KindLocus::ConvexCone { cone: 3 })));
     // Wrong number of cones.
     let mut t = good.clone();
     t.cones.pop();
@@ -292,7 +295,13 @@ fn rule_k1_to_k3_loci_name_the_cone_and_the_generator() {
     let mut t = good.clone();
     t.cones = vec![good.cones[0].clone(); 4];
     let Verdict::Rejected(r) = both(&t) else { panic!() };
-    assert!(matches!(r.locus, Locus::Transition { .. } | Locus::ConvexAllDown { .. }), "{r:?}");
+    assert!(
+        matches!(
+            r.locus,
+            Locus::Kind(KindLocus::Transition { .. }) | Locus::Kind(KindLocus::ConvexAllDown { .. })
+        ),
+        "{r:?}"
+    );
     // Bad body: clockwise contacts.
     let mut t = good.clone();
     let ConvexBodyText::ConvexPolygon { contacts, .. } = &mut t.body;

@@ -1,11 +1,13 @@
 //! The second, independent backend: num-rational's `BigRational` over num-bigint's `BigInt`.
-//! The kernel runs on both; a disagreement is an internal error.
+//! The kernel runs on both; a disagreement is an internal error. The fractions are kept reduced
+//! as num-rational keeps them, but with Lehmer's gcd: num-integer's binary gcd is quadratic in the
+//! bits with a large constant, the bottleneck of this backend on long numbers (issue 23 §3).
 
 use super::{Field, Int, OrderedField, Ring};
-use num_bigint::{BigInt, Sign};
+use num_bigint::{BigInt, BigUint, Sign};
 use num_integer::Integer as _;
 use num_rational::BigRational;
-use num_traits::{Signed, Zero};
+use num_traits::{One, ToPrimitive, Zero};
 use std::cmp::Ordering;
 
 ring_by_operators!(BigInt, <BigInt as Zero>::zero(), BigInt::from, |x: &BigInt| match x.sign() {
@@ -16,7 +18,7 @@ ring_by_operators!(BigInt, <BigInt as Zero>::zero(), BigInt::from, |x: &BigInt| 
 
 impl Int for BigInt {
     fn gcd(&self, o: &Self) -> Self {
-        num_integer::Integer::gcd(self, o)
+        BigInt::from(lehmer_gcd(self.magnitude().clone(), o.magnitude().clone()))
     }
     fn div_exact(&self, o: &Self) -> Self {
         let (q, r) = self.div_rem(o);
@@ -37,24 +39,71 @@ impl Int for BigInt {
     }
 }
 
-ring_by_operators!(
-    BigRational,
-    <BigRational as Zero>::zero(),
-    |v| BigRational::from_integer(BigInt::from(v)),
-    |x: &BigRational| {
-        if Zero::is_zero(x) {
-            Ordering::Equal
-        } else if Signed::is_negative(x) {
-            Ordering::Less
+impl Ring for BigRational {
+    fn zero() -> Self {
+        <BigRational as Zero>::zero()
+    }
+    fn from_i64(v: i64) -> Self {
+        BigRational::from_integer(BigInt::from(v))
+    }
+    fn plus(&self, o: &Self) -> Self {
+        reduced(self.numer() * o.denom() + o.numer() * self.denom(), self.denom() * o.denom())
+    }
+    fn minus(&self, o: &Self) -> Self {
+        self.plus(&-o)
+    }
+    fn times(&self, o: &Self) -> Self {
+        reduced(self.numer() * o.numer(), self.denom() * o.denom())
+    }
+    fn negated(&self) -> Self {
+        -self
+    }
+    fn sign(&self) -> Ordering {
+        Ring::sign(self.numer())
+    }
+}
+
+/// n/d in lowest terms with d > 0 (d != 0), as `BigRational::new` makes it, by [`lehmer_gcd`].
+fn reduced(n: BigInt, d: BigInt) -> BigRational {
+    let g = BigInt::from(lehmer_gcd(n.magnitude().clone(), d.magnitude().clone()));
+    let (n, d) = if g.is_one() { (n, d) } else { (n / &g, d / &g) };
+    if Ring::is_negative(&d) { BigRational::new_raw(-n, -d) } else { BigRational::new_raw(n, d) }
+}
+
+/// gcd(a, b) by Lehmer's method (Knuth, TAOCP vol. 2, §4.5.2, Algorithm L): the quotients of
+/// Euclid's algorithm are found from the leading 64 bits while they are certain, and applied to
+/// the full numbers as one 2 x 2 step; a division step where they are not.
+fn lehmer_gcd(mut a: BigUint, mut b: BigUint) -> BigUint {
+    if a < b {
+        std::mem::swap(&mut a, &mut b);
+    }
+    while b.bits() > 64 {
+        let shift = a.bits() - 64;
+        let top = |x: &BigUint| i128::from((x >> shift).to_u64().expect("64 bits"));
+        let (mut x, mut y) = (top(&a), top(&b));
+        let (mut p, mut q, mut r, mut s) = (1i128, 0i128, 0i128, 1i128);
+        while y + r != 0 && y + s != 0 && (x + p) / (y + r) == (x + q) / (y + s) {
+            let k = (x + p) / (y + r);
+            (p, q, r, s, x, y) = (r, s, p - k * r, q - k * s, y, x - k * y);
+        }
+        if q == 0 {
+            (a, b) = (b.clone(), &a % &b);
         } else {
-            Ordering::Greater
+            let (ia, ib) = (BigInt::from(a), BigInt::from(b));
+            let step = |u: i128, v: i128| (&ia * u + &ib * v).to_biguint().expect("a remainder, >= 0");
+            (a, b) = (step(p, q), step(r, s));
         }
     }
-);
+    if b.is_zero() { a } else { num_integer::Integer::gcd(&b, &(&a % &b)) }
+}
 
 impl OrderedField for BigRational {
     fn over(&self, o: &Self) -> Option<Self> {
-        if Zero::is_zero(o) { None } else { Some(self / o) }
+        if Zero::is_zero(o) {
+            None
+        } else {
+            Some(reduced(self.numer() * o.denom(), self.denom() * o.numer()))
+        }
     }
     fn from_ratio(n: i64, d: i64) -> Self {
         BigRational::new(BigInt::from(n), BigInt::from(d))
@@ -65,7 +114,7 @@ impl Field for BigRational {
     type Int = BigInt;
     const BACKEND: &'static str = "num-rational";
     fn from_fraction(n: &BigInt, d: &BigInt) -> Self {
-        BigRational::new(n.clone(), d.clone())
+        reduced(n.clone(), d.clone())
     }
     fn numer(&self) -> BigInt {
         num_rational::Ratio::numer(self).clone()

@@ -3,6 +3,9 @@
 use super::{abbreviate, quote, tuple};
 use crate::model::pcc::PccExclusion;
 use crate::reject::{Boundary, Counted, Detail, ImageFailure, Internal, Locus, Needs, TimeToRestFailure};
+#[cfg(feature = "kinds")]
+#[allow(unused_imports)] // which of the two a kind needs depends on the features
+use crate::reject::{KindDetail, KindLocus};
 use crate::syntax::strict::Offence;
 
 /// The words of a detail of the syntax layer or of a cone or family certificate.
@@ -33,11 +36,14 @@ pub(super) fn words(detail: &Detail, locus: &Locus) -> String {
         }
         Detail::Time(during) => format!("the time limit ran out while {during}: no verdict on the content"),
         Detail::Body(e) => e.to_string(),
-        Detail::Contacts(n, max) => format!("n = {n}: the kernel models regular polygons with 2 to {max} contacts"),
-        Detail::IntervalIrrational(n) => format!(
+        #[cfg(feature = "field")]
+        Detail::Kind(KindDetail::Contacts(n, max)) => format!("n = {n}: the kernel models regular polygons with 2 to {max} contacts"),
+        #[cfg(feature = "field")]
+        Detail::Kind(KindDetail::IntervalIrrational(n)) => format!(
             "parameter intervals (box certificates) are supported only where cos(2 pi/n) is rational (n = 2, 3, 4, 6), not for n = {n}"
         ),
-        Detail::EmptyInterval(lo, hi) => {
+        #[cfg(feature = "boxes")]
+        Detail::Kind(KindDetail::EmptyInterval(lo, hi)) => {
             format!("the interval [{}, {}] is empty (lo > hi)", abbreviate(lo), abbreviate(hi))
         }
         Detail::GammaForClaim(gamma, claim, general) => {
@@ -51,14 +57,17 @@ pub(super) fn words(detail: &Detail, locus: &Locus) -> String {
         Detail::Arity(expected, found) => {
             format!("expected {} coordinates ({}), found {found}", expected.len(), expected.join(", "))
         }
-        Detail::ConeCount(found, contacts, true) => {
+        #[cfg(feature = "family")]
+        Detail::Kind(KindDetail::ConeCount(found, contacts, true)) => {
             format!("{found} cones, more than {contacts} (one per contact)")
         }
-        Detail::ConeCount(found, contacts, false) => {
+        #[cfg(feature = "family")]
+        Detail::Kind(KindDetail::ConeCount(found, contacts, false)) => {
             format!("expected one cone per contact ({contacts}), found {found}")
         }
         Detail::NotBelow(coords) => match locus {
-            Locus::ConvexGenerator { cone, index } => format!("generator cones[{cone}][{index}] = {} has v >= 0", tuple(coords)),
+            #[cfg(feature = "family")]
+            Locus::Kind(KindLocus::ConvexGenerator { cone, index }) => format!("generator cones[{cone}][{index}] = {} has v >= 0", tuple(coords)),
             Locus::Generator { index } => format!("generator cone[{index}] = {} has v >= 0", tuple(coords)),
             _ => format!("a generator {} has v >= 0", tuple(coords)),
         },
@@ -67,10 +76,10 @@ pub(super) fn words(detail: &Detail, locus: &Locus) -> String {
         Detail::Pcc(n, pqd, why) => pcc(*n, pqd, *why, locus),
         Detail::TimeToRest(why, b) => time_to_rest(*why, b),
         #[cfg(feature = "boxes")]
-        Detail::PccBox(polynomial, at_corner, max) => pcc_box(*polynomial, *at_corner, *max, locus),
+        Detail::Kind(KindDetail::PccBox(polynomial, at_corner, max)) => pcc_box(*polynomial, *at_corner, *max, locus),
         Detail::Internal(i) => internal(i),
         #[cfg(feature = "family")]
-        Detail::Convex(e) => format!("{e} (docs/model.md §11.1)"),
+        Detail::Kind(KindDetail::Convex(e)) => format!("{e} (docs/model.md §11.1)"),
         #[allow(unreachable_patterns)]
         _ => format!("{detail:?}"),
     }
@@ -172,7 +181,8 @@ fn limit_words(count: usize, limit: usize, what: Counted, locus: &Locus) -> Stri
 
 fn degenerate(generators: usize, rays: usize, dimension: usize, locus: &Locus) -> String {
     match (locus, dimension, generators) {
-        (Locus::ConvexCone { cone: i }, _, _) => format!(
+        #[cfg(feature = "family")]
+        (Locus::Kind(KindLocus::ConvexCone { cone: i }), _, _) => format!(
             "the {generators} generators of K_{i} span only {rays} distinct extreme ray(s) in a plane or line: K_{i} must be a 3-D cone"
         ),
         (_, d, 0) => format!("field `cone` is empty: K must be a {d}-D cone"),
@@ -197,10 +207,12 @@ fn image(f: &ImageFailure, locus: &Locus) -> String {
         Locus::AllDown { generator: m, outside, .. } => {
             (format!("I_0 maps the all-down generator -m_({m},{}) = {p}", m1(*m)), outside)
         }
-        Locus::Transition { from: i, to: j, vertex: v, outside } => {
+        #[cfg(feature = "family")]
+        Locus::Kind(KindLocus::Transition { from: i, to: j, vertex: v, outside }) => {
             (format!("vertex {v} of K_{i}∩C_({i},{j}), at {p}, maps under I_{j} into K_{j}"), outside)
         }
-        Locus::ConvexAllDown { cone: i, generator: m, outside } => {
+        #[cfg(feature = "family")]
+        Locus::Kind(KindLocus::ConvexAllDown { cone: i, generator: m, outside }) => {
             (format!("I_{i} maps the all-down generator -m_({m},{}) = {p} into K_{i}", m1(*m)), outside)
         }
         _ => (format!("the point {p}"), &None),
@@ -239,7 +251,8 @@ fn pcc(n: usize, pqd: &[String; 3], why: PccExclusion, locus: &Locus) -> String 
         "(t - 1)(t^2 + ({p}) t + ({q})) with discriminant {d} (needs < 0) and constant term {q} (needs < 1): {why}"
     );
     match locus {
-        Locus::PccPair { pair: k } => {
+        #[cfg(feature = "family")]
+        Locus::Kind(KindLocus::PccPair { pair: k }) => {
             let k1 = (k + 1) % n.max(1);
             format!("PCC of contacts {k} and {k1} is not excluded: det(tI - I_{k} I_{k1}) = {quadratic}")
         }
@@ -259,7 +272,9 @@ fn pcc_box(
         PccPolynomial::Discriminant => "the discriminant p^2 - 4q",
         PccPolynomial::Modulus => "q - 1",
     };
-    let Locus::PccRegion { kappa, gamma } = locus else { return format!("{what} of the PCC quadratic") };
+    let Locus::Kind(KindLocus::PccRegion { kappa, gamma }) = locus else {
+        return format!("{what} of the PCC quadratic");
+    };
     let [k0, k1] = kappa.as_ref().clone().map(|x| abbreviate(&x));
     let [g0, g1] = gamma.as_ref().clone().map(|x| abbreviate(&x));
     if at_corner {

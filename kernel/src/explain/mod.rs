@@ -14,6 +14,9 @@ mod refutation;
 use crate::exact::NumberError;
 use crate::model::polygon::BodyError;
 use crate::reject::{Detail, Locus, Rejection};
+#[cfg(feature = "kinds")]
+#[allow(unused_imports)] // which of the two a kind needs depends on the features
+use crate::reject::{KindDetail, KindLocus};
 use std::fmt;
 
 /// Numbers longer than this many characters are abbreviated.
@@ -61,12 +64,12 @@ impl Rejection {
 fn words(detail: &Detail, locus: &Locus) -> String {
     match detail {
         #[cfg(feature = "orbit")]
-        Detail::Orbit(f) => orbit::words(f, locus),
+        Detail::Kind(KindDetail::Orbit(f)) => orbit::words(f, locus),
         #[cfg(feature = "refutation")]
-        Detail::Refutation(f) => refutation::words(f, locus),
+        Detail::Kind(KindDetail::Refutation(f)) => refutation::words(f, locus),
         #[cfg(feature = "proof")]
-        Detail::Proof(f) => match locus {
-            Locus::Step { index, id } => format!("step {index} `{id}`: {f}"),
+        Detail::Kind(KindDetail::Proof(f)) => match locus {
+            Locus::Kind(KindLocus::Step { index, id }) => format!("step {index} `{id}`: {f}"),
             _ => f.to_string(),
         },
         _ => certificate::words(detail, locus),

@@ -2,7 +2,7 @@
 
 use super::abbreviate;
 use crate::orbit::map::Quantity;
-use crate::reject::Locus;
+use crate::reject::{KindLocus, Locus};
 use crate::rules::orbit::{Failure, MAX_PATTERN};
 
 /// The words of a failure of an orbit certificate (at a locus).
@@ -38,7 +38,7 @@ fn supported() -> String {
 
 /// "condition 1: ... fails at the centre of the sub-box y in [..] x [..] x [..]".
 fn condition(q: Quantity, wrong: bool, locus: &Locus) -> String {
-    let Locus::OrbitBox { sub_box, depth, .. } = locus else { return describe(q) };
+    let Locus::Kind(KindLocus::OrbitBox { sub_box, depth, .. }) = locus else { return describe(q) };
     let range: Vec<String> =
         sub_box.iter().map(|[lo, hi]| format!("[{}, {}]", abbreviate(lo), abbreviate(hi))).collect();
     let how = if wrong {

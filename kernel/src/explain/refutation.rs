@@ -1,7 +1,7 @@
 //! The words of the rejections of refutations.
 
 use super::abbreviate;
-use crate::reject::Locus;
+use crate::reject::{KindLocus, Locus};
 use crate::rules::refutation::Failure;
 
 /// The words of a failure of a refutation (at a locus): a step's failure names the point.
@@ -26,7 +26,7 @@ pub(super) fn words(f: &Failure, locus: &Locus) -> String {
         }
     };
     match locus {
-        Locus::Step { index, id } => format!("point {index} ({id}): {words}"),
+        Locus::Kind(KindLocus::Step { index, id }) => format!("point {index} ({id}): {words}"),
         _ => words,
     }
 }

@@ -20,7 +20,7 @@ use crate::exact::{Field, ParseLimits, to_canonical};
 use crate::model::pcc_polynomials::pcc_polynomials;
 use crate::model::polygon::Polygon;
 use crate::model::rod::Rod;
-use crate::reject::{Code, Detail, Internal, Locus, Needs, Rejection};
+use crate::reject::{Code, Detail, Internal, KindDetail, KindLocus, Locus, Needs, Rejection};
 use crate::syntax::cone::{Body, Certificate, Claim, Param};
 use crate::syntax::numbers::{in_time, number};
 
@@ -68,7 +68,7 @@ fn bounds<F: Field>(name: &str, p: &Param, limits: ParseLimits) -> Result<[F; 2]
             let lo: F = number(&format!("{path}[0]"), a, limits)?;
             let hi: F = number(&format!("{path}[1]"), b, limits)?;
             if lo > hi {
-                let detail = Detail::EmptyInterval(to_canonical(&lo), to_canonical(&hi));
+                let detail = KindDetail::EmptyInterval(to_canonical(&lo), to_canonical(&hi));
                 return Err(Rejection::at(Code::ParameterOutOfRange, path, detail));
             }
             Ok([lo, hi])
@@ -204,6 +204,6 @@ fn not_negative<F: Field>(e: NotNegative<F>, polynomial: PccPolynomial) -> Rejec
         NotNegative::At(k, g) => (text(k, k), text(g, g), true),
         NotNegative::Undecided(r) => (text(&r.kappa[0], &r.kappa[1]), text(&r.gamma[0], &r.gamma[1]), false),
     };
-    let detail = Detail::PccBox(polynomial, at_corner, MAX_PCC_BOXES);
-    Rejection::new(Code::PccNotExcluded, Locus::PccRegion { kappa, gamma }, detail)
+    let detail = KindDetail::PccBox(polynomial, at_corner, MAX_PCC_BOXES);
+    Rejection::new(Code::PccNotExcluded, KindLocus::PccRegion { kappa, gamma }, detail)
 }

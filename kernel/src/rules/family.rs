@@ -26,7 +26,7 @@ use crate::geometry::{ConvexPolygon, clip, hull};
 use crate::model::convex::{ConvexBody, ConvexBodyError, MAX_CONTACTS};
 use crate::model::linalg::{Vec3, mat_vec};
 use crate::model::pcc::PccExclusion;
-use crate::reject::{Code, Counted, Detail, Internal, Locus, Rejection};
+use crate::reject::{Code, Counted, Detail, Internal, KindDetail, KindLocus, Locus, Rejection};
 use crate::syntax::cone::Claim;
 use crate::syntax::family::{ConvexBodyText, ConvexCertificate};
 use crate::syntax::numbers::{at_most, in_time, number, total};
@@ -43,7 +43,11 @@ pub fn check<F: Field>(cert: &ConvexCertificate, limits: ParseLimits) -> Result<
     }
     let n = body.n();
     if cert.cones.len() != n {
-        return Err(Rejection::at(Code::WrongArity, "cones", Detail::ConeCount(cert.cones.len(), n, false)));
+        return Err(Rejection::at(
+            Code::WrongArity,
+            "cones",
+            KindDetail::ConeCount(cert.cones.len(), n, false),
+        ));
     }
     let mut bits = 0;
     let mut cones = Vec::with_capacity(n);
@@ -81,7 +85,7 @@ fn prelude(cert: &ConvexCertificate, limits: ParseLimits) -> Result<(), Rejectio
     cone_claim(cert.claim)?;
     let ConvexBodyText::ConvexPolygon { contacts, .. } = &cert.body;
     if contacts.len() > MAX_CONTACTS {
-        let detail = Detail::Convex(ConvexBodyError::TooManyContacts(contacts.len()));
+        let detail = KindDetail::Convex(ConvexBodyError::TooManyContacts(contacts.len()));
         return Err(Rejection::at(Code::UnsupportedBody, "body.contacts", detail));
     }
     for (i, c) in cert.cones.iter().enumerate() {
@@ -91,7 +95,7 @@ fn prelude(cert: &ConvexCertificate, limits: ParseLimits) -> Result<(), Rejectio
         return Err(Rejection::at(
             Code::WrongArity,
             "cones",
-            Detail::ConeCount(cert.cones.len(), MAX_CONTACTS, true),
+            KindDetail::ConeCount(cert.cones.len(), MAX_CONTACTS, true),
         ));
     }
     total(cert.numbers(), limits)
@@ -120,7 +124,7 @@ fn body<F: Field>(cert: &ConvexCertificate, limits: ParseLimits) -> Result<Conve
             }
             _ => (Code::UnsupportedBody, "body.contacts"),
         };
-        Rejection::at(code, path, Detail::Convex(e))
+        Rejection::at(code, path, KindDetail::Convex(e))
     })
 }
 
@@ -132,14 +136,14 @@ fn cone<F: Field>(i: usize, gens: &Generators<'_, F::Int>) -> Result<Cone<F::Int
         let detail = Detail::NotBelow(gens.written[g].0.clone());
         return Err(Rejection::new(
             Code::GeneratorNotBelow,
-            Locus::ConvexGenerator { cone: i, index: g },
+            KindLocus::ConvexGenerator { cone: i, index: g },
             detail,
         ));
     }
     let hull_idx = hull(&vectors);
     if hull_idx.len() < 3 {
         let detail = Detail::Degenerate(vectors.len(), hull_idx.len(), 3);
-        return Err(Rejection::new(Code::DegenerateCone, Locus::ConvexCone { cone: i }, detail));
+        return Err(Rejection::new(Code::DegenerateCone, KindLocus::ConvexCone { cone: i }, detail));
     }
     let polygon = ConvexPolygon::new(hull_idx.iter().map(|&g| vectors[g].clone()).collect());
     Ok(Cone { hull: hull_idx, polygon })
@@ -161,7 +165,7 @@ fn transition<F: Field>(
     let map = int_mat(&body.impact(j as i64));
     for (v, p) in piece.iter().enumerate() {
         in_time(limits, "checking effective invariance (rule K2)")?;
-        let locus = |outside| Locus::Transition { from: i, to: j, vertex: v, outside };
+        let locus = |outside| KindLocus::Transition { from: i, to: j, vertex: v, outside }.into();
         let t = Target { point: p, locus: &locus, codes: R2, n: body.n(), corner: None };
         check_image::<F>(target, &mat_vec(&map, p), &t)?;
     }
@@ -173,7 +177,7 @@ fn all_down<F: Field>(body: &ConvexBody<F>, i: usize, k: &Cone<F::Int>) -> Resul
     let map = int_mat(&body.impact(i as i64));
     for (m, g) in body.all_down_generators().iter().enumerate() {
         let g = int_vec(g);
-        let locus = |outside| Locus::ConvexAllDown { cone: i, generator: m, outside };
+        let locus = |outside| KindLocus::ConvexAllDown { cone: i, generator: m, outside }.into();
         let t = Target { point: &g, locus: &locus, codes: R3, n: body.n(), corner: None };
         check_image::<F>(k, &mat_vec(&map, &g), &t)?;
     }
@@ -193,7 +197,7 @@ fn pcc<F: Field>(body: &ConvexBody<F>, k: usize) -> Result<(), Rejection> {
             let pqd = Box::new([&quad.p, &quad.q, &quad.discriminant].map(to_canonical));
             Err(Rejection::new(
                 Code::PccNotExcluded,
-                Locus::PccPair { pair: k },
+                KindLocus::PccPair { pair: k },
                 Detail::Pcc(body.n(), pqd, why),
             ))
         }

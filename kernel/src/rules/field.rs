@@ -16,7 +16,7 @@ use super::outcome::Accepted;
 use crate::exact::{Algebraic, AlgebraicInt, CosField, Field, GENERATOR, Int, MAX_N, ParseLimits};
 use crate::geometry::Scalar;
 use crate::model::polygon::Polygon;
-use crate::reject::{Code, Detail, Needs, Rejection};
+use crate::reject::{Code, Detail, KindDetail, Needs, Rejection};
 use crate::syntax::cone::{Body, Certificate, Param};
 use crate::syntax::numbers::{in_time, number_error};
 use std::sync::Arc;
@@ -41,10 +41,10 @@ impl<F: Field> Scalar for Algebraic<F> {
 pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
     let Body::RegularPolygon { n, kappa, gamma } = &cert.body;
     let Some(field) = CosField::<F>::new(*n) else {
-        return Err(Rejection::at(Code::UnsupportedBody, "body.n", Detail::Contacts(*n, MAX_N)));
+        return Err(Rejection::at(Code::UnsupportedBody, "body.n", KindDetail::Contacts(*n, MAX_N)));
     };
     let (Param::Point(k), Param::Point(g)) = (kappa, gamma) else {
-        return Err(Rejection::at(Code::UnsupportedBody, "body", Detail::IntervalIrrational(*n)));
+        return Err(Rejection::at(Code::UnsupportedBody, "body", KindDetail::IntervalIrrational(*n)));
     };
     let written = cert.numbers().any(|t| t.contains(GENERATOR));
     if cert.version < FIELD_VERSION && written {

@@ -23,7 +23,7 @@ use crate::model::polygon::BodyError;
 use crate::orbit::constants::enclosed_maps;
 use crate::orbit::interval::{Centred, Iv};
 use crate::orbit::map::{Maps, Quantity, Stop, period};
-use crate::reject::{Code, Counted, Detail, Locus, Rejection};
+use crate::reject::{Code, Counted, Detail, KindDetail, KindLocus, Rejection};
 use crate::syntax::cone::Claim;
 use crate::syntax::numbers::{at_most, in_time, number, total};
 use crate::syntax::orbit::{OrbitBody, OrbitCertificate, OrbitSet, Triple};
@@ -76,7 +76,7 @@ pub enum Failure {
 }
 
 fn fail(code: Code, path: &str, f: Failure) -> Rejection {
-    Rejection::at(code, path, Detail::Orbit(f))
+    Rejection::at(code, path, KindDetail::Orbit(f))
 }
 
 /// Checks an orbit certificate exactly over the field `F`: rule O1, then conditions 1-3 on every
@@ -330,8 +330,8 @@ fn rejection<F: Field>(b: &SubBox<F>, quantity: Quantity, wrong: bool) -> Reject
     };
     let sub_box = Box::new(std::array::from_fn(|k| [to_canonical(&b.lo[k]), to_canonical(&b.hi[k])]));
     let (step, contact) = quantity.step_contact();
-    let locus = Locus::OrbitBox { sub_box, depth: b.depth, step, contact };
-    Rejection::new(code, locus, Detail::Orbit(Failure::Condition { quantity, wrong }))
+    let locus = KindLocus::OrbitBox { sub_box, depth: b.depth, step, contact };
+    Rejection::new(code, locus, KindDetail::Orbit(Failure::Condition { quantity, wrong }))
 }
 
 /// Conditions 1-3 on all of X by bisection: the number of sub-boxes on which every sign was

@@ -15,7 +15,7 @@
 
 use crate::exact::{Field, NumberError, OrderedField, ParseLimits, parse_canonical, to_canonical};
 use crate::model::Shape;
-use crate::reject::{Code, Counted, Detail, Locus, Rejection};
+use crate::reject::{Code, Counted, Detail, KindDetail, KindLocus, Rejection};
 use crate::syntax::cone::{Body, Claim, Param};
 use crate::syntax::numbers::{at_most, in_time, number};
 use crate::syntax::refutation::{Refutation, Step};
@@ -142,7 +142,7 @@ pub fn check<F: Field>(r: &Refutation, limits: ParseLimits) -> Result<Refuted, R
         return Err(Rejection::at(
             Code::ParameterOutOfRange,
             "body",
-            Detail::Refutation(Failure::NotAtPoint),
+            KindDetail::Refutation(Failure::NotAtPoint),
         ));
     };
     at_most("max-generators", r.points.len(), limits.max_generators, Counted::Points)?;
@@ -155,21 +155,21 @@ pub fn check<F: Field>(r: &Refutation, limits: ParseLimits) -> Result<Refuted, R
         let fail = |f: Failure| {
             Rejection::new(
                 Code::StepFailed,
-                Locus::Step { index, id: s.kind().into() },
-                Detail::Refutation(f),
+                KindLocus::Step { index, id: s.kind().into() },
+                KindDetail::Refutation(f),
             )
         };
         pts.push(point(&m, &pts, s, limits).map_err(fail)?);
     }
     let Some(last) = pts.last() else {
-        return Err(Rejection::at(Code::StepFailed, "points", Detail::Refutation(Failure::NoPoints)));
+        return Err(Rejection::at(Code::StepFailed, "points", KindDetail::Refutation(Failure::NoPoints)));
     };
     let v = dot(&m.v, last);
     if v.is_negative() || last.iter().all(|x| x.is_zero()) {
         let index = pts.len() - 1;
         let f = if v.is_negative() { Failure::LastBelow(to_canonical(&v)) } else { Failure::LastZero };
-        let locus = Locus::Step { index, id: r.points[index].kind().into() };
-        return Err(Rejection::new(Code::StepFailed, locus, Detail::Refutation(f)));
+        let locus = KindLocus::Step { index, id: r.points[index].kind().into() };
+        return Err(Rejection::new(Code::StepFailed, locus, KindDetail::Refutation(f)));
     }
     Ok(Refuted {
         claim: r.refutes,

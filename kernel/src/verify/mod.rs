@@ -12,52 +12,24 @@ use crate::reject::{Code, Detail, Rejection, TimeToRestFailure};
 use crate::rules::outcome::Accepted;
 use crate::rules::{cone, rod};
 use crate::syntax::cone::{Body, Certificate, Param};
-use crate::syntax::{Encoding, Kind, kind_of, read, schema};
+use crate::syntax::{Encoding, Kind, kind_of, schema};
 use malachite::rational::Rational;
 use num_rational::BigRational;
 
-#[cfg(feature = "family")]
-mod family;
 #[cfg(feature = "field")]
 mod field;
-#[cfg(feature = "orbit")]
-mod orbit;
-#[cfg(feature = "proof")]
-mod proof;
-#[cfg(feature = "refutation")]
-mod refutation;
+#[cfg(any(feature = "family", feature = "orbit", feature = "proof", feature = "refutation"))]
+mod kinds;
 
-#[cfg(feature = "family")]
-pub use family::{verify_convex, verify_convex_on};
 #[cfg(feature = "field")]
 pub use field::check_in_field;
-#[cfg(feature = "orbit")]
-pub use orbit::{verify_orbit, verify_orbit_on};
-#[cfg(feature = "proof")]
-pub use proof::{verify_proof, verify_proof_text};
-#[cfg(feature = "refutation")]
-pub use refutation::{verify_refutation, verify_refutation_text, verify_refutation_text_in};
+#[cfg(any(feature = "family", feature = "orbit", feature = "proof", feature = "refutation"))]
+pub use kinds::*;
 
 #[cfg(feature = "boxes")]
 use crate::rules::boxes;
-#[cfg(feature = "family")]
-use crate::rules::family as family_rules;
 #[cfg(feature = "field")]
 use crate::rules::field as field_rules;
-#[cfg(feature = "orbit")]
-use crate::rules::orbit as orbit_rules;
-#[cfg(feature = "proof")]
-use crate::rules::proof::{self as proof_rules, Checked};
-#[cfg(feature = "refutation")]
-use crate::rules::refutation::{self as refutation_rules, Refuted};
-#[cfg(feature = "family")]
-use crate::syntax::family::ConvexCertificate;
-#[cfg(feature = "orbit")]
-use crate::syntax::orbit::OrbitCertificate;
-#[cfg(feature = "proof")]
-use crate::syntax::proof::ProofFile;
-#[cfg(feature = "refutation")]
-use crate::syntax::refutation::Refutation;
 
 /// A cone certificate on one backend: the file's rules ([`cone::prelude`]), then the rules of its
 /// body: the rod, a polygon with rational or irrational cos(2 pi/n), a point or a box.
@@ -107,18 +79,9 @@ pub struct Backend {
     pub name: &'static str,
     /// Cone certificates.
     pub check: fn(&Certificate, ParseLimits) -> Result<Accepted, Rejection>,
-    /// Refutations.
-    #[cfg(feature = "refutation")]
-    pub refute: fn(&Refutation, ParseLimits) -> Result<Refuted, Rejection>,
-    /// Family certificates.
-    #[cfg(feature = "family")]
-    pub convex: fn(&ConvexCertificate, ParseLimits) -> Result<Accepted, Rejection>,
-    /// Orbit certificates.
-    #[cfg(feature = "orbit")]
-    pub orbit: fn(&OrbitCertificate, ParseLimits) -> Result<Accepted, Rejection>,
-    /// Proofs.
-    #[cfg(feature = "proof")]
-    pub proof: fn(&ProofFile, ParseLimits) -> Result<Checked, Rejection>,
+    /// The other kinds of file ([`Kinds`]).
+    #[cfg(any(feature = "family", feature = "orbit", feature = "proof", feature = "refutation"))]
+    pub kinds: Kinds,
 }
 
 /// The kernel on the backend `F`.
@@ -126,14 +89,8 @@ const fn backend<F: Field>(name: &'static str) -> Backend {
     Backend {
         name,
         check: check::<F>,
-        #[cfg(feature = "refutation")]
-        refute: refutation_rules::check::<F>,
-        #[cfg(feature = "family")]
-        convex: family_rules::check::<F>,
-        #[cfg(feature = "orbit")]
-        orbit: orbit_rules::check::<F>,
-        #[cfg(feature = "proof")]
-        proof: proof_rules::check::<F>,
+        #[cfg(any(feature = "family", feature = "orbit", feature = "proof", feature = "refutation"))]
+        kinds: Kinds::of::<F>(),
     }
 }
 
@@ -208,14 +165,11 @@ pub fn verify_text_in(text: &str, encoding: Encoding, limits: ParseLimits, backe
     match kind_of(text, encoding, Kind::Cone) {
         Err(r) => Verdict::Rejected(r),
         Ok((Kind::Cone, _)) => verdict(schema(text, encoding).map(|c| verify_on(&c, limits, backends))),
-        #[cfg(feature = "family")]
-        Ok((Kind::Family, _)) => {
-            verdict(schema(text, encoding).map(|c| verify_convex_on(&c, limits, backends)))
-        }
-        #[cfg(feature = "orbit")]
-        Ok((Kind::Orbit, _)) => {
-            verdict(schema(text, encoding).map(|c| verify_orbit_on(&c, limits, backends)))
-        }
-        Ok(_) => verdict(read::<Certificate>(text, encoding).map(|c| verify_on(&c, limits, backends))),
+        #[cfg(any(feature = "family", feature = "orbit", feature = "proof", feature = "refutation"))]
+        Ok((kind, _)) => verify_text_of(kind, text, encoding, limits, backends),
+        #[cfg(not(any(feature = "family", feature = "orbit", feature = "proof", feature = "refutation")))]
+        Ok(_) => verdict(
+            crate::syntax::read::<Certificate>(text, encoding).map(|c| verify_on(&c, limits, backends)),
+        ),
     }
 }

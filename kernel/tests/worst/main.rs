@@ -32,10 +32,10 @@ fn accepted(name: &str, text: &str) -> bool {
     }
 }
 
-/// Ignored by default: some of these files still take minutes (the box's PCC subdivision with
-/// 10,000-digit ends, field elements with several long coefficients); run with `--ignored`.
+/// Ignored by default: on the num backend the refutations still take tens of seconds
+/// (docs/measurements.md, "Heaviest files"); run with `--ignored`.
 #[test]
-#[ignore = "minutes on the 2-core machine until issue 23 §3 is finished"]
+#[ignore = "over a minute on the 2-core machine (the refutations on num-rational)"]
 fn every_heavy_file_is_within_the_default_limits_and_keeps_its_verdict() {
     let limits = ParseLimits::default();
     for f in files::files(root()) {
@@ -49,9 +49,11 @@ fn every_heavy_file_is_within_the_default_limits_and_keeps_its_verdict() {
         let longest = numbers.iter().map(|s| s.bytes().filter(u8::is_ascii_digit).count()).max().unwrap_or(0);
         assert!(longest > 1_000, "{}: the file is heavy ({longest} digits in its longest number)", f.name);
         let start = std::time::Instant::now();
-        // The rod's certificate has no slack: moved κ and γ break it (image-outside), and both
-        // backends say so; every other file keeps its verdict, accepted.
-        assert_eq!(accepted(f.name, &f.text), f.name != "rod-body", "{}", f.name);
+        // Two files have no slack: the rod's certificate with moved κ and γ (image-outside) and
+        // the n = 6 refutation with a moved body (step-failed at its step 25), and both backends
+        // say so; every other file keeps its verdict, accepted.
+        let no_slack = ["rod-body", "refutation-n6-body"].contains(&f.name);
+        assert_eq!(accepted(f.name, &f.text), !no_slack, "{}", f.name);
         eprintln!(
             "{}: {longest} digits, {total} characters of numbers, {:.2?} (both backends; not asserted)",
             f.name,

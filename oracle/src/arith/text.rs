@@ -72,6 +72,13 @@ pub fn parse_number(s: &str, field: &Arc<Field>, max_digits: usize) -> Result<Nu
     if d == 1 || !s.contains('c') {
         return parse_rational(s, max_digits).map(|x| Num::rational(field, x));
     }
+    // max-digits bounds the whole element: its coefficients' digits together, the exponents of c
+    // not counted, before any coefficient is read (docs/certificate-format.md §2, §12).
+    let coefficient_digits =
+        |t: &str| t.split('c').next().unwrap_or("").bytes().filter(u8::is_ascii_digit).count();
+    if signed_terms(s).iter().map(|(_, t)| coefficient_digits(t)).sum::<usize>() > max_digits {
+        return Err(NumberFault::TooLong);
+    }
     let mut coef = vec![Rat::zero(); d];
     for (negative, t) in signed_terms(s) {
         let (a, k) = parse_term(t, d)?;
@@ -80,9 +87,6 @@ pub fn parse_number(s: &str, field: &Arc<Field>, max_digits: usize) -> Result<Nu
     let x = Num { field: field.clone(), coef };
     if element_text(&x) != s {
         return Err(NumberFault::Bad);
-    }
-    if s.bytes().filter(u8::is_ascii_digit).count() > max_digits {
-        return Err(NumberFault::TooLong);
     }
     Ok(x)
 }

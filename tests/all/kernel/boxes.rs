@@ -7,7 +7,7 @@ use crate::common::q;
 use chatter::certify::{ClaimChoice, Request, certify};
 use chatter::exact::Q;
 use chatter::write::write;
-use chatter_kernel::certificate::{Body, Certificate, Claim, Code, Locus, Param, read};
+use chatter_kernel::certificate::{Body, Certificate, Claim, Code, KindLocus, Locus, Param, read};
 use chatter_kernel::verify::{Verdict, verify};
 
 fn boxed(n: u64, k: [&str; 2], g: [&str; 2]) -> Certificate {
@@ -145,7 +145,7 @@ fn pcc_exclusion_on_a_box_is_refused_where_the_discriminant_is_not_negative() {
     c.claim = Claim::CompleteChatterFromAllDown;
     let Verdict::Rejected(r) = verify(&c, Default::default()) else { panic!() };
     assert_eq!(r.code, Code::PccNotExcluded);
-    let Locus::PccRegion { kappa, gamma } = &r.locus else { panic!("{r}") };
+    let Locus::Kind(KindLocus::PccRegion { kappa, gamma }) = &r.locus else { panic!("{r}") };
     // The point named is one where the discriminant is >= 0, checked with the point model.
     assert_eq!(kappa[0], kappa[1]);
     // The square's PCC discriminant in closed form (docs/model.md §11.6, c_1 = 0): μ = κ/(1 + κ),

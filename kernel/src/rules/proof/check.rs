@@ -8,7 +8,7 @@ use super::model::{PMat, SymbolicModel, det};
 use super::poly::Poly;
 use crate::exact::{Field, ParseLimits, parse_canonical};
 use crate::model::linalg::{Mat3, det3};
-use crate::reject::{Code, Detail, Locus, Rejection};
+use crate::reject::{Code, KindDetail, KindLocus, Rejection};
 use crate::syntax::numbers::in_time;
 use crate::syntax::proof::{ProofBody, ProofFile, Step};
 use crate::syntax::{Kind, expect};
@@ -48,7 +48,7 @@ pub(super) struct Checker<'a, F> {
 
 /// A failure of the header at `path` (`invalid-header`).
 fn header_error(path: &str, f: Failure) -> Rejection {
-    Rejection::at(Code::InvalidHeader, path, Detail::Proof(f))
+    Rejection::at(Code::InvalidHeader, path, KindDetail::Proof(f))
 }
 
 /// M, p_model = M p_proof: invertible, with third row (0, 0, 1).
@@ -215,8 +215,9 @@ pub fn check<F: Field>(file: &ProofFile, limits: ParseLimits) -> Result<Checked,
     let mut ids = BTreeSet::new();
     for (index, s) in file.steps.iter().enumerate() {
         let id = s.id().to_string();
-        let fail =
-            |f: Failure| Rejection::new(f.code(), Locus::Step { index, id: id.clone() }, Detail::Proof(f));
+        let fail = |f: Failure| {
+            Rejection::new(f.code(), KindLocus::Step { index, id: id.clone() }, KindDetail::Proof(f))
+        };
         if !ids.insert(id.clone()) {
             return Err(fail(Failure::DuplicateId));
         }

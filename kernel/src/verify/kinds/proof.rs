@@ -1,14 +1,14 @@
 //! Proofs on both backends (feature `proof`).
 
-use super::{BOTH, Verdict, agree};
 use crate::exact::ParseLimits;
 use crate::rules::proof::Checked;
 use crate::syntax::proof::ProofFile;
 use crate::syntax::{Encoding, read};
+use crate::verify::{BOTH, Verdict, agree};
 
 /// Checks a proof on both backends.
 pub fn verify_proof(file: &ProofFile, limits: ParseLimits) -> Verdict<Checked> {
-    agree(BOTH.iter().map(|b| (b.name, (b.proof)(file, limits))))
+    agree(BOTH.iter().map(|b| (b.name, (b.kinds.proof)(file, limits))))
 }
 
 /// Reads proof text (RON) and checks it on both backends.

@@ -10,16 +10,10 @@ use crate::syntax::cone::Claim;
 use crate::syntax::strict::Offence;
 use serde::{Serialize, Serializer};
 
-#[cfg(feature = "family")]
-use crate::model::convex::shape::ConvexBodyError;
-#[cfg(feature = "boxes")]
-use crate::rules::boxes::PccPolynomial;
-#[cfg(feature = "orbit")]
-use crate::rules::orbit::Failure as OrbitFailure;
-#[cfg(feature = "proof")]
-use crate::rules::proof::Failure as ProofFailure;
-#[cfg(feature = "refutation")]
-use crate::rules::refutation::Failure as RefutationFailure;
+#[cfg(feature = "kinds")]
+mod kinds;
+#[cfg(feature = "kinds")]
+pub use kinds::{KindDetail, KindLocus};
 
 /// Declares [`Code`] with its stable kebab-case names.
 macro_rules! codes {
@@ -168,77 +162,17 @@ pub enum Locus {
     },
     /// The PCC quadratic (rule R4).
     Pcc,
-    /// Rule R4 on a box: the sub-box on which PCC exclusion fails or is not shown.
-    PccRegion {
-        /// [lo, hi] of kappa, canonical text.
-        kappa: Box<[String; 2]>,
-        /// [lo, hi] of gamma, canonical text.
-        gamma: Box<[String; 2]>,
-    },
-    /// Generator `index` of the cone K_`cone` of a family certificate (rule K1).
-    ConvexGenerator {
-        /// i of K_i.
-        cone: usize,
-        /// The index into `cones[cone]`.
-        index: usize,
-    },
-    /// The cone K_`cone` of a family certificate as a whole (rule K1).
-    ConvexCone {
-        /// i of K_i.
-        cone: usize,
-    },
-    /// The image under I_`to` of vertex `vertex` of K_`from` ∩ C_(`from`,`to`) (rule K2).
-    Transition {
-        /// i: the contact of the last impact.
-        from: usize,
-        /// j: the next contact.
-        to: usize,
-        /// The vertex of K_i ∩ C_ij, in the order the clipping produces them.
-        vertex: usize,
-        /// The part of K_j's boundary the image violates (`None` when its v is >= 0).
-        outside: Option<Boundary>,
-    },
-    /// The image under I_`cone` of generator `generator` of D (rule K3).
-    ConvexAllDown {
-        /// i of I_i and K_i.
-        cone: usize,
-        /// k of -m_{k,k+1}.
-        generator: usize,
-        /// The part of K_i's boundary the image violates (`None` when its v is >= 0).
-        outside: Option<Boundary>,
-    },
-    /// The PCC quadratic of the adjacent pair (`pair`, `pair` + 1 mod n) (rule K4).
-    PccPair {
-        /// k of the pair (k, k+1).
-        pair: usize,
-    },
-    /// Step `index` (from 0) of a proof or refutation, with its id.
-    Step {
-        /// Position in the list of steps.
-        index: usize,
-        /// The step's id.
-        id: String,
-    },
     /// A limit on the work a file may ask for, by name, e.g. `max-generators`.
     Limit {
         /// The limit's name, as in docs/certificate-format.md §2.
         name: String,
     },
-    /// A sub-box of an orbit certificate's set X, in the parameters y of X.
-    OrbitBox {
-        /// [lo, hi] of each coordinate of y, canonical text.
-        sub_box: Box<[[String; 2]; 3]>,
-        /// Bisections of X that gave the sub-box (0: all of X).
-        depth: u64,
-        /// The step of the pattern (from 0), for condition 1.
-        #[serde(skip_serializing_if = "Option::is_none")]
-        step: Option<usize>,
-        /// The contact (label at that step), for condition 1.
-        #[serde(skip_serializing_if = "Option::is_none")]
-        contact: Option<usize>,
-    },
     /// Nowhere in particular (internal errors).
     Nowhere,
+    /// A place in a file of another kind than point certificates, written as that place.
+    #[cfg(feature = "kinds")]
+    #[serde(untagged)]
+    Kind(KindLocus),
 }
 
 /// A part of the boundary of K.
@@ -275,12 +209,12 @@ pub struct Rejection {
 
 impl Rejection {
     /// A rejection with a code, a locus and its detail.
-    pub fn new(code: Code, locus: Locus, detail: Detail) -> Self {
-        Rejection { code, locus, detail: Box::new(detail) }
+    pub fn new(code: Code, locus: impl Into<Locus>, detail: impl Into<Detail>) -> Self {
+        Rejection { code, locus: locus.into(), detail: Box::new(detail.into()) }
     }
 
     /// A rejection at a field, by its path.
-    pub fn at(code: Code, path: impl Into<String>, detail: Detail) -> Self {
+    pub fn at(code: Code, path: impl Into<String>, detail: impl Into<Detail>) -> Self {
         Rejection::new(code, Locus::Field { path: path.into() }, detail)
     }
 
@@ -360,20 +294,11 @@ pub enum Detail {
     Time(String),
     /// A body of a regular polygon or rod the model rejects.
     Body(BodyError),
-    /// n beyond the regular polygons the kernel models (n, the largest n).
-    Contacts(u64, u64),
-    /// A parameter interval where cos(2 pi/n) is irrational (n).
-    IntervalIrrational(u64),
-    /// An empty parameter interval [lo, hi], lo > hi (canonical text).
-    EmptyInterval(String, String),
     /// gamma = 0 or 1 with a claim about drops (gamma, the claim, whether the body is a general
     /// convex body, Theorem 11.4, rather than a regular one).
     GammaForClaim(String, Claim, bool),
     /// A generator of the wrong length (the names of the coordinates expected, the number found).
     Arity(&'static [&'static str], usize),
-    /// A family with the wrong number of cones (found, the body's contacts or the most contacts
-    /// of a body, whether the latter).
-    ConeCount(usize, usize, bool),
     /// A generator with v >= 0, with its coordinates as written.
     NotBelow(Vec<String>),
     /// Fewer extreme rays than K's dimension (generators, distinct extreme rays, dimension).
@@ -385,24 +310,11 @@ pub enum Detail {
     Pcc(usize, Box<[String; 3]>, PccExclusion),
     /// Rule T1: the `time_to_rest_bound` B is not shown (why; B as written).
     TimeToRest(TimeToRestFailure, String),
-    /// Rule R4 on a box: a polynomial not shown negative on the sub-box of the locus (which,
-    /// whether it is >= 0 at the sub-box's corner rather than not shown within, the limit).
-    #[cfg(feature = "boxes")]
-    PccBox(PccPolynomial, bool, usize),
     /// The model contradicts itself (a bug).
     Internal(Internal),
-    /// A family certificate's body.
-    #[cfg(feature = "family")]
-    Convex(ConvexBodyError),
-    /// An orbit certificate's failure.
-    #[cfg(feature = "orbit")]
-    Orbit(OrbitFailure),
-    /// A refutation's failure.
-    #[cfg(feature = "refutation")]
-    Refutation(RefutationFailure),
-    /// A proof's failure.
-    #[cfg(feature = "proof")]
-    Proof(ProofFailure),
+    /// The exact values of a rejection of another kind of file than point certificates.
+    #[cfg(feature = "kinds")]
+    Kind(KindDetail),
 }
 
 /// Why rule T1 (docs/time-to-rest.md §2) does not show the bound B.

@@ -1,12 +1,12 @@
 //! Orbit certificates on several backends (feature `orbit`).
 
-use super::{BOTH, Backend, Verdict, agree};
 use crate::exact::ParseLimits;
 use crate::syntax::orbit::OrbitCertificate;
+use crate::verify::{BOTH, Backend, Verdict, agree};
 
 /// Runs the kernel on an orbit certificate on each backend and compares the verdicts.
 pub fn verify_orbit_on(cert: &OrbitCertificate, limits: ParseLimits, backends: &[Backend]) -> Verdict {
-    agree(backends.iter().map(|b| (b.name, (b.orbit)(cert, limits))))
+    agree(backends.iter().map(|b| (b.name, (b.kinds.orbit)(cert, limits))))
 }
 
 /// Runs the kernel on an orbit certificate on both backends.

@@ -1,14 +1,14 @@
 //! Refutations on several backends (feature `refutation`).
 
-use super::{Backend, Verdict, agree};
 use crate::exact::ParseLimits;
 use crate::rules::refutation::Refuted;
 use crate::syntax::refutation::Refutation;
 use crate::syntax::{Encoding, read};
+use crate::verify::{Backend, Verdict, agree};
 
 /// Checks a refutation on the given backends.
 pub fn verify_refutation(r: &Refutation, limits: ParseLimits, backends: &[Backend]) -> Verdict<Refuted> {
-    agree(backends.iter().map(|b| (b.name, (b.refute)(r, limits))))
+    agree(backends.iter().map(|b| (b.name, (b.kinds.refute)(r, limits))))
 }
 
 /// Reads RON refutation text and checks it on the given backends.

@@ -1,0 +1,144 @@
+//! The loci and exact values of rejections of the kinds of file beyond point certificates
+//! (boxes, number fields, families, orbits, refutations, proofs): part of [`Locus`](super::Locus)
+//! and [`Detail`](super::Detail), written as the other loci. A reviewer of point certificates
+//! does not read this file.
+
+use super::{Detail, Locus};
+use serde::Serialize;
+
+#[cfg(feature = "family")]
+use super::Boundary;
+#[cfg(feature = "family")]
+use crate::model::convex::shape::ConvexBodyError;
+#[cfg(feature = "boxes")]
+use crate::rules::boxes::PccPolynomial;
+#[cfg(feature = "orbit")]
+use crate::rules::orbit::Failure as OrbitFailure;
+#[cfg(feature = "proof")]
+use crate::rules::proof::Failure as ProofFailure;
+#[cfg(feature = "refutation")]
+use crate::rules::refutation::Failure as RefutationFailure;
+
+/// Where in a file of another kind a check failed (docs/certificate-format.md §5, "Loci").
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case", tag = "kind")]
+pub enum KindLocus {
+    /// Rule R4 on a box: the sub-box on which PCC exclusion fails or is not shown.
+    #[cfg(feature = "boxes")]
+    PccRegion {
+        /// [lo, hi] of kappa, canonical text.
+        kappa: Box<[String; 2]>,
+        /// [lo, hi] of gamma, canonical text.
+        gamma: Box<[String; 2]>,
+    },
+    /// Generator `index` of the cone K_`cone` of a family certificate (rule K1).
+    #[cfg(feature = "family")]
+    ConvexGenerator {
+        /// i of K_i.
+        cone: usize,
+        /// The index into `cones[cone]`.
+        index: usize,
+    },
+    /// The cone K_`cone` of a family certificate as a whole (rule K1).
+    #[cfg(feature = "family")]
+    ConvexCone {
+        /// i of K_i.
+        cone: usize,
+    },
+    /// The image under I_`to` of vertex `vertex` of K_`from` ∩ C_(`from`,`to`) (rule K2).
+    #[cfg(feature = "family")]
+    Transition {
+        /// i: the contact of the last impact.
+        from: usize,
+        /// j: the next contact.
+        to: usize,
+        /// The vertex of K_i ∩ C_ij, in the order the clipping produces them.
+        vertex: usize,
+        /// The part of K_j's boundary the image violates (`None` when its v is >= 0).
+        outside: Option<Boundary>,
+    },
+    /// The image under I_`cone` of generator `generator` of D (rule K3).
+    #[cfg(feature = "family")]
+    ConvexAllDown {
+        /// i of I_i and K_i.
+        cone: usize,
+        /// k of -m_{k,k+1}.
+        generator: usize,
+        /// The part of K_i's boundary the image violates (`None` when its v is >= 0).
+        outside: Option<Boundary>,
+    },
+    /// The PCC quadratic of the adjacent pair (`pair`, `pair` + 1 mod n) (rule K4).
+    #[cfg(feature = "family")]
+    PccPair {
+        /// k of the pair (k, k+1).
+        pair: usize,
+    },
+    /// Step `index` (from 0) of a proof or refutation, with its id.
+    #[cfg(any(feature = "proof", feature = "refutation"))]
+    Step {
+        /// Position in the list of steps.
+        index: usize,
+        /// The step's id.
+        id: String,
+    },
+    /// A sub-box of an orbit certificate's set X, in the parameters y of X.
+    #[cfg(feature = "orbit")]
+    OrbitBox {
+        /// [lo, hi] of each coordinate of y, canonical text.
+        sub_box: Box<[[String; 2]; 3]>,
+        /// Bisections of X that gave the sub-box (0: all of X).
+        depth: u64,
+        /// The step of the pattern (from 0), for condition 1.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        step: Option<usize>,
+        /// The contact (label at that step), for condition 1.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        contact: Option<usize>,
+    },
+}
+
+/// The exact values that explain a rejection of another kind of file.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum KindDetail {
+    /// n beyond the regular polygons the kernel models (n, the largest n).
+    #[cfg(feature = "field")]
+    Contacts(u64, u64),
+    /// A parameter interval where cos(2 pi/n) is irrational (n).
+    #[cfg(feature = "field")]
+    IntervalIrrational(u64),
+    /// An empty parameter interval [lo, hi], lo > hi (canonical text).
+    #[cfg(feature = "boxes")]
+    EmptyInterval(String, String),
+    /// A family with the wrong number of cones (found, the body's contacts or the most contacts
+    /// of a body, whether the latter).
+    #[cfg(feature = "family")]
+    ConeCount(usize, usize, bool),
+    /// Rule R4 on a box: a polynomial not shown negative on the sub-box of the locus (which,
+    /// whether it is >= 0 at the sub-box's corner rather than not shown within, the limit).
+    #[cfg(feature = "boxes")]
+    PccBox(PccPolynomial, bool, usize),
+    /// A family certificate's body.
+    #[cfg(feature = "family")]
+    Convex(ConvexBodyError),
+    /// An orbit certificate's failure.
+    #[cfg(feature = "orbit")]
+    Orbit(OrbitFailure),
+    /// A refutation's failure.
+    #[cfg(feature = "refutation")]
+    Refutation(RefutationFailure),
+    /// A proof's failure.
+    #[cfg(feature = "proof")]
+    Proof(ProofFailure),
+}
+
+impl From<KindLocus> for Locus {
+    fn from(l: KindLocus) -> Self {
+        Locus::Kind(l)
+    }
+}
+
+impl From<KindDetail> for Detail {
+    fn from(d: KindDetail) -> Self {
+        Detail::Kind(d)
+    }
+}
