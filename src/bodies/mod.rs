@@ -6,6 +6,7 @@
 pub mod convex;
 pub mod file;
 pub mod general;
+pub mod inertia;
 pub mod solids;
 
 use crate::exact::{OrderedField, Q, QExt, QField, Ring, Rounding};
