@@ -36,3 +36,55 @@ fn the_lander_file_and_the_catalogue_agree() {
     assert_eq!(&data.inertia, lander.body.inertia());
     assert_eq!(data.gamma, Some(Q::new(1, 20)));
 }
+
+fn read(text: &str) -> Result<chatter::bodies::file::BodyData, String> {
+    chatter::bodies::file::BodyFile::parse(text).and_then(|f| f.data())
+}
+
+#[test]
+fn body_files_in_json_and_with_mass_and_origin_give_the_same_planar_model() {
+    let lander = general_catalogue(&Q::new(1, 20)).unwrap().remove(3);
+    let json = r#"{"contacts": [["2.2", "0", "-1"], ["-1", "1.732", "-1"], ["-1", "-1.732", "-1"]],
+        "inertia_tensor": ["853103/937500", "0", "4/375", "21731/22500", "0", "1765967/1406250"],
+        "centre": ["1/75", "0", "-1/5"]}"#;
+    let data = read(json).unwrap();
+    assert_eq!(data.contacts, lander.body.contacts());
+    assert_eq!(&data.inertia, lander.body.inertia());
+    assert_eq!(data.tensor.as_ref(), Some(&lander.tensor));
+    assert_eq!(data.gamma, None);
+    // The same tensor given for a mass of 3 about the cylinder's centre (the origin): the
+    // parallel-axis theorem, done here by hand, I_O = I_c + |c|^2 E - c c^T.
+    let c = [Q::new(1, 75), Q::int(0), Q::new(-1, 5)];
+    let about_origin = lander.tensor.plus(&chatter::bodies::inertia::Tensor::point(&c)).scaled(&Q::int(3));
+    let six: Vec<String> = about_origin.urdf().iter().map(|x| format!("\"{x}\"")).collect();
+    let ron = format!(
+        "(contacts: [(\"2.2\", \"0\", \"-1\"), (\"-1\", \"1.732\", \"-1\"), (\"-1\", \"-1.732\", \"-1\")],
+          inertia_tensor: ({}), mass: \"3\", inertia_origin: (\"0\", \"0\", \"0\"),
+          centre: (\"1/75\", \"0\", \"-1/5\"), gamma: \"1/20\")",
+        six.join(", ")
+    );
+    let data = read(&ron).unwrap();
+    assert_eq!(&data.inertia, lander.body.inertia());
+    assert_eq!(data.gamma, Some(Q::new(1, 20)));
+}
+
+#[test]
+fn body_file_errors_name_the_problem() {
+    let base = r#"(contacts: [("1", "0", "-1"), ("0", "1", "-1"), ("-1", "-1", "-1")], "#;
+    for (rest, want) in [
+        (r#"inertia_tensor: ("1", "0", "0", "1", "0", "3"))"#, "triangle inequality"),
+        (r#"inertia_tensor: ("1", "0", "2", "1", "0", "1"))"#, "not positive definite"),
+        (r#"inertia: ("1", "0", "1"), inertia_tensor: ("1", "0", "0", "1", "0", "1"))"#, "not both"),
+        (r#"inertia: ("1", "0", "1"), mass: "2")"#, "go with inertia_tensor"),
+        (r#"inertia_tensor: ("1", "0", "0", "1", "0", "1"), mass: "0")"#, "mass: must be > 0"),
+        (r#"inertia_tensor: ("1", "0", "0", "1", "0", "1"), inertia_origin: ("0", "0", "0"))"#, "centre of mass in 3-D"),
+        (r#")"#, "missing inertia"),
+    ] {
+        let e = read(&format!("{base}{rest}")).unwrap_err();
+        assert!(e.contains(want), "{rest}: {e}");
+    }
+    let uneven = r#"(contacts: [("1", "0", "-1"), ("0", "1", "-1"), ("-1", "-1", "0")], inertia: ("1", "0", "1"))"#;
+    assert!(read(uneven).unwrap_err().contains("one horizontal plane"));
+    let mixed = r#"(contacts: [("1", "0", "-1"), ("0", "1"), ("-1", "-1", "-1")], inertia: ("1", "0", "1"))"#;
+    assert!(read(mixed).unwrap_err().contains("every contact or for none"));
+}
