@@ -80,7 +80,8 @@ impl Default for Env {
     about = "Exact certificates that a rigid body dropped flat onto a floor never separates from it (complete chatter: docs/time-to-rest.md)",
     long_about = "Exact certificates about a rigid body dropped flat onto a floor chattering to rest by complete \
 chatter (CC: infinitely many impacts in finite time). Cone certificates prove that the body never \
-separates and its impacts never stop (v <= 0 for ever, PCC excluded where claimed); that the impacts \
+separates and its impacts never stop (v <= 0 for ever, PCC excluded where claimed; in the model, \
+impacts happen one contact at a time: simultaneous impacts are outside it); that the impacts \
 accumulate at a finite time is proved only by orbit certificates (docs/time-to-rest.md).\n\n\
 A floating-point finder proposes a polyhedral cone of velocities, an exactifier turns it into \
 rationals, and a small trusted kernel re-checks it with exact arithmetic on two independent bignum \
