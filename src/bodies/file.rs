@@ -85,14 +85,19 @@ impl BodyFile {
         if text.trim_start().starts_with('{') {
             return serde_json::from_str(text).map_err(|e| format!("not a body file (JSON): {e}"));
         }
-        let options = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
+        let options =
+            ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
         options.from_str(text).map_err(|e| format!("not a body file: {e}"))
     }
 
     /// The contacts read exactly (x, y), and their common z if they have one.
     fn contacts(&self) -> Result<(Vec<Vec2<Q>>, Option<Q>), String> {
-        let read: Vec<(Vec2<Q>, Option<Q>)> =
-            self.contacts.iter().enumerate().map(|(k, p)| point(&format!("contact {k}"), p)).collect::<Result<_, _>>()?;
+        let read: Vec<(Vec2<Q>, Option<Q>)> = self
+            .contacts
+            .iter()
+            .enumerate()
+            .map(|(k, p)| point(&format!("contact {k}"), p))
+            .collect::<Result<_, _>>()?;
         let zs: Vec<&Q> = read.iter().filter_map(|(_, z)| z.as_ref()).collect();
         if !zs.is_empty() && zs.len() != read.len() {
             return Err("contacts: give z for every contact or for none".into());
@@ -149,8 +154,12 @@ impl BodyFile {
         let centre3 = centre_z.map(|z| [centre[0].clone(), centre[1].clone(), z]);
         let tensor = self.tensor(&centre3)?;
         let inertia = match (&self.inertia, &tensor) {
-            (Some(_), Some(_)) => return Err("give inertia (J_xx, J_xy, J_yy) or inertia_tensor, not both".into()),
-            (None, None) => return Err("missing inertia (J_xx, J_xy, J_yy) or inertia_tensor (six numbers)".into()),
+            (Some(_), Some(_)) => {
+                return Err("give inertia (J_xx, J_xy, J_yy) or inertia_tensor, not both".into());
+            }
+            (None, None) => {
+                return Err("missing inertia (J_xx, J_xy, J_yy) or inertia_tensor (six numbers)".into());
+            }
             (Some((a, b, c)), None) => {
                 let (jxx, jxy, jyy) = (num("inertia", a)?, num("inertia", b)?, num("inertia", c)?);
                 [[jxx, jxy.clone()], [jxy, jyy]]

@@ -30,11 +30,7 @@ fn v3(x: Q, y: Q, z: Q) -> Vec3 {
 
 /// The planar model of a body assembled from `parts` resting on `feet` (points in the parts'
 /// frame, counter-clockwise, at one height): contacts about the centre of mass and J_eff.
-fn from_parts(
-    parts: &[Part],
-    feet: &[Vec3],
-    gamma: Q,
-) -> Result<(ConvexBody<Q>, Tensor), ConvexBodyError> {
+fn from_parts(parts: &[Part], feet: &[Vec3], gamma: Q) -> Result<(ConvexBody<Q>, Tensor), ConvexBodyError> {
     let a = assemble(parts).map_err(|_| ConvexBodyError::InertiaNotPositiveDefinite)?;
     let j = a.tensor.effective().ok_or(ConvexBodyError::InertiaNotPositiveDefinite)?;
     let contacts = feet.iter().map(|f| [&f[0] - &a.centre[0], &f[1] - &a.centre[1]]).collect();

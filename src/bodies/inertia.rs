@@ -155,7 +155,8 @@ impl Tensor {
         let s = Tensor::diagonal(half_trace.clone(), half_trace.clone(), half_trace).map2(self, |a, b| a - b);
         let s = &s.0;
         let axes = ["x", "y", "z"];
-        let mut minors: Vec<(String, Q)> = (0..3).map(|i| (format!("S_{0}{0}", axes[i]), s[i][i].clone())).collect();
+        let mut minors: Vec<(String, Q)> =
+            (0..3).map(|i| (format!("S_{0}{0}", axes[i]), s[i][i].clone())).collect();
         for (i, j) in [(0, 1), (0, 2), (1, 2)] {
             let d = det2(&s[i][i], &s[i][j], &s[j][i], &s[j][j]);
             minors.push((format!("det S[{}{}]", axes[i], axes[j]), d));

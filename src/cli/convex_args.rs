@@ -7,8 +7,9 @@
 
 use crate::bodies::convex::{polygon_plate, rectangle_plate, uniform_box};
 use crate::bodies::file::{BodyFile, effective_inertia};
-use crate::bodies::inertia::Tensor;
 use crate::bodies::general::{GeneralEntry, general_catalogue};
+use crate::bodies::inertia::Tensor;
+use crate::bodies::urdf;
 use crate::exact::{Q, Ring, parse_user_number};
 use chatter_kernel::model::{ConvexBody, ConvexBodyError, Mat2, Vec2};
 use clap::Args;
@@ -43,6 +44,11 @@ pub struct ConvexArgs {
     /// mass, inertia_origin, centre and gamma; --gamma overrides the file's gamma).
     #[arg(long, value_name = "NAME|FILE", conflicts_with_all = ["n", "kappa"])]
     pub body: Option<String>,
+    /// With --body FILE.urdf: the contacts, fixed joints of the body link (or their child links)
+    /// counter-clockwise, or PREFIX* for every such joint whose name starts with PREFIX, ordered
+    /// counter-clockwise (docs/bodies.md "URDF").
+    #[arg(long, value_name = "NAME,NAME,...|PREFIX*", requires = "body")]
+    pub contacts: Option<String>,
 }
 
 /// The general catalogue's body named `name` (exactly, ignoring case), with restitution `gamma`.
@@ -135,6 +141,19 @@ fn flags_given(a: &ConvexArgs) -> Vec<&'static str> {
 }
 
 impl ConvexArgs {
+    /// A body file's text read as URDF (with --contacts) or RON/JSON.
+    fn body_file(&self, text: &str) -> Result<BodyFile, String> {
+        let names: Vec<String> =
+            self.contacts.as_deref().map(|c| c.split(',').map(str::to_string).collect()).unwrap_or_default();
+        if urdf::is_urdf(text) {
+            return urdf::read(text, &names);
+        }
+        if self.contacts.is_some() {
+            return Err("--contacts is for URDF files: a RON or JSON body file lists its contacts".into());
+        }
+        BodyFile::parse(text)
+    }
+
     /// Whether a general body was asked for.
     pub fn given(&self) -> bool {
         !flags_given(self).is_empty() || self.plate || self.inertia.is_some() || self.centre.is_some()
@@ -179,9 +198,10 @@ impl ConvexArgs {
                     let description = format!("uniform plate of a polygon with {} corners", pts.len());
                     Ok(Some(GeneralBody { body, description }))
                 }
-                (false, None) => Err(
-                    "--polygon needs --plate or --inertia JXX,JXY,JYY (or IXX,IXY,IXZ,IYY,IYZ,IZZ)".into(),
-                ),
+                (false, None) => {
+                    Err("--polygon needs --plate or --inertia JXX,JXY,JYY (or IXX,IXY,IXZ,IYY,IYZ,IZZ)"
+                        .into())
+                }
                 (false, Some(j)) => {
                     let (inertia, how) = inertia(j)?;
                     let c = match &self.centre {
@@ -198,13 +218,16 @@ impl ConvexArgs {
         }
         if let Some(value) = &self.body {
             if let Some(entry) = general_entry(value, gamma)? {
+                if self.contacts.is_some() {
+                    return Err("--contacts is for URDF files, not for the catalogue's bodies".into());
+                }
                 let description = format!("{} (general catalogue)", entry.name);
                 return Ok(Some(GeneralBody { body: entry.body, description }));
             }
             let path = Path::new(value);
             let flag = format!("--body {}", path.display());
             let text = std::fs::read_to_string(path).map_err(|e| format!("{flag}: cannot read: {e}"))?;
-            let data = BodyFile::parse(&text).and_then(|f| f.data()).map_err(|e| format!("{flag}: {e}"))?;
+            let data = self.body_file(&text).and_then(|f| f.data()).map_err(|e| format!("{flag}: {e}"))?;
             let gamma = match data.gamma {
                 Some(own) if !gamma_given => own,
                 _ => g(),

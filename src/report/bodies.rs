@@ -241,7 +241,10 @@ impl GeneralBodyRow {
         vec![
             format!("{} (general body, {} contacts; gamma is not a property of the body)", self.name, self.n),
             format!("  contacts (about the centre of mass, counter-clockwise): {}", pts.join(" ")),
-            format!("  inertia tensor (I_xx, I_xy, I_xz, I_yy, I_yz, I_zz) = ({}) per unit mass", t.join(", ")),
+            format!(
+                "  inertia tensor (I_xx, I_xy, I_xz, I_yy, I_yz, I_zz) = ({}) per unit mass",
+                t.join(", ")
+            ),
             format!(
                 "  J = J_eff = [[{}, {}], [{}, {}]] per unit mass",
                 j[0].exact, j[1].exact, j[1].exact, j[2].exact

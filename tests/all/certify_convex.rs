@@ -237,18 +237,6 @@ fn largest_gamma_of_a_rectangle_is_the_square_plates() {
 }
 
 #[test]
-fn certify_with_a_body_file_uses_the_gamma_of_the_command_line() {
-    // Regression (issue 25): `certify --body FILE --gamma G` used the file's gamma (1/20).
-    let d = tempfile::tempdir().unwrap();
-    let lander = root().join("certificates/bodies/lander.ron");
-    let o = chatter(&["certify", "--body", lander.to_str().unwrap(), "--gamma", "1/100"], d.path());
-    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
-    assert!(text(&o.stdout).contains("gamma=1/100 claim=CcOrPccFromAllDown"), "{}", text(&o.stdout));
-    let o = chatter(&["certify", "--body", lander.to_str().unwrap()], d.path());
-    assert!(text(&o.stdout).contains("gamma=1/20 claim=CompleteChatterFromAllDown"), "{}", text(&o.stdout));
-}
-
-#[test]
 fn a_full_inertia_tensor_on_the_command_line_is_reduced_to_j_eff() {
     let d = tempfile::tempdir().unwrap();
     let square = "1,0 0,1 -1,0 0,-1";

@@ -84,10 +84,7 @@ fn impact_3d(inertia: &Tensor, s: &State, r: &Vec3, gamma: &Q) -> State {
     a[6][4] = -&r[0];
     b[6] = -(&(&one + gamma) * &normal_velocity(s, r));
     let x = solve(a, b);
-    State {
-        v: std::array::from_fn(|i| &s.v[i] + &x[i]),
-        w: std::array::from_fn(|i| &s.w[i] + &x[3 + i]),
-    }
+    State { v: std::array::from_fn(|i| &s.v[i] + &x[i]), w: std::array::from_fn(|i| &s.w[i] + &x[3 + i]) }
 }
 
 /// A random physical tensor with products of inertia: point masses at random positions, and
@@ -102,7 +99,8 @@ fn random_body(g: &mut Lcg) -> (Tensor, Vec<Vec3>) {
     let a = assemble(&parts).expect("positive masses");
     let depth = -&Q::new(1 + (g.next() % 20) as i64, 10);
     let square = [(2, 0), (0, 2), (-2, 0), (0, -2)];
-    let contacts = square.iter().map(|&(x, y)| [&Q::int(x) + &g.q(1, 4), &Q::int(y) + &g.q(1, 4), depth.clone()]);
+    let contacts =
+        square.iter().map(|&(x, y)| [&Q::int(x) + &g.q(1, 4), &Q::int(y) + &g.q(1, 4), depth.clone()]);
     (a.tensor, contacts.collect())
 }
 
@@ -126,8 +124,9 @@ fn agree(g: &mut Lcg, tensor: &Tensor, contacts: &[Vec3], j: Mat2<Q>, impacts: u
         s = impact_3d(tensor, &s, &contacts[k], &gamma);
         p = mat_vec(&body.impact(k as i64), &p);
         let full: Vec<Q> = contacts.iter().map(|r| normal_velocity(&s, r)).collect();
-        let flat: Vec<Q> =
-            (0..contacts.len()).map(|c| chatter_kernel::model::linalg::dot(body.covector(c as i64), &p)).collect();
+        let flat: Vec<Q> = (0..contacts.len())
+            .map(|c| chatter_kernel::model::linalg::dot(body.covector(c as i64), &p))
+            .collect();
         same &= full == flat && p == [s.w[0].clone(), s.w[1].clone(), s.v[2].clone()];
     }
     same
@@ -186,7 +185,10 @@ fn tensor_checks_are_exact_and_name_the_failure() {
     assert!(matches!(d(1, 0, 1).check(), Err(TensorError::NotPositiveDefinite { order: 2, .. })));
     let six = |v: [i64; 6]| Tensor::from_urdf(&v.map(Q::int));
     // ixy^2 > ixx iyy: not positive definite at order 2.
-    assert!(matches!(six([1, 2, 0, 1, 0, 1]).check(), Err(TensorError::NotPositiveDefinite { order: 2, .. })));
+    assert!(matches!(
+        six([1, 2, 0, 1, 0, 1]).check(),
+        Err(TensorError::NotPositiveDefinite { order: 2, .. })
+    ));
     let e = six([2, 0, 2, 2, 0, 2]).check().unwrap_err();
     assert!(matches!(e, TensorError::NotPositiveDefinite { order: 3, .. }), "{e}");
     assert!(e.to_string().contains("not positive definite"), "{e}");
@@ -197,8 +199,9 @@ fn tensor_checks_are_exact_and_name_the_failure() {
 fn the_parallel_axis_theorem_moves_a_tensor_to_the_centre_of_mass() {
     let mut g = Lcg(28);
     for _ in 0..10 {
-        let parts: Vec<Part> =
-            (0..4).map(|_| Part::point(Q::new(1 + (g.next() % 5) as i64, 3), [g.q(2, 5), g.q(2, 5), g.q(2, 5)])).collect();
+        let parts: Vec<Part> = (0..4)
+            .map(|_| Part::point(Q::new(1 + (g.next() % 5) as i64, 3), [g.q(2, 5), g.q(2, 5), g.q(2, 5)]))
+            .collect();
         let a = assemble(&parts).unwrap();
         let p: Vec3 = [g.q(3, 2), g.q(3, 2), g.q(3, 2)];
         // The tensor about p, summed directly from the parts.
@@ -223,7 +226,10 @@ fn the_catalogue_is_built_from_its_3d_geometry() {
     // The symmetric table has no products: its J is the horizontal block (74263/750000 and
     // 141263/750000 of the derivation written out by hand before the 3-D rebuild).
     let table = &all[2];
-    assert_eq!(table.body.inertia(), &[[Q::new(74263, 750000), Q::int(0)], [Q::int(0), Q::new(141263, 750000)]]);
+    assert_eq!(
+        table.body.inertia(),
+        &[[Q::new(74263, 750000), Q::int(0)], [Q::int(0), Q::new(141263, 750000)]]
+    );
     let (parts, feet) = table_parts();
     assert_eq!(assemble(&parts).unwrap().centre[2], Q::new(83, 125));
     assert!(feet.iter().all(|f| f[2].is_zero()));
