@@ -35,14 +35,13 @@ fn child<'a, 'i>(n: Node<'a, 'i>, tag: &str) -> Option<Node<'a, 'i>> {
 /// An `<origin xyz=...>` (default 0 0 0), with `rpy` refused unless all zero when `no_rpy`.
 fn origin(n: Option<Node>, what: &str, no_rpy: bool) -> Result<[Q; 3], String> {
     let Some(o) = n else { return Ok([Q::int(0), Q::int(0), Q::int(0)]) };
-    if no_rpy {
-        if let Some(rpy) = o.attribute("rpy") {
-            if numbers(&format!("{what} rpy"), rpy, 3)?.iter().any(|x| !x.is_zero()) {
-                return Err(format!(
-                    "{what}: a rotated inertial frame (rpy != 0) is not supported: give the tensor in the link's frame"
-                ));
-            }
-        }
+    let rpy = if no_rpy { o.attribute("rpy") } else { None };
+    if let Some(rpy) = rpy
+        && numbers(&format!("{what} rpy"), rpy, 3)?.iter().any(|x| !x.is_zero())
+    {
+        return Err(format!(
+            "{what}: a rotated inertial frame (rpy != 0) is not supported: give the tensor in the link's frame"
+        ));
     }
     let v = numbers(&format!("{what} xyz"), o.attribute("xyz").unwrap_or("0 0 0"), 3)?;
     Ok([v[0].clone(), v[1].clone(), v[2].clone()])

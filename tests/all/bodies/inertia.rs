@@ -37,9 +37,9 @@ fn solve(mut a: Vec<Vec<Q>>, mut b: Vec<Q>) -> Vec<Q> {
                 continue;
             }
             let f = &a[r][col] / &a[col][col];
-            for c in col..n {
-                let d = &f * &a[col][c];
-                a[r][c] = &a[r][c] - &d;
+            let pivot = a[col].clone();
+            for (x, p) in a[r].iter_mut().zip(&pivot).skip(col) {
+                *x = &*x - &(&f * p);
             }
             let d = &f * &b[col];
             b[r] = &b[r] - &d;
@@ -66,8 +66,8 @@ fn impact_3d(inertia: &Tensor, s: &State, r: &Vec3, gamma: &Q) -> State {
     let (z, one) = (Q::int(0), Q::int(1));
     let mut a = vec![vec![z.clone(); 7]; 7];
     let mut b = vec![z.clone(); 7];
-    for i in 0..3 {
-        a[i][i] = one.clone();
+    for (i, row) in a.iter_mut().enumerate().take(3) {
+        row[i] = one.clone();
     }
     a[2][6] = -&one;
     // r × e_z = (r_y, -r_x, 0).
