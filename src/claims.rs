@@ -19,12 +19,14 @@ pub fn proves(name: &str) -> Option<&'static str> {
             "K is effectively invariant (v <= 0 on K, S_j(K ∩ C_j) ⊆ K); by itself nothing about a drop"
         }
         "CcOrPccFromAllDown" => {
-            "every drop with all contacts moving down keeps v <= 0 for ever: it never separates (no ICC) \
+            "every drop with all contacts moving down (impacts one contact at a time: a drop reaching a \
+simultaneous impact leaves the model) keeps v <= 0 for ever: it never separates (no ICC) \
 and its impacts never stop; PCC not excluded; finite accumulation time: not derived by this \
 certificate (docs/time-to-rest.md)"
         }
         "CompleteChatterFromAllDown" => {
-            "every drop with all contacts moving down keeps v <= 0 for ever: it never separates (no ICC) \
+            "every drop with all contacts moving down (impacts one contact at a time: a drop reaching a \
+simultaneous impact leaves the model) keeps v <= 0 for ever: it never separates (no ICC) \
 and its impacts never stop; PCC excluded (the paper's Lemma on PCC); finite accumulation time: \
 not derived by this certificate (docs/time-to-rest.md)"
         }
@@ -39,7 +41,8 @@ T-bar, docs/orbit-certificates.md §4); not: every drop"
 
 /// What a rod point certificate with a claim about drops and a kernel-checked
 /// `time_to_rest_bound` B proves (rule T1, docs/time-to-rest.md §2).
-pub const WITH_TIME_TO_REST_BOUND: &str = "every drop with both ends moving down keeps v <= 0 for ever and its impacts \
+pub const WITH_TIME_TO_REST_BOUND: &str = "every drop with both ends moving down (one end landing at a \
+time: a drop reaching a simultaneous impact leaves the model) keeps v <= 0 for ever and its impacts \
 accumulate at a finite time T <= B h/|v| (B = time_to_rest_bound, rule T1; h, v: the centre's height and velocity \
 just before the first impact; docs/time-to-rest.md §2)";
 

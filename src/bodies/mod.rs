@@ -6,7 +6,9 @@
 pub mod convex;
 pub mod file;
 pub mod general;
+pub mod inertia;
 pub mod solids;
+pub mod urdf;
 
 use crate::exact::{OrderedField, Q, QExt, QField, Ring, Rounding};
 use crate::spectral::criteria::{Family, Profile, Sup, cc_profile, goyal_threshold, pcc_profile};

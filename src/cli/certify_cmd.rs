@@ -16,7 +16,8 @@ pub enum ClaimArg {
     /// Conditions 1-2: K in v <= 0 and S_j(K ∩ C_j) ⊆ K.
     EffectivelyInvariant,
     /// Also every all-down drop lands in K after its first impact: v <= 0 for ever, no ICC
-    /// (finite accumulation time not derived: docs/time-to-rest.md).
+    /// (impacts one contact at a time: simultaneous impacts are outside the model; finite
+    /// accumulation time not derived: docs/time-to-rest.md).
     CcOrPccFromAllDown,
     /// Also PCC excluded (the name is the file format's; finite accumulation time not derived).
     CompleteChatterFromAllDown,

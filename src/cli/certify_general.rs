@@ -21,11 +21,11 @@ struct Validated {
 }
 
 fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
-    if a.body.gamma.contains(':') {
+    if a.body.gamma_text().contains(':') {
         return Err("--gamma: intervals (box certificates) are for regular polygons; give one number".into());
     }
-    let gamma = parse_user_number(&a.body.gamma).map_err(|e| format!("--gamma: {e}"))?;
-    let Some(GeneralBody { body, description }) = a.general.parse(&gamma)? else {
+    let gamma = parse_user_number(a.body.gamma_text()).map_err(|e| format!("--gamma: {e}"))?;
+    let Some(GeneralBody { body, description }) = a.general.parse(&gamma, a.body.gamma.is_some())? else {
         return Err("no general body given (--rectangle, --box, --polygon or --body)".into());
     };
     if a.max_vertices < 3 {

@@ -55,7 +55,7 @@ fn general(a: &ClassifyArgs, gamma: &Q) -> Result<Option<ClassifyReport>, String
     if gamma.is_negative() || *gamma > Q::int(1) {
         return Err(format!("--gamma: {gamma} is not accepted: gamma must lie in [0, 1]"));
     }
-    match a.general.parse(gamma)? {
+    match a.general.parse(gamma, a.body.gamma.is_some())? {
         Some(g) => classify_general(&g.description, &g.body, a.digits).map(Some),
         None => Ok(None),
     }

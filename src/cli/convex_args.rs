@@ -1,14 +1,17 @@
 //! The general-body options of `simulate` and `classify` (docs/model.md §11, docs/bodies.md):
 //! `--rectangle A,B`, `--box A,B,C`, `--polygon "x0,y0 x1,y1 ..."` with `--plate` or with
-//! `--inertia Jxx,Jxy,Jyy` (and `--centre X,Y`), and `--body FILE`. The raw strings are read
+//! `--inertia Jxx,Jxy,Jyy` or the full tensor `--inertia Ixx,Ixy,Ixz,Iyy,Iyz,Izz` (then the
+//! planar model uses J_eff, docs/model.md §11.1) (and `--centre X,Y`), and `--body FILE`. The raw strings are read
 //! exactly here; the body itself is validated by the kernel ([`ConvexBody::new`]), whose typed
 //! errors become messages naming the option.
 
 use crate::bodies::convex::{polygon_plate, rectangle_plate, uniform_box};
-use crate::bodies::file::BodyFile;
+use crate::bodies::file::{BodyFile, effective_inertia};
 use crate::bodies::general::{GeneralEntry, general_catalogue};
+use crate::bodies::inertia::Tensor;
+use crate::bodies::urdf;
 use crate::exact::{Q, Ring, parse_user_number};
-use chatter_kernel::model::{ConvexBody, ConvexBodyError, Vec2};
+use chatter_kernel::model::{ConvexBody, ConvexBodyError, Mat2, Vec2};
 use clap::Args;
 use std::path::Path;
 
@@ -27,16 +30,25 @@ pub struct ConvexArgs {
     /// With --polygon: the uniform flat plate of that polygon (shifted to its centroid).
     #[arg(long)]
     pub plate: bool,
-    /// With --polygon: the horizontal inertia tensor per unit mass about the centre of mass.
-    #[arg(long, value_name = "JXX,JXY,JYY", allow_hyphen_values = true)]
+    /// With --polygon: the inertia per unit mass about the centre of mass, either its horizontal
+    /// block JXX,JXY,JYY or the full tensor IXX,IXY,IXZ,IYY,IYZ,IZZ (URDF's order; checked
+    /// positive definite with principal moments obeying the triangle inequalities; the model uses
+    /// J_eff = J - b b^T / IZZ, b = (IXZ, IYZ), exact at first order, docs/model.md §11.1).
+    #[arg(long, value_name = "JXX,JXY,JYY|IXX,IXY,IXZ,IYY,IYZ,IZZ", allow_hyphen_values = true)]
     pub inertia: Option<String>,
     /// With --polygon --inertia: the centre of mass's projection in the polygon's frame (default 0,0).
     #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
     pub centre: Option<String>,
     /// A general body of the catalogue (phone, brick, table, lander; `chatter bodies`) or a body
-    /// file (RON, docs/bodies.md: contacts, inertia, optional centre and gamma).
+    /// file (RON or JSON, docs/bodies.md: contacts, inertia or the full inertia_tensor, optional
+    /// mass, inertia_origin, centre and gamma; --gamma overrides the file's gamma).
     #[arg(long, value_name = "NAME|FILE", conflicts_with_all = ["n", "kappa"])]
     pub body: Option<String>,
+    /// With --body FILE.urdf: the contacts, fixed joints of the body link (or their child links)
+    /// counter-clockwise, or PREFIX* for every such joint whose name starts with PREFIX, ordered
+    /// counter-clockwise (docs/bodies.md "URDF").
+    #[arg(long, value_name = "NAME,NAME,...|PREFIX*", requires = "body")]
+    pub contacts: Option<String>,
 }
 
 /// The general catalogue's body named `name` (exactly, ignoring case), with restitution `gamma`.
@@ -62,14 +74,31 @@ pub struct GeneralBody {
 }
 
 fn numbers(flag: &str, s: &str, count: usize) -> Result<Vec<Q>, String> {
-    let v: Vec<Q> = s
-        .split(',')
-        .map(|x| parse_user_number(x).map_err(|e| format!("{flag}: {e}")))
-        .collect::<Result<_, _>>()?;
+    let v = all_numbers(flag, s)?;
     if v.len() != count {
         return Err(format!("{flag}: expected {count} comma-separated numbers, found {}", v.len()));
     }
     Ok(v)
+}
+
+fn all_numbers(flag: &str, s: &str) -> Result<Vec<Q>, String> {
+    s.split(',').map(|x| parse_user_number(x).map_err(|e| format!("{flag}: {e}"))).collect()
+}
+
+/// `--inertia`: three numbers (J) or six (the full tensor in URDF's order, reduced to J_eff).
+fn inertia(s: &str) -> Result<(Mat2<Q>, &'static str), String> {
+    let v = all_numbers("--inertia", s)?;
+    match v.as_slice() {
+        [a, b, c] => Ok(([[a.clone(), b.clone()], [b.clone(), c.clone()]], "given inertia")),
+        [_, _, _, _, _, _] => {
+            let t = Tensor::from_urdf(&std::array::from_fn(|k| v[k].clone()));
+            Ok((effective_inertia("--inertia", &t)?, "given inertia tensor, J_eff"))
+        }
+        _ => Err(format!(
+            "--inertia: expected 3 numbers (JXX,JXY,JYY) or 6 (IXX,IXY,IXZ,IYY,IYZ,IZZ), found {}",
+            v.len()
+        )),
+    }
 }
 
 fn positive(flag: &str, v: &[Q]) -> Result<(), String> {
@@ -112,14 +141,28 @@ fn flags_given(a: &ConvexArgs) -> Vec<&'static str> {
 }
 
 impl ConvexArgs {
+    /// A body file's text read as URDF (with --contacts) or RON/JSON.
+    fn body_file(&self, text: &str) -> Result<BodyFile, String> {
+        let names: Vec<String> =
+            self.contacts.as_deref().map(|c| c.split(',').map(str::to_string).collect()).unwrap_or_default();
+        if urdf::is_urdf(text) {
+            return urdf::read(text, &names);
+        }
+        if self.contacts.is_some() {
+            return Err("--contacts is for URDF files: a RON or JSON body file lists its contacts".into());
+        }
+        BodyFile::parse(text)
+    }
+
     /// Whether a general body was asked for.
     pub fn given(&self) -> bool {
         !flags_given(self).is_empty() || self.plate || self.inertia.is_some() || self.centre.is_some()
     }
 
-    /// The general body, if one was asked for, with restitution `gamma` (a body file's own gamma
-    /// wins). Errors are messages for exit status 2.
-    pub fn parse(&self, gamma: &Q) -> Result<Option<GeneralBody>, String> {
+    /// The general body, if one was asked for, with restitution `gamma`; a body file's own gamma
+    /// is used instead unless `gamma_given` (--gamma was on the command line). Errors are
+    /// messages for exit status 2.
+    pub fn parse(&self, gamma: &Q, gamma_given: bool) -> Result<Option<GeneralBody>, String> {
         let given = flags_given(self);
         if given.len() > 1 {
             return Err(format!("{} describe different bodies: give one", given.join(" and ")));
@@ -155,35 +198,44 @@ impl ConvexArgs {
                     let description = format!("uniform plate of a polygon with {} corners", pts.len());
                     Ok(Some(GeneralBody { body, description }))
                 }
-                (false, None) => Err("--polygon needs --plate or --inertia JXX,JXY,JYY".into()),
+                (false, None) => {
+                    Err("--polygon needs --plate or --inertia JXX,JXY,JYY (or IXX,IXY,IXZ,IYY,IYZ,IZZ)"
+                        .into())
+                }
                 (false, Some(j)) => {
-                    let j = numbers("--inertia", j, 3)?;
+                    let (inertia, how) = inertia(j)?;
                     let c = match &self.centre {
                         None => vec![Q::int(0), Q::int(0)],
                         Some(c) => numbers("--centre", c, 2)?,
                     };
                     let pts = pts.into_iter().map(|p| [&p[0] - &c[0], &p[1] - &c[1]]).collect();
-                    let inertia = [[j[0].clone(), j[1].clone()], [j[1].clone(), j[2].clone()]];
                     let body = ConvexBody::new(pts, inertia, g())
                         .map_err(|e| body_error("--polygon/--inertia", e))?;
-                    let description = format!("polygon with {} contacts, given inertia", body.n());
+                    let description = format!("polygon with {} contacts, {how}", body.n());
                     Ok(Some(GeneralBody { body, description }))
                 }
             };
         }
         if let Some(value) = &self.body {
             if let Some(entry) = general_entry(value, gamma)? {
+                if self.contacts.is_some() {
+                    return Err("--contacts is for URDF files, not for the catalogue's bodies".into());
+                }
                 let description = format!("{} (general catalogue)", entry.name);
                 return Ok(Some(GeneralBody { body: entry.body, description }));
             }
             let path = Path::new(value);
             let flag = format!("--body {}", path.display());
             let text = std::fs::read_to_string(path).map_err(|e| format!("{flag}: cannot read: {e}"))?;
-            let data = BodyFile::parse(&text).and_then(|f| f.data()).map_err(|e| format!("{flag}: {e}"))?;
-            let gamma = data.gamma.unwrap_or_else(g);
+            let data = self.body_file(&text).and_then(|f| f.data()).map_err(|e| format!("{flag}: {e}"))?;
+            let gamma = match data.gamma {
+                Some(own) if !gamma_given => own,
+                _ => g(),
+            };
             let body =
                 ConvexBody::new(data.contacts, data.inertia, gamma).map_err(|e| body_error(&flag, e))?;
-            let description = format!("body file {} ({} contacts)", path.display(), body.n());
+            let tensor = if data.tensor.is_some() { ", inertia tensor, J_eff" } else { "" };
+            let description = format!("body file {} ({} contacts{tensor})", path.display(), body.n());
             return Ok(Some(GeneralBody { body, description }));
         }
         Ok(None)

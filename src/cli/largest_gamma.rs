@@ -37,7 +37,7 @@ type Simulation = Box<dyn Fn(&Q) -> Result<Model, String>>;
 
 fn general(a: &CertifyArgs, env: &Env) -> Result<(BodyInfo, Pipeline, Simulation), String> {
     let g0 = default_interval().0;
-    let Some(gb) = a.general.parse(&g0)? else { return Err("no general body given".into()) };
+    let Some(gb) = a.general.parse(&g0, true)? else { return Err("no general body given".into()) };
     let info = BodyInfo {
         description: gb.description.clone(),
         n: gb.body.n() as u64,
@@ -65,7 +65,7 @@ fn regular(a: &CertifyArgs, env: &Env) -> Result<(BodyInfo, Pipeline, Simulation
             "--largest-gamma takes a regular body by --n and a rational --kappa, or a general body".into()
         );
     }
-    let (n, kappa, _) = super::BodyArgs { gamma: "0".into(), ..a.body.clone() }.parse()?;
+    let (n, kappa, _) = super::BodyArgs { gamma: Some("0".into()), ..a.body.clone() }.parse()?;
     crate::certify::check_body(n, &kappa, &Q::int(0)).map_err(|e| format!("--n/--kappa: {e}"))?;
     let info =
         BodyInfo { description: format!("n={n} kappa={kappa}"), n, kappa: kappa.clone(), general: None };

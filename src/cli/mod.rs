@@ -80,7 +80,8 @@ impl Default for Env {
     about = "Exact certificates that a rigid body dropped flat onto a floor never separates from it (complete chatter: docs/time-to-rest.md)",
     long_about = "Exact certificates about a rigid body dropped flat onto a floor chattering to rest by complete \
 chatter (CC: infinitely many impacts in finite time). Cone certificates prove that the body never \
-separates and its impacts never stop (v <= 0 for ever, PCC excluded where claimed); that the impacts \
+separates and its impacts never stop (v <= 0 for ever, PCC excluded where claimed; in the model, \
+impacts happen one contact at a time: simultaneous impacts are outside it); that the impacts \
 accumulate at a finite time is proved only by orbit certificates (docs/time-to-rest.md).\n\n\
 A floating-point finder proposes a polyhedral cone of velocities, an exactifier turns it into \
 rationals, and a small trusted kernel re-checks it with exact arithmetic on two independent bignum \
@@ -162,25 +163,34 @@ pub struct BodyArgs {
     /// kappa = rho^2 / R^2 (radius of gyration over circumradius, squared), > 0.
     #[arg(long, default_value = "1/6", allow_hyphen_values = true)]
     pub kappa: String,
-    /// Coefficient of restitution, in [0, 1].
-    #[arg(long, default_value = "1/100", allow_hyphen_values = true)]
-    pub gamma: String,
+    /// Coefficient of restitution, in [0, 1] [default: 1/100, or the gamma of a body file given
+    /// with --body FILE; --gamma overrides the file's].
+    #[arg(long, allow_hyphen_values = true)]
+    pub gamma: Option<String>,
 }
 
+/// --gamma when it is not given (and no body file gives one).
+pub const DEFAULT_GAMMA: &str = "1/100";
+
 impl BodyArgs {
+    /// --gamma as typed, or its default.
+    pub fn gamma_text(&self) -> &str {
+        self.gamma.as_deref().unwrap_or(DEFAULT_GAMMA)
+    }
+
     /// n, kappa and gamma read exactly (decimals such as 0.01 are 1/100).
     pub fn parse(&self) -> Result<(u64, Q, Q), String> {
         let n: u64 =
             self.n.trim().parse().map_err(|_| format!("--n: {:?} is not a positive integer", self.n))?;
         let kappa = parse_user_number(&self.kappa).map_err(|e| format!("--kappa: {e}"))?;
-        let gamma = parse_user_number(&self.gamma).map_err(|e| format!("--gamma: {e}"))?;
+        let gamma = parse_user_number(self.gamma_text()).map_err(|e| format!("--gamma: {e}"))?;
         Ok((n, kappa, gamma))
     }
 
     /// n, and kappa and gamma each as a number (`[x, x]`) or a closed interval written `a:b`.
     pub fn parse_ranges(&self) -> Result<(u64, [Q; 2], [Q; 2]), String> {
-        let (n, _, _) = BodyArgs { kappa: "1".into(), gamma: "0".into(), ..self.clone() }.parse()?;
-        Ok((n, range("--kappa", &self.kappa)?, range("--gamma", &self.gamma)?))
+        let (n, _, _) = BodyArgs { kappa: "1".into(), gamma: Some("0".into()), ..self.clone() }.parse()?;
+        Ok((n, range("--kappa", &self.kappa)?, range("--gamma", self.gamma_text())?))
     }
 }
 

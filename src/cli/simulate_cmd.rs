@@ -135,7 +135,7 @@ fn model(n: u64, kappa: &Q, gamma: &Q) -> Result<Model, String> {
 
 fn validate(a: SimulateArgs) -> Result<Validated, String> {
     let (n, kappa, gamma) = a.body.parse()?;
-    let general = a.general.parse(&gamma)?;
+    let general = a.general.parse(&gamma, a.body.gamma.is_some())?;
     let (model, n) = match &general {
         Some(g) => (Model::convex(&g.body), g.body.n() as u64),
         None => (model(n, &kappa, &gamma)?, n),

@@ -64,9 +64,13 @@ pub struct GeneralBodyRow {
     pub n: usize,
     /// Contact points (x_k, y_k) relative to the centre of mass, counter-clockwise.
     pub contacts: Vec<[Number; 2]>,
-    /// J_xx, J_xy, J_yy: the horizontal inertia tensor per unit mass about the centre of mass.
+    /// J_xx, J_xy, J_yy of the planar model: J_eff = J - b b^T / I_zz, b = (I_xz, I_yz), per
+    /// unit mass about the centre of mass (docs/model.md §11.1).
     pub inertia: [Number; 3],
-    /// How the contacts and J were obtained.
+    /// The full inertia tensor per unit mass about the centre of mass, in URDF's order I_xx,
+    /// I_xy, I_xz, I_yy, I_yz, I_zz (products with the tensor's minus sign).
+    pub inertia_tensor: [Number; 6],
+    /// How the contacts and the tensor were obtained.
     pub derivation: &'static str,
 }
 
@@ -143,6 +147,7 @@ pub fn general_rows() -> Result<Vec<GeneralBodyRow>, String> {
                 n: e.body.n(),
                 contacts: b.contacts,
                 inertia: b.inertia,
+                inertia_tensor: e.tensor.urdf().map(|x| Number::of(&x)),
                 derivation: e.derivation,
             }
         })
@@ -232,11 +237,16 @@ impl GeneralBodyRow {
         let pts: Vec<String> =
             self.contacts.iter().map(|c| format!("({}, {})", c[0].exact, c[1].exact)).collect();
         let j = &self.inertia;
+        let t: Vec<&str> = self.inertia_tensor.iter().map(|x| x.exact.as_str()).collect();
         vec![
             format!("{} (general body, {} contacts; gamma is not a property of the body)", self.name, self.n),
             format!("  contacts (about the centre of mass, counter-clockwise): {}", pts.join(" ")),
             format!(
-                "  J = [[{}, {}], [{}, {}]] per unit mass",
+                "  inertia tensor (I_xx, I_xy, I_xz, I_yy, I_yz, I_zz) = ({}) per unit mass",
+                t.join(", ")
+            ),
+            format!(
+                "  J = J_eff = [[{}, {}], [{}, {}]] per unit mass",
                 j[0].exact, j[1].exact, j[1].exact, j[2].exact
             ),
             format!("  derivation: {}", self.derivation),

@@ -1,8 +1,10 @@
 //! Tests of `bodies`: kappa derived from geometry, the catalogue's thresholds and comparisons;
-//! [`convex`]: the general convex bodies of `bodies::convex`; [`general`]: the named ones.
+//! [`convex`]: the general convex bodies of `bodies::convex`; [`general`]: the named ones;
+//! [`inertia`]: full inertia tensors and J_eff against a 3-D impulse computation.
 
 mod convex;
 mod general;
+mod inertia;
 
 use chatter::bodies::{self, PaperValue, catalogue, platonic, prism, thresholds, uniform_rod};
 use chatter::exact::{Q, Ring};

@@ -235,3 +235,26 @@ fn largest_gamma_of_a_rectangle_is_the_square_plates() {
     assert_eq!(o.status.code(), Some(2));
     assert!(text(&o.stderr).contains("--steps"));
 }
+
+#[test]
+fn a_full_inertia_tensor_on_the_command_line_is_reduced_to_j_eff() {
+    let d = tempfile::tempdir().unwrap();
+    let square = "1,0 0,1 -1,0 0,-1";
+    // I_xz = 1/10, I_zz = 1/2: J_eff = [[1/2 - 1/50, 0], [0, 1/2]] = [[12/25, 0], [0, 1/2]].
+    let full = chatter(&["classify", "--polygon", square, "--inertia", "1/2,0,1/10,1/2,0,1/2"], d.path());
+    assert_eq!(full.status.code(), Some(0), "{}", text(&full.stderr));
+    let planar = chatter(&["classify", "--polygon", square, "--inertia", "12/25,0,1/2"], d.path());
+    let after_body = |o: &Output| text(&o.stdout).lines().skip(1).collect::<Vec<_>>().join("\n");
+    assert!(text(&full.stdout).contains("given inertia tensor, J_eff"), "{}", text(&full.stdout));
+    assert!(text(&full.stdout).contains("J = [[12/25, 0], [0, 1/2]]"), "{}", text(&full.stdout));
+    assert_eq!(after_body(&full), after_body(&planar));
+    for (inertia, want) in [
+        ("1,0,0,1,0,3", "triangle inequality"),
+        ("1,0,2,1,0,1", "not positive definite"),
+        ("1,0,0,1", "expected 3 numbers (JXX,JXY,JYY) or 6"),
+    ] {
+        let o = chatter(&["classify", "--polygon", square, "--inertia", inertia], d.path());
+        assert_eq!(o.status.code(), Some(2), "{inertia}");
+        assert!(text(&o.stderr).contains(want), "{inertia}: {}", text(&o.stderr));
+    }
+}

@@ -367,3 +367,19 @@ fn issue24_map_columns_count_cone_entries_apart_from_cc() {
     assert_eq!(s["disagreement_kinds"]["evidence-cc-unproved"]["points"], 1);
     assert!(text.contains("drops_proved: CC 0, ICC 0, PCC 0, no-ICC-no-PCC 3"), "{text}");
 }
+
+#[test]
+fn issue_25_certify_with_a_body_file_uses_the_gamma_of_the_command_line() {
+    // Regression (issue 25): `certify --body FILE --gamma G` used the file's gamma (1/20).
+    let lander = concat!(env!("CARGO_MANIFEST_DIR"), "/certificates/bodies/lander.ron");
+    let run = |args: &[&str]| {
+        let o = Command::new(bin()).args(args).output().expect("run chatter");
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    let out = run(&["certify", "--body", lander, "--gamma", "1/100"]);
+    assert!(out.contains("gamma=1/100 claim=CcOrPccFromAllDown"), "{out}");
+    // Without --gamma the file's gamma (1/20) is used.
+    let out = run(&["certify", "--body", lander]);
+    assert!(out.contains("gamma=1/20 claim=CompleteChatterFromAllDown"), "{out}");
+}

@@ -229,6 +229,7 @@ fn cone_claims_state_that_finite_time_is_not_derived() {
         assert!(t.contains(FINITE_TIME_NOT_DERIVED), "{name}: {t}");
         assert!(!t.contains("complete chatter") && !t.contains("CC or PCC"), "{name}: {t}");
         assert!(!derives_finite_time(name));
+        assert!(t.contains("simultaneous impact leaves the model"), "{name}: {t}");
     }
     assert!(proves("CompleteChatterFromSet").unwrap().contains("finite time"));
     assert!(derives_finite_time("CompleteChatterFromSet"));

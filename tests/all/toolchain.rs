@@ -126,3 +126,28 @@ fn the_fuzz_crate_locks_the_workspace_versions() {
     };
     assert_eq!(profile("fuzz/Cargo.toml"), profile("Cargo.toml"));
 }
+
+/// The library is no test harness (`[lib] test = false` in Cargo.toml, so that CI does not compile
+/// it a second time): a unit test written inside src/ would never run, so there must be none.
+#[test]
+fn the_library_has_no_unit_tests_that_would_not_run() {
+    fn walk(dir: &std::path::Path, found: &mut Vec<String>) {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                walk(&path, found);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                let text = std::fs::read_to_string(&path).unwrap();
+                if text.lines().any(|l| matches!(l.trim(), "#[cfg(test)]" | "#[test]")) {
+                    found.push(path.display().to_string());
+                }
+            }
+        }
+    }
+    let manifest = std::fs::read_to_string(root().join("Cargo.toml")).unwrap();
+    let lib = &manifest[manifest.find("[lib]").unwrap()..];
+    assert!(lib.lines().take_while(|l| !l.starts_with("[[")).any(|l| l.trim() == "test = false"));
+    let mut found = Vec::new();
+    walk(&root().join("src"), &mut found);
+    assert!(found.is_empty(), "unit tests in src/ that `cargo test` would not run (move them to tests/all/): {found:?}");
+}

@@ -32,7 +32,7 @@ fn every_body_option_simulates() {
         ),
         (
             vec!["--body", "certificates/bodies/lander.ron"],
-            "body file certificates/bodies/lander.ron (3 contacts), n=3 gamma=1/20",
+            "body file certificates/bodies/lander.ron (3 contacts, inertia tensor, J_eff), n=3 gamma=1/20",
         ),
     ] {
         let o = simulate(&args);
