@@ -149,5 +149,8 @@ fn the_library_has_no_unit_tests_that_would_not_run() {
     assert!(lib.lines().take_while(|l| !l.starts_with("[[")).any(|l| l.trim() == "test = false"));
     let mut found = Vec::new();
     walk(&root().join("src"), &mut found);
-    assert!(found.is_empty(), "unit tests in src/ that `cargo test` would not run (move them to tests/all/): {found:?}");
+    assert!(
+        found.is_empty(),
+        "unit tests in src/ that `cargo test` would not run (move them to tests/all/): {found:?}"
+    );
 }
