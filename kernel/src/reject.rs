@@ -12,6 +12,8 @@ use serde::{Serialize, Serializer};
 
 #[cfg(feature = "family")]
 use crate::model::convex::shape::ConvexBodyError;
+#[cfg(feature = "basin")]
+use crate::rules::basin::Failure as BasinFailure;
 #[cfg(feature = "boxes")]
 use crate::rules::boxes::PccPolynomial;
 #[cfg(feature = "orbit")]
@@ -109,6 +111,12 @@ codes! {
     SetNotInvariant = "set-not-invariant",
     /// Orbit condition 3 is not shown on a sub-box.
     NoContraction = "no-contraction",
+    /// A basin certificate's box, paths, prefixes or embedded orbit certificate's body are out of range.
+    BasinOutOfRange = "basin-out-of-range",
+    /// A basin certificate's leaves are not the leaves of one bisection tree of its box.
+    NotAPartition = "not-a-partition",
+    /// A basin certificate's leaf: its prefix, or where it ends, is not shown on the whole leaf.
+    LeafNotShown = "leaf-not-shown",
     /// The model contradicts itself or the two backends disagree: a bug in chatter.
     Internal = "internal",
 }
@@ -237,6 +245,13 @@ pub enum Locus {
         #[serde(skip_serializing_if = "Option::is_none")]
         contact: Option<usize>,
     },
+    /// A leaf of a basin certificate (its index in `leaves`, its path).
+    BasinLeaf {
+        /// The index in `leaves`.
+        leaf: usize,
+        /// Its bisection path.
+        path: String,
+    },
     /// Nowhere in particular (internal errors).
     Nowhere,
 }
@@ -317,6 +332,10 @@ pub enum Counted {
     Depth,
     /// The sub-boxes an orbit certificate made the kernel examine.
     Boxes,
+    /// The leaves of a basin certificate.
+    Leaves,
+    /// The impacts of a basin certificate's prefix.
+    Prefix,
 }
 
 /// What a version or a format needs that the file or this build does not have.
@@ -397,6 +416,9 @@ pub enum Detail {
     /// An orbit certificate's failure.
     #[cfg(feature = "orbit")]
     Orbit(OrbitFailure),
+    /// A basin certificate's failure.
+    #[cfg(feature = "basin")]
+    Basin(BasinFailure),
     /// A refutation's failure.
     #[cfg(feature = "refutation")]
     Refutation(RefutationFailure),

@@ -10,7 +10,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The kinds of verdict: name in the table, the rules file (under src/), the features.
-const KINDS: [(&str, &str, &[&str]); 9] = [
+const KINDS: [(&str, &str, &[&str]); 10] = [
     ("point certificates, n = 3, 4, 6", "rules/cone.rs", &[]),
     ("point certificates of the rod", "rules/rod.rs", &[]),
     ("box certificates", "rules/boxes.rs", &["boxes"]),
@@ -18,6 +18,7 @@ const KINDS: [(&str, &str, &[&str]); 9] = [
     ("family certificates", "rules/family.rs", &["family"]),
     ("orbit certificates, n = 3, 4, 6", "rules/orbit.rs", &["orbit"]),
     ("orbit certificates in number fields", "rules/orbit.rs", &["orbit", "field"]),
+    ("basin certificates, n = 3, 4, 6", "rules/basin.rs", &["basin", "orbit"]),
     ("refutations", "rules/refutation.rs", &["refutation"]),
     ("proofs", "rules/proof/mod.rs", &["proof"]),
 ];

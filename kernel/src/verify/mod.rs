@@ -16,6 +16,8 @@ use crate::syntax::{Encoding, Kind, kind_of, read, schema};
 use malachite::rational::Rational;
 use num_rational::BigRational;
 
+#[cfg(feature = "basin")]
+mod basin;
 #[cfg(feature = "family")]
 mod family;
 #[cfg(feature = "field")]
@@ -27,6 +29,8 @@ mod proof;
 #[cfg(feature = "refutation")]
 mod refutation;
 
+#[cfg(feature = "basin")]
+pub use basin::{verify_basin, verify_basin_text_in};
 #[cfg(feature = "family")]
 pub use family::{verify_convex, verify_convex_on};
 #[cfg(feature = "field")]
@@ -119,6 +123,12 @@ pub struct Backend {
     /// Proofs.
     #[cfg(feature = "proof")]
     pub proof: fn(&ProofFile, ParseLimits) -> Result<Checked, Rejection>,
+    /// Basin certificates.
+    #[cfg(feature = "basin")]
+    pub basin: fn(
+        &crate::syntax::basin::BasinCertificate,
+        ParseLimits,
+    ) -> Result<crate::rules::basin::BasinReport, Rejection>,
 }
 
 /// The kernel on the backend `F`.
@@ -134,6 +144,8 @@ const fn backend<F: Field>(name: &'static str) -> Backend {
         orbit: orbit_rules::check::<F>,
         #[cfg(feature = "proof")]
         proof: proof_rules::check::<F>,
+        #[cfg(feature = "basin")]
+        basin: crate::rules::basin::check::<F>,
     }
 }
 
