@@ -10,7 +10,9 @@ use malachite::rational::Rational;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let Some(path) = args.get(1) else { return eprintln!("usage: FILE R1 R2 R3 R4 R5 [IMPACTS]") };
+    let (Some(path), true) = (args.get(1), args.len() >= 7) else {
+        return eprintln!("usage: FILE R1 R2 R3 R4 R5 [IMPACTS [HALF-WIDTH]]");
+    };
     let text = std::fs::read_to_string(path).unwrap_or_default();
     let cert = match read_file(&text, Encoding::Ron) {
         Ok(c) => c,

@@ -27,7 +27,7 @@ const KINDS: [(&str, &str, &[&str]); 10] = [
 /// rules. Issue 23 asks for under 1,500 and under 300: the rules meet theirs; the whole is held
 /// at its measurement (docs/kernel-soundness.md §4 says where the lines are) so that it cannot
 /// grow unseen.
-const POINT_BUDGET: (usize, usize) = (1_864, 299);
+const POINT_BUDGET: (usize, usize) = (1_894, 299);
 
 fn src() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
