@@ -4,7 +4,7 @@
 //! `certificates/basin/invalid/expected.json` (each breaks one rule of B1-B4).
 #![cfg(feature = "basin")]
 
-use chatter_kernel::exact::{OrderedField, ParseLimits, Ring, parse_canonical};
+use chatter_kernel::exact::{ParseLimits, Ring, parse_canonical};
 use chatter_kernel::syntax::Encoding;
 use chatter_kernel::verify::{BOTH, Verdict, verify_basin_text_in};
 use std::path::PathBuf;

@@ -141,7 +141,10 @@ impl Walker {
                 let len = steps.len() + 1;
                 let cuts = match self.cut_every {
                     0 => Vec::new(),
-                    m => (1..len).filter(|&c| (len - c) % m == 0 && near[c - 1]).map(|c| c as u64).collect(),
+                    m => (1..len)
+                        .filter(|&c| (len - c).is_multiple_of(m) && near[c - 1])
+                        .map(|c| c as u64)
+                        .collect(),
                 };
                 return Some(Plan { first, steps, cc: true, cuts });
             }

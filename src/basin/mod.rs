@@ -203,7 +203,9 @@ impl Producer<'_> {
 /// The shortest period of a pattern (2,2,1,1 repeated twice: 4).
 fn base_period(pattern: &[usize]) -> usize {
     (1..=pattern.len())
-        .find(|&d| pattern.len() % d == 0 && (d..pattern.len()).all(|i| pattern[i] == pattern[i - d]))
+        .find(|&d| {
+            pattern.len().is_multiple_of(d) && (d..pattern.len()).all(|i| pattern[i] == pattern[i - d])
+        })
         .unwrap_or(pattern.len())
 }
 

@@ -90,6 +90,7 @@ const LIAR: Backend = Backend {
     convex: chatter_kernel::check::check_convex::<Liar>,
     orbit: chatter_kernel::orbit::check_orbit::<Liar>,
     proof: chatter_kernel::proof::check::<Liar>,
+    basin: chatter_kernel::basin::check_basin::<Liar>,
 };
 
 fn outcome(args: &[&str], env: &Env) -> Outcome {
