@@ -168,6 +168,7 @@ pub fn convert(text: &str, from: Encoding, target: Target) -> Result<String, Str
     let json = target == Target::Json;
     match kind {
         Kind::Proof => Err("a proof file (chatter-proof) has no JSON twin".into()),
+        Kind::Basin => Err("a basin certificate (chatter-basin-certificate) has no JSON twin".into()),
         Kind::Refutation => {
             let r: Refutation = schema(text, from).map_err(unreadable)?;
             Ok(if json { refutation_to_json(&r) } else { write_refutation(&r) })

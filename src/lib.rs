@@ -13,6 +13,7 @@
 //! - [`report`]: the typed, versioned reports every `--json` output prints (docs/json.md), on
 //!   the shared vocabulary of [`json`].
 
+pub mod basin;
 pub mod bodies;
 pub mod certify;
 pub mod claims;

@@ -27,6 +27,8 @@
 #![deny(missing_docs)]
 #![deny(clippy::float_arithmetic)]
 
+#[cfg(feature = "basin")]
+pub mod basin;
 #[cfg(feature = "boxes")]
 pub mod bivariate;
 pub mod exact;

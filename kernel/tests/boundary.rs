@@ -121,5 +121,10 @@ fn the_loci_of_the_other_kinds_are_written_as_before() {
         json(orbit),
         serde_json::json!({"kind": "orbit-box", "sub_box": [["0", "1"], ["1/2", "1"], ["0", "1/4"]], "depth": 1})
     );
+    #[cfg(feature = "basin")]
+    {
+        let leaf = Locus::from(KindLocus::BasinLeaf { leaf: 4, path: "021".into() });
+        assert_eq!(json(leaf), serde_json::json!({"kind": "basin-leaf", "leaf": 4, "path": "021"}));
+    }
     assert_eq!(json(Locus::Cone), serde_json::json!({"kind": "cone"}));
 }

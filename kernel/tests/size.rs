@@ -11,7 +11,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The kinds of verdict: name in the table, the rules file (under src/), the features.
-const KINDS: [(&str, &str, &[&str]); 9] = [
+const KINDS: [(&str, &str, &[&str]); 10] = [
     ("point certificates, n = 3, 4, 6", "rules/cone.rs", &[]),
     ("point certificates of the rod", "rules/rod.rs", &[]),
     ("box certificates", "rules/boxes.rs", &["boxes"]),
@@ -19,6 +19,7 @@ const KINDS: [(&str, &str, &[&str]); 9] = [
     ("family certificates", "rules/family.rs", &["family"]),
     ("orbit certificates, n = 3, 4, 6", "rules/orbit.rs", &["orbit"]),
     ("orbit certificates in number fields", "rules/orbit.rs", &["orbit", "field"]),
+    ("basin certificates, n = 3, 4, 6", "rules/basin.rs", &["basin", "orbit"]),
     ("refutations", "rules/refutation.rs", &["refutation"]),
     ("proofs", "rules/proof/mod.rs", &["proof"]),
 ];
@@ -27,7 +28,7 @@ const KINDS: [(&str, &str, &[&str]); 9] = [
 /// rules. Issue 23 asks for under 1,500 and under 300: the rules meet theirs; the whole is held
 /// at its measurement (docs/kernel-soundness.md §4 says where the lines are) so that it cannot
 /// grow unseen.
-const POINT_BUDGET: (usize, usize) = (1_810, 294);
+const POINT_BUDGET: (usize, usize) = (1_821, 294);
 
 fn src() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")

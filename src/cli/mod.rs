@@ -4,6 +4,7 @@
 //! 0 success; 1 a negative answer (not certified, a certificate rejected, a proof step failed);
 //! 2 bad usage or unreadable input; 3 internal error (the two backends disagree).
 
+mod basin_cmd;
 mod bodies_cmd;
 mod certify_cmd;
 mod certify_general;
@@ -103,6 +104,9 @@ pub enum Command {
     /// Prove complete chatter from a set of states around an attracting impact cycle (an orbit
     /// certificate, docs/orbit-certificates.md); write it.
     CertifyOrbit(orbit_cmd::OrbitArgs),
+    /// Prove which drops of a box chatter to rest (enter an orbit certificate's set) and which
+    /// reach v > 0, as exact shares of the box (docs/basin-certificates.md); write the certificate.
+    Basin(basin_cmd::BasinArgs),
     /// Check certificate files (or directories of *.ron and *.json files) with the trusted kernel.
     Verify(verify_cmd::VerifyArgs),
     /// Convert a certificate or refutation between RON and its JSON twin (lossless).
@@ -147,7 +151,8 @@ impl Command {
             | Command::Cover(_)
             | Command::Map(_)
             | Command::Plot(_)
-            | Command::Schema(_) => false,
+            | Command::Schema(_)
+            | Command::Basin(_) => false,
         }
     }
 }
@@ -227,6 +232,7 @@ pub fn run(cli: Cli, env: &Env) -> Outcome {
     match cli.command {
         Command::Certify(a) => certify_cmd::run(a, env),
         Command::CertifyOrbit(a) => orbit_cmd::run(a, env),
+        Command::Basin(a) => basin_cmd::run(a, env),
         Command::Verify(a) => verify_cmd::run(a, env),
         Command::Convert(a) => convert_cmd::run(a),
         Command::Simulate(a) => simulate_cmd::run(a),

@@ -53,7 +53,7 @@ pub struct OrbitArgs {
 pub const MAX_PATTERN: usize = 64;
 
 /// `--pattern` text: comma-separated steps, each in 1..n-1.
-fn parse_pattern(text: &str, n: u64) -> Result<Vec<usize>, String> {
+pub(super) fn parse_pattern(text: &str, n: u64) -> Result<Vec<usize>, String> {
     let mut steps = Vec::new();
     for (i, part) in text.split(',').enumerate() {
         let part = part.trim();

@@ -96,6 +96,19 @@ pub struct FileVerdict {
     /// For an accepted refutation: what it refutes and how.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub refutation: Option<RefutationReport>,
+    /// For an accepted basin certificate: the share of its box of drops proved to end in complete
+    /// chatter (entering the orbit certificate's X), exact "p/q" (docs/basin-certificates.md).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cc_share: Option<String>,
+    /// For a basin certificate: the share proved to reach v > 0 (ICC, the paper's Lemma on v).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub icc_share: Option<String>,
+    /// For a basin certificate: the share with no verdict; the three shares sum to 1.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub undecided_share: Option<String>,
+    /// For a basin certificate: its leaves (CC, ICC, undecided).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub basin_leaves: Option<[usize; 3]>,
 }
 
 /// What an accepted refutation shows.
@@ -132,6 +145,10 @@ impl FileVerdict {
             pcc_boxes: None,
             orbit_boxes: None,
             refutation: None,
+            cc_share: None,
+            icc_share: None,
+            undecided_share: None,
+            basin_leaves: None,
         }
     }
 
@@ -159,6 +176,21 @@ impl FileVerdict {
                 self.n.unwrap_or(0),
                 r.points,
                 r.last.join(", ")
+            );
+        }
+        if let (Some(cc), Some(icc), Some(und), Some(l)) =
+            (&self.cc_share, &self.icc_share, &self.undecided_share, &self.basin_leaves)
+        {
+            let time = self.time_to_rest_bound.as_ref().map_or(String::new(), |t| {
+                format!("; every CC drop comes to rest within T <= {t} h/|v| (time_to_rest_bound)")
+            });
+            return format!(
+                "{}: OK (basin, n = {}: of the box of drops, {cc} proved CC (enter the orbit certificate's X), {icc} proved v > 0 (ICC), {und} undecided; leaves {} CC, {} ICC, {} undecided{time})",
+                self.path,
+                self.n.unwrap_or(0),
+                l[0],
+                l[1],
+                l[2]
             );
         }
         if let Some(b) = self.orbit_boxes {
@@ -264,6 +296,24 @@ pub fn refutation_verdict_of(path: &Path, verdict: Verdict<chatter_kernel::refut
     }
 }
 
+/// The verdict on basin certificate text, reported for `path`.
+pub fn basin_verdict_of(path: &Path, verdict: Verdict<chatter_kernel::basin::BasinReport>) -> FileVerdict {
+    match verdict {
+        Verdict::Accepted(a) => {
+            let mut v = FileVerdict::new(path, Status::Ok);
+            v.n = Some(a.n);
+            v.time_to_rest_bound = a.time_to_rest_bound;
+            v.orbit_boxes = Some(a.orbit_boxes);
+            (v.cc_share, v.icc_share, v.undecided_share) =
+                (Some(a.cc_share), Some(a.icc_share), Some(a.undecided_share));
+            v.basin_leaves = Some(a.leaves);
+            v
+        }
+        Verdict::Rejected(r) => verdict_of(path, Verdict::Rejected(r)),
+        Verdict::Disagree(s) => verdict_of(path, Verdict::Disagree(s)),
+    }
+}
+
 /// Which kind of file the text is, by its `format` field.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Kind {
@@ -291,6 +341,10 @@ fn verify_any(
             (refutation_verdict_of(path, v), Kind::Refutation)
         }
         Some(chatter_kernel::proof::FORMAT) => (verdict_of(path, verdict), Kind::Proof),
+        Some(chatter_kernel::syntax::basin::FORMAT) => {
+            let v = chatter_kernel::verify::verify_basin_text_in(text, encoding, limits, backends);
+            (basin_verdict_of(path, v), Kind::Certificate)
+        }
         _ => (verdict_of(path, verdict), Kind::Certificate),
     }
 }

@@ -2,6 +2,7 @@
 
 mod common;
 
+mod basin;
 mod bodies;
 mod certificate;
 mod certify;

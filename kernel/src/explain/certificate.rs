@@ -175,6 +175,8 @@ fn limit_words(count: usize, limit: usize, what: Counted, locus: &Locus) -> Stri
         Counted::Characters => format!("{count} characters of numbers, more than the limit {name} = {limit}"),
         Counted::Depth => format!("subdivision {count} is deeper than the limit {name} = {limit}"),
         Counted::Boxes => format!("more than the limit {name} = {limit} sub-boxes examined"),
+        Counted::Leaves => format!("{count} leaves, more than the limit {name} = {limit}"),
+        Counted::Prefix => format!("a prefix of {count} impacts, more than the limit {name} = {limit}"),
     };
     format!("{text}: no verdict on the content")
 }

@@ -3,6 +3,8 @@
 //! kernel need not read it. Numbers longer than [`LONG`] characters are abbreviated so that a
 //! rejection line stays short; the exact values are in the locus and the detail.
 
+#[cfg(feature = "basin")]
+mod basin;
 mod certificate;
 #[cfg(feature = "orbit")]
 mod orbit;
@@ -65,6 +67,8 @@ fn words(detail: &Detail, locus: &Locus) -> String {
     match detail {
         #[cfg(feature = "orbit")]
         Detail::Kind(KindDetail::Orbit(f)) => orbit::words(f, locus),
+        #[cfg(feature = "basin")]
+        Detail::Kind(KindDetail::Basin(f)) => basin::words(f, locus),
         #[cfg(feature = "refutation")]
         Detail::Kind(KindDetail::Refutation(f)) => refutation::words(f, locus),
         #[cfg(feature = "proof")]

@@ -5,7 +5,7 @@
 //! rounded *outward* to dyadic rationals m 2^e with |m| < 2^(PRECISION+2) (lo down, hi up), so the
 //! numbers stay short whatever the depth of the computation; rounding outward only enlarges the
 //! interval, so every enclosure stays an enclosure. The rounding is exact integer arithmetic
-//! (a bisection for floor(p 2^s / q)), no floating point. A [`Dual`] carries an interval for a
+//! (the backend's exact floor division of p 2^s by q), no floating point. A [`Dual`] carries an interval for a
 //! value and one for each of its three partial derivatives, with the usual rules of forward
 //! differentiation applied to intervals: if the inputs enclose a function and its gradient on a
 //! box, the outputs do too.
@@ -29,22 +29,9 @@ fn pow2<Z: Int>(k: u64) -> Z {
     result
 }
 
-/// floor(num / den) for den > 0, when |num / den| < 2^bits.
-fn floor_div<Z: Int>(num: &Z, den: &Z, bits: u64) -> Z {
-    if num.is_negative() {
-        // floor(-a/d) = -ceil(a/d) = -floor((a + d - 1)/d).
-        let a = num.negated().plus(den).minus(&Z::one());
-        return floor_div(&a, den, bits + 1).negated();
-    }
-    let (mut m, mut bit, two) = (Z::zero(), pow2::<Z>(bits), Z::from_i64(2));
-    for _ in 0..bits {
-        bit = bit.div_exact(&two);
-        let cand = m.plus(&bit);
-        if cand.times(den) <= *num {
-            m = cand;
-        }
-    }
-    m
+/// floor(num / den) for den > 0: the backend's exact floor division.
+fn floor_div<Z: Int>(num: &Z, den: &Z) -> Z {
+    num.div_floor(den)
 }
 
 /// The largest dyadic m 2^e <= x with |m| < 2^(PRECISION+2) on the grid of x's magnitude.
@@ -65,7 +52,7 @@ pub fn round_down<F: Field>(x: &F) -> F {
     } else {
         (p, q.times(&pow2::<F::Int>(s.unsigned_abs())))
     };
-    let m = floor_div(&num, &den, PRECISION + 2);
+    let m = floor_div(&num, &den);
     if s >= 0 {
         F::from_fraction(&m, &pow2::<F::Int>(s as u64))
     } else {
@@ -165,19 +152,20 @@ impl<F: Field> Iv<F> {
     }
 }
 
-/// A value and its gradient with respect to three parameters, all as intervals.
+/// A value and its gradient with respect to `D` parameters (three for orbit certificates, five
+/// for the drops of basin certificates), all as intervals.
 #[derive(Clone, Debug)]
-pub struct Dual<F> {
+pub struct Dual<F, const D: usize = 3> {
     /// Enclosure of the value.
     pub v: Iv<F>,
-    /// Enclosures of the three partial derivatives.
-    pub d: [Iv<F>; 3],
+    /// Enclosures of the partial derivatives.
+    pub d: [Iv<F>; D],
 }
 
-impl<F: Field> Dual<F> {
+impl<F: Field, const D: usize> Dual<F, D> {
     /// A constant (zero gradient).
     pub fn constant(c: &F) -> Self {
-        Dual { v: Iv::point(c), d: [Iv::zero(), Iv::zero(), Iv::zero()] }
+        Dual { v: Iv::point(c), d: std::array::from_fn(|_| Iv::zero()) }
     }
     /// Sum.
     pub fn plus(&self, o: &Self) -> Self {
@@ -205,7 +193,7 @@ impl<F: Field> Dual<F> {
     /// Quotient: (f/g)' = (f' - (f/g) g')/g; `None` when g's enclosure contains 0.
     pub fn over(&self, o: &Self) -> Option<Self> {
         let q = self.v.over(&o.v)?;
-        let mut d = [Iv::zero(), Iv::zero(), Iv::zero()];
+        let mut d: [Iv<F>; D] = std::array::from_fn(|_| Iv::zero());
         for (i, di) in d.iter_mut().enumerate() {
             *di = self.d[i].minus(&q.times(&o.d[i])).over(&o.v)?;
         }
@@ -219,18 +207,18 @@ impl<F: Field> Dual<F> {
 /// are smooth on Y, as every divisor's enclosure excludes 0), which keeps the enclosures of
 /// long computations tight (docs/kernel-soundness.md §7).
 #[derive(Clone, Debug)]
-pub struct Centred<F> {
+pub struct Centred<F, const D: usize = 3> {
     /// Enclosure of f(c).
     pub c: Iv<F>,
     /// Enclosure of f and ∇f over Y.
-    pub b: Dual<F>,
+    pub b: Dual<F, D>,
     /// The symmetric intervals [-r_k, r_k] (`None` for a constant).
-    pub r: Option<std::sync::Arc<[Iv<F>; 3]>>,
+    pub r: Option<std::sync::Arc<[Iv<F>; D]>>,
 }
 
-impl<F: Field> Centred<F> {
+impl<F: Field, const D: usize> Centred<F, D> {
     /// The seed x = c + (y - c) with the given gradient: value `c` at the centre, `over` on Y.
-    pub fn seed(c: Iv<F>, over: Iv<F>, d: [Iv<F>; 3], r: std::sync::Arc<[Iv<F>; 3]>) -> Self {
+    pub fn seed(c: Iv<F>, over: Iv<F>, d: [Iv<F>; D], r: std::sync::Arc<[Iv<F>; D]>) -> Self {
         Centred { c, b: Dual { v: over, d }, r: Some(r) }.tightened()
     }
 
@@ -245,7 +233,7 @@ impl<F: Field> Centred<F> {
         self
     }
 
-    fn with(c: Iv<F>, b: Dual<F>, x: &Self, y: &Self) -> Self {
+    fn with(c: Iv<F>, b: Dual<F, D>, x: &Self, y: &Self) -> Self {
         let r = x.r.clone().or_else(|| y.r.clone());
         Centred { c, b, r }.tightened()
     }
@@ -272,7 +260,7 @@ impl<F: Field> Centred<F> {
     }
     /// A constant known by an enclosure `k` (zero gradient; docs/kernel-soundness.md §7.1).
     pub fn enclosed(k: &Iv<F>) -> Self {
-        Centred { c: k.clone(), b: Dual { v: k.clone(), d: [Iv::zero(), Iv::zero(), Iv::zero()] }, r: None }
+        Centred { c: k.clone(), b: Dual { v: k.clone(), d: std::array::from_fn(|_| Iv::zero()) }, r: None }
     }
     /// Product with a constant known by an enclosure `k`: [`Self::scaled`] when `k` is a point,
     /// else interval products (each encloses the product for every constant in `k`).

@@ -52,7 +52,7 @@ impl<K: OrderedField> Num<K> for K {
     }
 }
 
-impl<F: Field> Num<Iv<F>> for Centred<F> {
+impl<F: Field, const D: usize> Num<Iv<F>> for Centred<F, D> {
     fn cst(c: &Iv<F>) -> Self {
         Centred::enclosed(c)
     }
@@ -231,28 +231,11 @@ pub fn period<K: Clone, T: Num<K>>(
     let mut p = [x[1].clone(), x[2].clone(), zero.sub(&one)];
     let mut time = zero.clone();
     let mut states = Vec::with_capacity(pattern.len() + 1);
-    let n = maps.n;
     for (s, &j) in pattern.iter().enumerate() {
         states.push((q.clone(), p.clone()));
-        let hj = maps.dot(&maps.contacts[j], &q);
-        let uj = maps.dot(&maps.contacts[j], &p);
-        let nu = zero.sub(&uj);
-        let approach = Quantity::Approach { step: s, contact: j };
-        check(approach, &nu)?;
-        check(Quantity::Up { step: s, contact: j }, &hj)?;
-        for k in (0..n).filter(|&k| k != j) {
-            let hk = maps.dot(&maps.contacts[k], &q);
-            let uk = maps.dot(&maps.contacts[k], &p);
-            check(Quantity::Clear { step: s, contact: k }, &hk.mul(&nu).add(&hj.mul(&uk)))?;
-        }
-        let t = hj.div(&nu).ok_or(Stop::Division(approach))?;
+        let (t, q1, p1) = step(maps, s, j, &q, &p, check)?;
         time = time.add(&t);
-        let moved: [T; 3] = std::array::from_fn(|i| q[i].add(&t.mul(&p[i])));
-        let next = &maps.contacts[(j + 1) % n];
-        // h_j(q + t p) = h_j + t u_j = 0 exactly: the landed contact is the new contact 0.
-        q = [zero.clone(), maps.dot(next, &moved), moved[2].clone()];
-        let relabelled = [uj, maps.dot(next, &p), p[2].clone()];
-        p = std::array::from_fn(|i| maps.dot(&maps.impact0[i], &relabelled));
+        (q, p) = (q1, p1);
     }
     states.push((q.clone(), p.clone()));
     let alpha = q[2].clone();
@@ -263,4 +246,39 @@ pub fn period<K: Clone, T: Num<K>>(
     let b = p[0].div(&beta).ok_or(Stop::Division(Quantity::VelocityScale))?;
     let c = p[1].div(&beta).ok_or(Stop::Division(Quantity::VelocityScale))?;
     Ok(Period { next: [a, b, c], alpha, beta, time, states })
+}
+
+/// One impact (docs/orbit-certificates.md §3, condition 1, step `s`): from the state (q, p),
+/// contact `j` lands first, after t = h_j/(-u_j), every other contact strictly up then; returns
+/// t and the state right after the impact, relabelled so that the landed contact is contact 0.
+/// `check` sees -u_j, h_j and h_k(-u_j) + h_j u_k for every k != j, in that order.
+pub fn step<K: Clone, T: Num<K>>(
+    maps: &Maps<K>,
+    s: usize,
+    j: usize,
+    q: &[T; 3],
+    p: &[T; 3],
+    check: &mut dyn FnMut(Quantity, &T) -> Result<(), Stop>,
+) -> Result<(T, [T; 3], [T; 3]), Stop> {
+    let n = maps.n;
+    let zero = T::int(0);
+    let hj = maps.dot(&maps.contacts[j], q);
+    let uj = maps.dot(&maps.contacts[j], p);
+    let nu = zero.sub(&uj);
+    let approach = Quantity::Approach { step: s, contact: j };
+    check(approach, &nu)?;
+    check(Quantity::Up { step: s, contact: j }, &hj)?;
+    for k in (0..n).filter(|&k| k != j) {
+        let hk = maps.dot(&maps.contacts[k], q);
+        let uk = maps.dot(&maps.contacts[k], p);
+        check(Quantity::Clear { step: s, contact: k }, &hk.mul(&nu).add(&hj.mul(&uk)))?;
+    }
+    let t = hj.div(&nu).ok_or(Stop::Division(approach))?;
+    let moved: [T; 3] = std::array::from_fn(|i| q[i].add(&t.mul(&p[i])));
+    let next = &maps.contacts[(j + 1) % n];
+    // h_j(q + t p) = h_j + t u_j = 0 exactly: the landed contact is the new contact 0.
+    let q1 = [zero.clone(), maps.dot(next, &moved), moved[2].clone()];
+    let relabelled = [uj, maps.dot(next, p), p[2].clone()];
+    let p1 = std::array::from_fn(|i| maps.dot(&maps.impact0[i], &relabelled));
+    Ok((t, q1, p1))
 }

@@ -11,7 +11,7 @@ pub use crate::rules::orbit::{
     MAX_BOXES, MAX_DEPTH, MAX_PATTERN, Orbit, check as check_orbit, cover, read_orbit_values,
 };
 pub use interval::{Centred, Dual, Iv, PRECISION, round_down, round_up};
-pub use map::{Maps, Period, Quantity, Stop, period};
+pub use map::{Maps, Period, Quantity, Stop, period, step};
 
 use crate::exact::OrderedField;
 use crate::model::polygon::Polygon;

@@ -1,5 +1,5 @@
 //! The loci and exact values of rejections of the kinds of file beyond point certificates
-//! (boxes, number fields, families, orbits, refutations, proofs): part of [`Locus`](super::Locus)
+//! (boxes, number fields, families, orbits, basins, refutations, proofs): part of [`Locus`](super::Locus)
 //! and [`Detail`](super::Detail), written as the other loci. A reviewer of point certificates
 //! does not read this file.
 
@@ -10,6 +10,8 @@ use serde::Serialize;
 use super::Boundary;
 #[cfg(feature = "family")]
 use crate::model::convex::shape::ConvexBodyError;
+#[cfg(feature = "basin")]
+use crate::rules::basin::Failure as BasinFailure;
 #[cfg(feature = "boxes")]
 use crate::rules::boxes::PccPolynomial;
 #[cfg(feature = "orbit")]
@@ -95,6 +97,14 @@ pub enum KindLocus {
         #[serde(skip_serializing_if = "Option::is_none")]
         contact: Option<usize>,
     },
+    /// A leaf of a basin certificate (its index in `leaves`, its path).
+    #[cfg(feature = "basin")]
+    BasinLeaf {
+        /// The index in `leaves`.
+        leaf: usize,
+        /// Its bisection path.
+        path: String,
+    },
 }
 
 /// The exact values that explain a rejection of another kind of file.
@@ -123,6 +133,9 @@ pub enum KindDetail {
     /// An orbit certificate's failure.
     #[cfg(feature = "orbit")]
     Orbit(OrbitFailure),
+    /// A basin certificate's failure.
+    #[cfg(feature = "basin")]
+    Basin(BasinFailure),
     /// A refutation's failure.
     #[cfg(feature = "refutation")]
     Refutation(RefutationFailure),

@@ -103,6 +103,12 @@ codes! {
     SetNotInvariant = "set-not-invariant",
     /// Orbit condition 3 is not shown on a sub-box.
     NoContraction = "no-contraction",
+    /// A basin certificate's box, paths, prefixes or embedded orbit certificate's body are out of range.
+    BasinOutOfRange = "basin-out-of-range",
+    /// A basin certificate's leaves are not the leaves of one bisection tree of its box.
+    NotAPartition = "not-a-partition",
+    /// A basin certificate's leaf: its prefix, or where it ends, is not shown on the whole leaf.
+    LeafNotShown = "leaf-not-shown",
     /// The model contradicts itself or the two backends disagree: a bug in chatter.
     Internal = "internal",
 }
@@ -251,6 +257,10 @@ pub enum Counted {
     Depth,
     /// The sub-boxes an orbit certificate made the kernel examine.
     Boxes,
+    /// The leaves of a basin certificate.
+    Leaves,
+    /// The impacts of a basin certificate's prefix.
+    Prefix,
 }
 
 /// What a version or a format needs that the file or this build does not have.

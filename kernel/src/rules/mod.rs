@@ -10,6 +10,8 @@
 //!   `orbit` (feature `orbit`): orbit certificates (O1, O2); `refutation` (feature
 //!   `refutation`); `proof` (feature `proof`): the proof checker.
 
+#[cfg(feature = "basin")]
+pub mod basin;
 pub mod body;
 #[cfg(feature = "boxes")]
 pub mod boxes;

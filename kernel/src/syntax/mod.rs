@@ -5,6 +5,8 @@
 //! kind has its own format string; `("chatter-certificate", 4 | 5)` are legacy aliases of the
 //! family and orbit formats (docs/certificate-format.md §13, §14).
 
+#[cfg(feature = "basin")]
+pub mod basin;
 pub mod cone;
 #[cfg(feature = "family")]
 pub mod family;
@@ -39,6 +41,8 @@ pub enum Kind {
     Family,
     /// An orbit certificate (§14).
     Orbit,
+    /// A basin certificate (§15).
+    Basin,
     /// A refutation (§10).
     Refutation,
     /// A proof (docs/proof-format.md).
@@ -46,12 +50,13 @@ pub enum Kind {
 }
 
 /// Every header this build knows: (format, versions, kind), the legacy aliases included.
-const HEADERS: [(&str, [u64; 2], Kind); 7] = [
+const HEADERS: [(&str, [u64; 2], Kind); 8] = [
     ("chatter-certificate", [1, 3], Kind::Cone),
     ("chatter-certificate", [4, 4], Kind::Family),
     ("chatter-certificate", [5, 5], Kind::Orbit),
     ("chatter-family-certificate", [1, 1], Kind::Family),
     ("chatter-orbit-certificate", [1, 1], Kind::Orbit),
+    ("chatter-basin-certificate", [1, 1], Kind::Basin),
     ("chatter-refutation", [1, 1], Kind::Refutation),
     ("chatter-proof", [1, 1], Kind::Proof),
 ];
@@ -63,6 +68,7 @@ impl Kind {
             Kind::Cone => "chatter-certificate",
             Kind::Family => "chatter-family-certificate",
             Kind::Orbit => "chatter-orbit-certificate",
+            Kind::Basin => "chatter-basin-certificate",
             Kind::Refutation => "chatter-refutation",
             Kind::Proof => "chatter-proof",
         }
@@ -74,6 +80,7 @@ impl Kind {
             Kind::Cone => None,
             Kind::Family => Some(("family", cfg!(feature = "family"))),
             Kind::Orbit => Some(("orbit", cfg!(feature = "orbit"))),
+            Kind::Basin => Some(("basin", cfg!(feature = "basin"))),
             Kind::Refutation => Some(("refutation", cfg!(feature = "refutation"))),
             Kind::Proof => Some(("proof", cfg!(feature = "proof"))),
         }

@@ -1,5 +1,5 @@
-//! The kinds of file beyond cone certificates (features `family`, `orbit`, `refutation`,
-//! `proof`) on the backends: their kernels on one backend ([`Kinds`], part of a
+//! The kinds of file beyond cone certificates (features `family`, `orbit`, `basin`,
+//! `refutation`, `proof`) on the backends: their kernels on one backend ([`Kinds`], part of a
 //! [`Backend`](super::Backend)), their runs on several, and the dispatch of their text. A reviewer
 //! of point certificates does not read this module.
 
@@ -9,6 +9,8 @@ use crate::reject::Rejection;
 use crate::syntax::cone::Certificate;
 use crate::syntax::{Encoding, Kind, read};
 
+#[cfg(feature = "basin")]
+mod basin;
 #[cfg(feature = "family")]
 mod family;
 #[cfg(feature = "orbit")]
@@ -18,6 +20,8 @@ mod proof;
 #[cfg(feature = "refutation")]
 mod refutation;
 
+#[cfg(feature = "basin")]
+pub use basin::{verify_basin, verify_basin_text_in};
 #[cfg(feature = "family")]
 pub use family::{verify_convex, verify_convex_on};
 #[cfg(feature = "orbit")]
@@ -27,6 +31,8 @@ pub use proof::{verify_proof, verify_proof_text};
 #[cfg(feature = "refutation")]
 pub use refutation::{verify_refutation, verify_refutation_text, verify_refutation_text_in};
 
+#[cfg(feature = "basin")]
+use crate::rules::basin::{self as basin_rules, BasinReport};
 #[cfg(feature = "family")]
 use crate::rules::family as family_rules;
 #[cfg(feature = "orbit")]
@@ -37,6 +43,8 @@ use crate::rules::outcome::Accepted;
 use crate::rules::proof::{self as proof_rules, Checked};
 #[cfg(feature = "refutation")]
 use crate::rules::refutation::{self as refutation_rules, Refuted};
+#[cfg(feature = "basin")]
+use crate::syntax::basin::BasinCertificate;
 #[cfg(feature = "family")]
 use crate::syntax::family::ConvexCertificate;
 #[cfg(feature = "orbit")]
@@ -63,6 +71,9 @@ pub struct Kinds {
     /// Proofs.
     #[cfg(feature = "proof")]
     pub proof: fn(&ProofFile, ParseLimits) -> Result<Checked, Rejection>,
+    /// Basin certificates.
+    #[cfg(feature = "basin")]
+    pub basin: fn(&BasinCertificate, ParseLimits) -> Result<BasinReport, Rejection>,
 }
 
 impl Kinds {
@@ -77,6 +88,8 @@ impl Kinds {
             orbit: orbit_rules::check::<F>,
             #[cfg(feature = "proof")]
             proof: proof_rules::check::<F>,
+            #[cfg(feature = "basin")]
+            basin: basin_rules::check::<F>,
         }
     }
 }

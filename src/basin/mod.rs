@@ -1,0 +1,255 @@
+//! Basin certificates' producer (untrusted; docs/basin-certificates.md §5): an orbit
+//! certificate for the body, then the box of drops bisected adaptively; on each sub-box the
+//! impact prefix that its centre follows in `f64` ([`float::Walker`]) is tried on the quarter
+//! points, then by the kernel's rule B4 on the whole sub-box (exact intervals, malachite); a
+//! sub-box where it fails is halved along the coordinate that moves the end state most, down to
+//! the depth asked, below which it is left undecided. Deterministic: the leaves come out in
+//! depth-first order whatever the threads do.
+
+pub mod float;
+
+use crate::exact::{Q, QExt};
+use crate::orbit::{Found, Request, certify_orbit};
+use chatter_kernel::basin::drop::DIMS;
+use chatter_kernel::exact::ParseLimits;
+use chatter_kernel::orbit::Orbit;
+use chatter_kernel::rules::basin::{Context, Prefix, leaf_box, read};
+use chatter_kernel::syntax::basin::{BasinCertificate, DropBox, FORMAT, Leaf, LeafVerdict, VERSION};
+use chatter_kernel::syntax::orbit::OrbitBody;
+use chatter_kernel::verify::Backend;
+use float::{Plan, Walker};
+use malachite::rational::Rational;
+
+/// A request for a basin certificate.
+#[derive(Clone, Debug)]
+pub struct BasinRequest {
+    /// The orbit certificate's request (n, κ, γ, pattern, drops, its subdivision).
+    pub orbit: Request,
+    /// Lower corner of the box of drops (ω_x, ω_y, φ_x, φ_y, h).
+    pub lo: [Q; DIMS],
+    /// Upper corner.
+    pub hi: [Q; DIMS],
+    /// The deepest bisection of the box.
+    pub depth: usize,
+    /// The longest impact prefix tried.
+    pub max_prefix: usize,
+    /// A CC prefix ends where the centre's state is within this share of δ (X's parameters).
+    pub entry: f64,
+}
+
+impl BasinRequest {
+    /// The paper's drop box: ω, φ in (0, 0.1)², h in (1, 1.1) (R_1..R_5 uniform on (0, 0.1)).
+    pub fn paper_box() -> ([Q; DIMS], [Q; DIMS]) {
+        let (zero, tenth, one) = (Q::int(0), Q::new(1, 10), Q::int(1));
+        (
+            [zero.clone(), zero.clone(), zero.clone(), zero, one],
+            [tenth.clone(), tenth.clone(), tenth.clone(), tenth, Q::new(11, 10)],
+        )
+    }
+}
+
+/// What the producer made.
+pub struct Produced {
+    /// The certificate (its leaves checked by the kernel on malachite while produced).
+    pub certificate: BasinCertificate,
+    /// The orbit certificate's search (or why none was found: then only ICC leaves).
+    pub orbit: Result<Found, String>,
+    /// Leaves: CC, ICC, undecided.
+    pub leaves: [usize; 3],
+    /// Shares of the box (`f64`, for progress and the summary; the kernel's are exact).
+    pub shares: [f64; 3],
+}
+
+/// The producer's state: the kernel's context, the walker, the box.
+struct Producer<'a> {
+    ctx: Context<Rational>,
+    walker: Walker,
+    lo: [Rational; DIMS],
+    hi: [Rational; DIMS],
+    depth: usize,
+    progress: &'a (dyn Fn(f64) + Sync),
+}
+
+/// Produces a basin certificate; `progress` is told the share of the box decided so far.
+pub fn produce(
+    req: &BasinRequest,
+    backends: &[Backend],
+    progress: &(dyn Fn(f64) + Sync),
+) -> Result<Produced, String> {
+    // Without an orbit certificate only ICC leaves can be proved (far above the CC threshold).
+    let found = certify_orbit(&req.orbit, backends).map_err(|e| e.to_string());
+    let r = &req.orbit;
+    let mut cert = BasinCertificate {
+        format: FORMAT.into(),
+        version: VERSION,
+        body: OrbitBody::RegularPolygon { n: r.n, kappa: r.kappa.to_string(), gamma: r.gamma.to_string() },
+        drops: DropBox {
+            lo: req.lo.iter().map(|x| x.to_string()).collect(),
+            hi: req.hi.iter().map(|x| x.to_string()).collect(),
+        },
+        orbit: found.as_ref().ok().map(|f| f.certificate.clone()),
+        leaves: Vec::new(),
+        producer: format!("chatter {} basin", env!("CARGO_PKG_VERSION")),
+    };
+    let (maps, orbit, lo, hi): (_, Option<Orbit<Rational>>, _, _) =
+        read(&cert, ParseLimits::default()).map_err(|r| format!("the kernel refuses the request: {r}"))?;
+    let mut walker = Walker::new(&maps, orbit.as_ref(), req.max_prefix);
+    walker.cut_every = found.as_ref().map_or(0, |f| base_period(&f.pattern));
+    walker.entry = req.entry;
+    let p = Producer { ctx: Context::new(maps, orbit), walker, lo, hi, depth: req.depth, progress };
+    let done = std::sync::atomic::AtomicU64::new(0);
+    let unit = [0.0; DIMS].map(|_: f64| [0.0, 1.0]);
+    cert.leaves = p.decide(String::new(), unit, &done);
+    let mut leaves = [0usize; 3];
+    let mut shares = [0.0; 3];
+    for l in &cert.leaves {
+        let k = match l.verdict {
+            LeafVerdict::Cc { .. } => 0,
+            LeafVerdict::Icc { .. } => 1,
+            LeafVerdict::Undecided => 2,
+        };
+        leaves[k] += 1;
+        shares[k] += 0.5f64.powi(l.path.len() as i32);
+    }
+    Ok(Produced { certificate: cert, orbit: found, leaves, shares })
+}
+
+/// A sub-box in the unit coordinates of the box: [lo, hi] per coordinate.
+type Unit = [[f64; 2]; DIMS];
+
+impl Producer<'_> {
+    /// The drop at unit coordinates u.
+    fn drop_at(&self, u: &[f64; DIMS]) -> [f64; DIMS] {
+        std::array::from_fn(|k| {
+            let (a, b) = (
+                Q::from_rational(self.lo[k].clone()).to_f64(),
+                Q::from_rational(self.hi[k].clone()).to_f64(),
+            );
+            a + (b - a) * u[k]
+        })
+    }
+
+    /// The leaves of the sub-box `path` (unit coordinates `b`), depth first.
+    fn decide(&self, path: String, b: Unit, done: &std::sync::atomic::AtomicU64) -> Vec<Leaf> {
+        let centre: [f64; DIMS] = std::array::from_fn(|k| (b[k][0] + b[k][1]) / 2.0);
+        let plan = self.walker.plan(&self.drop_at(&centre));
+        let probes = self.probes(&b, plan.as_ref());
+        if let Some(plan) = &plan
+            && probes.iter().all(|p| p.iter().all(Option::is_some))
+            && self.kernel_accepts(&path, plan)
+        {
+            return self.leaf(path, verdict(plan), done);
+        }
+        if path.len() >= self.depth || (plan.is_none() && path.len() >= self.depth / 2) {
+            return self.leaf(path, LeafVerdict::Undecided, done);
+        }
+        let axis = self.axis(&b, &probes);
+        let halves = [0, 1].map(|side| {
+            let mut c = b;
+            let m = (b[axis][0] + b[axis][1]) / 2.0;
+            c[axis][1 - side] = m;
+            (format!("{path}{}", 2 * axis + side), c)
+        });
+        let [(p0, b0), (p1, b1)] = halves;
+        let (mut l0, l1) = rayon::join(|| self.decide(p0, b0, done), || self.decide(p1, b1, done));
+        l0.extend(l1);
+        l0
+    }
+
+    fn leaf(&self, path: String, verdict: LeafVerdict, done: &std::sync::atomic::AtomicU64) -> Vec<Leaf> {
+        // Volume in units of 2^-40 of the box.
+        let add = 1u64 << 40usize.saturating_sub(path.len());
+        let now = done.fetch_add(add, std::sync::atomic::Ordering::Relaxed) + add;
+        (self.progress)(now as f64 / (1u64 << 40) as f64);
+        vec![Leaf { path, verdict }]
+    }
+
+    /// For each coordinate, the ends of the plan at the two quarter points (`None`: not followed).
+    fn probes(&self, b: &Unit, plan: Option<&Plan>) -> Vec<[Option<[f64; 3]>; 2]> {
+        (0..DIMS)
+            .map(|k| {
+                [0.25, 0.75].map(|t| {
+                    let u: [f64; DIMS] = std::array::from_fn(|i| {
+                        let (a, c) = (b[i][0], b[i][1]);
+                        if i == k { a + (c - a) * t } else { (a + c) / 2.0 }
+                    });
+                    plan.and_then(|p| self.walker.follow(&self.drop_at(&u), p))
+                })
+            })
+            .collect()
+    }
+
+    /// The coordinate to halve: one along which the plan breaks, else the one whose quarter
+    /// points' end states differ most (relative to the sub-box's width, widest first on ties).
+    fn axis(&self, b: &Unit, probes: &[[Option<[f64; 3]>; 2]]) -> usize {
+        let score = |k: usize| -> f64 {
+            let width = b[k][1] - b[k][0];
+            match probes[k] {
+                [Some(x), Some(y)] => (0..3).map(|i| (x[i] - y[i]).abs()).fold(0.0, f64::max) + 1e-9 * width,
+                _ => 1e9 + width,
+            }
+        };
+        (0..DIMS).max_by(|&i, &j| score(i).total_cmp(&score(j)).then(j.cmp(&i))).unwrap_or(0)
+    }
+
+    /// Rule B4 of the kernel (malachite) on the sub-box `path` with `plan`.
+    fn kernel_accepts(&self, path: &str, plan: &Plan) -> bool {
+        let (lo, hi) = leaf_box(&self.lo, &self.hi, path);
+        let prefix = Prefix { first: plan.first, steps: &plan.steps, cuts: &plan.cuts, cc: plan.cc };
+        self.ctx.leaf(&lo, &hi, &prefix).is_ok()
+    }
+}
+
+/// The shortest period of a pattern (2,2,1,1 repeated twice: 4).
+fn base_period(pattern: &[usize]) -> usize {
+    (1..=pattern.len())
+        .find(|&d| {
+            pattern.len().is_multiple_of(d) && (d..pattern.len()).all(|i| pattern[i] == pattern[i - d])
+        })
+        .unwrap_or(pattern.len())
+}
+
+fn verdict(plan: &Plan) -> LeafVerdict {
+    let (first, steps, cuts) = (plan.first as u64, plan.steps.clone(), plan.cuts.clone());
+    if plan.cc { LeafVerdict::Cc { first, steps, cuts } } else { LeafVerdict::Icc { first, steps, cuts } }
+}
+
+/// The certificate as RON text (docs/certificate-format.md §15), the orbit certificate embedded.
+pub fn write_basin(c: &BasinCertificate) -> String {
+    use crate::write::quoted;
+    let OrbitBody::RegularPolygon { n, kappa, gamma } = &c.body;
+    let list = |v: &[String]| v.iter().map(|s| quoted(s)).collect::<Vec<_>>().join(", ");
+    let mut out = String::from("Certificate(\n");
+    out.push_str(&format!("    format: {},\n    version: {},\n", quoted(&c.format), c.version));
+    out.push_str(&format!(
+        "    body: RegularPolygon(n: {n}, kappa: {}, gamma: {}),\n",
+        quoted(kappa),
+        quoted(gamma)
+    ));
+    out.push_str(&format!("    drops: (lo: [{}], hi: [{}]),\n", list(&c.drops.lo), list(&c.drops.hi)));
+    if let Some(o) = &c.orbit {
+        let orbit = crate::write::write_orbit(o);
+        let orbit: Vec<String> = orbit.trim_end().lines().map(|l| format!("    {l}")).collect();
+        out.push_str(&format!("    orbit: Some({}),\n", orbit.join("\n").trim_start()));
+    }
+    out.push_str("    leaves: [\n");
+    for l in &c.leaves {
+        let v = match &l.verdict {
+            LeafVerdict::Cc { first, steps, cuts } => {
+                format!("Cc(first: {first}, steps: [{}], cuts: [{}])", join(steps), join(cuts))
+            }
+            LeafVerdict::Icc { first, steps, cuts } => {
+                format!("Icc(first: {first}, steps: [{}], cuts: [{}])", join(steps), join(cuts))
+            }
+            LeafVerdict::Undecided => "Undecided".into(),
+        };
+        out.push_str(&format!("        (path: {}, verdict: {v}),\n", quoted(&l.path)));
+    }
+    out.push_str("    ],\n");
+    out.push_str(&format!("    producer: {},\n)\n", quoted(&c.producer)));
+    out
+}
+
+fn join(steps: &[u64]) -> String {
+    steps.iter().map(u64::to_string).collect::<Vec<_>>().join(",")
+}

@@ -1,0 +1,175 @@
+//! `chatter basin`: a basin certificate (docs/basin-certificates.md): which drops of a box are
+//! proved to end in complete chatter, which to reach v > 0, as exact shares of the box.
+
+use super::{Env, Outcome, emit};
+use crate::basin::{BasinRequest, produce, write_basin};
+use crate::exact::{Q, parse_user_number};
+use crate::orbit::Request;
+use chatter_kernel::basin::drop::DIMS;
+use chatter_kernel::exact::ParseLimits;
+use chatter_kernel::verify::{Verdict, verify_basin};
+use clap::Args;
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// Raw arguments of `chatter basin`.
+#[derive(Args, Debug)]
+#[command(after_help = "Numbers are read exactly: 1/8, 0.15 (= 3/20).\n\n\
+The box of drops is in the paper's coordinates before the first impact: velocity\n\
+(omega_x, omega_y, -1), position (phi_x, phi_y, h); the default is the paper's random drops\n\
+(omega, phi in [0, 1/10]^2, h in [1, 11/10]). CC is counted only for drops proved to enter the\n\
+set X of an orbit certificate (docs/basin-certificates.md).\n\n\
+Example:\n  chatter basin --n 3 --kappa 1/8 --gamma 3/20 --depth 20 -o basin.ron")]
+pub struct BasinArgs {
+    /// Number of contacts, 3 to 64.
+    #[arg(long, default_value_t = 3)]
+    pub n: u64,
+    /// kappa = rho^2/R^2.
+    #[arg(long, allow_hyphen_values = true)]
+    pub kappa: String,
+    /// Coefficient of restitution.
+    #[arg(long, allow_hyphen_values = true)]
+    pub gamma: String,
+    /// The orbit certificate's pattern (e.g. 2,2,1,1); found by simulating drops when omitted.
+    #[arg(long, allow_hyphen_values = true)]
+    pub pattern: Option<String>,
+    /// The box of drops: ten numbers "lo1,..,lo5:hi1,..,hi5" for (omega_x, omega_y, phi_x, phi_y, h).
+    #[arg(long = "box", allow_hyphen_values = true)]
+    pub drop_box: Option<String>,
+    /// The deepest bisection of the box (each halves one coordinate).
+    #[arg(long, default_value_t = 20)]
+    pub depth: usize,
+    /// The longest impact prefix tried per sub-box.
+    #[arg(long, default_value_t = 400)]
+    pub max_prefix: usize,
+    /// A CC prefix ends once the sub-box centre's state lies within this share of X's delta
+    /// (smaller: longer prefixes, larger leaves).
+    #[arg(long, default_value_t = 0.25)]
+    pub entry: f64,
+    /// The orbit certificate's deepest subdivision of X (larger X, slower checks).
+    #[arg(long, default_value_t = 2)]
+    pub orbit_depth: u64,
+    /// Write the certificate here.
+    #[arg(short = 'o', long)]
+    pub output: Option<PathBuf>,
+    /// Skip the final check of the whole file on both backends (the leaves are checked on
+    /// malachite while produced).
+    #[arg(long)]
+    pub no_verify: bool,
+}
+
+/// `--box` text: ten numbers.
+fn parse_box(text: &str) -> Result<([Q; DIMS], [Q; DIMS]), String> {
+    let Some((a, b)) = text.split_once(':') else {
+        return Err(format!("--box: {text:?}: write lo1,..,lo5:hi1,..,hi5"));
+    };
+    let corner = |s: &str| -> Result<[Q; DIMS], String> {
+        let v: Vec<Q> = s
+            .split(',')
+            .map(|x| parse_user_number(x.trim()).map_err(|e| format!("--box: {e}")))
+            .collect::<Result<_, _>>()?;
+        v.try_into().map_err(|v: Vec<Q>| format!("--box: {} numbers in a corner, need {DIMS}", v.len()))
+    };
+    Ok((corner(a)?, corner(b)?))
+}
+
+fn validate(a: &BasinArgs) -> Result<BasinRequest, String> {
+    if !(3..=crate::exact::MAX_N).contains(&a.n) {
+        return Err(format!("--n: {} is not supported: give 3 <= n <= {}", a.n, crate::exact::MAX_N));
+    }
+    let kappa = parse_user_number(&a.kappa).map_err(|e| format!("--kappa: {e}"))?;
+    let gamma = parse_user_number(&a.gamma).map_err(|e| format!("--gamma: {e}"))?;
+    if let Err(e) = crate::certify::check_body(a.n, &kappa, &gamma) {
+        return Err(super::body_error(&e, a.n, &kappa, &gamma, "3 <= n <= 64"));
+    }
+    let pattern = a.pattern.as_deref().map(|p| super::orbit_cmd::parse_pattern(p, a.n)).transpose()?;
+    let (lo, hi) = match &a.drop_box {
+        Some(t) => parse_box(t)?,
+        None => BasinRequest::paper_box(),
+    };
+    if let Some(k) = (0..DIMS).find(|&k| lo[k] >= hi[k]) {
+        return Err(format!("--box: coordinate {} has lo >= hi", k + 1));
+    }
+    if lo[4] <= Q::int(0) {
+        return Err("--box: h must be > 0".into());
+    }
+    if a.depth > chatter_kernel::basin::MAX_PATH || a.max_prefix > chatter_kernel::basin::MAX_PREFIX {
+        return Err(format!(
+            "--depth at most {}, --max-prefix at most {}",
+            chatter_kernel::basin::MAX_PATH,
+            chatter_kernel::basin::MAX_PREFIX
+        ));
+    }
+    let orbit = Request { n: a.n, kappa, gamma, pattern, drops: 200, max_depth: a.orbit_depth.min(4) };
+    if !(a.entry > 0.0 && a.entry <= 1.0) {
+        return Err(format!("--entry: {} is not in (0, 1]", a.entry));
+    }
+    Ok(BasinRequest { orbit, lo, hi, depth: a.depth, max_prefix: a.max_prefix, entry: a.entry })
+}
+
+pub fn run(a: BasinArgs, env: &Env) -> Outcome {
+    let req = match validate(&a) {
+        Ok(r) => r,
+        Err(e) => return Outcome::Usage(e),
+    };
+    let bar = indicatif::ProgressBar::new(10_000);
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} of the box decided {elapsed}")
+    {
+        bar.set_style(style);
+    }
+    let start = Instant::now();
+    let progress = |share: f64| bar.set_position((share * 10_000.0) as u64);
+    let produced = match produce(&req, &env.backends, &progress) {
+        Ok(p) => p,
+        Err(e) => {
+            bar.finish_and_clear();
+            emit(&format!("NOT CERTIFIED: {e}"));
+            return Outcome::Negative;
+        }
+    };
+    bar.finish_and_clear();
+    let made = start.elapsed().as_secs_f64();
+    if let Some(path) = &a.output
+        && let Err(e) = std::fs::write(path, write_basin(&produced.certificate))
+    {
+        return Outcome::Usage(format!("cannot write {}: {e}", path.display()));
+    }
+    let [cc, icc, und] = produced.leaves;
+    let [scc, sicc, sund] = produced.shares;
+    let orbit = match &produced.orbit {
+        Ok(f) => format!("orbit pattern {:?}, delta {:e}", f.pattern, f.delta),
+        Err(e) => format!("no orbit certificate ({e}): CC not provable"),
+    };
+    let head = format!(
+        "n={} kappa={} gamma={}: {} leaves (CC {cc}, ICC {icc}, undecided {und}); shares CC {scc:.4}, ICC {sicc:.4}, undecided {sund:.4}; {orbit}; produced in {made:.1} s",
+        req.orbit.n,
+        req.orbit.kappa,
+        req.orbit.gamma,
+        cc + icc + und,
+    );
+    if a.no_verify {
+        emit(&format!("PRODUCED (leaves checked on {} only) {head}", env.backends[0].name));
+        return Outcome::Success;
+    }
+    let t = Instant::now();
+    let verdict = verify_basin(&produced.certificate, ParseLimits::default(), &env.backends);
+    let secs = t.elapsed().as_secs_f64();
+    match verdict {
+        Verdict::Accepted(r) => {
+            emit(&format!(
+                "CERTIFIED {head}; kernel on both backends {secs:.1} s: cc_share {}, icc_share {}, undecided_share {}, time to rest <= {} h/|v| on every CC leaf",
+                r.cc_share,
+                r.icc_share,
+                r.undecided_share,
+                r.time_to_rest_bound.as_deref().map_or("-".into(), |b| {
+                    use crate::exact::QExt;
+                    crate::exact::parse_user_number(b).map_or(b.to_string(), |q| format!("{:.4}", q.to_f64()))
+                })
+            ));
+            Outcome::Success
+        }
+        Verdict::Rejected(r) => Outcome::Internal(format!("the producer's certificate is rejected: {r}")),
+        Verdict::Disagree(s) => Outcome::Internal(s),
+    }
+}
