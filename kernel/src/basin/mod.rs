@@ -1,6 +1,6 @@
 //! Basin certificates' machinery (feature `basin`; docs/basin-certificates.md): the partition of
 //! the box of drops by bisection paths ([`tree`]), and the drop's state in our coordinates with
-//! sin 2π/n enclosed ([`drop`]). The acceptance rules are [`crate::rules::basin`].
+//! sin 2π/n enclosed ([`mod@drop`]). The acceptance rules are [`crate::rules::basin`].
 
 pub mod drop;
 pub mod tree;
