@@ -225,7 +225,7 @@ fn rule_rows() -> Vec<(String, String, String)> {
 }
 
 /// The kernel's half of §5: every row's file is rejected with the row's code. That each file
-/// breaks only its rule is decided by the independent oracle in oracle/tests/rules.rs.
+/// breaks only its rule is decided by the independent oracle in oracle/tests/all/rules.rs.
 #[test]
 fn every_acceptance_rule_has_a_corpus_file_rejected_with_its_code() {
     let rows = rule_rows();

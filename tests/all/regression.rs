@@ -215,7 +215,7 @@ fn issue8_long_numbers_are_abbreviated_in_rejections() {
 fn issue11_a_rod_box_checks_r2_at_every_corner_before_r3() {
     // Found by the structure-aware smoke test: at the corner kappa = 1/3 only R3 fails, at
     // kappa = 13/30 R2 fails; the documented order (R2 at every corner, then R3) reports R2. (That
-    // both rules fail is decided by the oracle in oracle/tests/rules.rs.)
+    // both rules fail is decided by the oracle in oracle/tests/all/rules.rs.)
     let text = std::fs::read_to_string(
         crate::common::root().join("certificates/valid/n2-kappa1_3-gamma7_100-effectively-invariant.ron"),
     )

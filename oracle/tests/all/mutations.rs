@@ -2,11 +2,9 @@
 //! kernel on both backends and judged by the oracle; any disagreement fails with the mutated text.
 //! The same decoder drives the fuzz target `fuzz/fuzz_targets/oracle.rs`.
 
-mod common;
-
+use crate::common::{differential_ron, root};
 use chatter_oracle::mutate::{decode, mutated};
 use chatter_oracle::read::{Encoding, parse::parse};
-use common::{differential_ron, root};
 use std::collections::BTreeMap;
 
 /// Base files: small certificates and refutations of every kind (the large ones cost seconds per

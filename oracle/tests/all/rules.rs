@@ -4,8 +4,7 @@
 //! exactly on an edge of K, or outside it by exactly 10^-30; a rod box whose corners fail R2 and
 //! R3 at different corners.
 
-mod common;
-
+use crate::common::{differential_file, differential_ron, root};
 use chatter_oracle::arith::Num;
 use chatter_oracle::isolate::every_failure;
 use chatter_oracle::kinds::cone::{Parts, prepare, read};
@@ -13,7 +12,6 @@ use chatter_oracle::kinds::limits::Limits;
 use chatter_oracle::plane::{HalfPlane, clip_vertices, lift, orient, project};
 use chatter_oracle::read::{Encoding, parse::parse};
 use chatter_oracle::regular::rules::cone_polygon;
-use common::{differential_file, differential_ron, root};
 
 /// The rows `| rule | code | file |` of docs/kernel-soundness.md §5.
 fn rule_rows() -> Vec<(String, String, String)> {

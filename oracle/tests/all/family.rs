@@ -3,14 +3,12 @@
 //! generators, a generator lifted to v = 0, γ tripled, the claim raised, the claim lowered); the kernel's code must
 //! be one the oracle's first failing rule can give. (Moved from the tool's tests/all/oracle_convex.rs.)
 
-mod common;
-
+use crate::common::differential_ron;
 use chatter::bodies::convex::polygon_plate;
 use chatter::certify::convex::{ConvexRequest, certify_convex};
 use chatter::exact::Q;
 use chatter_oracle::arith::rational::{parse_rational, rational_text};
 use chatter_oracle::read::{Encoding, Value, parse::parse, write::to_ron};
-use common::differential_ron;
 
 /// splitmix64.
 struct Rng(u64);

@@ -3,10 +3,8 @@
 //! convex body; the refuter; the orbit producer), written as RON by serde (no kernel writer), then
 //! verified by the kernel on both backends and judged by the oracle. Any disagreement fails.
 
-mod common;
-
+use crate::common::differential_ron;
 use chatter::exact::Q;
-use common::differential_ron;
 use std::collections::BTreeMap;
 
 fn q(s: &str) -> Q {

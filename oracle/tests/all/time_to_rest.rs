@@ -4,8 +4,6 @@
 //! margin of it, so a smaller B is false); and the kernel's verdict on bounds 10^-30 either side
 //! of 1/λ_1.
 
-mod common;
-
 use chatter_oracle::arith::rational::{Rat, parse_rational, ratio, rational_text};
 use chatter_oracle::claim::Claim;
 use chatter_oracle::kinds::limits::Limits;
@@ -131,7 +129,7 @@ fn simulated_drops_stay_within_one_over_lambda_and_approach_it() {
 }
 
 fn with_bound(file: &str, bound: Option<&str>) -> String {
-    let text = std::fs::read_to_string(common::root().join("certificates/valid").join(file)).unwrap();
+    let text = std::fs::read_to_string(crate::common::root().join("certificates/valid").join(file)).unwrap();
     let start = text.find("    time_to_rest_bound:").expect("the field");
     let end = start + text[start..].find('\n').unwrap() + 1;
     let line = bound.map(|b| format!("    time_to_rest_bound: Some(\"{b}\"),\n")).unwrap_or_default();
@@ -142,43 +140,44 @@ fn with_bound(file: &str, bound: Option<&str>) -> String {
 fn the_kernel_agrees_ten_to_the_minus_thirty_either_side_of_an_irrational_bound() {
     let (lo, hi) = bracket();
     let file = "n2-kappa1_3-gamma7_100-complete-chatter-from-all-down.ron";
-    let (k, o, cmp) = common::differential_ron(&with_bound(file, Some(&rational_text(&hi))));
+    let (k, o, cmp) = crate::common::differential_ron(&with_bound(file, Some(&rational_text(&hi))));
     assert!(cmp.is_ok() && k.accepted && o.accepted(), "{cmp:?} {k:?} {o:?}");
     assert_eq!(o.time_to_rest_bound, Some(rational_text(&hi)));
-    let (k, o, cmp) = common::differential_ron(&with_bound(file, Some(&rational_text(&lo))));
+    let (k, o, cmp) = crate::common::differential_ron(&with_bound(file, Some(&rational_text(&lo))));
     assert!(cmp.is_ok(), "{cmp:?}");
     assert_eq!(
         (k.code.as_deref(), o.codes()),
         (Some("time-to-rest-not-shown"), &["time-to-rest-not-shown"][..])
     );
     // Without the field, and with `None`, the certificate is accepted without a bound.
-    let (k, o, cmp) = common::differential_ron(&with_bound(file, None));
+    let (k, o, cmp) = crate::common::differential_ron(&with_bound(file, None));
     assert!(cmp.is_ok() && k.accepted && o.time_to_rest_bound.is_none(), "{cmp:?}");
     let none =
         with_bound(file, None).replace("    producer:", "    time_to_rest_bound: None,\n    producer:");
-    let (k, o, cmp) = common::differential_ron(&none);
+    let (k, o, cmp) = crate::common::differential_ron(&none);
     assert!(cmp.is_ok() && k.accepted && o.accepted(), "{cmp:?}");
 }
 
 #[test]
 fn the_bound_is_refused_on_every_body_but_the_rod_at_a_point() {
     let square =
-        std::fs::read_to_string(common::root().join("certificates/valid/doc-example-square.ron")).unwrap();
+        std::fs::read_to_string(crate::common::root().join("certificates/valid/doc-example-square.ron"))
+            .unwrap();
     let rod_box = std::fs::read_to_string(
-        common::root().join("certificates/valid/n2-kappa1_4_1_3-gamma1_100_1_20-box.ron"),
+        crate::common::root().join("certificates/valid/n2-kappa1_4_1_3-gamma1_100_1_20-box.ron"),
     )
     .unwrap();
     for (what, text) in [("square", square), ("rod box", rod_box)] {
         let at = text.find("    producer:").expect("a producer");
         let with = format!("{}    time_to_rest_bound: Some(\"1000\"),\n{}", &text[..at], &text[at..]);
-        let (k, o, cmp) = common::differential_ron(&with);
+        let (k, o, cmp) = crate::common::differential_ron(&with);
         assert!(cmp.is_ok(), "{what}: {cmp:?}");
         assert_eq!(k.code.as_deref(), Some("time-to-rest-not-shown"), "{what}");
         assert_eq!(o.codes(), ["time-to-rest-not-shown"], "{what}");
         // Refused before the numbers are read: even a malformed B.
         let bad = with.replace("Some(\"1000\")", "Some(\"10/4\")");
         assert_eq!(chatter_oracle::judge(&bad, Encoding::Ron).codes(), ["time-to-rest-not-shown"], "{what}");
-        assert!(common::differential_ron(&bad).2.is_ok(), "{what}");
+        assert!(crate::common::differential_ron(&bad).2.is_ok(), "{what}");
     }
 }
 
@@ -188,7 +187,7 @@ fn the_bound_is_refused_on_every_body_but_the_rod_at_a_point() {
 #[test]
 fn the_optional_field_and_the_header_get_the_kernels_codes() {
     let file = "n2-kappa1_3-gamma1_20-complete-chatter-from-all-down.ron";
-    let base = std::fs::read_to_string(common::root().join("certificates/valid").join(file)).unwrap();
+    let base = std::fs::read_to_string(crate::common::root().join("certificates/valid").join(file)).unwrap();
     let bound = "Some(\"5/2\")";
     let edits: Vec<(&str, &str, &str)> = vec![
         (bound, "None", "accepted"),
@@ -237,7 +236,7 @@ fn the_optional_field_and_the_header_get_the_kernels_codes() {
     for (from, to, want) in edits {
         assert!(base.contains(from), "{from}");
         let text = base.replacen(from, to, 1);
-        let (k, o, cmp) = common::differential_ron(&text);
+        let (k, o, cmp) = crate::common::differential_ron(&text);
         assert!(cmp.is_ok(), "{to}: {cmp:?}");
         let got = if k.accepted { "accepted" } else { k.code.as_deref().unwrap_or("") };
         assert_eq!(got, want, "{to}: kernel {k:?}");
@@ -256,7 +255,7 @@ fn the_optional_field_and_the_header_get_the_kernels_codes() {
     ] {
         let path = dir.join("bound.json");
         std::fs::write(&path, json.replace("B", b)).unwrap();
-        let (k, o, cmp) = common::differential_file(&path);
+        let (k, o, cmp) = crate::common::differential_file(&path);
         assert!(cmp.is_ok(), "{b}: {cmp:?}");
         let got = if k.accepted { "accepted" } else { k.code.as_deref().unwrap_or("") };
         assert_eq!(got, want, "{b}: kernel {k:?}");

@@ -2,10 +2,8 @@
 //! `certificates/invalid` (RON, JSON, gzip'd), with the expected codes of
 //! `certificates/invalid/expected.json`. Any disagreement fails with the file.
 
-mod common;
-
+use crate::common::{differential_file, root};
 use chatter_oracle::compare::Agreement;
-use common::{differential_file, root};
 use std::collections::BTreeMap;
 
 fn corpus(dir: &str) -> Vec<std::path::PathBuf> {
@@ -57,12 +55,12 @@ fn time_each_corpus_file() {
     for dir in ["certificates/valid", "certificates/invalid"] {
         for path in corpus(dir) {
             let t = std::time::Instant::now();
-            let text = common::read_text(&path).unwrap_or_default();
+            let text = crate::common::read_text(&path).unwrap_or_default();
             let enc = chatter_oracle::read::Encoding::of_name(&path.to_string_lossy());
             let o = chatter_oracle::judge(&text, enc);
             let to = t.elapsed();
             let t = std::time::Instant::now();
-            let _ = common::kernel_file(&path);
+            let _ = crate::common::kernel_file(&path);
             eprintln!(
                 "{:>8.3} {:>8.3} {} {:?}",
                 to.as_secs_f64(),
