@@ -1,6 +1,6 @@
 //! Diagnostics for basin certificates (evidence only): the `f64` walk of one drop of the paper's
 //! box, printed impact by impact with its distance to the orbit certificate's X.
-//! `cargo run --release --example basin_probe -- FILE R1 R2 R3 R4 R5 [IMPACTS]`.
+//! `cargo run --release --features research --example basin_probe -- FILE R1 R2 R3 R4 R5 [IMPACTS]`.
 
 use chatter::basin::float::Walker;
 use chatter_kernel::exact::ParseLimits;

@@ -1,6 +1,6 @@
 //! Issue 13 §4: the family finder's success rate against the simulation on a grid of gamma, for
 //! the rectangle plates of aspect 1, 2, 4, the phone box 150 x 75 x 8 and the named bodies.
-//! `cargo run --release --example general_grid [POINTS]` (default 40 points, gamma = k/200).
+//! `cargo run --release --features research --example general_grid [POINTS]` (default 40 points, gamma = k/200).
 
 use chatter::bodies::convex::{rectangle_plate, uniform_box};
 use chatter::bodies::general::general_catalogue;

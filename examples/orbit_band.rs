@@ -1,13 +1,13 @@
 //! Issue 15 §3 (docs/orbit-certificates.md §7): the band above the CC threshold.
 //!
 //! ```text
-//! cargo run --release --example orbit_band -- band [DROPS]      # n = 3: kappa grid x ratios gamma/gamma*
-//! cargo run --release --example orbit_band -- edge [STEPS]      # n = 3: bisection of the producer's edge
-//! cargo run --release --example orbit_band -- cycle             # n = 3: thresholds of S_1^2 S_2^2
-//! cargo run --release --example orbit_band -- search N [DROPS]  # n = 4, 5, 6: drops just above gamma*
-//! cargo run --release --example orbit_band -- sweep N [DROPS] [BUDGET] [GAMMAS]  # issue 22 §2: the band search
-//! cargo run --release --example orbit_band -- pcc [N KAPPA G,G]  # default n = 4, kappa = 1/6: PCC orbit search
-//! cargo run --release --example orbit_band -- words N KAPPA R L  # patterns of length <= L whose
+//! cargo run --release --features research --example orbit_band -- band [DROPS]      # n = 3: kappa grid x ratios gamma/gamma*
+//! cargo run --release --features research --example orbit_band -- edge [STEPS]      # n = 3: bisection of the producer's edge
+//! cargo run --release --features research --example orbit_band -- cycle             # n = 3: thresholds of S_1^2 S_2^2
+//! cargo run --release --features research --example orbit_band -- search N [DROPS]  # n = 4, 5, 6: drops just above gamma*
+//! cargo run --release --features research --example orbit_band -- sweep N [DROPS] [BUDGET] [GAMMAS]  # issue 22 §2: the band search
+//! cargo run --release --features research --example orbit_band -- pcc [N KAPPA G,G]  # default n = 4, kappa = 1/6: PCC orbit search
+//! cargo run --release --features research --example orbit_band -- words N KAPPA R L  # patterns of length <= L whose
 //!                                                              # period map passes the cycle criterion at r gamma*
 //! ```
 //!

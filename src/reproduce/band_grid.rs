@@ -147,7 +147,7 @@ pub fn band_grid(ctx: &Context, r: &mut Report) -> Result<(), String> {
     let (pentagon_line, pentagon_refutes) = pentagon(ctx)?;
     evidence.push(pentagon_line);
     evidence.push(square_pcc(runs)?);
-    evidence.push("the full grid (9 κ × 10 ratios), the exact edges γ_c and the n = 4, 5, 6 search: `cargo run --release --example orbit_band -- band 10` (also `cycle`, `edge 10`, `search 4 10`, `pcc`), docs/orbit-certificates.md §7".into());
+    evidence.push("the full grid (9 κ × 10 ratios), the exact edges γ_c and the n = 4, 5, 6 search: `cargo run --release --features research --example orbit_band -- band 10` (also `cycle`, `edge 10`, `search 4 10`, `pcc`), docs/orbit-certificates.md §7".into());
     let mut refuted: Vec<String> =
         rows.iter().filter(|r| r.orbit.certified() && !r.cc).map(|r| r.kappa.to_string()).collect();
     refuted.dedup();
