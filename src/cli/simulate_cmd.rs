@@ -300,9 +300,12 @@ fn single_text(v: &Validated, run: &Run) -> Vec<String> {
         ),
         verdict_line(v, run),
         format!("decided by: {}", run.decision.describe()),
+    ];
+    lines.extend(cone_line(run));
+    lines.extend([
         format!("impacts: {} (per contact {counts})", run.impacts),
         format!("sequence: {}", pattern::summary_for(&run.sequence, v.model.shape())),
-    ];
+    ]);
     let mut time = if run.impacts == 0 {
         "total time: 0 (no impacts)".to_string()
     } else {
@@ -333,6 +336,20 @@ fn single_text(v: &Validated, run: &Run) -> Vec<String> {
         ));
     }
     lines
+}
+
+/// The cone entry a run went on past (issue 24): the first fact proved, and what followed.
+fn cone_line(run: &Run) -> Option<String> {
+    let cone = run.cone_entry.as_ref()?;
+    let Decision::Certified { after, .. } = cone else { return None };
+    Some(if *cone == run.decision {
+        format!(
+            "went on past the cone entry at impact {after}, exactly, to the budget: no orbit certificate's \
+             set entered, so the cone's proof (no ICC, no PCC) stands"
+        )
+    } else {
+        format!("first proved: {}; the exact run went on past it, to the entry above", cone.describe())
+    })
 }
 
 /// "outcome: CC (proved)", "outcome: no ICC, no PCC (proved; CC not proved: ...; evidence: CC
