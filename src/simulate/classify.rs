@@ -36,7 +36,10 @@
 //!    - the normalised state in the set X of a kernel-checked orbit certificate: proved CC, the
 //!      impacts accumulating at a finite time.
 //!
-//!    Tested before rule 4 (in K or X, PCC is excluded).
+//!    Tested before rule 4 (in K or X, PCC is excluded); X before K. With
+//!    [`Options::after_cone`] and an orbit set among the sets, a cone entry without a finite time
+//!    is kept as the first fact ([`Run::cone_entry`]) and the run goes on (issue 24 §2), testing
+//!    only X: an entry proves CC, and at the end of the budget the cone's proof stands.
 //!
 //! 5. `f64` only: an interval of exactly 0 with gamma > 0 cannot happen in exact dynamics after
 //!    the first impact; it means that heights were lost in rounding: "undecided".
