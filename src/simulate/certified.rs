@@ -217,7 +217,7 @@ pub fn canonical_cycle(steps: &[usize]) -> Vec<usize> {
 /// 1,2,2 three times), and the orbit producer wants the shorter one.
 pub fn primitive_cycle(steps: &[usize]) -> Vec<usize> {
     let len = steps.len();
-    let period = (1..=len).find(|&p| len % p == 0 && (p..len).all(|i| steps[i] == steps[i - p]));
+    let period = (1..=len).find(|&p| len.is_multiple_of(p) && (p..len).all(|i| steps[i] == steps[i - p]));
     canonical_cycle(&steps[..period.unwrap_or(len)])
 }
 
