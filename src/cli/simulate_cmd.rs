@@ -30,8 +30,9 @@ in this model, never resolved), undecided (the budget cannot tell). With --exact
 proved or undecided; no-ICC-no-PCC (\"no ICC, no PCC\") is proved when the state enters the cone \
 of a kernel-checked cone certificate: the body never separates and never ends in PCC, so it is CC \
 unless the impacts take infinite time, which is not excluded (docs/time-to-rest.md); CC is proved \
-only with a finite accumulation time (an orbit certificate's set, or the exact pair proof). The \
-line `decided by` names the test.\n\n\
+only with a finite accumulation time (an orbit certificate's set, or the exact pair proof). When \
+orbit certificates may follow (made on the fly, or given), a run that entered a cone goes on within \
+the budget and is CC if it then enters an orbit certificate's set. The line `decided by` names the test.\n\n\
 Without --position/--velocity the body is dropped as in the paper: velocity (R1, R2, -1) and \
 position (R3, R4, 1 + R5) in the paper's coordinates (omega_x, omega_y, v), (phi_x, phi_y, h), \
 R_i uniform on (0, 0.1) from --seed (SplitMix64: the same on every machine); the rod uses \
@@ -300,9 +301,12 @@ fn single_text(v: &Validated, run: &Run) -> Vec<String> {
         ),
         verdict_line(v, run),
         format!("decided by: {}", run.decision.describe()),
+    ];
+    lines.extend(cone_line(run));
+    lines.extend([
         format!("impacts: {} (per contact {counts})", run.impacts),
         format!("sequence: {}", pattern::summary_for(&run.sequence, v.model.shape())),
-    ];
+    ]);
     let mut time = if run.impacts == 0 {
         "total time: 0 (no impacts)".to_string()
     } else {
@@ -333,6 +337,20 @@ fn single_text(v: &Validated, run: &Run) -> Vec<String> {
         ));
     }
     lines
+}
+
+/// The cone entry a run went on past (issue 24): the first fact proved, and what followed.
+fn cone_line(run: &Run) -> Option<String> {
+    let cone = run.cone_entry.as_ref()?;
+    let Decision::Certified { after, .. } = cone else { return None };
+    Some(if *cone == run.decision {
+        format!(
+            "went on past the cone entry at impact {after}, exactly, to the budget: no orbit certificate's \
+             set entered, so the cone's proof (no ICC, no PCC) stands"
+        )
+    } else {
+        format!("first proved: {}; the exact run went on past it, to the entry above", cone.describe())
+    })
 }
 
 /// "outcome: CC (proved)", "outcome: no ICC, no PCC (proved; CC not proved: ...; evidence: CC

@@ -5,7 +5,7 @@
 
 use crate::exact::Q;
 use crate::simulate::Model;
-use crate::simulate::certified::{Certified, SetKind, canonical_cycle, parameters, pattern_text};
+use crate::simulate::certified::{Certified, SetKind, parameters, pattern_text, primitive_cycle};
 use chatter_kernel::certificate::Claim;
 use std::collections::HashMap;
 use std::sync::Mutex;
@@ -80,8 +80,9 @@ pub fn remember(model: &Model, sets: &Certified) {
     cache().lock().expect("cache").insert(key(model), sets.clone());
 }
 
-/// Tries an orbit certificate for the steps `pattern` (orbit producer, kernel on both backends)
-/// and adds it to `sets`; `Ok(false)` when one for a phase of this pattern is there already.
+/// Tries an orbit certificate for the steps `pattern`, reduced to its shortest repeated word
+/// (orbit producer, kernel on both backends), and adds it to `sets`; `Ok(false)` when one made
+/// on the fly for a phase of this pattern is there already.
 pub fn add_orbit_for(
     sets: &mut Certified,
     model: &Model,
@@ -89,9 +90,10 @@ pub fn add_orbit_for(
     effort: Effort,
 ) -> Result<bool, String> {
     let Some((n, _, _)) = parameters(model) else { return Err("not a regular polygon".into()) };
-    let canonical = canonical_cycle(pattern);
+    let canonical = primitive_cycle(pattern);
     let text = pattern_text(&canonical);
-    if sets.sets().iter().any(|s| s.kind == SetKind::Orbit && s.name.contains(&text)) {
+    let name = format!("orbit certificate made on the fly (pattern {text})");
+    if sets.sets().iter().any(|s| s.kind == SetKind::Orbit && s.name == name) {
         return Ok(false);
     }
     let req = crate::orbit::Request {
@@ -106,7 +108,6 @@ pub fn add_orbit_for(
     let halvings = if effort == Effort::Survey { SURVEY_HALVINGS } else { crate::orbit::MAX_HALVINGS };
     let found =
         crate::orbit::certify_orbit_within(&req, &backends, &[], halvings).map_err(|f| f.to_string())?;
-    let name = format!("orbit certificate made on the fly (pattern {text})");
     sets.add_orbit(model, &found.certificate, &name)?;
     Ok(true)
 }

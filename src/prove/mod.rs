@@ -1,16 +1,20 @@
 //! Drops decided with proofs (issue 22 §1): exact runs against certified sets
 //! ([`crate::simulate::certified`]), made on the fly here ([`made`]: a cone certificate by the
 //! certify pipeline, cached per body and parameters) or given, with orbit certificates made for
-//! the periodic patterns that the drops left undecided settle into ([`add_orbit_for`]), after
-//! which those drops are run again.
+//! the periodic patterns that the drops left open settle into ([`add_orbit_for`]), after which
+//! those drops are run again. Open: undecided with CC as evidence, or proved only no-ICC-no-PCC
+//! by a cone (issue 24: a cone gives no finite accumulation time, an orbit set does); such a
+//! rerun goes on past the cone entry ([`Options::after_cone`]), keeping the cone's proof should
+//! it enter no orbit set within the budget.
 
 mod make;
 
 pub use make::{Effort, ORBIT_DEPTH, add_orbit_for, cone, made, remember};
 
-use crate::simulate::certified::{Certified, canonical_cycle, pattern_text};
+use crate::simulate::certified::{Certified, pattern_text, primitive_cycle};
 use crate::simulate::{
-    Arithmetic, Brief, Initial, Model, Options, Outcome, Run, Shape, simulate_many_with, simulate_with,
+    Arithmetic, Brief, Initial, Model, Options, Outcome, Run, Shape, simulate, simulate_many_with,
+    simulate_with,
 };
 use std::collections::BTreeSet;
 
@@ -27,12 +31,35 @@ fn orbits_possible(model: &Model) -> bool {
     matches!(model.shape(), Shape::Polygon(n) if (3..=crate::exact::MAX_N).contains(&n))
 }
 
-/// The canonical cycles of the drops that are undecided although the evidence says CC.
-fn open_cycles(briefs: &[Brief]) -> BTreeSet<Vec<usize>> {
+/// Whether an orbit certificate could still prove the drop CC: undecided with CC as evidence,
+/// or proved only no-ICC-no-PCC by a cone (finite accumulation time not derived; issue 24).
+fn open(b: &Brief) -> bool {
+    b.evidence == Outcome::Cc && (!b.proved || b.outcome == Outcome::NoIccNoPcc)
+}
+
+/// The primitive cycle of steps of an open drop: from its exact run, unless that run stopped at
+/// a cone entry (too early to show one), then from an `f64` run of the same drop with the same
+/// budget (the cycle only suggests a pattern to the orbit producer; the kernel proves).
+fn cycle_of(model: &Model, initial: &Initial, b: &Brief, budget: usize) -> Option<Vec<usize>> {
+    let stopped_at_cone = b.outcome == Outcome::NoIccNoPcc && b.cone_after.is_none();
+    let cycle = if stopped_at_cone {
+        let run = simulate(model, initial, Arithmetic::Float, &Options::new(budget));
+        Brief::of(b.seed, &run, model.n()).cycle
+    } else {
+        b.cycle.clone()
+    };
+    cycle.as_deref().map(primitive_cycle)
+}
+
+/// The cycles of the open drops ([`open`], [`cycle_of`]) among random drops.
+fn open_cycles(model: &Model, briefs: &[Brief], budget: usize) -> BTreeSet<Vec<usize>> {
+    use rayon::prelude::*;
     briefs
-        .iter()
-        .filter(|b| !b.proved && b.evidence == Outcome::Cc)
-        .filter_map(|b| b.cycle.as_deref().map(canonical_cycle))
+        .par_iter()
+        .filter(|b| open(b))
+        .filter_map(|b| cycle_of(model, &Initial::RandomDrop { seed: b.seed }, b, budget))
+        .collect::<Vec<_>>()
+        .into_iter()
         .collect()
 }
 
@@ -50,9 +77,16 @@ fn add_orbits(model: &Model, sets: &mut Certified, cycles: &BTreeSet<Vec<usize>>
     added
 }
 
-/// Runs `runs` random drops (seeds `seed..`) exactly with the sets `sets`; with `orbits`,
-/// tries orbit certificates (with that effort) for the cycles of undecided drops whose evidence is CC and reruns
-/// those drops. `tick` is called after each first run.
+/// The options of a run against `sets`: go on past a cone entry when an orbit set may follow.
+fn against(opts: &Options, sets: &Certified) -> Options {
+    Options { after_cone: sets.has_orbits(), ..*opts }
+}
+
+/// Runs `runs` random drops (seeds `seed..`) exactly with the sets `sets`; with `orbits`, tries
+/// orbit certificates (with that effort) for the cycles of the drops still open ([`open`]:
+/// undecided with CC as evidence, or proved no-ICC-no-PCC by a cone) and reruns those drops,
+/// going on past a cone entry so that they can enter an orbit set. `tick` is called after each
+/// first run.
 pub fn prove_many(
     model: &Model,
     seed: u64,
@@ -63,40 +97,33 @@ pub fn prove_many(
     tick: &(dyn Fn() + Sync),
 ) -> Proved {
     use rayon::prelude::*;
-    let mut briefs = simulate_many_with(model, seed, runs, Arithmetic::Exact, opts, Some(&sets), tick);
-    let cycles = open_cycles(&briefs);
-    let try_orbits = |sets: &mut Certified| match orbits {
-        Some(effort) if orbits_possible(model) && !cycles.is_empty() => {
-            add_orbits(model, sets, &cycles, effort)
-        }
-        _ => false,
-    };
-    if try_orbits(&mut sets) {
-        let opts = Options { record: false, ..*opts };
-        let again: Vec<(usize, Brief)> = briefs
-            .par_iter()
-            .enumerate()
-            .filter(|(_, b)| !b.proved)
-            .map(|(i, b)| {
-                let run = simulate_with(
-                    model,
-                    &Initial::RandomDrop { seed: b.seed },
-                    Arithmetic::Exact,
-                    &opts,
-                    Some(&sets),
-                );
-                (i, Brief::of(b.seed, &run, model.n()))
-            })
-            .collect();
-        for (i, b) in again {
-            briefs[i] = b;
-        }
+    let first = against(opts, &sets);
+    let mut briefs = simulate_many_with(model, seed, runs, Arithmetic::Exact, &first, Some(&sets), tick);
+    let Some(effort) = orbits.filter(|_| orbits_possible(model)) else { return Proved { briefs, sets } };
+    let cycles = open_cycles(model, &briefs, opts.budget);
+    if cycles.is_empty() || !add_orbits(model, &mut sets, &cycles, effort) {
+        return Proved { briefs, sets };
+    }
+    let opts = Options { record: false, ..against(opts, &sets) };
+    let again: Vec<(usize, Brief)> = briefs
+        .par_iter()
+        .enumerate()
+        .filter(|(_, b)| open(b))
+        .map(|(i, b)| {
+            let initial = Initial::RandomDrop { seed: b.seed };
+            let run = simulate_with(model, &initial, Arithmetic::Exact, &opts, Some(&sets));
+            (i, Brief::of(b.seed, &run, model.n()))
+        })
+        .collect();
+    for (i, b) in again {
+        briefs[i] = b;
     }
     Proved { briefs, sets }
 }
 
-/// One exact run with the sets `sets`; with `orbits`, when it ends undecided with CC as
-/// evidence on a periodic pattern, tries an orbit certificate for that pattern and runs again.
+/// One exact run with the sets `sets`; with `orbits`, when it is still open ([`open`]: undecided
+/// with CC as evidence, or proved no-ICC-no-PCC by a cone), tries an orbit certificate for its
+/// cycle ([`cycle_of`]) and runs again, going on past a cone entry.
 pub fn prove_one(
     model: &Model,
     initial: &Initial,
@@ -104,12 +131,12 @@ pub fn prove_one(
     mut sets: Certified,
     orbits: Option<Effort>,
 ) -> (Run, Certified) {
-    let run = simulate_with(model, initial, Arithmetic::Exact, opts, Some(&sets));
+    let run = simulate_with(model, initial, Arithmetic::Exact, &against(opts, &sets), Some(&sets));
     let brief = Brief::of(0, &run, model.n());
-    let cycles = open_cycles(std::slice::from_ref(&brief));
-    let effort = orbits.filter(|_| orbits_possible(model) && !cycles.is_empty());
-    if effort.is_some_and(|e| add_orbits(model, &mut sets, &cycles, e)) {
-        let again = simulate_with(model, initial, Arithmetic::Exact, opts, Some(&sets));
+    let Some(effort) = orbits.filter(|_| orbits_possible(model) && open(&brief)) else { return (run, sets) };
+    let cycles: BTreeSet<Vec<usize>> = cycle_of(model, initial, &brief, opts.budget).into_iter().collect();
+    if add_orbits(model, &mut sets, &cycles, effort) {
+        let again = simulate_with(model, initial, Arithmetic::Exact, &against(opts, &sets), Some(&sets));
         return (again, sets);
     }
     (run, sets)

@@ -135,6 +135,17 @@ impl Certified {
         self.sets.iter().map(|s| &**s).find(|s| s.contains(q, p))
     }
 
+    /// The first set of this kind that contains the relabelled post-impact state (q, p).
+    pub fn entered_kind(&self, kind: SetKind, q: &Vec3<Nf>, p: &Vec3<Nf>) -> Option<&Set> {
+        self.sets.iter().map(|s| &**s).find(|s| s.kind == kind && s.contains(q, p))
+    }
+
+    /// Whether some set is an orbit certificate's X (then a run that entered a cone may go on,
+    /// looking for it: [`super::Options::after_cone`]).
+    pub fn has_orbits(&self) -> bool {
+        self.sets.iter().any(|s| s.kind == SetKind::Orbit)
+    }
+
     /// Adds a cone certificate that the kernel accepts, whose claim excludes PCC and which holds
     /// for the model; `Err` says why it cannot serve.
     pub fn add_cone(&mut self, model: &Model, cert: &Certificate, name: &str) -> Result<(), String> {
@@ -199,6 +210,15 @@ pub fn canonical_cycle(steps: &[usize]) -> Vec<usize> {
         .map(|r| steps[r..].iter().chain(&steps[..r]).copied().collect::<Vec<_>>())
         .min()
         .unwrap_or_default()
+}
+
+/// The shortest word whose repetition is the cycle `steps`, as [`canonical_cycle`]: a cycle of
+/// contacts may repeat a shorter cycle of steps (the triangle's 0,1,0,2,0,2,1,2,1 is the steps
+/// 1,2,2 three times), and the orbit producer wants the shorter one.
+pub fn primitive_cycle(steps: &[usize]) -> Vec<usize> {
+    let len = steps.len();
+    let period = (1..=len).find(|&p| len.is_multiple_of(p) && (p..len).all(|i| steps[i] == steps[i - p]));
+    canonical_cycle(&steps[..period.unwrap_or(len)])
 }
 
 /// "2,2,1,1".

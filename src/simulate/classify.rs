@@ -36,7 +36,10 @@
 //!    - the normalised state in the set X of a kernel-checked orbit certificate: proved CC, the
 //!      impacts accumulating at a finite time.
 //!
-//!    Tested before rule 4 (in K or X, PCC is excluded).
+//!    Tested before rule 4 (in K or X, PCC is excluded); X before K. With
+//!    [`Options::after_cone`] and an orbit set among the sets, a cone entry without a finite time
+//!    is kept as the first fact ([`Run::cone_entry`]) and the run goes on (issue 24 §2), testing
+//!    only X: an entry proves CC, and at the end of the budget the cone's proof stands.
 //!
 //! 5. `f64` only: an interval of exactly 0 with gamma > 0 cannot happen in exact dynamics after
 //!    the first impact; it means that heights were lost in rounding: "undecided".
@@ -349,11 +352,16 @@ pub struct Options {
     pub pcc_epsilon: f64,
     /// Keep one [`Record`] per impact.
     pub record: bool,
+    /// Exact runs with certified sets: after entering a cone K (proved no ICC, no PCC), go on
+    /// within the budget, so that the state can also enter an orbit certificate's set X (then
+    /// proved CC with its time-to-rest bound); at the end of the budget the cone's proof stands.
+    /// Without it the run stops at the cone (rule 4a).
+    pub after_cone: bool,
 }
 
 impl Options {
     pub fn new(budget: usize) -> Options {
-        Options { budget, pcc_epsilon: DEFAULT_PCC_EPSILON, record: false }
+        Options { budget, pcc_epsilon: DEFAULT_PCC_EPSILON, record: false, after_cone: false }
     }
 }
 
@@ -403,6 +411,10 @@ pub struct Run {
     pub exact: bool,
     /// One record per impact when [`Options::record`].
     pub records: Vec<Record>,
+    /// With [`Options::after_cone`]: the cone entry (a [`Decision::Certified`] of kind cone) that
+    /// proved no ICC and no PCC first, the run having gone on past it; `decision` is then the
+    /// orbit entry that proved CC, or this same cone entry if the budget ran out first (or a tie).
+    pub cone_entry: Option<Decision>,
     /// Pair phases in which the paper's PCC criterion held although the PCC Lemma excludes PCC
     /// for this body (the criterion was overruled; such phases end, see the module doc).
     pub pcc_overruled: usize,
@@ -559,6 +571,8 @@ struct Driver<'a, E: Engine> {
     /// Pair phases in which the paper's criterion was overruled, and whether the current one is.
     overruled: usize,
     overruled_here: bool,
+    /// With [`Options::after_cone`]: the cone entry the run went on past (its proof stands).
+    cone: Option<Decision>,
 }
 
 /// Runs `eng` until a rule of the module doc decides.
@@ -597,6 +611,7 @@ impl<'a, E: Engine> Driver<'a, E> {
             pair_note: String::from("not tested"),
             overruled: 0,
             overruled_here: false,
+            cone: None,
         }
     }
 
@@ -609,7 +624,7 @@ impl<'a, E: Engine> Driver<'a, E> {
                 return Verdict::v_positive(k);
             }
             if k == self.opts.budget {
-                return self.budget_exhausted();
+                return self.cone_verdict().unwrap_or_else(|| self.budget_exhausted());
             }
             if let Some(verdict) = self.event(k) {
                 return verdict;
@@ -648,18 +663,46 @@ impl<'a, E: Engine> Driver<'a, E> {
         if let Some(v) = self.entered(k + 1) {
             return Some(v);
         }
+        if self.cone.is_some() {
+            // In K: PCC is excluded (rule 4a), only an orbit set can add to the proof.
+            return None;
+        }
         if self.alt >= PCC_MIN_RUN { self.pcc_tests(k + 1, contact) } else { None }
     }
 
-    /// Rule 4a (exact engines): the relabelled post-impact state lies in a certified set. The
-    /// verdict (the evidence) is CC; a cone entry proves only [`Outcome::NoIccNoPcc`]
-    /// ([`Decision::proved_outcome`]).
-    fn entered(&self, after: usize) -> Option<Verdict> {
+    /// Rule 4a (exact engines): the relabelled post-impact state lies in a certified set, an
+    /// orbit certificate's X tested first. The verdict (the evidence) is CC; a cone entry proves
+    /// only [`Outcome::NoIccNoPcc`] ([`Decision::proved_outcome`]). With [`Options::after_cone`]
+    /// a cone entry without a finite time is kept ([`Driver::cone`]) and the run goes on, testing
+    /// only orbit sets from then on (every later velocity lies in K).
+    fn entered(&mut self, after: usize) -> Option<Verdict> {
         let (q, p) = self.eng.relabelled()?;
-        let set = self.certified?.entered(&q, &p)?;
-        let rest_by = set.time_to_rest_bound.as_ref().and_then(|b| self.rest_by(set.kind, b));
-        let decision = Decision::Certified { after, kind: set.kind, name: set.name.clone(), rest_by };
+        let sets = self.certified?;
+        if let Some(set) = sets.entered_kind(SetKind::Orbit, &q, &p) {
+            return Some(Verdict::cc(self.certified_decision(after, set)));
+        }
+        if self.cone.is_some() {
+            return None;
+        }
+        let decision = self.certified_decision(after, sets.entered_kind(SetKind::Cone, &q, &p)?);
+        let finite = matches!(decision, Decision::Certified { rest_by: Some(_), .. });
+        if self.opts.after_cone && !finite && sets.has_orbits() {
+            self.cone = Some(decision);
+            return None;
+        }
         Some(Verdict::cc(decision))
+    }
+
+    /// The decision of entering `set` after impact `after`, with its proved time of rest.
+    fn certified_decision(&self, after: usize, set: &super::certified::Set) -> Decision {
+        let rest_by = set.time_to_rest_bound.as_ref().and_then(|b| self.rest_by(set.kind, b));
+        Decision::Certified { after, kind: set.kind, name: set.name.clone(), rest_by }
+    }
+
+    /// At the end of the budget, after a cone entry that the run went on past: that entry's proof
+    /// (no ICC, no PCC), never CC.
+    fn cone_verdict(&self) -> Option<Verdict> {
+        self.cone.clone().map(Verdict::cc)
     }
 
     /// The proved time of the accumulation point, from the start, by a set with bound B: for an
@@ -817,6 +860,7 @@ impl<'a, E: Engine> Driver<'a, E> {
             exact: self.eng.is_exact(),
             records: self.records,
             pcc_overruled: self.overruled,
+            cone_entry: self.cone,
         }
     }
 }

@@ -265,6 +265,12 @@ pub struct Brief {
     pub cycle: Option<Vec<usize>>,
     /// A rod drop's measured T|v|/h (evidence, [`rest::measure`]), set by [`simulate_many`].
     pub time_to_rest: Option<f64>,
+    /// The proved upper bound of the time, from the start, at which the impacts accumulate
+    /// (`rest_by` of a [`Decision::Certified`] that proved CC).
+    pub rest_by: Option<Q>,
+    /// The impact after which the drop entered a certified cone, when the run went on past it
+    /// ([`Options::after_cone`], [`Run::cone_entry`]).
+    pub cone_after: Option<usize>,
 }
 
 impl Brief {
@@ -280,6 +286,14 @@ impl Brief {
             impacts: run.impacts,
             cycle,
             time_to_rest: None,
+            rest_by: match &run.decision {
+                Decision::Certified { rest_by, .. } => rest_by.clone(),
+                _ => None,
+            },
+            cone_after: match &run.cone_entry {
+                Some(Decision::Certified { after, .. }) => Some(*after),
+                _ => None,
+            },
         }
     }
 }

@@ -186,7 +186,18 @@ fn chatter(args: &[&str]) -> (String, i32) {
 
 #[test]
 fn the_command_says_proof_or_evidence_in_text_and_json() {
+    // At the triangle plate the made cone proves no ICC, no PCC at impact 1 (the first fact);
+    // the run goes on and enters the set X of an orbit certificate made for its cycle (issue 24).
     let (text, code) = chatter(&["simulate", "--n", "3", "--kappa", "1/8", "--gamma", "1/10", "--exact"]);
+    assert_eq!(code, 0, "{text}");
+    assert!(text.contains("outcome: CC (proved)"), "{text}");
+    assert!(text.contains("first proved: after impact 1 the velocity lies in the cone K"), "{text}");
+    assert!(
+        text.contains("kernel-checked orbit certificate") && text.contains("accumulate by t <="),
+        "{text}"
+    );
+    // At κ = 3/20, γ = 1/20 no orbit certificate is made for the drop's cycle: the cone's proof.
+    let (text, code) = chatter(&["simulate", "--n", "3", "--kappa", "3/20", "--gamma", "1/20", "--exact"]);
     assert_eq!(code, 0, "{text}");
     assert!(
         text.contains("outcome: no ICC, no PCC (proved; CC not proved: finite accumulation time not derived"),
@@ -275,4 +286,80 @@ fn orbit_entries_bound_the_time_to_rest_and_simulations_respect_the_bound() {
         }
     }
     assert!(compared >= 4, "only {compared} drops had an f64 accumulation estimate to compare");
+}
+
+/// Issue 24 §2: at the triangle plate (n = 3, κ = 1/8, γ = 1/10, below the CC threshold) an
+/// all-down drop enters the made cone at its first impact (proved no ICC, no PCC: the first
+/// fact), and `prove_one`, allowed to make orbit certificates, goes on past it until the state
+/// enters the set X of one made for the drop's cycle: proved CC with a bound on the time to rest
+/// that the `f64` accumulation time of the same drop respects.
+#[test]
+fn a_triangle_plate_drop_first_proved_by_a_cone_ends_proved_cc_with_a_respected_bound() {
+    use chatter::prove::{Effort, cone, prove_one};
+    let model = polygon(3, "1/8", "1/10");
+    let sets = cone(&model, Effort::Full);
+    for seed in [0, 3] {
+        let initial = Initial::RandomDrop { seed };
+        let (first, _) = prove_one(&model, &initial, &Options::new(200), sets.clone(), None);
+        assert_eq!((first.outcome, first.proved), (Outcome::NoIccNoPcc, true), "seed {seed}");
+        let (run, made) = prove_one(&model, &initial, &Options::new(200), sets.clone(), Some(Effort::Full));
+        assert!(made.sets().iter().any(|s| s.kind == SetKind::Orbit), "seed {seed}: {:?}", made.notes);
+        assert_eq!((run.outcome, run.proved), (Outcome::Cc, true), "seed {seed}: {:?}", run.decision);
+        assert_eq!(
+            run.cone_entry.as_ref(),
+            Some(&first.decision),
+            "seed {seed}: the cone's proof comes first"
+        );
+        let Decision::Certified { kind: SetKind::Orbit, after, rest_by: Some(bound), .. } = &run.decision
+        else {
+            panic!("seed {seed}: no orbit entry with a bound: {:?}", run.decision);
+        };
+        assert!(*after > 1 && *after == run.impacts, "seed {seed}: entered X at impact {after}");
+        let bound = chatter::exact::QExt::to_f64(bound);
+        let float = simulate(&model, &initial, Arithmetic::Float, &Options::new(1000));
+        let (Outcome::Cc, Some(t)) = (float.evidence, float.accumulation) else {
+            panic!("seed {seed}: no f64 accumulation estimate: {:?}", float.decision);
+        };
+        // The f64 time sums 1000 rounded intervals: compared within a relative 1e-12.
+        assert!(t <= bound * (1.0 + 1e-12), "seed {seed}: simulated {t} > proved {bound}");
+        assert!(bound >= run.time * (1.0 - 1e-12), "seed {seed}: the bound precedes the entry");
+    }
+}
+
+/// Regression (issue 24): a run that goes on past a cone entry and enters no orbit certificate's
+/// set within its budget stays proved no-ICC-no-PCC, with the cone entry as its decision, never
+/// CC. At κ = 1/8, γ = 1/8 the drop of seed 0 does not settle into the steps 1,1,2 whose orbit
+/// certificate is made here.
+#[test]
+fn a_drop_past_a_cone_that_enters_no_orbit_set_stays_no_icc_no_pcc() {
+    use chatter::prove::{Effort, add_orbit_for, cone};
+    let model = polygon(3, "1/8", "1/8");
+    let mut sets = cone(&model, Effort::Full);
+    assert_eq!(add_orbit_for(&mut sets, &model, &[1, 2, 1], Effort::Full), Ok(true), "{:?}", sets.notes);
+    let opts = Options { after_cone: true, ..Options::new(120) };
+    let run = simulate_with(&model, &Initial::RandomDrop { seed: 0 }, Arithmetic::Exact, &opts, Some(&sets));
+    assert_eq!((run.outcome, run.proved, run.evidence), (Outcome::NoIccNoPcc, true, Outcome::Cc));
+    assert_eq!(run.impacts, 120, "the run went on to its budget: {:?}", run.decision);
+    assert!(matches!(run.decision, Decision::Certified { after: 1, kind: SetKind::Cone, rest_by: None, .. }));
+    assert_eq!(run.cone_entry.as_ref(), Some(&run.decision));
+    // Without `after_cone` the same run stops at the cone, with the same proved outcome.
+    let stop = exact(&model, 0, 120, &sets);
+    assert_eq!((stop.outcome, stop.impacts, stop.cone_entry.is_none()), (Outcome::NoIccNoPcc, 1, true));
+}
+
+/// Issue 24 §2 through `prove_many` (`chatter simulate --exact --runs`, `chatter map --simulate`):
+/// at the square plate (n = 4, κ = 1/6, γ = 1/100) the drops, first proved no-ICC-no-PCC by the
+/// cone, are proved CC with a bound by the orbit certificates made for their rotations.
+#[test]
+fn square_plate_drops_proved_by_the_cone_are_proved_cc_by_orbits_made_for_them() {
+    use chatter::prove::{Effort, cone, prove_many};
+    let model = polygon(4, "1/6", "1/100");
+    let proved =
+        prove_many(&model, 0, 6, &Options::new(100), cone(&model, Effort::Full), Some(Effort::Full), &|| {});
+    for b in &proved.briefs {
+        assert_eq!((b.outcome, b.proved, b.cone_after), (Outcome::Cc, true, Some(1)), "seed {}", b.seed);
+        assert!(b.rest_by.is_some() && b.decided_by == "entered-certified-set", "seed {}", b.seed);
+    }
+    let without = prove_many(&model, 0, 6, &Options::new(100), cone(&model, Effort::Full), None, &|| {});
+    assert!(without.briefs.iter().all(|b| b.outcome == Outcome::NoIccNoPcc && b.impacts == 1));
 }
