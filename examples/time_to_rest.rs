@@ -3,9 +3,9 @@
 //! CC with a bound on the time to rest.
 //!
 //! ```text
-//! cargo run --release --example time_to_rest -- patterns N KAPPA GAMMA [DROPS] [BUDGET]
-//! cargo run --release --example time_to_rest -- measure N KAPPA GAMMA [RUNS] [BUDGET]
-//! cargo run --release --example time_to_rest -- grid [RUNS] [BUDGET]
+//! cargo run --release --features research --example time_to_rest -- patterns N KAPPA GAMMA [DROPS] [BUDGET]
+//! cargo run --release --features research --example time_to_rest -- measure N KAPPA GAMMA [RUNS] [BUDGET]
+//! cargo run --release --features research --example time_to_rest -- grid [RUNS] [BUDGET]
 //! ```
 //!
 //! `patterns`: `f64` random drops (evidence), their primitive cycles of steps with counts and
