@@ -31,6 +31,7 @@
 pub mod basin;
 #[cfg(feature = "boxes")]
 pub mod bivariate;
+mod conveniences;
 pub mod exact;
 #[cfg(feature = "explain")]
 pub mod explain;

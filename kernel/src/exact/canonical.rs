@@ -33,11 +33,6 @@ impl Default for ParseLimits {
 }
 
 impl ParseLimits {
-    /// The defaults with another per-number digit limit.
-    pub fn digits(max_digits: usize) -> Self {
-        ParseLimits { max_digits, ..Default::default() }
-    }
-
     /// Whether the deadline has passed.
     pub fn expired(&self) -> bool {
         self.deadline.is_some_and(|d| std::time::Instant::now() >= d)

@@ -81,32 +81,12 @@ pub enum Param {
 }
 
 impl Param {
-    /// The value of a point parameter.
-    pub fn as_point(&self) -> Option<&str> {
-        match self {
-            Param::Point(s) => Some(s),
-            Param::Interval(..) => None,
-        }
-    }
-
     /// The numbers as written: one or two.
     pub fn texts(&self) -> Vec<&str> {
         match self {
             Param::Point(s) => vec![s],
             Param::Interval(a, b) => vec![a, b],
         }
-    }
-}
-
-impl From<&str> for Param {
-    fn from(s: &str) -> Self {
-        Param::Point(s.to_string())
-    }
-}
-
-impl From<String> for Param {
-    fn from(s: String) -> Self {
-        Param::Point(s)
     }
 }
 
@@ -157,22 +137,6 @@ pub enum Claim {
     /// following the pattern periodically (docs/orbit-certificates.md §4). Not a cone claim: it
     /// is not in [`Claim::ALL`] and the cone kernels reject it.
     CompleteChatterFromSet,
-}
-
-impl Claim {
-    /// The three claims, weakest first.
-    pub const ALL: [Claim; 3] =
-        [Claim::EffectivelyInvariant, Claim::CcOrPccFromAllDown, Claim::CompleteChatterFromAllDown];
-
-    /// The name used in certificates and output.
-    pub fn name(self) -> &'static str {
-        match self {
-            Claim::EffectivelyInvariant => "EffectivelyInvariant",
-            Claim::CcOrPccFromAllDown => "CcOrPccFromAllDown",
-            Claim::CompleteChatterFromAllDown => "CompleteChatterFromAllDown",
-            Claim::CompleteChatterFromSet => "CompleteChatterFromSet",
-        }
-    }
 }
 
 /// One generator of the cone: its coordinates as canonical rational text.
