@@ -1,5 +1,5 @@
-//! Conveniences of the public API that no rule calls: the names of claims, conversions, a
-//! shorthand for limits, and the serialization of codes for the tool's reports. No verdict depends
+//! Conveniences of the public API that no rule calls: the names of claims, conversions, an
+//! accessor, a shorthand for limits, and the serialization of codes for the tool's reports. No verdict depends
 //! on them, and no file read to trust one reaches this module (`kernel/tests/size.rs`), so it is
 //! outside every kind's lines to read (docs/kernel-soundness.md §4). It holds no `Deserialize`
 //! impl: how a file is read is decided in `syntax/` only.
@@ -7,6 +7,7 @@
 use crate::exact::OrderedField;
 use crate::exact::ParseLimits;
 use crate::model::pcc::{PccExclusion, PccQuadratic};
+use crate::model::polygon::Polygon;
 use crate::reject::Code;
 use crate::syntax::cone::{Claim, Param};
 use serde::{Serialize, Serializer};
@@ -46,6 +47,13 @@ impl From<&str> for Param {
 impl From<String> for Param {
     fn from(s: String) -> Self {
         Param::Point(s)
+    }
+}
+
+impl<F> Polygon<F> {
+    /// kappa = rho^2 / R^2.
+    pub fn kappa(&self) -> &F {
+        &self.kappa
     }
 }
 

@@ -95,14 +95,9 @@ fn check_digits(s: &str, zero_ok: bool) -> Result<(), NumberError> {
     if s.is_empty() {
         return Err(NumberError::MissingDigits);
     }
+    // Whitespace is refused before (parse_canonical_parts).
     if let Some(c) = s.chars().find(|c| !c.is_ascii_digit()) {
-        return Err(if c.is_whitespace() {
-            NumberError::Whitespace
-        } else if c == '+' {
-            NumberError::PlusSign
-        } else {
-            NumberError::InvalidCharacter(c)
-        });
+        return Err(if c == '+' { NumberError::PlusSign } else { NumberError::InvalidCharacter(c) });
     }
     if s == "0" {
         return if zero_ok { Ok(()) } else { Err(NumberError::ZeroDenominator) };
