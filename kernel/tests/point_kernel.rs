@@ -3,7 +3,7 @@
 //! two, and the JSON twin only with the feature `json` (docs/kernel-soundness.md §4).
 
 use chatter_kernel::exact::ParseLimits;
-use chatter_kernel::reject::{Code, Detail, Locus, Needs};
+use chatter_kernel::reject::{Code, Locus};
 use chatter_kernel::syntax::cone::Certificate;
 use chatter_kernel::syntax::{Encoding, Kind, kind_of, schema};
 use chatter_kernel::verify::{BOTH, Verdict, verify_text, verify_text_in};
@@ -54,6 +54,7 @@ fn a_parameter_is_one_number_or_a_list_of_two() {
 #[cfg(not(feature = "json"))]
 #[test]
 fn without_the_feature_json_the_json_twin_is_refused_naming_it() {
+    use chatter_kernel::reject::{Detail, Needs};
     match verify_text_in(SQUARE_JSON, Encoding::Json, ParseLimits::default(), &BOTH) {
         Verdict::Rejected(r) => {
             assert_eq!(r.code, Code::Syntax);

@@ -52,17 +52,17 @@ pub enum Kind {
 }
 
 /// Every header this build knows: (format, versions, kind, the Cargo feature that builds the kind
-/// and whether it is built; `None`: always built). Each kind's own format first, then the legacy
+/// (`""`: always built), whether it is built). Each kind's own format first, then the legacy
 /// aliases.
-const HEADERS: [(&str, [u64; 2], Kind, Option<(&str, bool)>); 8] = [
-    ("chatter-certificate", [1, 3], Kind::Cone, None),
-    ("chatter-family-certificate", [1, 1], Kind::Family, Some(("family", cfg!(feature = "family")))),
-    ("chatter-orbit-certificate", [1, 1], Kind::Orbit, Some(("orbit", cfg!(feature = "orbit")))),
-    ("chatter-basin-certificate", [1, 1], Kind::Basin, Some(("basin", cfg!(feature = "basin")))),
-    ("chatter-refutation", [1, 1], Kind::Refutation, Some(("refutation", cfg!(feature = "refutation")))),
-    ("chatter-proof", [1, 1], Kind::Proof, Some(("proof", cfg!(feature = "proof")))),
-    ("chatter-certificate", [4, 4], Kind::Family, Some(("family", cfg!(feature = "family")))),
-    ("chatter-certificate", [5, 5], Kind::Orbit, Some(("orbit", cfg!(feature = "orbit")))),
+const HEADERS: [(&str, [u64; 2], Kind, &str, bool); 8] = [
+    ("chatter-certificate", [1, 3], Kind::Cone, "", true),
+    ("chatter-family-certificate", [1, 1], Kind::Family, "family", cfg!(feature = "family")),
+    ("chatter-orbit-certificate", [1, 1], Kind::Orbit, "orbit", cfg!(feature = "orbit")),
+    ("chatter-basin-certificate", [1, 1], Kind::Basin, "basin", cfg!(feature = "basin")),
+    ("chatter-refutation", [1, 1], Kind::Refutation, "refutation", cfg!(feature = "refutation")),
+    ("chatter-proof", [1, 1], Kind::Proof, "proof", cfg!(feature = "proof")),
+    ("chatter-certificate", [4, 4], Kind::Family, "family", cfg!(feature = "family")),
+    ("chatter-certificate", [5, 5], Kind::Orbit, "orbit", cfg!(feature = "orbit")),
 ];
 
 impl Kind {
@@ -90,17 +90,16 @@ pub fn kind(header: &Header, expected: Kind) -> Result<Kind, Rejection> {
         return Err(Rejection::at(Code::WrongFormat, "format", detail));
     }
     let Some(version) = header.1 else { return Err(missing("version")) };
-    let Some(&&(_, _, kind, feature)) = known.iter().find(|h| (h.1[0]..=h.1[1]).contains(&version)) else {
+    let Some(&&(_, _, kind, feature, built)) = known.iter().find(|h| (h.1[0]..=h.1[1]).contains(&version))
+    else {
         let reads = [known[0].1[0], known[known.len() - 1].1[1]];
         return Err(Rejection::at(Code::UnsupportedVersion, "version", Detail::Version(version, reads)));
     };
-    match feature {
-        Some((feature, false)) => {
-            let detail = Detail::Needs(Needs::Feature(feature), version);
-            Err(Rejection::at(Code::UnsupportedVersion, "version", detail))
-        }
-        _ => Ok(kind),
+    if !built {
+        let detail = Detail::Needs(Needs::Feature(feature), version);
+        return Err(Rejection::at(Code::UnsupportedVersion, "version", detail));
     }
+    Ok(kind)
 }
 
 fn missing(field: &str) -> Rejection {
