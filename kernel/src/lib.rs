@@ -15,11 +15,14 @@
 //! - [`verify`]: the kernel on both backends, with a disagreement reported as an internal error;
 //! - `membership` (features `orbit` and `field`): whether an exact state lies in the set an
 //!   accepted certificate certifies (docs/kernel-soundness.md §8);
-//! - `explain` (feature `explain`): the words of a rejection, outside the trusted path.
+//! - `explain` (feature `explain`): the words of a rejection, outside the trusted path;
+//! - `conveniences`: names, conversions and serialization that no rule calls, outside every
+//!   kind's lines to read.
 //!
 //! Cargo features select the kinds: point certificates of the rod and of regular polygons with
 //! rational cos(2 pi/n) are always built; `boxes`, `field`, `family`, `orbit`, `refutation` and
-//! `proof` add the other kinds, and `explain` the messages. All are in `default`;
+//! `proof` add the other kinds, `json` the JSON twin of every format, and `explain` the messages.
+//! All are in `default`;
 //! `--no-default-features` builds the point-certificate kernel.
 //!
 //! Why acceptance implies each claim is argued in docs/kernel-soundness.md.
@@ -31,6 +34,7 @@
 pub mod basin;
 #[cfg(feature = "boxes")]
 pub mod bivariate;
+mod conveniences;
 pub mod exact;
 #[cfg(feature = "explain")]
 pub mod explain;

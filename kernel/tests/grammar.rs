@@ -56,6 +56,7 @@ fn tuples_elsewhere_and_the_words_kappa_and_gamma_in_strings_are_unaffected() {
 }
 
 /// The JSON twin has no tuples: an interval is an array there, as before.
+#[cfg(feature = "json")]
 #[test]
 fn the_json_twin_of_a_box_is_unaffected() {
     let json = r#"{"format": "chatter-certificate", "version": 2,

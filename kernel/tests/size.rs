@@ -26,9 +26,10 @@ const KINDS: [(&str, &str, &[&str]); 10] = [
 
 /// Point certificates for n = 3, 4, 6: at most this many lines to read, of which at most this many
 /// rules. Issue 23 asks for under 1,500 and under 300: the rules meet theirs; the whole is held
-/// at its measurement (docs/kernel-soundness.md §4 says where the lines are) so that it cannot
-/// grow unseen.
-const POINT_BUDGET: (usize, usize) = (1_821, 294);
+/// at its measurement (1,821 before the JSON twin, the codes of the other kinds and the
+/// conveniences left the point kernel's files; docs/kernel-soundness.md §4 says where the lines
+/// still are) so that it cannot grow unseen.
+const POINT_BUDGET: (usize, usize) = (1_662, 291);
 
 fn src() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
@@ -315,9 +316,15 @@ fn the_measurement_follows_imports_and_features() {
     {
         assert!(point.contains(&file(needed)), "{needed} is read for a point certificate");
     }
-    for other in
-        ["rules/rod.rs", "rules/boxes.rs", "exact/cos_field.rs", "explain/mod.rs", "rules/proof/mod.rs"]
-    {
+    for other in [
+        "rules/rod.rs",
+        "rules/boxes.rs",
+        "exact/cos_field.rs",
+        "explain/mod.rs",
+        "rules/proof/mod.rs",
+        "syntax/json.rs",
+        "conveniences.rs",
+    ] {
         assert!(!point.contains(&file(other)), "{other} is not read for a point certificate");
     }
     let field = reached("rules/field.rs", &["field"]);

@@ -74,6 +74,7 @@ fn a_reader_refuses_the_other_kinds() {
     assert_eq!(r.unwrap_err().code, Code::UnsupportedVersion);
 }
 
+#[cfg(feature = "json")]
 #[test]
 fn the_json_twin_names_its_kind_the_same_way() {
     let json = include_str!("../../certificates/valid/doc-example-square.json");

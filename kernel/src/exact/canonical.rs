@@ -33,11 +33,6 @@ impl Default for ParseLimits {
 }
 
 impl ParseLimits {
-    /// The defaults with another per-number digit limit.
-    pub fn digits(max_digits: usize) -> Self {
-        ParseLimits { max_digits, ..Default::default() }
-    }
-
     /// Whether the deadline has passed.
     pub fn expired(&self) -> bool {
         self.deadline.is_some_and(|d| std::time::Instant::now() >= d)
@@ -100,14 +95,9 @@ fn check_digits(s: &str, zero_ok: bool) -> Result<(), NumberError> {
     if s.is_empty() {
         return Err(NumberError::MissingDigits);
     }
+    // Whitespace is refused before (parse_canonical_parts).
     if let Some(c) = s.chars().find(|c| !c.is_ascii_digit()) {
-        return Err(if c.is_whitespace() {
-            NumberError::Whitespace
-        } else if c == '+' {
-            NumberError::PlusSign
-        } else {
-            NumberError::InvalidCharacter(c)
-        });
+        return Err(if c == '+' { NumberError::PlusSign } else { NumberError::InvalidCharacter(c) });
     }
     if s == "0" {
         return if zero_ok { Ok(()) } else { Err(NumberError::ZeroDenominator) };

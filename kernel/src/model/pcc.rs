@@ -41,11 +41,6 @@ impl<F: OrderedField> PccQuadratic<F> {
             PccExclusion::Excluded
         }
     }
-
-    /// Whether the Lemma excludes PCC: complex roots of modulus < 1.
-    pub fn excludes_pcc(&self) -> bool {
-        self.exclusion() == PccExclusion::Excluded
-    }
 }
 
 /// Factors det(t I - S_{n-1} S_1) = (t - 1)(t^2 + p t + q). Returns `Err` with the polynomial's

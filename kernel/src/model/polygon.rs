@@ -35,7 +35,7 @@ pub fn rational_cos<F: OrderedField>(n: u64) -> Option<F> {
 #[derive(Clone, Debug)]
 pub struct Polygon<F> {
     n: usize,
-    kappa: F,
+    pub(crate) kappa: F,
     gamma: F,
     /// c_m = cos(2*pi*m/n), m = 0..n-1.
     cos: Vec<F>,
@@ -90,11 +90,6 @@ impl<F: OrderedField> Polygon<F> {
     /// Number of contacts.
     pub fn n(&self) -> usize {
         self.n
-    }
-
-    /// kappa = rho^2 / R^2.
-    pub fn kappa(&self) -> &F {
-        &self.kappa
     }
 
     /// The coefficient of restitution.

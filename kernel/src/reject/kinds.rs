@@ -21,6 +21,54 @@ use crate::rules::proof::Failure as ProofFailure;
 #[cfg(feature = "refutation")]
 use crate::rules::refutation::Failure as RefutationFailure;
 
+/// Declares [`Code`](super::Code) with the codes of point certificates (`$t`, in `reject/mod.rs`)
+/// and those of the other kinds, below.
+macro_rules! codes {
+    ($($t:tt)*) => {
+        declare_codes! {
+            $($t)*
+            /// A proof's header is invalid (variables, coordinates, chi, hypotheses).
+            InvalidHeader = "invalid-header",
+            /// A step of a refutation does not check.
+            StepFailed = "step-failed",
+            /// A proof's expression is not canonical text, or malformed.
+            BadExpression = "bad-expression",
+            /// A proof names a variable, atom, point, cone or map that does not exist.
+            UnknownName = "unknown-name",
+            /// A proof gives a name (id, atom, point, cone, parameter value) twice.
+            DuplicateName = "duplicate-name",
+            /// A proof uses a name where it is not allowed (defining a parameter, a bound variable, ...).
+            MisusedName = "misused-name",
+            /// A proof's identity does not hold on its region.
+            NotAnIdentity = "not-an-identity",
+            /// A sign a proof needs is not proved (or is wrong).
+            SignNotProved = "sign-not-proved",
+            /// A proof's positivity certificate is malformed.
+            BadCertificate = "bad-certificate",
+            /// A proof's cone or clipping data is malformed.
+            BadCone = "bad-cone",
+            /// A proof's witness (Sturm sequence, root count, values at a point) does not check.
+            BadWitness = "bad-witness",
+            /// An orbit certificate's set X is degenerate.
+            DegenerateSet = "degenerate-set",
+            /// An orbit certificate's bounds, claim or pattern are out of range.
+            OrbitOutOfRange = "orbit-out-of-range",
+            /// Orbit condition 1 is not shown on a sub-box.
+            PatternNotForced = "pattern-not-forced",
+            /// Orbit condition 2 is not shown on a sub-box.
+            SetNotInvariant = "set-not-invariant",
+            /// Orbit condition 3 is not shown on a sub-box.
+            NoContraction = "no-contraction",
+            /// A basin certificate's box, paths, prefixes or embedded orbit certificate's body are out of range.
+            BasinOutOfRange = "basin-out-of-range",
+            /// A basin certificate's leaves are not the leaves of one bisection tree of its box.
+            NotAPartition = "not-a-partition",
+            /// A basin certificate's leaf: its prefix, or where it ends, is not shown on the whole leaf.
+            LeafNotShown = "leaf-not-shown",
+        }
+    };
+}
+
 /// Where in a file of another kind a check failed (docs/certificate-format.md §5, "Loci").
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case", tag = "kind")]

@@ -8,15 +8,16 @@ use crate::model::pcc::PccExclusion;
 use crate::model::polygon::BodyError;
 use crate::syntax::cone::Claim;
 use crate::syntax::strict::Offence;
-use serde::{Serialize, Serializer};
+use serde::Serialize;
 
 #[cfg(feature = "kinds")]
+#[macro_use]
 mod kinds;
 #[cfg(feature = "kinds")]
 pub use kinds::{KindDetail, KindLocus};
 
 /// Declares [`Code`] with its stable kebab-case names.
-macro_rules! codes {
+macro_rules! declare_codes {
     ($($(#[$doc:meta])* $name:ident = $text:literal,)*) => {
         /// Stable rejection codes; [`Code::as_str`] gives the name used in JSON and manifests.
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -28,6 +29,13 @@ macro_rules! codes {
             }
         }
     };
+}
+
+/// The codes of point certificates (below), and with the feature `kinds` those of the other kinds
+/// too (`reject/kinds.rs`), declared as one [`Code`].
+#[cfg(not(feature = "kinds"))]
+macro_rules! codes {
+    ($($t:tt)*) => { declare_codes! { $($t)* } };
 }
 
 codes! {
@@ -71,52 +79,8 @@ codes! {
     TooLarge = "too-large",
     /// The time limit ran out. No verdict on the content.
     TimeLimit = "time-limit",
-    /// A proof's header is invalid (variables, coordinates, chi, hypotheses).
-    InvalidHeader = "invalid-header",
-    /// A step of a refutation does not check.
-    StepFailed = "step-failed",
-    /// A proof's expression is not canonical text, or malformed.
-    BadExpression = "bad-expression",
-    /// A proof names a variable, atom, point, cone or map that does not exist.
-    UnknownName = "unknown-name",
-    /// A proof gives a name (id, atom, point, cone, parameter value) twice.
-    DuplicateName = "duplicate-name",
-    /// A proof uses a name where it is not allowed (defining a parameter, a bound variable, ...).
-    MisusedName = "misused-name",
-    /// A proof's identity does not hold on its region.
-    NotAnIdentity = "not-an-identity",
-    /// A sign a proof needs is not proved (or is wrong).
-    SignNotProved = "sign-not-proved",
-    /// A proof's positivity certificate is malformed.
-    BadCertificate = "bad-certificate",
-    /// A proof's cone or clipping data is malformed.
-    BadCone = "bad-cone",
-    /// A proof's witness (Sturm sequence, root count, values at a point) does not check.
-    BadWitness = "bad-witness",
-    /// An orbit certificate's set X is degenerate.
-    DegenerateSet = "degenerate-set",
-    /// An orbit certificate's bounds, claim or pattern are out of range.
-    OrbitOutOfRange = "orbit-out-of-range",
-    /// Orbit condition 1 is not shown on a sub-box.
-    PatternNotForced = "pattern-not-forced",
-    /// Orbit condition 2 is not shown on a sub-box.
-    SetNotInvariant = "set-not-invariant",
-    /// Orbit condition 3 is not shown on a sub-box.
-    NoContraction = "no-contraction",
-    /// A basin certificate's box, paths, prefixes or embedded orbit certificate's body are out of range.
-    BasinOutOfRange = "basin-out-of-range",
-    /// A basin certificate's leaves are not the leaves of one bisection tree of its box.
-    NotAPartition = "not-a-partition",
-    /// A basin certificate's leaf: its prefix, or where it ends, is not shown on the whole leaf.
-    LeafNotShown = "leaf-not-shown",
     /// The model contradicts itself or the two backends disagree: a bug in chatter.
     Internal = "internal",
-}
-
-impl Serialize for Code {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(self.as_str())
-    }
 }
 
 /// Where in a file a check failed: structured, so that programs and tests can act on it
@@ -234,11 +198,6 @@ impl Rejection {
     pub fn limit(name: &str, count: usize, limit: usize, what: Counted) -> Self {
         let locus = Locus::Limit { name: name.into() };
         Rejection::new(Code::TooLarge, locus, Detail::Limit(count, limit, what))
-    }
-
-    /// Whether this rejection is a limit reached rather than a verdict on the content.
-    pub fn is_limit(&self) -> bool {
-        matches!(self.code, Code::TooLarge | Code::TimeLimit)
     }
 }
 

@@ -2,7 +2,8 @@
 //! their claims: docs/kernel-soundness.md §2). Rules, in the order they are checked:
 //!
 //! - the file ([`prelude`], every cone certificate): the header, a cone claim (`unknown-variant`
-//!   for `CompleteChatterFromSet`), `max-generators` and `max-total-digits` (`too-large`);
+//!   for `CompleteChatterFromSet`), `max-generators` and `max-total-digits` (`too-large`), and
+//!   no `time_to_rest_bound` but on the rod at a point (`time-to-rest-not-shown`);
 //! - range of γ: the claims about drops need 0 < γ < 1 (`parameter-out-of-range`);
 //! - R1: every generator has v < 0 (`generator-not-below`) and K has an interior
 //!   (`degenerate-cone`);
@@ -25,19 +26,30 @@ use crate::geometry::{ConvexPolygon, Scalar, clip, hull, projected};
 use crate::model::linalg::{Mat3, Vec3, is_zero, mat_vec};
 use crate::model::pcc::{PccExclusion, pcc_quadratic};
 use crate::model::polygon::Polygon;
-use crate::reject::{Boundary, Code, Counted, Detail, ImageFailure, Internal, Locus, Rejection};
-use crate::syntax::cone::{Body, Certificate, Claim};
+use crate::reject::{
+    Boundary, Code, Counted, Detail, ImageFailure, Internal, Locus, Rejection, TimeToRestFailure,
+};
+use crate::syntax::cone::{Body, Certificate, Claim, Param};
 use crate::syntax::numbers::{at_most, in_time, number, total};
 use crate::syntax::{Kind, expect};
 
 /// The file's rules before the body, for every cone certificate: the header (read from a file
 /// already, not when built in memory), a cone claim (`unknown-variant` for the orbit claim),
-/// `max-generators` and `max-total-digits`.
+/// `max-generators`, `max-total-digits`, and a bound B on the time to rest only on the rod at a
+/// point (rule T1 covers nothing else, docs/time-to-rest.md §2).
 pub fn prelude(cert: &Certificate, limits: ParseLimits) -> Result<(), Rejection> {
     expect(&cert.format, cert.version, Kind::Cone)?;
     cone_claim(cert.claim)?;
     at_most("max-generators", cert.cone.len(), limits.max_generators, Counted::Generators)?;
-    total(cert.numbers(), limits)
+    total(cert.numbers(), limits)?;
+    let Body::RegularPolygon { n, kappa, gamma } = &cert.body;
+    match &cert.time_to_rest_bound {
+        Some(b) if !(*n == 2 && matches!((kappa, gamma), (Param::Point(_), Param::Point(_)))) => {
+            let detail = Detail::TimeToRest(TimeToRestFailure::NotRod, b.clone());
+            Err(Rejection::at(Code::TimeToRestNotShown, "time_to_rest_bound", detail))
+        }
+        _ => Ok(()),
+    }
 }
 
 /// The claim of a cone (or family) certificate is not the orbit claim `CompleteChatterFromSet`.

@@ -4,7 +4,7 @@
 use crate::syntax::cone::Claim;
 
 /// What an accepted certificate established.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Accepted {
     /// The claim established.
     pub claim: Claim,
@@ -37,20 +37,7 @@ pub struct Accepted {
 impl Accepted {
     /// The facts of a cone certificate (the fields of boxes and orbits empty).
     pub fn cone(claim: Claim, n: usize, generators: usize, pieces: Vec<usize>) -> Self {
-        Accepted {
-            claim,
-            n: n as u64,
-            generators,
-            redundant: Vec::new(),
-            pieces,
-            max_denominator_bits: 0,
-            pcc: None,
-            contains_translation: false,
-            region: None,
-            pcc_boxes: None,
-            orbit_boxes: None,
-            time_to_rest_bound: None,
-        }
+        Accepted { claim, n: n as u64, generators, pieces, ..Default::default() }
     }
 }
 

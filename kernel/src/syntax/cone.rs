@@ -72,7 +72,8 @@ pub enum Body {
 
 /// A parameter: one number (`"1/6"`), or a closed interval of numbers written as a two-element
 /// list (`["1/10", "3/25"]`, version 2), each in canonical text.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
+#[serde(untagged, expecting = "a number such as \"1/6\", or an interval such as [\"1/10\", \"3/25\"]")]
 pub enum Param {
     /// One value.
     Point(String),
@@ -81,57 +82,12 @@ pub enum Param {
 }
 
 impl Param {
-    /// The value of a point parameter.
-    pub fn as_point(&self) -> Option<&str> {
-        match self {
-            Param::Point(s) => Some(s),
-            Param::Interval(..) => None,
-        }
-    }
-
     /// The numbers as written: one or two.
     pub fn texts(&self) -> Vec<&str> {
         match self {
             Param::Point(s) => vec![s],
             Param::Interval(a, b) => vec![a, b],
         }
-    }
-}
-
-impl From<&str> for Param {
-    fn from(s: &str) -> Self {
-        Param::Point(s.to_string())
-    }
-}
-
-impl From<String> for Param {
-    fn from(s: String) -> Self {
-        Param::Point(s)
-    }
-}
-
-impl<'de> Deserialize<'de> for Param {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V;
-        impl<'de> Visitor<'de> for V {
-            type Value = Param;
-            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str("a number such as \"1/6\", or an interval such as [\"1/10\", \"3/25\"]")
-            }
-            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<Param, E> {
-                Ok(Param::Point(v.to_string()))
-            }
-            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Param, A::Error> {
-                use serde::de::Error;
-                let lo: String = seq.next_element()?.ok_or_else(|| A::Error::invalid_length(0, &self))?;
-                let hi: String = seq.next_element()?.ok_or_else(|| A::Error::invalid_length(1, &self))?;
-                if seq.next_element::<String>()?.is_some() {
-                    return Err(A::Error::invalid_length(3, &self));
-                }
-                Ok(Param::Interval(lo, hi))
-            }
-        }
-        d.deserialize_any(V)
     }
 }
 
@@ -143,9 +99,11 @@ pub enum Coordinates {
 }
 
 /// What the certificate proves (each claim includes the checks of the previous ones).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Deserialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash, Deserialize)]
 pub enum Claim {
     /// K lies in v <= 0 and S_j(K ∩ C_j) ⊆ K for j = 1..n-1 (docs/model.md §5 conditions 1-2).
+    /// The default: the weakest claim.
+    #[default]
     EffectivelyInvariant,
     /// Also I_0(D) ⊆ K: every drop with all contacts moving down keeps v <= 0 for ever (not ICC);
     /// a finite accumulation time is not derived (docs/time-to-rest.md).
@@ -157,22 +115,6 @@ pub enum Claim {
     /// following the pattern periodically (docs/orbit-certificates.md §4). Not a cone claim: it
     /// is not in [`Claim::ALL`] and the cone kernels reject it.
     CompleteChatterFromSet,
-}
-
-impl Claim {
-    /// The three claims, weakest first.
-    pub const ALL: [Claim; 3] =
-        [Claim::EffectivelyInvariant, Claim::CcOrPccFromAllDown, Claim::CompleteChatterFromAllDown];
-
-    /// The name used in certificates and output.
-    pub fn name(self) -> &'static str {
-        match self {
-            Claim::EffectivelyInvariant => "EffectivelyInvariant",
-            Claim::CcOrPccFromAllDown => "CcOrPccFromAllDown",
-            Claim::CompleteChatterFromAllDown => "CompleteChatterFromAllDown",
-            Claim::CompleteChatterFromSet => "CompleteChatterFromSet",
-        }
-    }
 }
 
 /// One generator of the cone: its coordinates as canonical rational text.

@@ -10,6 +10,8 @@ pub mod basin;
 pub mod cone;
 #[cfg(feature = "family")]
 pub mod family;
+#[cfg(feature = "json")]
+mod json;
 pub mod numbers;
 #[cfg(feature = "orbit")]
 pub mod orbit;
@@ -49,50 +51,24 @@ pub enum Kind {
     Proof,
 }
 
-/// Every header this build knows: (format, versions, kind), the legacy aliases included.
-const HEADERS: [(&str, [u64; 2], Kind); 8] = [
-    ("chatter-certificate", [1, 3], Kind::Cone),
-    ("chatter-certificate", [4, 4], Kind::Family),
-    ("chatter-certificate", [5, 5], Kind::Orbit),
-    ("chatter-family-certificate", [1, 1], Kind::Family),
-    ("chatter-orbit-certificate", [1, 1], Kind::Orbit),
-    ("chatter-basin-certificate", [1, 1], Kind::Basin),
-    ("chatter-refutation", [1, 1], Kind::Refutation),
-    ("chatter-proof", [1, 1], Kind::Proof),
+/// Every header this build knows: (format, versions, kind, the Cargo feature that builds the kind
+/// (`""`: always built), whether it is built). Each kind's own format first, then the legacy
+/// aliases.
+const HEADERS: [(&str, [u64; 2], Kind, &str, bool); 8] = [
+    ("chatter-certificate", [1, 3], Kind::Cone, "", true),
+    ("chatter-family-certificate", [1, 1], Kind::Family, "family", cfg!(feature = "family")),
+    ("chatter-orbit-certificate", [1, 1], Kind::Orbit, "orbit", cfg!(feature = "orbit")),
+    ("chatter-basin-certificate", [1, 1], Kind::Basin, "basin", cfg!(feature = "basin")),
+    ("chatter-refutation", [1, 1], Kind::Refutation, "refutation", cfg!(feature = "refutation")),
+    ("chatter-proof", [1, 1], Kind::Proof, "proof", cfg!(feature = "proof")),
+    ("chatter-certificate", [4, 4], Kind::Family, "family", cfg!(feature = "family")),
+    ("chatter-certificate", [5, 5], Kind::Orbit, "orbit", cfg!(feature = "orbit")),
 ];
 
 impl Kind {
     /// The format string a file of this kind is written with.
     pub fn format(self) -> &'static str {
-        match self {
-            Kind::Cone => "chatter-certificate",
-            Kind::Family => "chatter-family-certificate",
-            Kind::Orbit => "chatter-orbit-certificate",
-            Kind::Basin => "chatter-basin-certificate",
-            Kind::Refutation => "chatter-refutation",
-            Kind::Proof => "chatter-proof",
-        }
-    }
-
-    /// The Cargo feature that builds this kind (`None`: always built), and whether it is built.
-    fn feature(self) -> Option<(&'static str, bool)> {
-        match self {
-            Kind::Cone => None,
-            Kind::Family => Some(("family", cfg!(feature = "family"))),
-            Kind::Orbit => Some(("orbit", cfg!(feature = "orbit"))),
-            Kind::Basin => Some(("basin", cfg!(feature = "basin"))),
-            Kind::Refutation => Some(("refutation", cfg!(feature = "refutation"))),
-            Kind::Proof => Some(("proof", cfg!(feature = "proof"))),
-        }
-    }
-
-    /// The name of the file's top-level RON struct.
-    fn struct_name(self) -> &'static str {
-        match self {
-            Kind::Refutation => "Refutation",
-            Kind::Proof => "Proof",
-            _ => "Certificate",
-        }
+        HEADERS.iter().find(|h| h.2 == self).map_or("", |h| h.0)
     }
 }
 
@@ -114,17 +90,16 @@ pub fn kind(header: &Header, expected: Kind) -> Result<Kind, Rejection> {
         return Err(Rejection::at(Code::WrongFormat, "format", detail));
     }
     let Some(version) = header.1 else { return Err(missing("version")) };
-    let Some(&&(_, _, kind)) = known.iter().find(|h| (h.1[0]..=h.1[1]).contains(&version)) else {
+    let Some(&&(_, _, kind, feature, built)) = known.iter().find(|h| (h.1[0]..=h.1[1]).contains(&version))
+    else {
         let reads = [known[0].1[0], known[known.len() - 1].1[1]];
         return Err(Rejection::at(Code::UnsupportedVersion, "version", Detail::Version(version, reads)));
     };
-    match kind.feature() {
-        Some((feature, false)) => {
-            let detail = Detail::Needs(Needs::Feature(feature), version);
-            Err(Rejection::at(Code::UnsupportedVersion, "version", detail))
-        }
-        _ => Ok(kind),
+    if !built {
+        let detail = Detail::Needs(Needs::Feature(feature), version);
+        return Err(Rejection::at(Code::UnsupportedVersion, "version", detail));
     }
+    Ok(kind)
 }
 
 fn missing(field: &str) -> Rejection {
@@ -149,16 +124,16 @@ fn other_kind(found: Kind, format: &str, version: u64, expected: Kind) -> Reject
 }
 
 /// The strict syntax, then the header of the text and the kind it names (for a reader of the
-/// kind `expected`, whose struct name is tried first in RON).
+/// kind `expected`). The JSON twin needs the feature `json`.
 pub fn kind_of(text: &str, encoding: Encoding, expected: Kind) -> Result<(Kind, Header), Rejection> {
-    strict::check(text, encoding)?;
-    let header = match encoding {
-        Encoding::Ron => ron_header(text, expected)?,
-        Encoding::Json => {
-            let h: JsonHeader = serde_json::from_str(text).map_err(json_error)?;
-            (h.format, h.version)
+    let header: Fields = match encoding {
+        Encoding::Ron => {
+            strict::check(text, encoding)?;
+            ron_header(text)?
         }
+        Encoding::Json => json::header(text)?,
     };
+    let header = (header.format, header.version);
     Ok((kind(&header, expected)?, header))
 }
 
@@ -177,41 +152,26 @@ pub fn read<T: Schema>(text: &str, encoding: Encoding) -> Result<T, Rejection> {
 pub fn schema<T: Schema>(text: &str, encoding: Encoding) -> Result<T, Rejection> {
     match encoding {
         Encoding::Ron => ron::Options::default().from_str(text).map_err(ron_error),
-        Encoding::Json => serde_json::from_str(text).map_err(json_error),
+        Encoding::Json => json::schema(text),
     }
 }
 
-macro_rules! headers {
-    ($($name:ident = $rename:literal),*) => {$(
-        #[derive(Deserialize)]
-        #[serde(rename = $rename)]
-        struct $name {
-            format: Option<String>,
-            version: Option<u64>,
-        }
-    )*};
-}
-headers!(CertificateHeader = "Certificate", RefutationHeader = "Refutation", ProofHeader = "Proof");
-
-/// The JSON header (objects have no struct names).
+/// The header's fields, under any struct name.
 #[derive(Deserialize)]
-struct JsonHeader {
+struct Fields {
     format: Option<String>,
     version: Option<u64>,
 }
 
-/// The RON header read leniently (unknown fields ignored, `Some` implicit): the struct name of
-/// `expected` first, then the others; the first attempt's error when none reads.
-fn ron_header(text: &str, expected: Kind) -> Result<Header, Rejection> {
+/// The RON header read leniently (unknown fields ignored, `Some` implicit), under any struct
+/// name: a leading name is blanked, so that every position stays where it is.
+fn ron_header(text: &str) -> Result<Fields, Rejection> {
     let lenient = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
-    let attempt = |name: &str| match name {
-        "Refutation" => lenient.from_str::<RefutationHeader>(text).map(|h| (h.format, h.version)),
-        "Proof" => lenient.from_str::<ProofHeader>(text).map(|h| (h.format, h.version)),
-        _ => lenient.from_str::<CertificateHeader>(text).map(|h| (h.format, h.version)),
-    };
-    let first = attempt(expected.struct_name());
-    let others = ["Certificate", "Refutation", "Proof"].into_iter().filter(|n| *n != expected.struct_name());
-    first.or_else(|e| others.map(attempt).find_map(Result::ok).ok_or(e)).map_err(ron_error)
+    let body = text.trim_start();
+    let name = body.find(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).unwrap_or(body.len());
+    let at = text.len() - body.len();
+    let blanked = format!("{}{}{}", &text[..at], " ".repeat(name), &body[name..]);
+    lenient.from_str(&blanked).map_err(ron_error)
 }
 
 /// A RON error as a rejection: schema errors get their own codes, everything at its position.
@@ -228,18 +188,13 @@ fn ron_error(e: ron::error::SpannedError) -> Rejection {
     Rejection::new(code, locus, Detail::Parser(e.code.to_string()))
 }
 
-/// A serde_json error as a rejection: serde's schema errors (by the fixed prefixes of its
-/// messages) get the same codes as from RON; everything at its position.
-fn json_error(e: serde_json::Error) -> Rejection {
-    let (line, column) = (e.line(), e.column());
-    let full = e.to_string();
-    let what = full.strip_suffix(&format!(" at line {line} column {column}")).unwrap_or(&full);
-    let codes = [
-        ("unknown field", Code::UnknownField),
-        ("missing field", Code::MissingField),
-        ("duplicate field", Code::DuplicateField),
-        ("unknown variant", Code::UnknownVariant),
-    ];
-    let code = codes.iter().find(|(prefix, _)| what.starts_with(prefix)).map_or(Code::Syntax, |c| c.1);
-    Rejection::new(code, Locus::Text { line, column }, Detail::Parser(what.to_string()))
+/// Without the feature `json`, a file in the JSON twin is refused (`syntax`, naming the feature).
+#[cfg(not(feature = "json"))]
+mod json {
+    use crate::reject::{Code, Detail, Locus, Needs, Rejection};
+    pub fn header<T>(_: &str) -> Result<T, Rejection> {
+        let detail = Detail::Needs(Needs::Feature("json"), 0);
+        Err(Rejection::new(Code::Syntax, Locus::Text { line: 1, column: 1 }, detail))
+    }
+    pub use header as schema;
 }

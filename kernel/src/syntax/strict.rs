@@ -67,6 +67,13 @@ fn reject(line: usize, column: usize, offence: Offence, json: bool) -> Rejection
     Rejection::new(Code::Syntax, Locus::Text { line, column }, Detail::Lexical(offence, json))
 }
 
+/// The 1-based line and column (in characters) of the byte `at` of `text`.
+fn position(text: &str, at: usize) -> (usize, usize) {
+    let before = &text[..at];
+    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+    (before.matches('\n').count() + 1, before[line_start..].chars().count() + 1)
+}
+
 /// What a character that starts no token is.
 fn offence(c: char, next: Option<char>) -> Offence {
     match (c, next) {
@@ -81,42 +88,27 @@ fn offence(c: char, next: Option<char>) -> Offence {
     }
 }
 
-/// A cursor over the characters with the 1-based line and column of the next one.
-struct Cursor {
-    chars: Vec<char>,
-    i: usize,
-    line: usize,
-    col: usize,
-}
-
-impl Cursor {
-    fn peek(&self, k: usize) -> Option<char> {
-        self.chars.get(self.i + k).copied()
-    }
-
-    fn bump(&mut self) {
-        if self.chars[self.i] == '\n' {
-            (self.line, self.col) = (self.line + 1, 1);
-        } else {
-            self.col += 1;
-        }
-        self.i += 1;
-    }
-
-    fn skip_while(&mut self, keep: impl Fn(char) -> bool) {
-        while self.peek(0).is_some_and(&keep) {
-            self.bump();
-        }
-    }
-}
-
 /// Checks that `text` uses only the strict syntax of the encoding; the first offence is reported
-/// with its position.
+/// with its position (computed only then).
 pub fn check(text: &str, encoding: Encoding) -> Result<(), Rejection> {
     let json = encoding == Encoding::Json;
-    let fail = |line, col, o| Err(reject(line, col, o, json));
+    let chars: Vec<(usize, char)> = text.char_indices().collect();
+    let (at, peek) =
+        (|i: usize| chars.get(i).map_or(text.len(), |c| c.0), |i: usize| chars.get(i).map(|c| c.1));
+    let skip = |mut i: usize, keep: fn(char) -> bool| {
+        while peek(i).is_some_and(keep) {
+            i += 1;
+        }
+        i
+    };
+    // The offence at character `i`; inside a string, at the character before `i` (column 0 of the
+    // next line for a line feed).
+    let fail = |i: usize, back: usize, o| {
+        let (line, column) = position(text, at(i));
+        Err(reject(line, column - back, o, json))
+    };
     if text.trim_matches([' ', '\t', '\n', '\r']).is_empty() {
-        return fail(1, 1, Offence::Empty);
+        return fail(0, 0, Offence::Empty);
     }
     let open: &[char] = if json { &['{', '}', '[', ']', ':', ','] } else { &['(', ')', '[', ']', ':', ','] };
     // JSON only: whether the next value must be an object, and the first character of the last
@@ -124,61 +116,58 @@ pub fn check(text: &str, encoding: Encoding) -> Result<(), Rejection> {
     let (mut object_next, mut last_initial) = (true, None::<char>);
     // RON only: the last identifier read is `kappa` or `gamma`, and then whether a ':' followed it.
     let (mut parameter, mut parameter_value) = (false, false);
-    let mut s = Cursor { chars: text.chars().collect(), i: 0, line: 1, col: 1 };
-    while let Some(c) = s.peek(0) {
-        let (l0, c0) = (s.line, s.col);
+    let mut i = 0;
+    while let Some(c) = peek(i) {
+        let start = i;
         let starts_value = c == '"' || c == '-' || c.is_ascii_alphanumeric();
         if matches!(c, ' ' | '\t' | '\n' | '\r') {
-            s.bump();
+            i += 1;
         } else if json && object_next && (starts_value || (open.contains(&c) && c != '{')) {
-            return fail(l0, c0, Offence::NotObject);
+            return fail(i, 0, Offence::NotObject);
         } else if open.contains(&c) {
             if c == '(' && parameter_value {
-                return fail(l0, c0, Offence::TupleInterval);
+                return fail(i, 0, Offence::TupleInterval);
             }
             (parameter_value, parameter) = (!json && c == ':' && parameter, false);
             object_next = json && c == ':' && last_initial.is_some_and(|d| d.is_ascii_uppercase());
-            s.bump();
+            i += 1;
         } else if c == '"' {
-            (parameter, parameter_value) = (false, false);
-            s.bump();
-            last_initial = s.peek(0);
+            (parameter, parameter_value, last_initial) = (false, false, peek(i + 1));
+            i += 1;
             loop {
-                let Some(d) = s.peek(0) else { return fail(l0, c0, Offence::NotClosed) };
-                s.bump();
-                // The character's position, counted after it (column 0 of the next line for a line feed).
-                let (line, col) = (s.line, s.col - 1);
+                let Some(d) = peek(i) else { return fail(start, 0, Offence::NotClosed) };
+                i += 1;
                 match d {
                     '"' => break,
-                    '\\' => return fail(line, col, Offence::Escape),
-                    _ if d.is_control() => return fail(line, col, Offence::Control),
+                    '\\' => return fail(i, 1, Offence::Escape),
+                    _ if d.is_control() => return fail(i, 1, Offence::Control),
                     _ => {}
                 }
             }
-            if s.peek(0).is_some_and(|d| d.is_alphanumeric() || d == '_' || d == '"') {
-                return fail(s.line, s.col, Offence::AfterString);
+            if peek(i).is_some_and(|d| d.is_alphanumeric() || d == '_' || d == '"') {
+                return fail(i, 0, Offence::AfterString);
             }
         } else if c.is_ascii_alphabetic() || c == '_' {
             if json {
-                return fail(l0, c0, Offence::JsonLiteral);
+                return fail(i, 0, Offence::JsonLiteral);
             }
-            s.skip_while(|d| d.is_ascii_alphanumeric() || d == '_');
-            let name: String = s.chars[s.i - (s.col - c0)..s.i].iter().collect();
+            i = skip(i, |d| d.is_ascii_alphanumeric() || d == '_');
+            let name = &text[at(start)..at(i)];
             (parameter, parameter_value) = (name == "kappa" || name == "gamma", false);
-            if matches!(s.peek(0), Some('"' | '#')) {
-                return fail(l0, c0, Offence::RawString);
+            if matches!(peek(i), Some('"' | '#')) {
+                return fail(start, 0, Offence::RawString);
             }
         } else if c.is_ascii_digit() {
             (parameter, parameter_value) = (false, false);
-            s.skip_while(|d| d.is_ascii_digit());
-            if c == '0' && s.col - c0 > 1 {
-                return fail(l0, c0, Offence::LeadingZero);
+            i = skip(i, |d| d.is_ascii_digit());
+            if c == '0' && i - start > 1 {
+                return fail(start, 0, Offence::LeadingZero);
             }
-            if s.peek(0).is_some_and(|d| d.is_alphanumeric() || matches!(d, '.' | '_')) {
-                return fail(l0, c0, Offence::NotDecimal);
+            if peek(i).is_some_and(|d| d.is_alphanumeric() || matches!(d, '.' | '_')) {
+                return fail(start, 0, Offence::NotDecimal);
             }
         } else {
-            return fail(l0, c0, offence(c, s.peek(1)));
+            return fail(i, 0, offence(c, peek(i + 1)));
         }
     }
     Ok(())

@@ -10,6 +10,5 @@ use crate::syntax::cone::Certificate;
 /// second path for n = 3, 4, 6, against which the field path is tested (point certificates).
 pub fn check_in_field<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
     cone::prelude(cert, limits)?;
-    super::rod_only_bound(cert)?;
     field::check::<F>(cert, limits)
 }

@@ -6,9 +6,9 @@
 
 use crate::exact::{Field, ParseLimits};
 use crate::model::polygon::is_irrational;
+use crate::reject::{Code, Rejection};
 #[cfg(any(not(feature = "field"), not(feature = "boxes")))]
-use crate::reject::Needs;
-use crate::reject::{Code, Detail, Rejection, TimeToRestFailure};
+use crate::reject::{Detail, Needs};
 use crate::rules::outcome::Accepted;
 use crate::rules::{cone, rod};
 use crate::syntax::cone::{Body, Certificate, Param};
@@ -35,34 +35,18 @@ use crate::rules::field as field_rules;
 /// body: the rod, a polygon with rational or irrational cos(2 pi/n), a point or a box.
 pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
     cone::prelude(cert, limits)?;
-    rod_only_bound(cert)?;
     let Body::RegularPolygon { n, kappa, gamma } = &cert.body;
-    if is_irrational(*n) {
-        #[cfg(feature = "field")]
-        return field_rules::check::<F>(cert, limits);
-        #[cfg(not(feature = "field"))]
-        return Err(not_built(Code::UnsupportedBody, "body.n", "field", cert.version));
-    }
     match (kappa, gamma) {
         (Param::Point(k), Param::Point(g)) if *n == 2 => rod::check_point::<F>(cert, [k, g], limits),
+        #[cfg(feature = "field")]
+        _ if is_irrational(*n) => field_rules::check::<F>(cert, limits),
+        #[cfg(not(feature = "field"))]
+        _ if is_irrational(*n) => Err(not_built(Code::UnsupportedBody, "body.n", "field", cert.version)),
         (Param::Point(k), Param::Point(g)) => cone::check_point::<F>(cert, [k, g], limits),
         #[cfg(feature = "boxes")]
         _ => boxes::check::<F>(cert, limits),
         #[cfg(not(feature = "boxes"))]
         _ => Err(not_built(Code::UnsupportedVersion, "version", "boxes", cert.version)),
-    }
-}
-
-/// Rule T1 covers only the rod at a point (docs/time-to-rest.md §2); elsewhere B is refused.
-fn rod_only_bound(cert: &Certificate) -> Result<(), Rejection> {
-    let Body::RegularPolygon { n, kappa, gamma } = &cert.body;
-    let rod_point = *n == 2 && matches!((kappa, gamma), (Param::Point(_), Param::Point(_)));
-    match &cert.time_to_rest_bound {
-        Some(b) if !rod_point => {
-            let detail = Detail::TimeToRest(TimeToRestFailure::NotRod, b.clone());
-            Err(Rejection::at(Code::TimeToRestNotShown, "time_to_rest_bound", detail))
-        }
-        _ => Ok(()),
     }
 }
 
@@ -161,15 +145,11 @@ pub fn verify_text(text: &str, limits: ParseLimits, backends: &[Backend]) -> Ver
 /// Reads certificate text in the given encoding (RON or its JSON twin): the header names the
 /// kind, the kind's schema is read, and its rules run on the given backends.
 pub fn verify_text_in(text: &str, encoding: Encoding, limits: ParseLimits, backends: &[Backend]) -> Verdict {
-    let verdict = |r: Result<Verdict, Rejection>| r.unwrap_or_else(Verdict::Rejected);
     match kind_of(text, encoding, Kind::Cone) {
         Err(r) => Verdict::Rejected(r),
-        Ok((Kind::Cone, _)) => verdict(schema(text, encoding).map(|c| verify_on(&c, limits, backends))),
         #[cfg(any(feature = "family", feature = "orbit", feature = "proof", feature = "refutation"))]
-        Ok((kind, _)) => verify_text_of(kind, text, encoding, limits, backends),
-        #[cfg(not(any(feature = "family", feature = "orbit", feature = "proof", feature = "refutation")))]
-        Ok(_) => verdict(
-            crate::syntax::read::<Certificate>(text, encoding).map(|c| verify_on(&c, limits, backends)),
-        ),
+        Ok((kind, _)) if kind != Kind::Cone => verify_text_of(kind, text, encoding, limits, backends),
+        // Without those features, the header names a cone certificate or is refused.
+        Ok(_) => schema(text, encoding).map_or_else(Verdict::Rejected, |c| verify_on(&c, limits, backends)),
     }
 }

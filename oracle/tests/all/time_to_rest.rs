@@ -217,7 +217,8 @@ fn the_optional_field_and_the_header_get_the_kernels_codes() {
         ("version: 1", "version: None", "missing-field"),
         ("version: 1", "version: Some(7)", "unsupported-version"),
         ("version: 1", "version: None,\n    version: 1", "duplicate-field"),
-        // Its struct names: the header is read under any of the kernel's three, then the schema.
+        // Its struct names: the header is read under any struct name (or none), then the schema,
+        // which wants the kind's own name (kernel/tests/point_kernel.rs).
         ("Certificate(", "Refutation(", "syntax"),
         ("Certificate(", "Foo(", "syntax"),
         (
@@ -226,7 +227,7 @@ fn the_optional_field_and_the_header_get_the_kernels_codes() {
             "wrong-format",
         ),
         ("Certificate(\n    format: \"chatter-certificate\"", "Proof(\n    format: \"x\"", "wrong-format"),
-        ("Certificate(\n    format: \"chatter-certificate\"", "Foo(\n    format: \"x\"", "syntax"),
+        ("Certificate(\n    format: \"chatter-certificate\"", "Foo(\n    format: \"x\"", "wrong-format"),
         (
             "Certificate(\n    format: \"chatter-certificate\"",
             "Refutation(\n    format: None",
