@@ -14,7 +14,9 @@ use std::path::{Path, PathBuf};
     after_help = "Subdivides the box [kappa] x [gamma] adaptively (halving in kappa, gamma or both, where the\n\
 exact CC criterion changes) into boxes that are each certified (one box certificate, an all-down\n\
 claim for every (kappa, gamma) of the box), refuted at their corners (exact refutations at\n\
-points, where the CC criterion fails at every corner), or undecided at the finest size.\n\n\
+points, where the CC criterion fails at every corner), or undecided: outside the CC region at\n\
+every corner with a corner not refuted (such boxes are not split), or at the finest size along\n\
+the axis it would be split (the strip at gamma = 0 is split in gamma only).\n\n\
 Writes DIR/boxes.csv (every box), DIR/certificates/ and DIR/refutations/ (all re-checkable with\n\
 `chatter verify DIR`), and DIR/summary.json: the certified area, the area of the exact CC region\n\
 in the same box (from the spectral module's exact thresholds, integrated over kappa), their ratio,\n\

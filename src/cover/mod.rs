@@ -1,8 +1,9 @@
 //! A certified cover of the CC region (issue 11 §3): a box of parameters is subdivided
 //! adaptively into boxes, each certified (one box certificate proves an all-down claim on the
-//! whole box), refuted at its corners (exact refutations at points), or left undecided at the
-//! finest size. Boxes are processed generation by generation, in parallel, and every result is a
-//! pure function of the box, so the output does not depend on the number of threads.
+//! whole box), refuted at its corners (exact refutations at points), or left undecided (outside
+//! the CC region at every corner with a corner not refuted, or at the finest size along the axis
+//! it would be split). Boxes are processed generation by generation, in parallel, and every
+//! result is a pure function of the box, so the output does not depend on the number of threads.
 
 pub mod area;
 pub mod summary;
@@ -77,7 +78,8 @@ pub enum Status {
     Certified { claim: Claim, certificate: Certificate },
     /// The CC criterion fails at every corner and every corner has an exact refutation.
     Refuted { refutations: Vec<Refutation> },
-    /// Neither, at the finest size.
+    /// Neither: outside the CC region at every corner with a corner not refuted (not split), or
+    /// at the finest size along the axis it would be split.
     Undecided,
 }
 

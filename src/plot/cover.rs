@@ -90,7 +90,7 @@ impl CoverFigure {
         if has("undecided", "") {
             e.push(Entry::new(
                 Sample::Fill(UNDECIDED),
-                "undecided: neither certified nor refuted (at the finest size, or a corner not refuted)",
+                "undecided: neither certified nor refuted (a corner not refuted, or the finest size along the axis it would be split)",
             ));
         }
         if super::map::drawn(&inside(&self.curves.cc, self.kappa_f64(), self.gamma_f64())) {

@@ -231,3 +231,41 @@ fn plot_cover_draws_the_boxes_and_refuses_other_folders() {
     let o = run(&["plot", "cover", out.to_str().unwrap(), "-o", d.path().join("x.jpg").to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+/// Issue 26: undecided boxes were all said to be "at the finest size", but a box outside the CC
+/// region at every corner is not split, and the strip at γ = 0 is split in γ only. The help, the
+/// docs and the figure's legend say both reasons; each reason occurs in a small cover.
+#[test]
+fn undecided_boxes_are_described_by_both_of_their_reasons() {
+    let req =
+        CoverRequest { n: 3, kappa: [q("1/10"), q("1/4")], gamma: [q("0"), q("1/5")], max_depth: [2, 3] };
+    let leaves = cover(&req, &Timings::default(), &|_| {});
+    let undecided: Vec<_> = leaves.iter().filter(|l| matches!(l.status, Status::Undecided)).collect();
+    let coarse = |l: &chatter::cover::Leaf| l.cell.depth[0] < 2 || l.cell.depth[1] < 3;
+    assert!(
+        undecided.iter().any(|l| coarse(l) && l.criterion.iter().all(|c| *c)),
+        "no undecided box coarser than the finest size inside the CC region"
+    );
+    let help = String::from_utf8_lossy(&run(&["cover", "--help"]).stdout).replace('\n', " ");
+    let doc =
+        std::fs::read_to_string(crate::common::root().join("docs/cover.md")).unwrap().replace('\n', " ");
+    for (name, text) in [("cover --help", &help), ("docs/cover.md", &doc)] {
+        assert!(!text.contains("or undecided at the finest size."), "{name}: {text}");
+        assert!(!text.contains("**undecided**: neither, at the finest size."), "{name}");
+        assert!(text.contains("corner not refuted") && text.contains("along the axis"), "{name}: {text}");
+    }
+    // The figure's legend, for the same cover made by the command line.
+    let d = tempfile::tempdir().unwrap();
+    let (out, svg) = (d.path().join("c"), d.path().join("c.svg"));
+    let args =
+        ["--n", "3", "--kappa", "1/10:1/4", "--gamma", "0:1/5", "--kappa-depth", "2", "--gamma-depth", "3"];
+    let o = run(&[&["cover"][..], &args, &["--out", out.to_str().unwrap()]].concat());
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = run(&["plot", "cover", out.to_str().unwrap(), "-o", svg.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let legend = crate::plot_geometry::words(&std::fs::read_to_string(&svg).unwrap());
+    assert!(
+        legend.contains("a corner not refuted, or the finest size along the axis it would be split"),
+        "{legend}"
+    );
+}

@@ -46,3 +46,55 @@ fn kernel_line_counts_in_the_soundness_document_are_current() {
     assert_eq!(documented, actual, "the table of docs/kernel-soundness.md §4 (file -> lines)");
     assert_eq!(total, Some(actual.values().sum()), "the total of docs/kernel-soundness.md §4");
 }
+
+/// Whether the text holds a duration: a number followed by a unit of time ("3.6 ms", "1–9 s").
+fn has_duration(text: &str) -> bool {
+    let words: Vec<&str> = text.split_whitespace().collect();
+    words.windows(2).any(|w| {
+        let number = w[0].trim_start_matches(['(', '~', '≈', '*']);
+        let unit = w[1].trim_end_matches(['.', ',', ';', ':', ')', '*']);
+        number.starts_with(|c: char| c.is_ascii_digit())
+            && number.chars().all(|c| c.is_ascii_digit() || ".,–-".contains(c))
+            && ["s", "ms", "µs", "min", "minutes", "seconds", "hour", "hours"].contains(&unit)
+    })
+}
+
+/// Whether the text holds a date YYYY-MM-DD.
+fn has_date(text: &str) -> bool {
+    text.as_bytes().windows(10).any(|w| {
+        w.iter().enumerate().all(|(i, c)| if i == 4 || i == 7 { *c == b'-' } else { c.is_ascii_digit() })
+    })
+}
+
+/// Issue 26 §2: a time measured on a shared machine is only meaningful with its date (and what
+/// else ran): every section of docs/ that gives a duration dates it, except the section of the
+/// certificate format's configured limits (defaults, not measurements).
+#[test]
+fn every_time_in_the_docs_is_dated() {
+    let mut undated = Vec::new();
+    for e in std::fs::read_dir(root().join("docs")).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_none_or(|x| x != "md") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&p).unwrap();
+        let mut fenced = false;
+        let prose: String = text
+            .lines()
+            .filter(|l| {
+                fenced ^= l.starts_with("```");
+                !fenced && !l.starts_with("```")
+            })
+            .map(|l| format!("{l}\n"))
+            .collect();
+        // Sections: a measurement is dated once, in its section.
+        for block in prose.split("\n#") {
+            let limits = block.contains("| limit | default |");
+            if has_duration(block) && !has_date(block) && !limits {
+                let name = p.file_name().unwrap().to_string_lossy().to_string();
+                undated.push(format!("{name}: {}", &block[..block.len().min(100)]));
+            }
+        }
+    }
+    assert!(undated.is_empty(), "undated times:\n{}", undated.join("\n"));
+}

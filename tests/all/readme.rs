@@ -164,3 +164,85 @@ fn the_readme_counts_the_tests() {
     let said = readme.split("#[test]` functions").next().unwrap().rsplit(['(', ' ']).nth(1).unwrap();
     assert_eq!(said.parse::<usize>().ok(), Some(actual), "README says {said} `#[test]` functions");
 }
+
+/// The files and folders README.md's commands write in the clone: the word after `--out`, `-o`,
+/// `--plot` or `-m venv` in its code (blocks and inline), placeholders in capitals left out.
+fn readme_outputs(readme: &str) -> std::collections::BTreeSet<String> {
+    let (mut fenced, mut prose, mut inside) = (Vec::new(), String::new(), false);
+    for line in readme.lines() {
+        if line.starts_with("```") {
+            inside = !inside;
+        } else if inside {
+            fenced.push(line);
+        } else {
+            prose.push_str(line);
+            prose.push('\n');
+        }
+    }
+    let code = fenced.into_iter().chain(prose.split('`').skip(1).step_by(2));
+    let mut out = std::collections::BTreeSet::new();
+    for c in code {
+        let words: Vec<&str> = c.split_whitespace().collect();
+        for w in words.windows(2) {
+            let path = w[1].trim_matches(|ch: char| ch == '"' || ch == '\'' || ch == ')');
+            let placeholder = path.chars().any(|ch| ch.is_ascii_uppercase());
+            if matches!(w[0], "--out" | "-o" | "--plot" | "venv") && !placeholder && !path.is_empty() {
+                out.insert(path.to_string());
+            }
+        }
+    }
+    out
+}
+
+/// Issue 26 §2: `git status` stays clean after following README.md: .gitignore covers every file
+/// and folder its commands create (README's map command wrote map3/ and map-n3.png unignored).
+#[test]
+fn gitignore_covers_what_the_readme_creates() {
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let outputs = readme_outputs(&readme);
+    for needed in ["out", ".venv", "map3", "map-n3.png"] {
+        assert!(outputs.contains(needed), "README's outputs, as read here, lack {needed}: {outputs:?}");
+    }
+    // As a file or as a folder (a pattern "/out/" matches only a folder; none exists here).
+    let ignored = |path: &str| {
+        let o = std::process::Command::new("git")
+            .args(["check-ignore", "--no-index", "-q", path])
+            .current_dir(root())
+            .output()
+            .expect("git");
+        o.status.code() == Some(0)
+    };
+    for path in &outputs {
+        assert!(
+            ignored(path) || ignored(&format!("{path}/")),
+            ".gitignore does not cover {path}, which README's commands create"
+        );
+    }
+}
+
+/// Issue 26 §2: the command README.md gives for its figure runs as written (with `chatter` for
+/// the built binary, in an empty folder) and draws exactly the committed docs/img/map-n3.png.
+#[test]
+fn the_readme_figure_command_runs_as_written_and_draws_the_committed_figure() {
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap().replace('\n', " ");
+    let command = readme
+        .split('`')
+        .find(|c| c.starts_with("chatter map --n 3") && c.contains("chatter plot map"))
+        .expect("README gives the command of its figure");
+    let d = tempfile::tempdir().unwrap();
+    let mut made = None;
+    for step in command.split("&&") {
+        let words: Vec<&str> = step.split_whitespace().collect();
+        assert_eq!(words[0], "chatter", "{command}");
+        let o = std::process::Command::new(crate::common::bin())
+            .args(&words[1..])
+            .current_dir(d.path())
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "`{step}`: {}", String::from_utf8_lossy(&o.stderr));
+        made = words.windows(2).find(|w| w[0] == "-o").map(|w| d.path().join(w[1])).or(made);
+    }
+    let made = std::fs::read(made.expect("the command writes a figure with -o")).unwrap();
+    let committed = std::fs::read(root().join("docs/img/map-n3.png")).unwrap();
+    assert!(made == committed, "docs/img/map-n3.png is not what README's command draws now");
+}

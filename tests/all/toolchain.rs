@@ -154,3 +154,56 @@ fn the_library_has_no_unit_tests_that_would_not_run() {
         "unit tests in src/ that `cargo test` would not run (move them to tests/all/): {found:?}"
     );
 }
+
+/// The units (package, target with mode and profile, features) of a cargo command's release build, from cargo's
+/// unit graph (`--unit-graph`, unstable: enabled by RUSTC_BOOTSTRAP as for `cargo fuzz`).
+fn units(args: &[&str]) -> Vec<(String, String, String)> {
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let o = std::process::Command::new(cargo)
+        .args(args)
+        .args(["--release", "--frozen", "--unit-graph", "-Z", "unstable-options"])
+        .current_dir(root())
+        .env("RUSTC_BOOTSTRAP", "1")
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "cargo {args:?}: {}", String::from_utf8_lossy(&o.stderr));
+    let graph: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    // "name@version" (two versions of a package may share name, features and profile).
+    let name = |id: &str| id.rsplit(['#', '/']).next().unwrap().to_string();
+    graph["units"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|u| {
+            let f = |k: &str| u[k].to_string();
+            let what = format!("{} {} {}", u["target"]["name"], f("mode"), f("profile"));
+            (name(u["pkg_id"].as_str().unwrap()), what, f("features"))
+        })
+        .collect()
+}
+
+/// Issue 26: README's test command is said to build on the first command's release build. Cargo
+/// resolves features per command: the packages whose features the test build (dev-dependencies,
+/// the Python package) changes compile again, with everything above them. docs/measurements.md
+/// names them; README must not claim the build is simply reused while the list is not empty.
+#[test]
+fn the_docs_name_the_packages_the_test_command_compiles_again() {
+    let run = units(&["build"]);
+    let test: BTreeSet<_> = units(&["test", "--workspace", "--no-run"]).into_iter().collect();
+    let again: BTreeSet<String> = run
+        .into_iter()
+        .filter(|u| !test.contains(u))
+        .map(|u| u.0.split('@').next().unwrap().to_string())
+        .collect();
+    let doc = std::fs::read_to_string(root().join("docs/measurements.md")).unwrap();
+    let line =
+        doc.split("Compiled again by the test command:").nth(1).expect("docs/measurements.md lists them");
+    let line = &line[..line.find('.').unwrap_or(line.len())];
+    let listed: BTreeSet<String> = line.split('`').skip(1).step_by(2).map(str::to_string).collect();
+    assert_eq!(listed, again, "docs/measurements.md: the packages `cargo test` compiles again");
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap().replace('\n', " ");
+    if !again.is_empty() {
+        assert!(!readme.contains("on the same release build"), "README says the test build is the first's");
+        assert!(readme.contains("compiles again"), "README must say that some packages compile again");
+    }
+}
