@@ -1,8 +1,8 @@
 //! The heaviest files the default limits allow, one per kind (issue 23 §3, target: each under 5 s
-//! on both backends): built by `kernel/tests/worst/files.rs` (whose test asserts their verdicts),
+//! on both backends): built by `kernel/tests/all/worst/files.rs` (whose test asserts their verdicts),
 //! verified here on both backends, read included.
 
-#[path = "../kernel/tests/worst/files.rs"]
+#[path = "../kernel/tests/all/worst/files.rs"]
 mod files;
 
 use chatter_kernel::exact::ParseLimits;

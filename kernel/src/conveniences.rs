@@ -1,6 +1,6 @@
 //! Conveniences of the public API that no rule calls: the names of claims, conversions, an
 //! accessor, a shorthand for limits, and the serialization of codes for the tool's reports. No verdict depends
-//! on them, and no file read to trust one reaches this module (`kernel/tests/size.rs`), so it is
+//! on them, and no file read to trust one reaches this module (`kernel/tests/all/size.rs`), so it is
 //! outside every kind's lines to read (docs/kernel-soundness.md §4). It holds no `Deserialize`
 //! impl: how a file is read is decided in `syntax/` only.
 

@@ -29,19 +29,12 @@ pub enum Reader {
 
 /// Reads `format` and `version` and picks the reader. The top-level struct's name, when written,
 /// must be `Certificate` for certificates and `Refutation` for refutations (checked after the
-/// header, as the kernel reads the header under any of its three struct names).
+/// header: the kernel reads the header under any struct name, then the kind's schema).
 pub fn header(v: &Value) -> Checked<Reader> {
-    // A struct name other than the three the kernel's lenient header reader tries is refused
-    // first; one of them that is not the kind's own, after the header (the kind's schema).
     let named = match v {
         Value::Named { name, .. } if !name.is_empty() => Some(name.as_str()),
         _ => None,
     };
-    if let Some(name) = named
-        && !["Certificate", "Refutation", "Proof"].contains(&name)
-    {
-        return Err(Fail::new("syntax", format!("unknown struct `{name}`")));
-    }
     let (mut format, mut version) = (None, None);
     for (name, value) in record(v)? {
         // The kernel reads the RON header leniently, as optional fields with `Some` implicit:

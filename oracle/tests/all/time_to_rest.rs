@@ -218,7 +218,7 @@ fn the_optional_field_and_the_header_get_the_kernels_codes() {
         ("version: 1", "version: Some(7)", "unsupported-version"),
         ("version: 1", "version: None,\n    version: 1", "duplicate-field"),
         // Its struct names: the header is read under any struct name (or none), then the schema,
-        // which wants the kind's own name (kernel/tests/point_kernel.rs).
+        // which wants the kind's own name (kernel/tests/all/point_kernel.rs).
         ("Certificate(", "Refutation(", "syntax"),
         ("Certificate(", "Foo(", "syntax"),
         (

@@ -1,6 +1,6 @@
 //! Tests of general convex bodies with the tool: affine images (`chatter::model::affine`), the pair
 //! PCC quadratic against floats, the reduction to the regular polygons and both backends (the
-//! kernel's own tests of `ConvexBody` are in kernel/tests/convex).
+//! kernel's own tests of `ConvexBody` are in kernel/tests/all/convex).
 //! Shared here: exact random bodies and an independent statement of the kinematics (heights and
 //! speeds of the contacts straight from their coordinates, never through the kernel).
 

@@ -9,7 +9,7 @@ use chatter_kernel::verify::{Verdict, verify_proof};
 use malachite::rational::Rational as Q;
 
 fn committed() -> ProofFile {
-    read(include_str!("../../proofs/square.ron")).expect("the committed proof reads")
+    read(include_str!("../../../proofs/square.ron")).expect("the committed proof reads")
 }
 
 /// The index of the step at which the checker (malachite) rejects `f`.
@@ -237,7 +237,7 @@ fn map_names_bodies_and_headers_are_read_strictly() {
         let r = check::<Q>(&f, ParseLimits::default()).unwrap_err();
         assert_eq!(r.code, Code::InvalidHeader, "n = {n}: {r}");
     }
-    let text = include_str!("../../proofs/square.ron");
+    let text = include_str!("../../../proofs/square.ron");
     let r = read(&text.replacen("version: 1,", "version: 2,\n    extra: 0,", 1)).unwrap_err();
     assert_eq!(r.code, Code::UnsupportedVersion, "{r}");
     let r = read(&text.replacen("version: 1,", "version: 1,\n    extra: 0,", 1)).unwrap_err();

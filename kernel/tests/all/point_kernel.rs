@@ -8,8 +8,8 @@ use chatter_kernel::syntax::cone::Certificate;
 use chatter_kernel::syntax::{Encoding, Kind, kind_of, schema};
 use chatter_kernel::verify::{BOTH, Verdict, verify_text, verify_text_in};
 
-const SQUARE: &str = include_str!("../../certificates/valid/doc-example-square.ron");
-const SQUARE_JSON: &str = include_str!("../../certificates/valid/doc-example-square.json");
+const SQUARE: &str = include_str!("../../../certificates/valid/doc-example-square.ron");
+const SQUARE_JSON: &str = include_str!("../../../certificates/valid/doc-example-square.json");
 
 fn rejection(text: &str) -> (Code, Locus) {
     match verify_text(text, ParseLimits::default(), &BOTH) {

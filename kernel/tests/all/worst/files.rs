@@ -1,5 +1,5 @@
 //! The heaviest files the default limits allow, built from the corpus (shared by
-//! `kernel/tests/worst/main.rs`, which asserts their verdicts, and `benches/worst.rs`, which times
+//! `kernel/tests/all/worst/mod.rs`, which asserts their verdicts, and `benches/worst.rs`, which times
 //! them): every number of a valid file moved by a tiny amount, ±1/(10^k + 7), so that it has as
 //! many digits as `max-digits` (10,000) and the file's numbers together about as many characters
 //! as `max-total-digits` (2,000,000) allow. The verdict is unchanged where the file has slack.

@@ -8,7 +8,7 @@ use chatter_kernel::reject::{Code, Detail, KindDetail, Rejection};
 use malachite::rational::Rational as Q;
 
 fn committed() -> ProofFile {
-    read(include_str!("../../proofs/square.ron")).expect("the committed proof reads")
+    read(include_str!("../../../proofs/square.ron")).expect("the committed proof reads")
 }
 
 /// The square's proof with `steps` put in front of its steps (after its header).

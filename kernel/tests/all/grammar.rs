@@ -9,7 +9,7 @@ use chatter_kernel::verify::{BOTH, Verdict, verify_text};
 use malachite::rational::Rational;
 use num_rational::BigRational;
 
-const BOX: &str = include_str!("../../certificates/valid/n4-kappa1_10_3_25-gamma1_100_1_50-box.ron");
+const BOX: &str = include_str!("../../../certificates/valid/n4-kappa1_10_3_25-gamma1_100_1_50-box.ron");
 
 fn verdict(text: &str) -> Verdict {
     verify_text(text, ParseLimits::default(), &BOTH)
@@ -51,7 +51,7 @@ fn tuples_elsewhere_and_the_words_kappa_and_gamma_in_strings_are_unaffected() {
     let text = BOX.replacen("producer: \"", "producer: \"kappa: (", 1);
     assert!(text.contains("kappa: ("));
     assert!(matches!(verdict(&text), Verdict::Accepted(_)));
-    let point = include_str!("../../certificates/valid/doc-example-square.ron");
+    let point = include_str!("../../../certificates/valid/doc-example-square.ron");
     assert!(matches!(verdict(point), Verdict::Accepted(_)), "generators are tuples");
 }
 
@@ -95,7 +95,7 @@ fn the_digit_limit_applies_to_a_whole_field_element() {
     assert!(field.parse(&format!("{half} + {half}*c"), limits).is_ok());
     // The powers of c do not count; a certificate with such an element is `too-large` at its path.
     let cert =
-        include_str!("../../certificates/valid/n5-kappa1_200-gamma1_5-complete-chatter-from-all-down.ron")
+        include_str!("../../../certificates/valid/n5-kappa1_200-gamma1_5-complete-chatter-from-all-down.ron")
             .replacen("version: 1,", "version: 3,", 1)
             .replacen("kappa: \"1/200\"", &format!("kappa: \"{element}\""), 1);
     let Verdict::Rejected(r) = verdict(&cert) else { panic!("accepted") };

@@ -9,9 +9,9 @@ use chatter_kernel::reject::{Code, Detail, Locus, Needs};
 use chatter_kernel::syntax::{Encoding, Kind, kind_of, read};
 use chatter_kernel::verify::{BOTH, Verdict, verify_text, verify_text_in};
 
-const CONE: &str = include_str!("../../certificates/valid/doc-example-square.ron");
-const FAMILY: &str = include_str!("../../certificates/valid/convex-rectangle-2x1-gamma1_50.ron");
-const ORBIT: &str = include_str!("../../certificates/valid/orbit-n3-kappa1_8-gamma3_20.ron");
+const CONE: &str = include_str!("../../../certificates/valid/doc-example-square.ron");
+const FAMILY: &str = include_str!("../../../certificates/valid/convex-rectangle-2x1-gamma1_50.ron");
+const ORBIT: &str = include_str!("../../../certificates/valid/orbit-n3-kappa1_8-gamma3_20.ron");
 
 /// `text` with its header written in the legacy form `("chatter-certificate", version)`.
 fn legacy(text: &str, format: &str, version: u64) -> String {
@@ -29,8 +29,8 @@ fn each_kind_has_its_own_format_string() {
     assert_eq!(kind(CONE), Kind::Cone);
     assert_eq!(kind(FAMILY), Kind::Family);
     assert_eq!(kind(ORBIT), Kind::Orbit);
-    assert_eq!(kind(include_str!("../../proofs/square.ron")), Kind::Proof);
-    let refutation = include_str!("../../certificates/valid/refutation-n4-kappa1_6-gamma1_20.ron");
+    assert_eq!(kind(include_str!("../../../proofs/square.ron")), Kind::Proof);
+    let refutation = include_str!("../../../certificates/valid/refutation-n4-kappa1_6-gamma1_20.ron");
     assert_eq!(kind(refutation), Kind::Refutation);
     for k in [Kind::Cone, Kind::Family, Kind::Orbit, Kind::Refutation, Kind::Proof] {
         let others = [Kind::Cone, Kind::Family, Kind::Orbit, Kind::Refutation, Kind::Proof];
@@ -77,7 +77,7 @@ fn a_reader_refuses_the_other_kinds() {
 #[cfg(feature = "json")]
 #[test]
 fn the_json_twin_names_its_kind_the_same_way() {
-    let json = include_str!("../../certificates/valid/doc-example-square.json");
+    let json = include_str!("../../../certificates/valid/doc-example-square.json");
     assert_eq!(kind_of(json, Encoding::Json, Kind::Cone).unwrap().0, Kind::Cone);
     let family = json.replacen("\"chatter-certificate\"", "\"chatter-family-certificate\"", 1);
     assert_eq!(kind_of(&family, Encoding::Json, Kind::Cone).unwrap().0, Kind::Family);
