@@ -83,7 +83,7 @@ fn against(opts: &Options, sets: &Certified) -> Options {
 }
 
 /// Runs `runs` random drops (seeds `seed..`) exactly with the sets `sets`; with `orbits`, tries
-/// orbit certificates (with that effort) for the cycles of the drops still open ([`open`]:
+/// orbit certificates (with that effort) for the cycles of the drops still open (`open`:
 /// undecided with CC as evidence, or proved no-ICC-no-PCC by a cone) and reruns those drops,
 /// going on past a cone entry so that they can enter an orbit set. `tick` is called after each
 /// first run.
@@ -121,9 +121,9 @@ pub fn prove_many(
     Proved { briefs, sets }
 }
 
-/// One exact run with the sets `sets`; with `orbits`, when it is still open ([`open`]: undecided
+/// One exact run with the sets `sets`; with `orbits`, when it is still open (`open`: undecided
 /// with CC as evidence, or proved no-ICC-no-PCC by a cone), tries an orbit certificate for its
-/// cycle ([`cycle_of`]) and runs again, going on past a cone entry.
+/// cycle (`cycle_of`) and runs again, going on past a cone entry.
 pub fn prove_one(
     model: &Model,
     initial: &Initial,
