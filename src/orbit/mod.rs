@@ -14,7 +14,7 @@ use crate::simulate::{Initial, Model, Options, Shape, pattern, simulate};
 use chatter_kernel::certificate::{Claim, OrbitBody, OrbitCertificate, OrbitSet, Rejection};
 use chatter_kernel::exact::{ParseLimits, Ring, to_canonical};
 use chatter_kernel::model::Polygon;
-use chatter_kernel::verify::{Backend, Verdict, verify_orbit_on};
+use chatter_kernel::verify::{Backend, Verdict, agree};
 
 /// A request for an orbit certificate.
 #[derive(Clone, Debug)]
@@ -778,10 +778,16 @@ pub fn certify_orbit_within(
                 delta = delta.times(&Q::new(1, 2));
             }
             let cert = certificate(req, &pattern, &f.x, &axes, &delta, depth, [&rho, &lambda, &period]);
-            match verify_orbit_on(&cert, limits, &backends[..1]) {
+            let start = std::time::Instant::now();
+            let Some((main, others)) = backends.split_first() else {
+                return Err(Failure::Internal("no backend to check the certificate".into()));
+            };
+            let on_main = (main.kinds.orbit)(&cert, limits);
+            match agree([(main.name, on_main.clone())]) {
                 Verdict::Accepted(_) => {
-                    let start = std::time::Instant::now();
-                    let verdict = verify_orbit_on(&cert, limits, backends);
+                    // The other backends are compared with the first one's result: it is not run twice.
+                    let rest = others.iter().map(|b| (b.name, (b.kinds.orbit)(&cert, limits)));
+                    let verdict = agree(std::iter::once((main.name, on_main)).chain(rest));
                     let kernel_seconds = start.elapsed().as_secs_f64();
                     return match verdict {
                         Verdict::Accepted(a) => Ok(Found {

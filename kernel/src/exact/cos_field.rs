@@ -90,21 +90,6 @@ struct Level<Z> {
     unit: Z,
 }
 
-/// 2^s.
-fn pow2<Z: Int>(s: u64) -> Z {
-    let (mut result, mut base, mut e) = (Z::one(), Z::from_i64(2), s);
-    while e > 0 {
-        if e & 1 == 1 {
-            result = result.times(&base);
-        }
-        e >>= 1;
-        if e > 0 {
-            base = base.times(&base);
-        }
-    }
-    result
-}
-
 /// 2^(s d) q(x/2^s) for an integer polynomial q of degree d (the sign of q at x/2^s).
 fn eval_scaled<Z: Int>(q: &[Z], x: &Z, unit: &Z) -> Z {
     let mut acc = Z::zero();
@@ -120,7 +105,7 @@ fn eval_scaled<Z: Int>(q: &[Z], x: &Z, unit: &Z) -> Z {
 
 impl<Z: Int> Level<Z> {
     fn new(a: Z, b: Z, s: u64) -> Self {
-        Level { a, b, s, unit: pow2(s) }
+        Level { a, b, s, unit: Z::pow2(s) }
     }
 
     /// One bisection: the half in which Q changes sign.
@@ -150,15 +135,15 @@ impl<Z: Int> Level<Z> {
         if p1.is_zero() {
             return None;
         }
-        let (num, den) = (m.times(&p1).minus(&p0).times(&pow2(s2 - t)), p1);
+        let (num, den) = (m.times(&p1).minus(&p0).times(&Z::pow2(s2 - t)), p1);
         let (num, den) = if den.is_negative() { (num.negated(), den.negated()) } else { (num, den) };
         let x = num.div_floor(&den);
         let (a, b) = (x.minus(&Z::one()), x.plus(&Z::from_i64(2)));
-        let up = pow2::<Z>(s2 - self.s);
+        let up = Z::pow2(s2 - self.s);
         if a < self.a.times(&up) || b > self.b.times(&up) {
             return None;
         }
-        let unit = pow2::<Z>(s2);
+        let unit = Z::pow2(s2);
         let (sa, sb) = (eval_scaled(q, &a, &unit).sign(), eval_scaled(q, &b, &unit).sign());
         (sa != Ordering::Equal && sb != Ordering::Equal && sa != sb).then_some(Level { a, b, s: s2, unit })
     }
@@ -212,14 +197,14 @@ impl<F: Field> CosField<F> {
         // Q(y) = sum psi_k 2^(d-k) y^k: integers, as 2 cos(2 pi/n) is an algebraic integer.
         let ymin: Vec<F::Int> = (0..=d)
             .map(|k| {
-                let x = minpoly[k].times(&F::from_int(&pow2(d as u64 - k as u64)));
+                let x = minpoly[k].times(&F::from_int(&F::Int::pow2(d as u64 - k as u64)));
                 assert!(x.denom() == F::Int::one(), "2 cos(2 pi/n) is an algebraic integer");
                 x.numer()
             })
             .collect();
         // Level 0: y = 2c in (2 lo, 2 hi), whose denominators divide 2^64 (bisections of [-1, 1]).
         let at = |x: &F| {
-            let scaled = x.times(&F::from_int(&pow2(65)));
+            let scaled = x.times(&F::from_int(&F::Int::pow2(65)));
             assert!(scaled.denom() == F::Int::one(), "the ends of level 0 are multiples of 2^-65");
             scaled.numer()
         };
@@ -613,7 +598,7 @@ fn common_denominator<F: Field>(xs: &[Algebraic<F>]) -> F::Int {
 fn integral<F: Field>(xs: &[Algebraic<F>]) -> Vec<Vec<F::Int>> {
     let d = xs.iter().find_map(|x| x.field.as_ref()).map_or(1, |k| k.degree());
     let l = common_denominator(xs);
-    let twos: Vec<F::Int> = (0..d as u64).map(pow2).collect();
+    let twos: Vec<F::Int> = (0..d as u64).map(F::Int::pow2).collect();
     xs.iter()
         .map(|x| {
             let coeff =
@@ -653,7 +638,8 @@ impl<F: Field> AlgebraicInt<F> {
 
     /// The same number in Q(c): b_k y^k = b_k 2^k c^k.
     pub fn to_algebraic(&self) -> Algebraic<F> {
-        let c = self.y.iter().enumerate().map(|(k, b)| F::from_int(&b.times(&pow2(k as u64)))).collect();
+        let c =
+            self.y.iter().enumerate().map(|(k, b)| F::from_int(&b.times(&F::Int::pow2(k as u64)))).collect();
         Algebraic::new(self.field.clone(), c)
     }
 

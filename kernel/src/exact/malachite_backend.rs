@@ -55,4 +55,7 @@ impl Int for Integer {
     fn bit_length(&self) -> u64 {
         self.significant_bits()
     }
+    fn pow2(k: u64) -> Self {
+        Integer::from(1u32) << k
+    }
 }

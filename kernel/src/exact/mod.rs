@@ -98,6 +98,8 @@ pub trait Int: Ring {
     fn parse_digits(s: &str) -> Option<Self>;
     /// Number of bits of the absolute value (0 for zero).
     fn bit_length(&self) -> u64;
+    /// 2^k, by a shift (the dyadic enclosures of orbit, basin and number-field checks).
+    fn pow2(k: u64) -> Self;
 }
 
 /// An exact ordered field: the rationals, or an exact real number field such as Q(sqrt 5).

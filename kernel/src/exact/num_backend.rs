@@ -5,25 +5,19 @@
 
 use super::{Field, Int, OrderedField, Ring};
 use num_bigint::{BigInt, BigUint, Sign};
-use num_integer::Integer as _;
 use num_rational::BigRational;
 use num_traits::{One, ToPrimitive, Zero};
 use std::cmp::Ordering;
 
-ring_by_operators!(BigInt, <BigInt as Zero>::zero(), BigInt::from, |x: &BigInt| match x.sign() {
-    Sign::Minus => Ordering::Less,
-    Sign::NoSign => Ordering::Equal,
-    Sign::Plus => Ordering::Greater,
-});
+// num-bigint orders its signs Minus < NoSign < Plus.
+ring_by_operators!(BigInt, <BigInt as Zero>::zero(), BigInt::from, |x: &BigInt| x.sign().cmp(&Sign::NoSign));
 
 impl Int for BigInt {
     fn gcd(&self, o: &Self) -> Self {
         BigInt::from(lehmer_gcd(self.magnitude().clone(), o.magnitude().clone()))
     }
     fn div_exact(&self, o: &Self) -> Self {
-        let (q, r) = self.div_rem(o);
-        debug_assert!(Zero::is_zero(&r), "div_exact: inexact division");
-        q
+        self / o
     }
     fn div_floor(&self, o: &Self) -> Self {
         num_integer::Integer::div_floor(self, o)
@@ -36,6 +30,9 @@ impl Int for BigInt {
     }
     fn bit_length(&self) -> u64 {
         self.bits()
+    }
+    fn pow2(k: u64) -> Self {
+        BigInt::from(1u8) << k
     }
 }
 
@@ -70,13 +67,15 @@ fn reduced(n: BigInt, d: BigInt) -> BigRational {
     if Ring::is_negative(&d) { BigRational::new_raw(-n, -d) } else { BigRational::new_raw(n, d) }
 }
 
-/// gcd(a, b) by Lehmer's method (Knuth, TAOCP vol. 2, §4.5.2, Algorithm L): the quotients of
-/// Euclid's algorithm are found from the leading 64 bits while they are certain, and applied to
-/// the full numbers as one 2 x 2 step; a division step where they are not.
-fn lehmer_gcd(mut a: BigUint, mut b: BigUint) -> BigUint {
-    if a < b {
-        std::mem::swap(&mut a, &mut b);
-    }
+/// gcd(a, b): the common power of two first, gcd(2^i a', 2^j b') = 2^min(i, j) gcd(a', b'), so
+/// that the dyadic numbers of orbit and basin enclosures (denominators powers of two) reduce
+/// without a division; then Lehmer's method (Knuth, TAOCP vol. 2, §4.5.2, Algorithm L): the
+/// quotients of Euclid's algorithm are found from the leading 64 bits while they are certain, and
+/// applied to the full numbers as one 2 x 2 step; a division step where they are not.
+fn lehmer_gcd(a: BigUint, b: BigUint) -> BigUint {
+    let (Some(i), Some(j)) = (a.trailing_zeros(), b.trailing_zeros()) else { return a + b };
+    let (x, y) = (a >> i, b >> j);
+    let (mut a, mut b) = if x < y { (y, x) } else { (x, y) };
     while b.bits() > 64 {
         let shift = a.bits() - 64;
         let top = |x: &BigUint| i128::from((x >> shift).to_u64().expect("64 bits"));
@@ -94,7 +93,7 @@ fn lehmer_gcd(mut a: BigUint, mut b: BigUint) -> BigUint {
             (a, b) = (step(p, q), step(r, s));
         }
     }
-    if b.is_zero() { a } else { num_integer::Integer::gcd(&b, &(&a % &b)) }
+    (if b.is_zero() { a } else { num_integer::Integer::gcd(&b, &(&a % &b)) }) << i.min(j)
 }
 
 impl OrderedField for BigRational {

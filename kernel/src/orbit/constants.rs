@@ -45,13 +45,10 @@ pub fn enclose<F: Field>(x: &crate::exact::Algebraic<F>) -> Iv<F> {
     if let Some(r) = x.as_rational() {
         return Iv::exact(&r);
     }
-    let width = F::from_fraction(&crate::exact::Ring::one(), &pow2::<F>(WIDTH_BITS));
+    let width = F::from_fraction(
+        &crate::exact::Ring::one(),
+        &<F::Int as crate::exact::Int>::pow2(u64::from(WIDTH_BITS)),
+    );
     let (lo, hi) = x.bounds(&width);
     Iv::new(lo, hi)
-}
-
-#[cfg(feature = "field")]
-fn pow2<F: Field>(k: u32) -> F::Int {
-    use crate::exact::Ring;
-    (0..k).fold(F::Int::one(), |acc, _| acc.times(&F::Int::from_i64(2)))
 }

@@ -16,19 +16,6 @@ use std::cmp::Ordering;
 /// Mantissa bits kept by the outward rounding.
 pub const PRECISION: u64 = 64;
 
-/// 2^k as an integer of the backend.
-fn pow2<Z: Int>(k: u64) -> Z {
-    let (mut result, mut base, mut k) = (Z::one(), Z::from_i64(2), k);
-    while k > 0 {
-        if k & 1 == 1 {
-            result = result.times(&base);
-        }
-        base = base.times(&base);
-        k >>= 1;
-    }
-    result
-}
-
 /// floor(num / den) for den > 0: the backend's exact floor division.
 fn floor_div<Z: Int>(num: &Z, den: &Z) -> Z {
     num.div_floor(den)
@@ -42,21 +29,21 @@ pub fn round_down<F: Field>(x: &F) -> F {
     let (p, q) = (x.numer(), x.denom());
     let (pb, qb) = (p.bit_length(), q.bit_length());
     // Already short: a power-of-two denominator and a short numerator.
-    if pb <= PRECISION + 1 && pow2::<F::Int>(qb - 1) == q {
+    if pb <= PRECISION + 1 && F::Int::pow2(qb - 1) == q {
         return x.clone();
     }
     // 2^(pb-1) <= |p| < 2^pb, 2^(qb-1) <= q < 2^qb, so |x| < 2^(pb-qb+1); scale by 2^s, s = PRECISION - (pb - qb).
     let s = PRECISION as i64 - (pb as i64 - qb as i64);
     let (num, den) = if s >= 0 {
-        (p.times(&pow2::<F::Int>(s as u64)), q)
+        (p.times(&F::Int::pow2(s as u64)), q)
     } else {
-        (p, q.times(&pow2::<F::Int>(s.unsigned_abs())))
+        (p, q.times(&F::Int::pow2(s.unsigned_abs())))
     };
     let m = floor_div(&num, &den);
     if s >= 0 {
-        F::from_fraction(&m, &pow2::<F::Int>(s as u64))
+        F::from_fraction(&m, &F::Int::pow2(s as u64))
     } else {
-        F::from_int(&m.times(&pow2::<F::Int>(s.unsigned_abs())))
+        F::from_int(&m.times(&F::Int::pow2(s.unsigned_abs())))
     }
 }
 

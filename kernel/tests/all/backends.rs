@@ -390,4 +390,23 @@ proptest! {
         let s = m.plus(&Q::from_fraction(&w, &v)).times(&m).over(&Q::from_fraction(&u, &w)).unwrap();
         prop_assert_eq!(to_canonical(&r), to_canonical(&s));
     }
+
+    /// With powers of two in both numbers (the dyadic enclosures of orbit and basin
+    /// certificates: the num backend's gcd takes the common power of two out first), gcd, 2^k and
+    /// reduced fractions are malachite's.
+    #[test]
+    fn dyadic_gcds_and_fractions_agree_with_malachite(
+        a in "[1-9][0-9]{0,60}", b in "[1-9][0-9]{0,60}", i in 0u64..300, j in 0u64..300,
+    ) {
+        let big2 = |k: u64| BigInt::from(1u8) << k;
+        let mal2 = |k: u64| Integer::from(1u32) << k;
+        let (x, y) = (BigInt::parse_digits(&a).unwrap().times(&big2(i)), BigInt::parse_digits(&b).unwrap().times(&big2(j)));
+        let (u, v) = (Integer::parse_digits(&a).unwrap().times(&mal2(i)), Integer::parse_digits(&b).unwrap().times(&mal2(j)));
+        prop_assert_eq!(x.to_string(), u.to_string());
+        prop_assert_eq!(x.gcd(&y).to_string(), u.gcd(&v).to_string());
+        prop_assert_eq!(x.gcd(&big2(j)).to_string(), u.gcd(&mal2(j)).to_string());
+        let q = BigRational::from_fraction(&x, &big2(j)).plus(&BigRational::from_fraction(&y, &big2(i)));
+        let m = Q::from_fraction(&u, &mal2(j)).plus(&Q::from_fraction(&v, &mal2(i)));
+        prop_assert_eq!(to_canonical(&q), to_canonical(&m));
+    }
 }
