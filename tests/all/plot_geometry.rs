@@ -406,3 +406,30 @@ fn the_main_jobs_simulation_maps_hide_no_piece_of_an_exact_or_proved_curve_under
         }
     }
 }
+
+/// Issue 26 §1: the main job's map figures say what the finder's seed is, and every figure's
+/// title writes κ and γ, not kappa= or gamma=.
+#[test]
+fn the_main_jobs_figures_explain_the_seed_and_write_greek_letters() {
+    let run = crate::common::reproduce_quick();
+    assert_eq!(run.output.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.output.stderr));
+    let dir = run.dir.join("out/figures");
+    let mut svgs = 0;
+    for e in std::fs::read_dir(&dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_none_or(|x| x != "svg") {
+            continue;
+        }
+        svgs += 1;
+        let name = p.file_name().unwrap().to_string_lossy().to_string();
+        let text = words(&std::fs::read_to_string(&p).unwrap());
+        for ascii in ["kappa=", "kappa =", "gamma=", "gamma ="] {
+            assert!(!text.contains(ascii), "{name} writes {ascii:?}: {text}");
+        }
+        if name.starts_with("map-") || name.starts_with("simulations-") {
+            let seed = "the finder&apos;s seed: −U₀u₃, the velocity after the first impact of a flat drop";
+            assert!(text.contains(seed), "{name} does not explain the seed: {text}");
+        }
+    }
+    assert!(svgs >= 9, "{svgs} figures");
+}
