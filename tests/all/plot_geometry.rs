@@ -317,7 +317,9 @@ fn level_labels_stay_off_the_other_curves() {
 /// are not followed by one) and its lines of the given strokes (width, (stroke, width, points)),
 /// each with its position in the document.
 type Indexed<T> = Vec<(usize, T)>;
-fn boxes_and_lines(svg: &str, strokes: &[&str]) -> (Indexed<(f64, f64, f64, f64)>, Indexed<(f64, Line)>) {
+/// A rectangle (x, y, width, height) in SVG units.
+type Rect = (f64, f64, f64, f64);
+fn boxes_and_lines(svg: &str, strokes: &[&str]) -> (Indexed<Rect>, Indexed<(f64, Line)>) {
     let (mut boxes, mut lines) = (Vec::new(), Vec::new());
     let tags: Vec<&str> = svg
         .match_indices('<')
@@ -340,7 +342,7 @@ fn boxes_and_lines(svg: &str, strokes: &[&str]) -> (Indexed<(f64, f64, f64, f64)
 }
 
 /// Pixel distance from the segment a-b to the rectangle (x, y, w, h); 0 if they meet.
-fn segment_to_rect(a: (f64, f64), b: (f64, f64), (x, y, w, h): (f64, f64, f64, f64)) -> f64 {
+fn segment_to_rect(a: (f64, f64), b: (f64, f64), (x, y, w, h): Rect) -> f64 {
     let inside = |p: (f64, f64)| p.0 >= x && p.0 <= x + w && p.1 >= y && p.1 <= y + h;
     // Sampled finely: the segments are a few pixels to a few hundred long.
     let steps = ((b.0 - a.0).hypot(b.1 - a.1) * 4.0).ceil().max(1.0) as usize;
@@ -378,7 +380,7 @@ fn level_label_boxes_cover_no_pixel_of_an_exact_or_proved_curve() {
 
 /// Pairs (label box, curve) of the SVG where the curve of `strokes` comes within half its width
 /// of the box: (box, stroke, whether the curve is drawn over the box).
-fn covered(svg: &str, strokes: &[&str]) -> Vec<((f64, f64, f64, f64), String, bool)> {
+fn covered(svg: &str, strokes: &[&str]) -> Vec<(Rect, String, bool)> {
     let (boxes, lines) = boxes_and_lines(svg, strokes);
     let mut out = Vec::new();
     for (i, b) in &boxes {
