@@ -1,10 +1,10 @@
 //! `chatter basin`: a basin certificate (docs/basin-certificates.md): which drops of a box are
 //! proved to end in complete chatter, which to reach v > 0, as exact shares of the box.
 
+use super::orbit_cmd::OrbitBody;
 use super::{Env, Outcome, emit};
 use crate::basin::{BasinRequest, produce, write_basin};
 use crate::exact::{Q, parse_user_number};
-use crate::orbit::Request;
 use chatter_kernel::basin::drop::DIMS;
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::verify::{Verdict, verify_basin};
@@ -21,18 +21,8 @@ The box of drops is in the paper's coordinates before the first impact: velocity
 set X of an orbit certificate (docs/basin-certificates.md).\n\n\
 Example:\n  chatter basin --n 3 --kappa 1/8 --gamma 3/20 --depth 20 -o basin.ron")]
 pub struct BasinArgs {
-    /// Number of contacts, 3 to 64.
-    #[arg(long, default_value_t = 3)]
-    pub n: u64,
-    /// kappa = rho^2/R^2.
-    #[arg(long, allow_hyphen_values = true)]
-    pub kappa: String,
-    /// Coefficient of restitution.
-    #[arg(long, allow_hyphen_values = true)]
-    pub gamma: String,
-    /// The orbit certificate's pattern (e.g. 2,2,1,1); found by simulating drops when omitted.
-    #[arg(long, allow_hyphen_values = true)]
-    pub pattern: Option<String>,
+    #[command(flatten)]
+    pub body: OrbitBody,
     /// The box of drops: ten numbers "lo1,..,lo5:hi1,..,hi5" for (omega_x, omega_y, phi_x, phi_y, h).
     #[arg(long = "box", allow_hyphen_values = true)]
     pub drop_box: Option<String>,
@@ -74,15 +64,7 @@ fn parse_box(text: &str) -> Result<([Q; DIMS], [Q; DIMS]), String> {
 }
 
 fn validate(a: &BasinArgs) -> Result<BasinRequest, String> {
-    if !(3..=crate::exact::MAX_N).contains(&a.n) {
-        return Err(format!("--n: {} is not supported: give 3 <= n <= {}", a.n, crate::exact::MAX_N));
-    }
-    let kappa = parse_user_number(&a.kappa).map_err(|e| format!("--kappa: {e}"))?;
-    let gamma = parse_user_number(&a.gamma).map_err(|e| format!("--gamma: {e}"))?;
-    if let Err(e) = crate::certify::check_body(a.n, &kappa, &gamma) {
-        return Err(super::body_error(&e, a.n, &kappa, &gamma, "3 <= n <= 64"));
-    }
-    let pattern = a.pattern.as_deref().map(|p| super::orbit_cmd::parse_pattern(p, a.n)).transpose()?;
+    let orbit = a.body.request(200, a.orbit_depth.min(4))?;
     let (lo, hi) = match &a.drop_box {
         Some(t) => parse_box(t)?,
         None => BasinRequest::paper_box(),
@@ -100,7 +82,6 @@ fn validate(a: &BasinArgs) -> Result<BasinRequest, String> {
             chatter_kernel::basin::MAX_PREFIX
         ));
     }
-    let orbit = Request { n: a.n, kappa, gamma, pattern, drops: 200, max_depth: a.orbit_depth.min(4) };
     if !(a.entry > 0.0 && a.entry <= 1.0) {
         return Err(format!("--entry: {} is not in (0, 1]", a.entry));
     }

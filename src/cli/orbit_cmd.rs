@@ -17,20 +17,8 @@ pattern (not from every drop): docs/orbit-certificates.md.\n\n\
 Examples:\n  chatter certify-orbit --n 3 --kappa 1/8 --gamma 3/20 --pattern 2,2,1,1 -o orbit.ron\n  \
 chatter certify-orbit --n 5 --kappa 961/25600 --gamma 61/160 --pattern 1,1,2,4,4,3 -o pentagon.ron")]
 pub struct OrbitArgs {
-    /// Number of contacts, 3 to 64 (the body's constants in Q(cos 2 pi/n), enclosed by rationals,
-    /// where that cosine is irrational).
-    #[arg(long, default_value_t = 3)]
-    pub n: u64,
-    /// kappa = rho^2/R^2.
-    #[arg(long, allow_hyphen_values = true)]
-    pub kappa: String,
-    /// Coefficient of restitution.
-    #[arg(long, allow_hyphen_values = true)]
-    pub gamma: String,
-    /// The pattern's steps j (the next contact is j places on), comma-separated, e.g. 2,2,1,1,
-    /// each in 1..n-1, at most 64 steps; found by simulating random drops when omitted.
-    #[arg(long, allow_hyphen_values = true)]
-    pub pattern: Option<String>,
+    #[command(flatten)]
+    pub body: OrbitBody,
     /// Random drops simulated to find the pattern.
     #[arg(long, default_value_t = 20)]
     pub drops: u64,
@@ -47,6 +35,47 @@ pub struct OrbitArgs {
     /// With --json: include the wall-clock times (then the output differs from run to run).
     #[arg(long)]
     pub timings: bool,
+}
+
+/// The body, the parameter point and the pattern of an orbit certificate (`certify-orbit` and
+/// `basin`, which certifies its set X first).
+#[derive(Args, Debug)]
+pub struct OrbitBody {
+    /// Number of contacts, 3 to 64 (the body's constants in Q(cos 2 pi/n), enclosed by rationals,
+    /// where that cosine is irrational).
+    #[arg(long, default_value_t = 3)]
+    pub n: u64,
+    /// kappa = rho^2/R^2.
+    #[arg(long, allow_hyphen_values = true)]
+    pub kappa: String,
+    /// Coefficient of restitution.
+    #[arg(long, allow_hyphen_values = true)]
+    pub gamma: String,
+    /// The orbit's pattern: its steps j (the next contact is j places on), comma-separated, e.g.
+    /// 2,2,1,1, each in 1..n-1, at most 64 steps; found by simulating random drops when omitted.
+    #[arg(long, allow_hyphen_values = true)]
+    pub pattern: Option<String>,
+}
+
+impl OrbitBody {
+    /// The request these arguments name, with the given search settings, or a usage error
+    /// naming the flag.
+    pub(super) fn request(&self, drops: u64, max_depth: u64) -> Result<Request, String> {
+        if !(3..=crate::exact::MAX_N).contains(&self.n) {
+            return Err(format!(
+                "--n: {} is not supported here: give 3 <= n <= {} (a regular n-gon)",
+                self.n,
+                crate::exact::MAX_N
+            ));
+        }
+        let kappa = parse_user_number(&self.kappa).map_err(|e| format!("--kappa: {e}"))?;
+        let gamma = parse_user_number(&self.gamma).map_err(|e| format!("--gamma: {e}"))?;
+        if let Err(e) = crate::certify::check_body(self.n, &kappa, &gamma) {
+            return Err(super::body_error(&e, self.n, &kappa, &gamma, "3 <= n <= 64"));
+        }
+        let pattern = self.pattern.as_deref().map(|p| parse_pattern(p, self.n)).transpose()?;
+        Ok(Request { n: self.n, kappa, gamma, pattern, drops, max_depth })
+    }
 }
 
 /// The most steps a pattern may have (docs/certificate-format.md §14).
@@ -80,19 +109,6 @@ pub(super) fn parse_pattern(text: &str, n: u64) -> Result<Vec<usize>, String> {
 
 /// The validated request, or a usage error naming the flag.
 fn validate(a: &OrbitArgs) -> Result<Request, String> {
-    if !(3..=crate::exact::MAX_N).contains(&a.n) {
-        return Err(format!(
-            "--n: {} is not supported here: give 3 <= n <= {} (a regular n-gon)",
-            a.n,
-            crate::exact::MAX_N
-        ));
-    }
-    let kappa = parse_user_number(&a.kappa).map_err(|e| format!("--kappa: {e}"))?;
-    let gamma = parse_user_number(&a.gamma).map_err(|e| format!("--gamma: {e}"))?;
-    if let Err(e) = crate::certify::check_body(a.n, &kappa, &gamma) {
-        return Err(super::body_error(&e, a.n, &kappa, &gamma, "3 <= n <= 64"));
-    }
-    let pattern = a.pattern.as_deref().map(|p| parse_pattern(p, a.n)).transpose()?;
     if a.max_depth > chatter_kernel::orbit::MAX_DEPTH {
         return Err(format!(
             "--max-depth: {} is more than the kernel's limit {}",
@@ -100,7 +116,7 @@ fn validate(a: &OrbitArgs) -> Result<Request, String> {
             chatter_kernel::orbit::MAX_DEPTH
         ));
     }
-    Ok(Request { n: a.n, kappa, gamma, pattern, drops: a.drops, max_depth: a.max_depth })
+    a.body.request(a.drops, a.max_depth)
 }
 
 pub fn run(a: OrbitArgs, env: &Env) -> Outcome {

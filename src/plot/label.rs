@@ -1,5 +1,6 @@
-//! Where to put a curve's label: on the curve, as far as possible from every other curve, from the
-//! labels already placed and from the frame, measured in pixels of the plotting area.
+//! Where to put a curve's label: on the curve, its box clear of every curve it must not hide, of
+//! the labels already placed and of the frame, and if it can be of the other curves too, near a
+//! given fraction of the line's length; measured in pixels of the plotting area.
 
 use crate::sweep::curves::Polyline;
 
@@ -19,12 +20,33 @@ impl Frame {
             (y - self.y.0) / (self.y.1 - self.y.0) * self.pixels.1,
         )
     }
+}
 
-    /// Pixels from a point to the nearest edge of the frame.
-    fn edge_distance(&self, p: (f64, f64)) -> f64 {
-        let (x, y) = self.px(p);
-        x.min(self.pixels.0 - x).min(y).min(self.pixels.1 - y)
-    }
+/// Pixels a label's box keeps from a curve: half the widest stroke (3) and one of antialiasing.
+pub const GAP: f64 = 2.5;
+
+/// Pixels between two labels' boxes.
+const LABEL_GAP: f64 = 4.0;
+
+/// Pixels between two candidate places along a line.
+const STEP: f64 = 1.0;
+
+/// A label's box: its centre (data) and half its size (pixels).
+#[derive(Clone, Copy, Debug)]
+pub struct LabelBox {
+    pub at: (f64, f64),
+    pub half: (f64, f64),
+}
+
+/// What a label keeps clear of.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Clear<'a> {
+    /// Curves the box must not cover (the exact and the proved curves).
+    pub hard: &'a [&'a Polyline],
+    /// Curves it should not cover where it can avoid them (the other level lines).
+    pub soft: &'a [&'a Polyline],
+    /// Labels already placed.
+    pub placed: &'a [LabelBox],
 }
 
 /// Pixel distance from `p` to the segment a-b (all in pixels).
@@ -35,70 +57,134 @@ fn to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
     ((p.0 - a.0 - t * dx).powi(2) + (p.1 - a.1 - t * dy).powi(2)).sqrt()
 }
 
-/// Pixel distance from `p` (data) to the nearest of the polylines.
-pub fn to_lines(frame: &Frame, p: (f64, f64), lines: &[&Polyline]) -> f64 {
-    let q = frame.px(p);
-    lines
-        .iter()
-        .flat_map(|l| l.windows(2))
-        .map(|w| to_segment(q, frame.px(w[0]), frame.px(w[1])))
-        .fold(f64::INFINITY, f64::min)
+/// Pixel distance from `p` to the box of centre `c` and half-size `h` (0 inside).
+fn to_box(p: (f64, f64), c: (f64, f64), h: (f64, f64)) -> f64 {
+    ((p.0 - c.0).abs() - h.0).max(0.0).hypot(((p.1 - c.1).abs() - h.1).max(0.0))
 }
 
-/// The point of `line` (a vertex or a segment's midpoint) for a label of half-size `half`
-/// (pixels): among the points whose label keeps clear of the `avoid` lines, the labels already
-/// placed and the frame, the one nearest to the fraction `target` of the line's length (so labels
-/// of neighbouring lines spread along them); if none keeps clear, the clearest. `None` if the
-/// line has no point.
+/// Whether the segment a-b meets the box (Liang-Barsky clipping).
+fn meets_box(a: (f64, f64), b: (f64, f64), c: (f64, f64), h: (f64, f64)) -> bool {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let sides =
+        [(-dx, a.0 - (c.0 - h.0)), (dx, c.0 + h.0 - a.0), (-dy, a.1 - (c.1 - h.1)), (dy, c.1 + h.1 - a.1)];
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in sides {
+        if p == 0.0 {
+            if q < 0.0 {
+                return false;
+            }
+        } else if p < 0.0 {
+            t0 = t0.max(q / p);
+        } else {
+            t1 = t1.min(q / p);
+        }
+    }
+    t0 <= t1
+}
+
+/// Pixel distance from the segment a-b to the box (0 if they meet): for disjoint convex shapes it
+/// is reached at a corner of one of them.
+fn segment_to_box(a: (f64, f64), b: (f64, f64), c: (f64, f64), h: (f64, f64)) -> f64 {
+    if meets_box(a, b, c, h) {
+        return 0.0;
+    }
+    let corners =
+        [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)].map(|(s, t)| (c.0 + s * h.0, c.1 + t * h.1));
+    corners.iter().map(|&k| to_segment(k, a, b)).fold(to_box(a, c, h).min(to_box(b, c, h)), f64::min)
+}
+
+/// A polyline's segments in pixels.
+type Segments = Vec<((f64, f64), (f64, f64))>;
+
+fn segments(frame: &Frame, lines: &[&Polyline]) -> Segments {
+    lines.iter().flat_map(|l| l.windows(2)).map(|w| (frame.px(w[0]), frame.px(w[1]))).collect()
+}
+
+/// Pixel distance from a box (centre in pixels) to the nearest segment, up to `reach` (beyond it,
+/// `reach`: segments whose bounding box is farther are skipped).
+fn box_to_segments(c: (f64, f64), h: (f64, f64), segs: &Segments, reach: f64) -> f64 {
+    let (rx, ry) = (h.0 + reach, h.1 + reach);
+    segs.iter()
+        .filter(|(a, b)| {
+            a.0.min(b.0) <= c.0 + rx
+                && a.0.max(b.0) >= c.0 - rx
+                && a.1.min(b.1) <= c.1 + ry
+                && a.1.max(b.1) >= c.1 - ry
+        })
+        .map(|&(a, b)| segment_to_box(a, b, c, h))
+        .fold(reach, f64::min)
+}
+
+/// Places along `line`, every [`STEP`] pixels: (data point, fraction of the line's pixel length).
+fn candidates(frame: &Frame, line: &Polyline) -> Vec<((f64, f64), f64)> {
+    let seg = |w: &[(f64, f64)]| {
+        let (a, b) = (frame.px(w[0]), frame.px(w[1]));
+        (b.0 - a.0).hypot(b.1 - a.1)
+    };
+    let total: f64 = line.windows(2).map(seg).sum();
+    let mut out = Vec::new();
+    let mut run = 0.0;
+    for w in line.windows(2) {
+        let len = seg(w);
+        let k = (len / STEP).ceil().max(1.0) as usize;
+        for i in 0..k {
+            let t = i as f64 / k as f64;
+            let p = (w[0].0 + t * (w[1].0 - w[0].0), w[0].1 + t * (w[1].1 - w[0].1));
+            out.push((p, if total > 0.0 { (run + t * len) / total } else { 0.0 }));
+        }
+        run += len;
+    }
+    if let Some(&last) = line.last() {
+        out.push((last, 1.0));
+    }
+    out
+}
+
+/// Pixels by which a box at `c` (pixels) keeps clear of the frame, the `hard` curves' segments
+/// and the placed labels (negative: it covers one of them), up to the box's size.
+fn hard_clearance(frame: &Frame, c: (f64, f64), h: (f64, f64), hard: &Segments, placed: &[LabelBox]) -> f64 {
+    let (w, ht) = frame.pixels;
+    let edge = (c.0 - h.0).min(w - c.0 - h.0).min(c.1 - h.1).min(ht - c.1 - h.1);
+    let labels = placed
+        .iter()
+        .map(|l| {
+            let q = frame.px(l.at);
+            ((c.0 - q.0).abs() - h.0 - l.half.0).max((c.1 - q.1).abs() - h.1 - l.half.1) - LABEL_GAP
+        })
+        .fold(f64::INFINITY, f64::min);
+    (box_to_segments(c, h, hard, h.0 + h.1 + GAP) - GAP).min(labels).min(edge)
+}
+
+/// The centre on `line` for a label of half-size `half` (pixels): among the places whose box
+/// keeps clear of the frame, the `hard` curves and the placed labels, those that also keep clear
+/// of the `soft` curves, or else those that touch the fewest of them; of these the one nearest
+/// to the fraction `target` of the line's length (so labels of neighbouring lines spread along
+/// them). If no place keeps clear, the clearest. `None` if the line has no point.
 pub fn place(
     frame: &Frame,
     line: &Polyline,
-    avoid: &[&Polyline],
-    placed: &[(f64, f64)],
+    clear: &Clear,
     half: (f64, f64),
     target: f64,
 ) -> Option<(f64, f64)> {
-    let mids = line.windows(2).map(|w| ((w[0].0 + w[1].0) / 2.0, (w[0].1 + w[1].1) / 2.0));
-    let mut candidates: Vec<(f64, f64)> = line.iter().copied().chain(mids).collect();
-    let along = |p: &(f64, f64)| position(frame, line, *p);
-    candidates.sort_by(|a, b| along(a).total_cmp(&along(b)));
-    let reach = half.0.hypot(half.1);
-    let clearance = |p: (f64, f64)| {
-        let q = frame.px(p);
-        let labels = placed
-            .iter()
-            .map(|&l| {
-                let r = frame.px(l);
-                (q.0 - r.0).hypot(q.1 - r.1) - 2.0 * reach
-            })
-            .fold(f64::INFINITY, f64::min);
-        let edge = frame.edge_distance(p) - reach;
-        (to_lines(frame, p, avoid) - reach).min(labels).min(edge)
-    };
-    let clear = candidates
-        .iter()
-        .filter(|p| clearance(**p) >= 0.0)
-        .min_by(|a, b| (along(a) - target).abs().total_cmp(&(along(b) - target).abs()));
-    clear.copied().or_else(|| {
-        candidates.into_iter().map(|p| (clearance(p), p)).max_by(|a, b| a.0.total_cmp(&b.0)).map(|(_, p)| p)
-    })
-}
-
-/// The fraction of the line's pixel length at which `p` (a vertex or a midpoint) lies.
-fn position(frame: &Frame, line: &Polyline, p: (f64, f64)) -> f64 {
-    let px: Vec<(f64, f64)> = line.iter().map(|&v| frame.px(v)).collect();
-    let seg = |w: &[(f64, f64)]| (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1);
-    let total: f64 = px.windows(2).map(seg).sum();
-    let q = frame.px(p);
-    let mut run = 0.0;
-    let mut best = (f64::INFINITY, 0.0);
-    for w in px.windows(2) {
-        let d = to_segment(q, w[0], w[1]);
-        if d < best.0 {
-            let t = (q.0 - w[0].0).hypot(q.1 - w[0].1);
-            best = (d, run + t);
+    let hard = segments(frame, clear.hard);
+    let soft: Vec<Segments> = clear.soft.iter().map(|l| segments(frame, &[*l])).collect();
+    let mut best: Option<((usize, f64), (f64, f64))> = None;
+    let mut clearest: Option<(f64, (f64, f64))> = None;
+    for (p, along) in candidates(frame, line) {
+        let c = frame.px(p);
+        let room = hard_clearance(frame, c, half, &hard, clear.placed);
+        if clearest.is_none_or(|(m, _)| room > m) {
+            clearest = Some((room, p));
         }
-        run += seg(w);
+        if room < 0.0 {
+            continue;
+        }
+        let touched = soft.iter().filter(|l| box_to_segments(c, half, l, GAP) < GAP).count();
+        let key = (touched, (along - target).abs());
+        if best.is_none_or(|(k, _)| key.0 < k.0 || (key.0 == k.0 && key.1 < k.1)) {
+            best = Some((key, p));
+        }
     }
-    if total > 0.0 { best.1 / total } else { 0.0 }
+    best.map(|(_, p)| p).or(clearest.map(|(_, p)| p))
 }

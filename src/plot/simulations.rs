@@ -5,11 +5,11 @@
 //! and no PCC but not the finite accumulation time of CC, issue 24) and to end in PCC (issue 22
 //! §1: exact runs; evidence only when the map has no proofs, and then labelled so), the exact PCC
 //! and CC boundaries. Only what is
-//! drawn gets a legend entry; each level line is labelled where it is farthest from the other
-//! curves.
+//! drawn gets a legend entry; each level line is labelled where the label's box covers none of
+//! the other curves, which are drawn over the labels.
 
 use super::contour::{contours, ranges};
-use super::label::{Frame, place};
+use super::label::{Clear, Frame, LabelBox, place};
 use super::map::{CC, LEVEL, MapChart, MapFigure, PCC, curve_entry, sub};
 use super::{Entry, Sample, err};
 use crate::simulate::Outcome;
@@ -105,7 +105,9 @@ fn frame<DB: DrawingBackend>(fig: &MapFigure, chart: &MapChart<'_, '_, DB>) -> F
     Frame { x: (x0, x1), y: (g0, g1), pixels: (w as f64, h as f64) }
 }
 
-/// Draws the simulations panel's curves and returns the legend entries of what was drawn.
+/// Draws the simulations panel's curves and returns the legend entries of what was drawn: the
+/// level lines, their labels, then the proved and exact curves over the labels (so that no label
+/// hides them, even where no free place on a level line exists).
 pub fn draw<DB: DrawingBackend>(
     fig: &MapFigure,
     chart: &mut MapChart<'_, '_, DB>,
@@ -117,6 +119,26 @@ pub fn draw<DB: DrawingBackend>(
     let found = half(Field::PccShare);
     let chatter = half(Field::ChatterProved);
     let proved = fig.rows.iter().any(|r| r.sim.as_ref().is_some_and(|s| s.proved.is_some()));
+    let mut e = draw_levels(chart, &levels)?;
+    let avoid: Vec<&Polyline> =
+        found.iter().chain(&chatter).chain(&fig.curves.pcc).chain(&fig.curves.cc).collect();
+    label_levels(fig, chart, &levels, &avoid)?;
+    e.extend(curve_entry(chart, &chatter, Sample::Line(CC, 3), CHATTER_LINE.into())?);
+    e.extend(curve_entry(chart, &found, Sample::Line(PCC, 3), pcc_line(proved).into())?);
+    let m = sub(fig.grid.n - 1);
+    let pcc = format!("exact: PCC possible (S{m}S₁ has real eigenvalues)");
+    e.extend(curve_entry(chart, &fig.curves.pcc, Sample::Dashed(PCC, 3), pcc)?);
+    let cc = "exact: CC criterion boundary (conjectured CC/ICC divide)".to_string();
+    e.extend(curve_entry(chart, &fig.curves.cc, Sample::Dashed(CC, 3), cc)?);
+    Ok(e)
+}
+
+/// Draws the level lines of the mean impact count (the 200 level thick) and returns their
+/// legend entries.
+fn draw_levels<DB: DrawingBackend>(
+    chart: &mut MapChart<'_, '_, DB>,
+    levels: &[(f64, Polyline)],
+) -> Result<Vec<Entry>, String> {
     type Levels<'a> = Vec<&'a (f64, Polyline)>;
     let (thin, thick): (Levels, Levels) =
         levels.iter().filter(|(_, l)| l.len() >= 2).partition(|(level, _)| *level < LEVELS[4]);
@@ -134,15 +156,6 @@ pub fn draw<DB: DrawingBackend>(
     let thick_lines: Vec<Polyline> = thick.iter().map(|(_, l)| l.clone()).collect();
     let text = "evidence: level 200, above it some f64 drops end in ICC".to_string();
     e.extend(curve_entry(chart, &thick_lines, Sample::Line(LEVEL, 3), text)?);
-    e.extend(curve_entry(chart, &chatter, Sample::Line(CC, 3), CHATTER_LINE.into())?);
-    e.extend(curve_entry(chart, &found, Sample::Line(PCC, 3), pcc_line(proved).into())?);
-    let m = sub(fig.grid.n - 1);
-    let pcc = format!("exact: PCC possible (S{m}S₁ has real eigenvalues)");
-    e.extend(curve_entry(chart, &fig.curves.pcc, Sample::Dashed(PCC, 3), pcc)?);
-    let cc = "exact: CC criterion boundary (conjectured CC/ICC divide)".to_string();
-    e.extend(curve_entry(chart, &fig.curves.cc, Sample::Dashed(CC, 3), cc)?);
-    let avoid: Vec<Polyline> = found.iter().chain(&chatter).cloned().collect();
-    label_levels(fig, chart, &levels, &avoid)?;
     Ok(e)
 }
 
@@ -150,23 +163,26 @@ fn plural(shown: &[String]) -> &'static str {
     if shown.len() == 1 { "" } else { "s" }
 }
 
-/// Labels each level line of six points or more where it is farthest from every other curve.
+/// Labels each level line of six points or more on a place whose box covers none of the `avoid`
+/// curves (and, where it can, no other level line), spread along the lines.
 fn label_levels<DB: DrawingBackend>(
     fig: &MapFigure,
     chart: &mut MapChart<'_, '_, DB>,
     levels: &[(f64, Polyline)],
-    found: &[Polyline],
+    avoid: &[&Polyline],
 ) -> Result<(), String> {
     let frame = frame(fig, chart);
-    let mut placed = Vec::new();
-    let avoid: Vec<&Polyline> = found.iter().chain(&fig.curves.pcc).chain(&fig.curves.cc).collect();
-    for (level, line) in levels.iter().filter(|(_, l)| l.len() >= 6) {
+    let mut placed: Vec<LabelBox> = Vec::new();
+    for (i, (level, line)) in levels.iter().enumerate().filter(|(_, (_, l))| l.len() >= 6) {
+        let soft: Vec<&Polyline> =
+            levels.iter().enumerate().filter(|(j, _)| *j != i).map(|(_, (_, l))| l).collect();
         // Spread along the lines: 25 near one end, 200 near the other.
         let at = LEVELS.iter().position(|l| l == level).unwrap_or(0) as f64;
         let text = label(*level);
-        if let Some(at) = place(&frame, line, &avoid, &placed, half(&text), 0.15 + 0.17 * at) {
-            draw_label(chart, at, text)?;
-            placed.push(at);
+        let clear = Clear { hard: avoid, soft: &soft, placed: &placed };
+        if let Some(at) = place(&frame, line, &clear, half(&text), 0.15 + 0.17 * at) {
+            draw_label(chart, at, text.clone())?;
+            placed.push(LabelBox { at, half: half(&text) });
         }
     }
     Ok(())

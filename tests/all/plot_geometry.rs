@@ -312,3 +312,126 @@ fn level_labels_stay_off_the_other_curves() {
         assert!(near > 12.0, "label {text} at {centre:?} lies {near:.1} px from an exact curve");
     }
 }
+
+/// The SVG's level labels' boxes (white rects followed by a level's text; the map's white cells
+/// are not followed by one) and its lines of the given strokes (width, (stroke, width, points)),
+/// each with its position in the document.
+type Indexed<T> = Vec<(usize, T)>;
+/// A rectangle (x, y, width, height) in SVG units.
+type Rect = (f64, f64, f64, f64);
+fn boxes_and_lines(svg: &str, strokes: &[&str]) -> (Indexed<Rect>, Indexed<(f64, Line)>) {
+    let (mut boxes, mut lines) = (Vec::new(), Vec::new());
+    let tags: Vec<&str> = svg
+        .match_indices('<')
+        .map(|(i, _)| &svg[i..i + svg[i..].find('>').unwrap_or(svg.len() - i)])
+        .collect();
+    for (k, tag) in tags.iter().enumerate() {
+        let one = parse_all(&format!("{tag}>"));
+        let labelled = tags.get(k + 1).is_some_and(|t| {
+            t.starts_with("<text") && attr(t, "fill").is_some_and(|f| f.eq_ignore_ascii_case(LEVEL))
+        });
+        if let Some(r) = one.rects.first().filter(|r| r.4.eq_ignore_ascii_case("#FFFFFF") && labelled) {
+            boxes.push((k, (r.0, r.1, r.2, r.3)));
+        }
+        if let Some(l) = one.lines.into_iter().find(|l| strokes.iter().any(|s| l.0.eq_ignore_ascii_case(s))) {
+            let width: f64 = l.1.parse().unwrap_or(1.0);
+            lines.push((k, (width, l)));
+        }
+    }
+    (boxes, lines)
+}
+
+/// Pixel distance from the segment a-b to the rectangle (x, y, w, h); 0 if they meet.
+fn segment_to_rect(a: (f64, f64), b: (f64, f64), (x, y, w, h): Rect) -> f64 {
+    let inside = |p: (f64, f64)| p.0 >= x && p.0 <= x + w && p.1 >= y && p.1 <= y + h;
+    // Sampled finely: the segments are a few pixels to a few hundred long.
+    let steps = ((b.0 - a.0).hypot(b.1 - a.1) * 4.0).ceil().max(1.0) as usize;
+    let mut best = f64::INFINITY;
+    for s in 0..=steps {
+        let t = s as f64 / steps as f64;
+        let p = (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1));
+        if inside(p) {
+            return 0.0;
+        }
+        let dx = (x - p.0).max(p.0 - x - w).max(0.0);
+        let dy = (y - p.1).max(p.1 - y - h).max(0.0);
+        best = best.min(dx.hypot(dy));
+    }
+    best
+}
+
+#[test]
+fn level_label_boxes_cover_no_pixel_of_an_exact_or_proved_curve() {
+    // Exact CC boundaries every 0.06 in x (about 44 px apart): a label's box fits between two
+    // of them only near the middle, and nowhere on a vertex of a level line in general.
+    let cc = (1..17).map(|k| (0..=20).map(|i| (0.06 * k as f64, i as f64 / 20.0)).collect()).collect();
+    let curves =
+        Curves { kind: Vec::new(), cc, pcc: vec![(0..=20).map(|i| (i as f64 / 20.0, 0.45)).collect()] };
+    let svg = svg_string(&synthetic(curves)).unwrap();
+    let (boxes, lines) = boxes_and_lines(&svg, &[CC, PCC]);
+    assert!(boxes.len() >= 4, "{} level labels", boxes.len());
+    assert!(lines.len() >= 17, "{} exact curves drawn", lines.len());
+    let c = covered(&svg, &[CC, PCC]);
+    assert!(c.is_empty(), "label boxes (x, y, w, h) cover pieces of exact curves: {c:?}");
+    // Where no free place exists the curves would still show: they are drawn over the labels.
+    let last_box = boxes.iter().map(|b| b.0).max().unwrap();
+    assert!(lines.iter().all(|l| l.0 > last_box), "an exact curve is drawn under a label");
+}
+
+/// Pairs (label box, curve) of the SVG where the curve of `strokes` comes within half its width
+/// of the box: (box, stroke, whether the curve is drawn over the box).
+fn covered(svg: &str, strokes: &[&str]) -> Vec<(Rect, String, bool)> {
+    let (boxes, lines) = boxes_and_lines(svg, strokes);
+    let mut out = Vec::new();
+    for (i, b) in &boxes {
+        for (j, (width, (stroke, _, pts))) in &lines {
+            let near = pts.windows(2).map(|w| segment_to_rect(w[0], w[1], *b)).fold(f64::INFINITY, f64::min);
+            if near < width / 2.0 {
+                out.push((*b, stroke.clone(), j > i));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn the_main_jobs_simulation_maps_hide_no_piece_of_an_exact_or_proved_curve_under_a_label() {
+    let run = crate::common::reproduce_quick();
+    assert_eq!(run.output.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.output.stderr));
+    for n in [3, 4, 5] {
+        let path = run.dir.join(format!("out/figures/simulations-n{n}.svg"));
+        let svg = std::fs::read_to_string(&path).unwrap();
+        let (boxes, _) = boxes_and_lines(&svg, &[]);
+        assert!(boxes.len() >= 3, "n = {n}: {} level labels", boxes.len());
+        for (b, stroke, over) in covered(&svg, &[CC, PCC]) {
+            assert!(over, "n = {n}: the label box {b:?} hides a piece of a {stroke} curve");
+        }
+    }
+}
+
+/// Issue 26 §1: the main job's map figures say what the finder's seed is, and every figure's
+/// title writes κ and γ, not kappa= or gamma=.
+#[test]
+fn the_main_jobs_figures_explain_the_seed_and_write_greek_letters() {
+    let run = crate::common::reproduce_quick();
+    assert_eq!(run.output.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.output.stderr));
+    let dir = run.dir.join("out/figures");
+    let mut svgs = 0;
+    for e in std::fs::read_dir(&dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_none_or(|x| x != "svg") {
+            continue;
+        }
+        svgs += 1;
+        let name = p.file_name().unwrap().to_string_lossy().to_string();
+        let text = words(&std::fs::read_to_string(&p).unwrap());
+        for ascii in ["kappa=", "kappa =", "gamma=", "gamma ="] {
+            assert!(!text.contains(ascii), "{name} writes {ascii:?}: {text}");
+        }
+        if name.starts_with("map-") || name.starts_with("simulations-") {
+            let seed = "the finder&apos;s seed: −U₀u₃, the velocity after the first impact of a flat drop";
+            assert!(text.contains(seed), "{name} does not explain the seed: {text}");
+        }
+    }
+    assert!(svgs >= 9, "{svgs} figures");
+}

@@ -246,3 +246,39 @@ fn the_readme_figure_command_runs_as_written_and_draws_the_committed_figure() {
     let committed = std::fs::read(root().join("docs/img/map-n3.png")).unwrap();
     assert!(made == committed, "docs/img/map-n3.png is not what README's command draws now");
 }
+
+/// README's `cargo fuzz run` lines (not run by CI: building libFuzzer compiles every dependency
+/// again) name targets of fuzz/Cargo.toml and only corpus folders that exist or that the line
+/// makes first (libFuzzer stops on a missing one), with the fuzzer's options after `--`.
+#[test]
+fn the_readme_fuzz_lines_name_real_targets_and_folders() {
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let manifest = std::fs::read_to_string(root().join("fuzz/Cargo.toml")).unwrap();
+    let lines: Vec<&str> = readme.lines().filter(|l| l.contains("cargo fuzz run")).collect();
+    assert!(lines.len() >= 2, "{lines:?}");
+    for line in lines {
+        let (head, options) = line.split_once(" -- ").unwrap_or((line, ""));
+        assert!(head.starts_with("cd fuzz && "), "{line}");
+        assert!(head.contains("&& RUSTC_BOOTSTRAP=1 cargo fuzz run "), "{line}");
+        let made: Vec<&str> = head.split(" && ").filter_map(|c| c.strip_prefix("mkdir -p ")).collect();
+        assert!(options.split_whitespace().all(|o| o.starts_with('-')), "{line}");
+        let args: Vec<&str> = head.split("cargo fuzz run ").nth(1).unwrap().split_whitespace().collect();
+        let target = args[0];
+        assert!(manifest.contains(&format!("name = \"{target}\"")), "{line}: no target {target}");
+        let (mut flags, mut folders) = (args[1..].iter(), Vec::new());
+        while let Some(a) = flags.next() {
+            match *a {
+                "--sanitizer" => assert_eq!(flags.next(), Some(&"none"), "{line}"),
+                f if f.starts_with('-') => panic!("{line}: unexpected option {f}"),
+                folder => folders.push(folder),
+            }
+        }
+        for f in folders {
+            assert!(
+                made.contains(&f) || root().join("fuzz").join(f).is_dir(),
+                "{line}: {f} is no folder (from fuzz/)"
+            );
+        }
+    }
+    assert!(readme.contains("CI does not run these lines"), "README says who runs the fuzz lines");
+}
