@@ -27,6 +27,9 @@ pub const NAMES: [&str; DIMS] = ["omega_x", "omega_y", "phi_x", "phi_y", "h"];
 /// The drop coordinates as the paper writes them (velocity (ω_x, ω_y, −1), position (φ_x, φ_y, h)).
 pub const SYMBOLS: [&str; DIMS] = ["ω_x", "ω_y", "φ_x", "φ_y", "h"];
 
+/// The slice's chart (data coordinates: the two drawn drop coordinates).
+type SliceChart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
 /// A leaf's verdict, as drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
@@ -160,14 +163,12 @@ impl BasinFigure {
         e
     }
 
-    /// The chart's area on a root of the figure's size (the same layout as drawn).
+    /// The chart's area on a root of the figure's size (the same layout as drawn), and the
+    /// legend's area.
     fn chart<'a, DB: DrawingBackend>(
         &self,
         root: &'a DrawingArea<DB, Shift>,
-    ) -> Result<
-        (ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>, DrawingArea<DB, Shift>),
-        String,
-    > {
+    ) -> Result<(SliceChart<'a, DB>, DrawingArea<DB, Shift>), String> {
         let body = root.titled(&self.title, (super::FONT, LABEL)).map_err(err)?;
         let (left, right) = body.split_horizontally(820);
         let chart = ChartBuilder::on(&left)
