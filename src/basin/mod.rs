@@ -7,6 +7,7 @@
 //! depth-first order whatever the threads do.
 
 pub mod float;
+pub mod map;
 
 use crate::exact::{Q, QExt};
 use crate::orbit::{Found, Request, certify_orbit};

@@ -49,7 +49,7 @@ pub struct BasinArgs {
 }
 
 /// `--box` text: ten numbers.
-fn parse_box(text: &str) -> Result<([Q; DIMS], [Q; DIMS]), String> {
+pub(super) fn parse_box(text: &str) -> Result<([Q; DIMS], [Q; DIMS]), String> {
     let Some((a, b)) = text.split_once(':') else {
         return Err(format!("--box: {text:?}: write lo1,..,lo5:hi1,..,hi5"));
     };

@@ -5,6 +5,7 @@
 //! 2 bad usage or unreadable input; 3 internal error (the two backends disagree).
 
 mod basin_cmd;
+mod basin_map_cmd;
 mod bodies_cmd;
 mod certify_cmd;
 mod certify_general;
@@ -107,6 +108,9 @@ pub enum Command {
     /// Prove which drops of a box chatter to rest (enter an orbit certificate's set) and which
     /// reach v > 0, as exact shares of the box (docs/basin-certificates.md); write the certificate.
     Basin(basin_cmd::BasinArgs),
+    /// Basin certificates over a grid of (kappa, gamma): the kernel-checked shares of a box of
+    /// drops proved CC, proved ICC and undecided, per point (docs/basin-certificates.md §6).
+    BasinMap(basin_map_cmd::BasinMapArgs),
     /// Check certificate files (or directories of *.ron and *.json files) with the trusted kernel.
     Verify(verify_cmd::VerifyArgs),
     /// Convert a certificate or refutation between RON and its JSON twin (lossless).
@@ -152,7 +156,8 @@ impl Command {
             | Command::Map(_)
             | Command::Plot(_)
             | Command::Schema(_)
-            | Command::Basin(_) => false,
+            | Command::Basin(_)
+            | Command::BasinMap(_) => false,
         }
     }
 }
@@ -233,6 +238,7 @@ pub fn run(cli: Cli, env: &Env) -> Outcome {
         Command::Certify(a) => certify_cmd::run(a, env),
         Command::CertifyOrbit(a) => orbit_cmd::run(a, env),
         Command::Basin(a) => basin_cmd::run(a, env),
+        Command::BasinMap(a) => basin_map_cmd::run(a, env),
         Command::Verify(a) => verify_cmd::run(a, env),
         Command::Convert(a) => convert_cmd::run(a),
         Command::Simulate(a) => simulate_cmd::run(a),

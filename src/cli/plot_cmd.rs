@@ -2,7 +2,8 @@
 //! file extension).
 
 use super::{self as cli, emit};
-use crate::exact::Q;
+use crate::exact::{Q, parse_user_number};
+use crate::plot::basin::{BasinFigure, axis_index};
 use crate::plot::cone::ConeFigure;
 use crate::plot::cover::{CoverFigure, read_boxes, title as cover_title};
 use crate::plot::map::{MapFigure, Panel, body_name};
@@ -40,6 +41,80 @@ pub enum PlotWhat {
     Cone(ConePlotArgs),
     /// A certified cover (`chatter cover`): the boxes by status, with the exact CC boundary.
     Cover(CoverPlotArgs),
+    /// A slice of a basin certificate (`chatter basin`): its leaves by verdict (proved CC, proved
+    /// ICC, undecided) over two drop coordinates; the file is re-checked by the kernel first.
+    Basin(BasinPlotArgs),
+    /// A basin map (`chatter basin-map`): per point, the certified shares of its box of drops.
+    BasinMap(MapPlotArgs),
+}
+
+#[derive(Args, Debug)]
+#[command(
+    after_help = "Drop coordinates (the paper's, before the first impact): velocity (omega_x, omega_y, -1), \
+position (phi_x, phi_y, h). The kernel re-checks the file on both backends before drawing (a file \
+it rejects is refused, exit status 1); the title gives its exact shares of the whole box.\n\n\
+Example:\n  chatter plot basin certificates/basin/valid/basin-n3-kappa1_8-gamma3_20.ron --axes phi_x,h \
+--at omega_x=0.0495 -o slice.png"
+)]
+pub struct BasinPlotArgs {
+    /// A basin certificate (RON).
+    #[arg(value_name = "FILE")]
+    pub cert: PathBuf,
+    /// The two coordinates drawn, horizontal then vertical: two of omega_x, omega_y, phi_x, phi_y, h.
+    #[arg(long, default_value = "omega_x,omega_y")]
+    pub axes: String,
+    /// Where a coordinate not drawn is fixed, NAME=VALUE (exact: 1/20, 0.05), repeatable;
+    /// the others at the box's centre.
+    #[arg(long, value_name = "NAME=VALUE")]
+    pub at: Vec<String>,
+    /// Output file: .svg or .png.
+    #[arg(short = 'o', long = "out", value_name = "FILE")]
+    pub out: PathBuf,
+}
+
+/// Why `plot basin` drew nothing: bad input (exit 2), a file the kernel rejects (exit 1), or
+/// the backends disagree (exit 3).
+enum BasinPlotError {
+    Usage(String),
+    Rejected(String),
+    Disagree(String),
+}
+
+/// The slice figure of a basin certificate, after the kernel accepted it on both backends.
+fn basin_figure(a: &BasinPlotArgs) -> Result<BasinFigure, BasinPlotError> {
+    use BasinPlotError::{Disagree, Rejected, Usage};
+    use chatter_kernel::verify::{Verdict, verify_basin};
+    let axes: Vec<usize> = a
+        .axes
+        .split(',')
+        .map(axis_index)
+        .collect::<Result<_, _>>()
+        .map_err(|e| Usage(format!("--axes: {e}")))?;
+    let axes: [usize; 2] =
+        axes.try_into().map_err(|_| Usage("--axes: give two coordinates, e.g. omega_x,h".into()))?;
+    let mut at: [Option<Q>; 5] = Default::default();
+    for s in &a.at {
+        let (name, value) =
+            s.split_once('=').ok_or_else(|| Usage(format!("--at {s:?}: write NAME=VALUE")))?;
+        let k = axis_index(name).map_err(|e| Usage(format!("--at: {e}")))?;
+        if axes.contains(&k) {
+            return Err(Usage(format!("--at {name}: it is drawn (--axes {})", a.axes)));
+        }
+        at[k] = Some(parse_user_number(value.trim()).map_err(|e| Usage(format!("--at {name}: {e}")))?);
+    }
+    let text = std::fs::read_to_string(&a.cert).map_err(|e| Usage(format!("{}: {e}", a.cert.display())))?;
+    let cert = chatter_kernel::syntax::read(&text, chatter_kernel::syntax::Encoding::Ron)
+        .map_err(|r| Rejected(format!("{}: REJECTED by the kernel: {r}", a.cert.display())))?;
+    let report = match verify_basin(&cert, Default::default(), &cli::Env::default().backends) {
+        Verdict::Accepted(r) => r,
+        Verdict::Rejected(r) => {
+            return Err(Rejected(format!("{}: REJECTED by the kernel: {r}", a.cert.display())));
+        }
+        Verdict::Disagree(s) => {
+            return Err(Disagree(format!("{}: the kernel's backends disagree: {s}", a.cert.display())));
+        }
+    };
+    BasinFigure::new(&cert, &report, axes, &at).map_err(Usage)
 }
 
 #[derive(Args, Debug)]
@@ -138,6 +213,12 @@ fn run_inner(a: PlotArgs) -> Result<String, String> {
             save(&cover_figure(&c.dir)?, &c.out)?;
             Ok(format!("wrote {}", c.out.display()))
         }
+        PlotWhat::Basin(_) => Err("plot basin is run by run()".into()),
+        PlotWhat::BasinMap(m) => {
+            Format::of(&m.out)?;
+            save(&crate::plot::basin_map::read(&m.dir)?, &m.out)?;
+            Ok(format!("wrote {}", m.out.display()))
+        }
         PlotWhat::Cone(c) => {
             Format::of(&c.out)?;
             let text = std::fs::read_to_string(&c.cert).map_err(|e| format!("{}: {e}", c.cert.display()))?;
@@ -150,11 +231,41 @@ fn run_inner(a: PlotArgs) -> Result<String, String> {
 }
 
 pub fn run(a: PlotArgs) -> cli::Outcome {
+    if let PlotWhat::Basin(b) = &a.what {
+        return run_basin(b);
+    }
     match run_inner(a) {
         Ok(line) => {
             emit(&line);
             cli::Outcome::Success
         }
         Err(e) => cli::Outcome::Usage(e),
+    }
+}
+
+/// `chatter plot basin`: refuses a file the kernel rejects (exit status 1).
+fn run_basin(b: &BasinPlotArgs) -> cli::Outcome {
+    if let Err(e) = Format::of(&b.out) {
+        return cli::Outcome::Usage(e);
+    }
+    match basin_figure(b) {
+        Ok(fig) => match save(&fig, &b.out) {
+            Ok(()) => {
+                emit(&format!(
+                    "wrote {} ({} leaves in the slice; {})",
+                    b.out.display(),
+                    fig.rects.len(),
+                    fig.title
+                ));
+                cli::Outcome::Success
+            }
+            Err(e) => cli::Outcome::Usage(e),
+        },
+        Err(BasinPlotError::Usage(e)) => cli::Outcome::Usage(e),
+        Err(BasinPlotError::Disagree(e)) => cli::Outcome::Internal(e),
+        Err(BasinPlotError::Rejected(e)) => {
+            emit(&e);
+            cli::Outcome::Negative
+        }
     }
 }

@@ -150,7 +150,7 @@ impl Figure for CoverFigure {
 
 /// The pieces of the polylines inside [k0, k1] x [g0, g1] (the exact curves are computed along
 /// rows from kappa = 0, which a cover's domain need not include).
-fn inside(lines: &[Polyline], k: [f64; 2], g: [f64; 2]) -> Vec<Polyline> {
+pub(crate) fn inside(lines: &[Polyline], k: [f64; 2], g: [f64; 2]) -> Vec<Polyline> {
     let ok = |(x, y): &(f64, f64)| (k[0]..=k[1]).contains(x) && (g[0]..=g[1]).contains(y);
     let mut out = Vec::new();
     for l in lines {

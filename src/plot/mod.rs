@@ -5,6 +5,8 @@
 //! Sans (Greek included), read at run time from `CHATTER_FONT` or the usual system paths
 //! (Debian's fonts-dejavu-core), see docs/figures.md.
 
+pub mod basin;
+pub mod basin_map;
 pub mod cone;
 pub mod contour;
 pub mod cover;

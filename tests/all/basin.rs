@@ -93,3 +93,164 @@ fn chatter_basin_writes_a_certificate_that_verify_accepts_with_the_same_shares()
         "{json}"
     );
 }
+
+/// The colour of the PNG at the point (x, y) of the slice `fig` (drawn at `PNG_SCALE`).
+fn colour_at(png: &std::path::Path, fig: &chatter::plot::basin::BasinFigure, x: f64, y: f64) -> [u8; 3] {
+    let map = resvg::tiny_skia::Pixmap::load_png(png).unwrap();
+    let (u, v) = fig.pixel(x, y).unwrap();
+    let s = chatter::plot::PNG_SCALE;
+    let p = map.pixel((u as f32 * s) as u32, (v as f32 * s) as u32).unwrap();
+    [p.red(), p.green(), p.blue()]
+}
+
+/// Draws a slice with `chatter plot basin` along `axes` and builds the same figure in the
+/// library (for its pixel coordinates).
+fn slice(file: &str, axes: &str, at: &[&str], out: &std::path::Path) -> chatter::plot::basin::BasinFigure {
+    use chatter::exact::parse_user_number;
+    use chatter::plot::basin::{BasinFigure, axis_index};
+    let path = root().join(file);
+    let mut args =
+        vec!["plot".to_string(), "basin".into(), path.to_str().unwrap().into(), "--axes".into(), axes.into()];
+    for a in at {
+        args.extend(["--at".to_string(), a.to_string()]);
+    }
+    args.extend(["-o".to_string(), out.to_str().unwrap().into()]);
+    let o = std::process::Command::new(bin()).args(&args).output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let cert: BasinCertificate = read(&std::fs::read_to_string(&path).unwrap(), Encoding::Ron).unwrap();
+    let verdict =
+        chatter_kernel::verify::verify_basin(&cert, Default::default(), &[chatter_kernel::verify::MALACHITE]);
+    let chatter_kernel::verify::Verdict::Accepted(report) = verdict else { panic!("{verdict:?}") };
+    let mut fixed: [Option<Q>; 5] = Default::default();
+    for a in at {
+        let (name, value) = a.split_once('=').unwrap();
+        fixed[axis_index(name).unwrap()] = Some(parse_user_number(value).unwrap());
+    }
+    let axes: Vec<usize> = axes.split(',').map(|a| axis_index(a).unwrap()).collect();
+    BasinFigure::new(&cert, &report, [axes[0], axes[1]], &fixed).unwrap()
+}
+
+#[test]
+fn plot_basin_draws_each_leaf_of_the_slice_where_it_lies_in_its_verdicts_colour() {
+    use chatter::plot::basin::ICC;
+    use chatter::plot::cover::UNDECIDED;
+    use chatter::plot::map::COMPLETE;
+    let rgb = |c: plotters::style::RGBColor| [c.0, c.1, c.2];
+    let d = tempfile::tempdir().unwrap();
+    let icc = "certificates/basin/valid/basin-icc-n3-kappa1_8-gamma1_2.ron";
+    // Its leaves split (omega_x, omega_y) only: 0 (omega_x in [0.049, 0.05]), 13 (both upper
+    // halves), 120 (omega_x in [0.05, 0.0505], omega_y lower), 1212 (undecided: omega_x in
+    // [0.0505, 0.051], omega_y in [0.049, 0.0495]) and 1213 (omega_y in [0.0495, 0.05]).
+    let a = d.path().join("a.png");
+    let fig = slice(icc, "omega_x,omega_y", &[], &a);
+    assert_eq!(colour_at(&a, &fig, 0.0495, 0.05), rgb(ICC), "leaf 0");
+    assert_eq!(colour_at(&a, &fig, 0.0505, 0.0505), rgb(ICC), "leaf 13");
+    assert_eq!(colour_at(&a, &fig, 0.05025, 0.0495), rgb(ICC), "leaf 120");
+    assert_eq!(colour_at(&a, &fig, 0.05075, 0.04925), rgb(UNDECIDED), "leaf 1212");
+    assert_eq!(colour_at(&a, &fig, 0.05075, 0.04975), rgb(ICC), "leaf 1213");
+    // Outside the box (the chart's margin) nothing is drawn.
+    assert_eq!(colour_at(&a, &fig, 0.0488, 0.05), [255, 255, 255]);
+    // Across (omega_x, phi_x), omega_y fixed: in leaf 1212's range, then in 1213's, then on
+    // their shared face, where the decided leaf is drawn over the undecided one.
+    for (omega_y, expected) in [("0.04925", UNDECIDED), ("0.04975", ICC), ("0.0495", ICC)] {
+        let b = d.path().join(format!("b{omega_y}.png"));
+        let fig = slice(icc, "omega_x,phi_x", &[&format!("omega_y={omega_y}")], &b);
+        assert_eq!(colour_at(&b, &fig, 0.05075, 0.0502), rgb(expected), "omega_y = {omega_y}");
+        assert_eq!(colour_at(&b, &fig, 0.0495, 0.0495), rgb(ICC), "leaf 0 at omega_y = {omega_y}");
+    }
+    // The legend lists only what is drawn; the title gives the kernel's exact shares.
+    let svg = d.path().join("b.svg");
+    slice(icc, "omega_x,phi_x", &["omega_y=0.04975"], &svg);
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.contains("κ = 1/8") && text.contains("γ = 1/2") && text.contains("ICC 15/16"), "title");
+    assert!(
+        text.contains("proved ICC") && !text.contains("undecided: no verdict") && !text.contains("proved CC")
+    );
+    // A certificate with CC leaves: 0 (omega_x in [0.049, 0.05]), 10 ([0.05, 0.0505]), 11
+    // undecided ([0.0505, 0.051]).
+    let c = d.path().join("c.png");
+    let fig = slice("certificates/basin/valid/basin-n3-kappa1_8-gamma3_20.ron", "omega_x,omega_y", &[], &c);
+    assert_eq!(colour_at(&c, &fig, 0.0495, 0.0495), rgb(COMPLETE), "leaf 0");
+    assert_eq!(colour_at(&c, &fig, 0.05025, 0.0505), rgb(COMPLETE), "leaf 10");
+    assert_eq!(colour_at(&c, &fig, 0.05075, 0.0495), rgb(UNDECIDED), "leaf 11");
+}
+
+#[test]
+fn plot_basin_refuses_a_file_the_kernel_rejects() {
+    let d = tempfile::tempdir().unwrap();
+    let out = d.path().join("x.png");
+    let bad = root().join("certificates/basin/invalid/basin-first-out-of-range.ron");
+    let o = std::process::Command::new(bin())
+        .args(["plot", "basin", bad.to_str().unwrap(), "-o", out.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{said}");
+    assert!(said.contains("REJECTED") && said.contains("basin-out-of-range"), "{said}");
+    assert!(!out.exists());
+}
+
+#[test]
+fn basin_map_on_a_2x2_grid_writes_the_kernels_shares_of_each_point_and_its_figure() {
+    let d = tempfile::tempdir().unwrap();
+    let dir = d.path().join("bmap");
+    // Points (kappa, gamma) = (1/8, 3/20) (the triangle's band point), (1/8, 9/20) (far above the
+    // CC threshold), (3/8, 3/20) and (3/8, 9/20); the default tiny box around the paper's centre.
+    let run = |dir: &std::path::Path, jobs: &str| {
+        let o = std::process::Command::new(bin())
+            .args(["basin-map", "--n", "3", "--kappa", "0:0.5:2", "--gamma", "0:0.6:2", "--depth", "2"])
+            .args(["--jobs", jobs, "--out", dir.to_str().unwrap()])
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    };
+    run(&dir, "2");
+    let csv = std::fs::read_to_string(dir.join("points.csv")).unwrap();
+    let rows: Vec<Vec<&str>> = csv.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 4, "{csv}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert!(summary["share_of"].as_str().unwrap().contains("box of drops"));
+    for (i, row) in rows.iter().enumerate() {
+        // The CSV's shares are the kernel's on the kept certificate, and sum to 1.
+        let cert = dir.join(format!("certificates/point-{i}.ron"));
+        let v = std::process::Command::new(bin())
+            .args(["verify", "--json", cert.to_str().unwrap()])
+            .output()
+            .unwrap();
+        let json: serde_json::Value = serde_json::from_slice(&v.stdout).unwrap();
+        let file = &json["files"][0];
+        for (col, key) in [(4, "cc_share"), (5, "icc_share"), (6, "undecided_share")] {
+            assert_eq!(file[key], row[col], "point {i} {key}");
+            assert_eq!(summary["points"][i][key], row[col], "point {i} {key}");
+        }
+        let sum = (4..7).map(|c| row[c].parse::<Q>().unwrap()).fold(Q::int(0), |s, x| &s + &x);
+        assert_eq!(sum, Q::int(1), "{row:?}");
+    }
+    // The band point: the whole box is proved CC (as by `chatter basin` above).
+    assert_eq!((rows[0][4], rows[0][10]), ("1", "2 1 1 2"), "{:?}", rows[0]);
+    // At kappa = 3/8 both gammas are far above the CC threshold: drops are proved ICC there.
+    for i in [2, 3] {
+        assert!(rows[i][5].parse::<Q>().unwrap() >= Q::new(1, 2), "{:?}", rows[i]);
+        assert_eq!(rows[i][4], "0");
+    }
+    // Deterministic: the same files on one thread.
+    let again = d.path().join("again");
+    run(&again, "1");
+    for f in ["points.csv", "summary.json", "certificates/point-0.ron"] {
+        assert_eq!(std::fs::read(dir.join(f)).unwrap(), std::fs::read(again.join(f)).unwrap(), "{f}");
+    }
+    let png = d.path().join("bmap.png");
+    let p = std::process::Command::new(bin())
+        .args(["plot", "basin-map", dir.to_str().unwrap(), "-o", png.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(p.status.code(), Some(0), "{}", String::from_utf8_lossy(&p.stderr));
+    let svg = d.path().join("bmap.svg");
+    std::process::Command::new(bin())
+        .args(["plot", "basin-map", dir.to_str().unwrap(), "-o", svg.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.contains("certified share") && text.contains("undecided share"), "legend");
+}

@@ -1,0 +1,161 @@
+//! Maps of basin certificates (`chatter basin-map`, docs/basin-certificates.md §6): at every
+//! point (κ, γ) of a grid, a basin certificate over one box of drops, checked by the kernel on
+//! both backends, whose exact shares (CC, ICC, undecided, of the box's volume) are the map's
+//! values. Deterministic: the files depend only on the request.
+
+use super::{BasinRequest, produce, write_basin};
+use crate::exact::Q;
+use crate::orbit::Request;
+use crate::sweep::grid::{Grid, Point, Variable};
+use chatter_kernel::basin::drop::DIMS;
+use chatter_kernel::exact::ParseLimits;
+use chatter_kernel::verify::{Backend, Verdict, verify_basin};
+use std::path::Path;
+
+/// What the share is a share of (printed by `--help`, kept in summary.json).
+pub const SHARE_OF: &str = "the volume of the box of drops (velocity (omega_x, omega_y, -1), position (phi_x, phi_y, h) before the first impact): with the paper's box, the probability that the paper's random drop is in the set";
+
+/// A basin map: the grid and the request made at each of its points.
+#[derive(Clone, Debug)]
+pub struct MapRequest {
+    pub grid: Grid,
+    /// The box, depth, prefix and orbit settings of every point (its body is replaced).
+    pub basin: BasinRequest,
+}
+
+/// One point's kernel-checked shares (canonical "p/q" strings) and its certificate.
+#[derive(Clone, Debug)]
+pub struct PointShares {
+    pub point: Point,
+    pub cc_share: String,
+    pub icc_share: String,
+    pub undecided_share: String,
+    /// Leaves: CC, ICC, undecided.
+    pub leaves: [usize; 3],
+    /// The orbit certificate's pattern, or empty when none was found (then no CC leaf).
+    pub pattern: Vec<usize>,
+    /// The certificate's RON text.
+    pub certificate: String,
+}
+
+impl MapRequest {
+    /// The basin request at one point of the grid.
+    pub fn at(&self, p: &Point) -> BasinRequest {
+        let mut b = self.basin.clone();
+        b.orbit = Request { kappa: p.kappa.clone(), gamma: p.gamma.clone(), ..b.orbit };
+        b
+    }
+}
+
+/// The certificate at one point, checked by the kernel on `backends`; an error is internal (the
+/// producer's file rejected, or the backends disagree).
+pub fn point(req: &MapRequest, index: usize, backends: &[Backend]) -> Result<PointShares, String> {
+    let p = req.grid.point(index);
+    let produced = produce(&req.at(&p), backends, &|_| {})?;
+    let pattern = produced.orbit.as_ref().map(|f| f.pattern.clone()).unwrap_or_default();
+    let r = match verify_basin(&produced.certificate, ParseLimits::default(), backends) {
+        Verdict::Accepted(r) => r,
+        Verdict::Rejected(r) => return Err(format!("the producer's certificate is rejected: {r}")),
+        Verdict::Disagree(s) => return Err(s),
+    };
+    Ok(PointShares {
+        point: p,
+        cc_share: r.cc_share,
+        icc_share: r.icc_share,
+        undecided_share: r.undecided_share,
+        leaves: r.leaves,
+        pattern,
+        certificate: write_basin(&produced.certificate),
+    })
+}
+
+/// Every point, in parallel (rayon), in the grid's order; `tick` after each.
+pub fn run(
+    req: &MapRequest,
+    backends: &[Backend],
+    tick: &(dyn Fn() + Sync),
+) -> Result<Vec<PointShares>, String> {
+    use rayon::prelude::*;
+    (0..req.grid.len())
+        .into_par_iter()
+        .map(|i| {
+            let r = point(req, i, backends);
+            tick();
+            r.map_err(|e| format!("point {i}: {e}"))
+        })
+        .collect()
+}
+
+/// The header of points.csv.
+pub const CSV_HEADER: &str = "index,rho,kappa,gamma,cc_share,icc_share,undecided_share,cc_leaves,icc_leaves,undecided_leaves,orbit_pattern";
+
+/// One row of points.csv.
+fn csv_row(s: &PointShares) -> String {
+    let p = &s.point;
+    let pattern: Vec<String> = s.pattern.iter().map(usize::to_string).collect();
+    format!(
+        "{},{},{},{},{},{},{},{},{},{},{}",
+        p.index,
+        p.rho.as_ref().map_or(String::new(), Q::to_string),
+        p.kappa,
+        p.gamma,
+        s.cc_share,
+        s.icc_share,
+        s.undecided_share,
+        s.leaves[0],
+        s.leaves[1],
+        s.leaves[2],
+        pattern.join(" ")
+    )
+}
+
+/// The summary (schema `chatter.basin-map/1`): the request, what the shares are shares of, and
+/// every point's exact shares.
+pub fn summary(req: &MapRequest, points: &[PointShares]) -> serde_json::Value {
+    let b = &req.basin;
+    let text = |v: &[Q; DIMS]| v.iter().map(Q::to_string).collect::<Vec<_>>();
+    let rows: Vec<serde_json::Value> = points
+        .iter()
+        .map(|s| {
+            serde_json::json!({
+                "index": s.point.index,
+                "kappa": s.point.kappa.to_string(),
+                "gamma": s.point.gamma.to_string(),
+                "cc_share": s.cc_share,
+                "icc_share": s.icc_share,
+                "undecided_share": s.undecided_share,
+            })
+        })
+        .collect();
+    serde_json::json!({
+        "schema": "chatter.basin-map/1",
+        "n": req.grid.n,
+        "variable": if req.grid.variable == Variable::Rho { "rho" } else { "kappa" },
+        "x": req.grid.x.text(),
+        "gamma": req.grid.gamma.text(),
+        "box": { "lo": text(&b.lo), "hi": text(&b.hi) },
+        "depth": b.depth,
+        "max_prefix": b.max_prefix,
+        "share_of": SHARE_OF,
+        "points": rows,
+    })
+}
+
+/// Writes DIR/points.csv, DIR/summary.json and DIR/certificates/point-INDEX.ron.
+pub fn write(dir: &Path, req: &MapRequest, points: &[PointShares]) -> Result<(), String> {
+    let io = |p: &Path, e: std::io::Error| format!("cannot write {}: {e}", p.display());
+    let certs = dir.join("certificates");
+    std::fs::create_dir_all(&certs).map_err(|e| io(&certs, e))?;
+    let mut csv = format!("{CSV_HEADER}\n");
+    for s in points {
+        csv.push_str(&csv_row(s));
+        csv.push('\n');
+        let path = certs.join(format!("point-{}.ron", s.point.index));
+        std::fs::write(&path, &s.certificate).map_err(|e| io(&path, e))?;
+    }
+    let path = dir.join("points.csv");
+    std::fs::write(&path, csv).map_err(|e| io(&path, e))?;
+    let path = dir.join("summary.json");
+    let json = serde_json::to_string_pretty(&summary(req, points)).map_err(|e| e.to_string())?;
+    std::fs::write(&path, json + "\n").map_err(|e| io(&path, e))
+}
