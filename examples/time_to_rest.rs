@@ -6,6 +6,7 @@
 //! cargo run --release --features research --example time_to_rest -- patterns N KAPPA GAMMA [DROPS] [BUDGET]
 //! cargo run --release --features research --example time_to_rest -- measure N KAPPA GAMMA [RUNS] [BUDGET]
 //! cargo run --release --features research --example time_to_rest -- grid [RUNS] [BUDGET]
+//! cargo run --release --features research --example time_to_rest -- bench-grid [RUNS] [BUDGET] [survey|full] [N]
 //! ```
 //!
 //! `patterns`: `f64` random drops (evidence), their primitive cycles of steps with counts and
@@ -14,7 +15,11 @@
 //! for their cycles (`chatter::prove::prove_many`, as `chatter simulate --exact --runs`); per
 //! drop proved CC, the proved bound t* <= t_k + B h/|v| against the accumulation time of an `f64`
 //! run of the same drop (1000 impacts). `grid`: `measure` over a few n = 3, 4 points below the
-//! CC threshold.
+//! CC threshold. `bench-grid`: the grid of `cargo bench --bench certify_grid` (n = 3, 4, κ = k/40,
+//! γ = g/100; only n = N with the fifth argument): at each point where a cone certificate with
+//! claim `CompleteChatterFromAllDown` is made (as `chatter simulate --exact` makes it), the share of
+//! RUNS drops (default 20) proved CC with a bound (issue 24 §2 target), orbit certificates made
+//! with the survey (default) or full budgets; one line per point, then the totals.
 
 use chatter::exact::{Q, QExt};
 use chatter::orbit::band::cc_threshold;
@@ -169,6 +174,55 @@ const GRID: [(u64, &str, &str); 10] = [
     (4, "1/6", "1/200"),
 ];
 
+/// One point of `bench-grid`: None without a cone certificate, else (drops proved CC with a
+/// bound, drops proved no-ICC-no-PCC, orbit sets made).
+fn bench_point(m: &Model, runs: u64, budget: usize, effort: Effort) -> Option<(usize, usize, usize)> {
+    let sets = cone(m, Effort::Full);
+    if sets.sets().is_empty() {
+        return None;
+    }
+    let proved = prove_many(m, 0, runs, &Options::new(budget), sets, Some(effort), &|| {});
+    let bounded =
+        proved.briefs.iter().filter(|b| b.proved && b.outcome == Outcome::Cc && b.rest_by.is_some());
+    let cone_only = proved.briefs.iter().filter(|b| b.proved && b.outcome == Outcome::NoIccNoPcc).count();
+    let orbits = proved.sets.sets().iter().filter(|s| s.kind == chatter::simulate::SetKind::Orbit).count();
+    Some((bounded.count(), cone_only, orbits))
+}
+
+/// The §2 target of issue 24 over the grid of `benches/certify_grid.rs`.
+fn bench_grid(runs: u64, budget: usize, effort: Effort, only: Option<u64>) {
+    let (mut points, mut all, mut some, mut drops, mut bounded) = (0, 0, 0, 0, 0);
+    let start = Instant::now();
+    for n in [3u64, 4].into_iter().filter(|n| only.is_none_or(|o| o == *n)) {
+        for k in 1..=8 {
+            for g in 1..=40 {
+                let (kappa, gamma) = (Q::new(k, 40), Q::new(g, 100));
+                let t = Instant::now();
+                let Some((b, c, o)) = bench_point(&model(n, &kappa, &gamma), runs, budget, effort) else {
+                    continue;
+                };
+                points += 1;
+                all += usize::from(b as u64 == runs);
+                some += usize::from(b > 0);
+                drops += runs as usize;
+                bounded += b;
+                println!(
+                    "n = {n}, kappa = {kappa}, gamma = {gamma}: {b}/{runs} proved CC with a bound, {c} no-ICC-no-PCC, {o} orbit sets ({:.1} s)",
+                    t.elapsed().as_secs_f64()
+                );
+            }
+        }
+    }
+    let pct = |a: usize, b: usize| 100.0 * a as f64 / b.max(1) as f64;
+    println!(
+        "points with a cone certificate: {points}; every drop bounded at {all} ({:.1}%); some drop bounded at {some} ({:.1}%); drops bounded {bounded} of {drops} ({:.1}%); {:.0} s",
+        pct(all, points),
+        pct(some, points),
+        pct(bounded, drops),
+        start.elapsed().as_secs_f64()
+    );
+}
+
 fn main() {
     let mode = arg(1).unwrap_or_else(|| "patterns".into());
     let num = |k: usize, d: u64| arg(k).and_then(|s| s.parse().ok()).unwrap_or(d);
@@ -193,6 +247,10 @@ fn main() {
                 measure(n, ratio(k), ratio(g), num(2, 100), num(3, 300) as usize);
             }
         }
-        m => eprintln!("unknown mode {m}: patterns, measure or grid"),
+        "bench-grid" => {
+            let effort = if arg(4).as_deref() == Some("full") { Effort::Full } else { Effort::Survey };
+            bench_grid(num(2, 20), num(3, 300) as usize, effort, arg(5).and_then(|s| s.parse().ok()))
+        }
+        m => eprintln!("unknown mode {m}: patterns, measure, grid or bench-grid"),
     }
 }

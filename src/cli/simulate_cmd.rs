@@ -495,6 +495,14 @@ fn run_many(v: &Validated, runs: u64) -> cli::Outcome {
         match v.arithmetic {
             Arithmetic::Exact => {
                 emit(&format!("proved: {}", list(&Outcome::ALL, &r.proved)));
+                if r.cc_after_cone > 0 {
+                    emit(&format!(
+                        "CC after a cone: {} of the CC drops were first proved no ICC, no PCC by a certified \
+                         cone, then CC with a time-to-rest bound by an orbit certificate's set (the exact run \
+                         went on past the cone entry)",
+                        r.cc_after_cone
+                    ));
+                }
                 if r.proved.get(Outcome::NoIccNoPcc.name()).is_some_and(|&k| k > 0) {
                     emit(
                         "no-ICC-no-PCC: entered a certified cone, so never separates and never ends in PCC; \

@@ -103,6 +103,18 @@ pub fn set_reports(sets: &Certified) -> Vec<SetReport> {
         .collect()
 }
 
+/// Where a decision entered a certified set, if it is such an entry.
+fn entered_report(decision: &Decision) -> Option<EnteredReport> {
+    let Decision::Certified { after, kind, name, rest_by } = decision else { return None };
+    Some(EnteredReport {
+        impact: *after,
+        kind: kind.name(),
+        certificate: name.clone(),
+        finite_time: *kind == SetKind::Orbit || rest_by.is_some(),
+        time_to_rest_bound: rest_by.as_ref().map(|t| t.decimal(9, Rounding::Up)),
+    })
+}
+
 /// The velocity v of the centre of mass in a snapshot (v = (u0 + u1)/2 for the rod).
 pub fn snapshot_v(model: &Model, s: &crate::simulate::Snapshot) -> f64 {
     let v = if model.shape().dim() == 2 { (s.p[0] + s.p[1]) / 2.0 } else { s.p[2] };
@@ -143,6 +155,12 @@ pub struct SimulateReport {
     /// Where the drop entered a certified set (the proof of CC for an orbit certificate's set, of
     /// `no-ICC-no-PCC` for a cone), if it did.
     pub entered: Option<EnteredReport>,
+    /// The cone entry an exact run went on past (issue 24 §2; docs/time-to-rest.md §1): the first
+    /// fact proved (no ICC, no PCC: `kind` `cone`, `finite_time` false). For a drop proved CC
+    /// after it, `entered` is the later orbit entry (CC, with its bound); when no orbit set
+    /// followed within the budget it is the same entry as `entered`. Null when the run did not go
+    /// on past a cone (it stopped there, or entered no cone).
+    pub cone_entry: Option<EnteredReport>,
     /// The certified sets the exact run was checked against (empty in `f64`).
     pub certified_sets: Vec<SetReport>,
     /// Why a certified set is missing (e.g. no cone certificate above the CC threshold).
@@ -249,6 +267,9 @@ pub struct SimulateBatchReport {
     pub certificate_notes: Vec<String>,
     /// Deciding test -> drops.
     pub decided_by: BTreeMap<String, usize>,
+    /// Drops proved CC by entering an orbit certificate's set after a cone entry had proved them
+    /// no-ICC-no-PCC, the exact run going on past it (issue 24 §2; counted in `proved.CC`).
+    pub cc_after_cone: usize,
     pub mean_impacts: f64,
     /// Rod bodies (docs/time-to-rest.md §2): the drops' measured T|v|/h against the bound B
     /// (evidence); null for other bodies.
@@ -302,23 +323,14 @@ pub fn of_run(model: &Model, initial: &Initial, arithmetic: Arithmetic, run: &Ru
     };
     let pattern =
         find(&run.sequence).map(|p| PatternReport { transient: p.transient, cycle: p.cycle, tail: p.tail });
-    let entered = match &run.decision {
-        Decision::Certified { after, kind, name, rest_by } => Some(EnteredReport {
-            impact: *after,
-            kind: kind.name(),
-            certificate: name.clone(),
-            finite_time: *kind == SetKind::Orbit || rest_by.is_some(),
-            time_to_rest_bound: rest_by.as_ref().map(|t| t.decimal(9, Rounding::Up)),
-        }),
-        _ => None,
-    };
     SimulateReport {
         schema: SimulateReport::SCHEMA,
         outcome: run.outcome.name(),
         proved: run.proved,
         basis: if run.proved { "proof" } else { "evidence" },
         evidence: evidence_of(model, run),
-        entered,
+        entered: entered_report(&run.decision),
+        cone_entry: run.cone_entry.as_ref().and_then(entered_report),
         certified_sets: Vec::new(),
         certificate_notes: Vec::new(),
         decided_by: run.decision.key(),
@@ -447,6 +459,10 @@ pub fn batch(
         certified_sets: sets.as_ref().map(set_reports).unwrap_or_default(),
         certificate_notes: sets.map(|s| s.notes).unwrap_or_default(),
         decided_by,
+        cc_after_cone: briefs
+            .iter()
+            .filter(|b| b.proved && b.outcome == Outcome::Cc && b.cone_after.is_some())
+            .count(),
         mean_impacts: briefs.iter().map(|b| b.impacts as f64).sum::<f64>() / briefs.len().max(1) as f64,
         time_to_rest: batch_time_to_rest(model, &briefs),
     }

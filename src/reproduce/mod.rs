@@ -5,6 +5,7 @@
 pub mod band_grid;
 pub mod items;
 pub mod report;
+pub mod time_to_rest;
 
 use std::path::{Path, PathBuf};
 
@@ -140,6 +141,7 @@ pub fn run(out: &Path, plan: Plan, step: &dyn Fn(&str)) -> Result<Report, String
     }
     timed("certificates", &mut |r| items::certificates(&ctx, r))?;
     timed("square proof", &mut |r| items::square(&ctx, r))?;
+    timed("time to rest", &mut |r| time_to_rest::time_to_rest(&ctx, r))?;
     report::write(out, &report)?;
     Ok(report)
 }

@@ -57,6 +57,7 @@ fn reproduce_quick_writes_a_report_that_a_browser_renders() {
         "The falling rod (Goyal's condition) — **agrees**",
         "The pentagon's cone (figure “sajatertekek” (f)) — **agrees**",
         "fit κ = 1/4",
+        "Time to rest: complete chatter in finite time, with a proved bound — **agrees**",
     ] {
         assert!(md.contains(s), "report.md lacks {s:?}");
     }

@@ -249,3 +249,25 @@ fn the_bound_is_sharp_at_rational_roots_and_absent_outside_the_theorem() {
     assert_eq!(rod_bound(&q("1/4"), &q("1/8")), None, "Δ < 0: ICC");
     assert_eq!(rod_bound(&q("1"), &q("1/20")), None, "σ = 0");
 }
+
+/// Issue 24 §1 (`chatter reproduce`'s time-to-rest item): at the rod, the square plate, the
+/// triangle plate and the hexagon point of the table, every drop counts once (proved CC with a
+/// bound, proved no-ICC-no-PCC, or other), the drops proved CC with a bound are those of the
+/// documented measurements (all of them), and no proved bound lies below the `f64` accumulation
+/// time of its drop beyond rounding.
+#[test]
+fn the_reproduce_table_bounds_are_never_below_the_simulated_times() {
+    use chatter::reproduce::time_to_rest::{ROUNDING, bodies, measure};
+    for body in bodies() {
+        let row = measure(&body, 4).unwrap();
+        assert_eq!(row.bounded + row.no_icc_no_pcc + row.other, 4, "{row:?}");
+        assert_eq!(row.bounded, 4, "{row:?}");
+        assert!(row.compared >= 1 && row.compared <= row.bounded, "{row:?}");
+        assert_eq!(row.below, 0, "{row:?}");
+        let (lo, hi) = row.ratios.unwrap();
+        assert!(lo >= 1.0 - ROUNDING && lo <= hi, "{row:?}");
+        let (time, bound) = row.largest.unwrap();
+        assert!(bound >= time * (1.0 - ROUNDING), "{row:?}");
+        assert!(!row.constants.is_empty(), "{row:?}");
+    }
+}

@@ -363,3 +363,37 @@ fn square_plate_drops_proved_by_the_cone_are_proved_cc_by_orbits_made_for_them()
     let without = prove_many(&model, 0, 6, &Options::new(100), cone(&model, Effort::Full), None, &|| {});
     assert!(without.briefs.iter().all(|b| b.outcome == Outcome::NoIccNoPcc && b.impacts == 1));
 }
+
+/// Issue 24 §2: `simulate --exact --json` reports both facts of a drop proved CC through an orbit
+/// set after a cone entry: `cone_entry` (the cone, no finite time) and `entered` (the later orbit
+/// entry, with its bound); the batch counts such drops in `cc_after_cone`, within `proved.CC`.
+#[test]
+fn the_json_reports_the_cone_entry_before_an_orbit_entry() {
+    let body = ["simulate", "--n", "4", "--kappa", "1/6", "--gamma", "1/100", "--exact", "--impacts", "100"];
+    let (json, code) = chatter(&[&body[..], &["--seed", "2", "--json"]].concat());
+    assert_eq!(code, 0, "{json}");
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!((v["outcome"].as_str(), v["proved"].as_bool()), (Some("CC"), Some(true)), "{json}");
+    let (cone, orbit) = (&v["cone_entry"], &v["entered"]);
+    assert_eq!((cone["kind"].as_str(), cone["impact"].as_u64()), (Some("cone"), Some(1)), "{json}");
+    assert_eq!((cone["finite_time"].as_bool(), cone["time_to_rest_bound"].is_null()), (Some(false), true));
+    assert!(cone["certificate"].as_str().is_some_and(|c| c.contains("cone certificate")), "{json}");
+    assert_eq!((orbit["kind"].as_str(), orbit["finite_time"].as_bool()), (Some("orbit"), Some(true)));
+    assert!(orbit["impact"].as_u64().unwrap() > 1 && orbit["time_to_rest_bound"].is_string(), "{json}");
+    let (text, code) = chatter(&[&body[..], &["--seed", "2"]].concat());
+    assert_eq!(code, 0, "{text}");
+    assert!(text.contains("first proved: after impact 1 the velocity lies in the cone K"), "{text}");
+    let (json, code) = chatter(&[&body[..], &["--runs", "3", "--json"]].concat());
+    assert_eq!(code, 0, "{json}");
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(v["cc_after_cone"].as_u64(), v["proved"]["CC"].as_u64(), "{json}");
+    assert_eq!(v["cc_after_cone"].as_u64(), Some(3), "{json}");
+    // Without orbit sets the run stops at the cone: no cone entry gone past.
+    let cone = root().join("certificates/valid/doc-example-square.ron");
+    let (json, code) =
+        chatter(&[&body[..], &["--seed", "2", "--json", "--certificate", cone.to_str().unwrap()]].concat());
+    assert_eq!(code, 0, "{json}");
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!((v["outcome"].as_str(), v["entered"]["kind"].as_str()), (Some("no-ICC-no-PCC"), Some("cone")));
+    assert!(v["cone_entry"].is_null(), "{json}");
+}
