@@ -242,6 +242,9 @@ fn sweep(v: Validated) -> cli::Outcome {
     for l in summary.as_ref().map(summary_lines).unwrap_or_default() {
         emit(&l);
     }
+    for l in sweep::proofs::lines(g.n, &done) {
+        emit(&l);
+    }
     cli::Outcome::Success
 }
 

@@ -111,8 +111,10 @@ pub fn prove_many(
         .filter(|(_, b)| open(b))
         .map(|(i, b)| {
             let initial = Initial::RandomDrop { seed: b.seed };
+            let start = std::time::Instant::now();
             let run = simulate_with(model, &initial, Arithmetic::Exact, &opts, Some(&sets));
-            (i, Brief::of(b.seed, &run, model.n()))
+            let seconds = b.seconds + start.elapsed().as_secs_f64();
+            (i, Brief { seconds, ..Brief::of(b.seed, &run, model.n()) })
         })
         .collect();
     for (i, b) in again {

@@ -271,6 +271,9 @@ pub struct Brief {
     /// The impact after which the drop entered a certified cone, when the run went on past it
     /// ([`Options::after_cone`], [`Run::cone_entry`]).
     pub cone_after: Option<usize>,
+    /// Wall time of the run(s) that made this brief, seconds (set by [`simulate_many_with`] and
+    /// by reruns that prove a drop; machine-dependent: printed, never written to a file).
+    pub seconds: f64,
 }
 
 impl Brief {
@@ -294,6 +297,7 @@ impl Brief {
                 Some(Decision::Certified { after, .. }) => Some(*after),
                 _ => None,
             },
+            seconds: 0.0,
         }
     }
 }
@@ -354,9 +358,11 @@ pub fn simulate_many_with(
         .map(|i| {
             let s = seed.wrapping_add(i);
             let initial = Initial::RandomDrop { seed: s };
+            let start = std::time::Instant::now();
             let run = simulate_with(model, &initial, arithmetic, &opts, sets);
+            let seconds = start.elapsed().as_secs_f64();
             tick();
-            let mut brief = Brief::of(s, &run, model.n());
+            let mut brief = Brief { seconds, ..Brief::of(s, &run, model.n()) };
             brief.time_to_rest = rest::measure(model, &initial, &run).map(|m| m.ratio);
             brief
         })

@@ -8,6 +8,7 @@ pub mod curves;
 pub mod general;
 pub mod grid;
 pub mod point;
+pub mod proofs;
 pub mod summary;
 pub mod table;
 
@@ -47,6 +48,9 @@ pub struct Done {
     pub refutation: Option<String>,
     pub orbit: Option<String>,
     pub internal: Option<String>,
+    /// Per drop with proofs: proved outcome (undecided when none) and exact wall time, seconds
+    /// ([`point::Evaluation::proof_times`]; printed, never written).
+    pub proof_times: Vec<(crate::simulate::Outcome, f64)>,
 }
 
 /// Evaluates the shard's points in parallel on the current rayon pool, in index order; `tick`
@@ -71,6 +75,7 @@ pub fn run(req: &Request, tick: &(dyn Fn() + Sync)) -> Vec<Done> {
                 refutation: e.refutation,
                 orbit: e.orbit,
                 internal: e.internal,
+                proof_times: e.proof_times,
             }
         })
         .collect()

@@ -84,7 +84,14 @@ pub struct Evaluation {
     pub orbit: Option<String>,
     /// A backend disagreement inside the kernel (an internal error to report).
     pub internal: Option<String>,
+    /// Per drop with proofs: the proved outcome (undecided when none) and the wall time of its
+    /// exact run(s) in seconds (machine-dependent: printed by `map`, never written to a file).
+    pub proof_times: Vec<(Outcome, f64)>,
 }
+
+/// What [`prove_point`] returns: proved counts, contradicted drops, an orbit certificate (RON),
+/// and per drop its proved outcome and exact wall time.
+type ProofsAt = ([u64; Outcome::COUNT], u64, Option<String>, Vec<(Outcome, f64)>);
 
 /// cos(2 pi/n) as an exact rational when it is one (n = 3, 4, 6), else its nearest `f64` taken as
 /// an exact dyadic: the float finder and the f64 simulator then work to f64 accuracy, as always.
@@ -143,16 +150,10 @@ fn stats(runs: u64, briefs: &[Brief]) -> SimStats {
 /// certificate (`certificate`, RON, when the map made one; else one is made here), and orbit
 /// certificates made for the patterns of drops whose evidence is CC. Returns the proved counts,
 /// the drops whose proof contradicts `evidence`, and an orbit certificate made (RON).
-fn prove_point(
-    n: u64,
-    p: &Point,
-    evidence: &[Brief],
-    budget: usize,
-    certificate: Option<&str>,
-) -> ([u64; Outcome::COUNT], u64, Option<String>) {
+fn prove_point(n: u64, p: &Point, evidence: &[Brief], budget: usize, certificate: Option<&str>) -> ProofsAt {
     let runs = evidence.len() as u64;
     let Ok(model) = Model::new(crate::simulate::Shape::Polygon(n), p.kappa.clone(), p.gamma.clone()) else {
-        return (Outcome::ALL.map(|o| if o == Outcome::Undecided { runs } else { 0 }), 0, None);
+        return (Outcome::ALL.map(|o| if o == Outcome::Undecided { runs } else { 0 }), 0, None, Vec::new());
     };
     let sets = match certificate.map(chatter_kernel::certificate::read) {
         Some(Ok(cert)) => {
@@ -185,7 +186,12 @@ fn prove_point(
         Source::Orbit(c) => Some(crate::write::write_orbit(c)),
         Source::Cone(_) => None,
     });
-    (proved_counts(&proved.briefs).map(|c| c as u64), contradicted as u64, orbit)
+    let times = proved
+        .briefs
+        .iter()
+        .map(|b| (if b.proved { b.outcome } else { Outcome::Undecided }, b.seconds))
+        .collect();
+    (proved_counts(&proved.briefs).map(|c| c as u64), contradicted as u64, orbit, times)
 }
 
 /// The first seed of a point's drops: FNV-1a of "n/kappa/gamma", so that a point gets the same
@@ -212,6 +218,7 @@ pub fn evaluate(n: u64, p: &Point, tasks: Tasks) -> Evaluation {
         sim: None,
         orbit: None,
         internal: None,
+        proof_times: Vec::new(),
     };
     if tasks.certify && model_cosine(n).1 {
         let report = certify(&Request::new(n, p.kappa.clone(), p.gamma.clone()).survey());
@@ -231,11 +238,12 @@ pub fn evaluate(n: u64, p: &Point, tasks: Tasks) -> Evaluation {
         let briefs = evidence_briefs(n, p, runs);
         let mut sim = stats(runs, &briefs);
         if tasks.proof_budget > 0 {
-            let (proved, contradicted, orbit) =
+            let (proved, contradicted, orbit, times) =
                 prove_point(n, p, &briefs, tasks.proof_budget, e.certificate.as_deref());
             sim.proved = Some(proved);
             sim.contradicted = contradicted;
             e.orbit = orbit;
+            e.proof_times = times;
         }
         e.sim = Some(sim);
     }

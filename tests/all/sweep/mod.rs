@@ -4,3 +4,4 @@
 mod cli;
 mod curves;
 mod grid;
+mod proofs;
