@@ -63,25 +63,37 @@ pub(super) fn parse_box(text: &str) -> Result<([Q; DIMS], [Q; DIMS]), String> {
     Ok((corner(a)?, corner(b)?))
 }
 
-fn validate(a: &BasinArgs) -> Result<BasinRequest, String> {
-    let orbit = a.body.request(200, a.orbit_depth.min(4))?;
-    let (lo, hi) = match &a.drop_box {
-        Some(t) => parse_box(t)?,
-        None => BasinRequest::paper_box(),
-    };
+/// The checks `basin` and `basin-map` share: every coordinate of the box has lo < hi, h > 0, and
+/// depth and prefix within the kernel's limits.
+pub(super) fn check_box_and_limits(
+    lo: &[Q; DIMS],
+    hi: &[Q; DIMS],
+    depth: usize,
+    max_prefix: usize,
+) -> Result<(), String> {
     if let Some(k) = (0..DIMS).find(|&k| lo[k] >= hi[k]) {
         return Err(format!("--box: coordinate {} has lo >= hi", k + 1));
     }
     if lo[4] <= Q::int(0) {
         return Err("--box: h must be > 0".into());
     }
-    if a.depth > chatter_kernel::basin::MAX_PATH || a.max_prefix > chatter_kernel::basin::MAX_PREFIX {
+    if depth > chatter_kernel::basin::MAX_PATH || max_prefix > chatter_kernel::basin::MAX_PREFIX {
         return Err(format!(
             "--depth at most {}, --max-prefix at most {}",
             chatter_kernel::basin::MAX_PATH,
             chatter_kernel::basin::MAX_PREFIX
         ));
     }
+    Ok(())
+}
+
+fn validate(a: &BasinArgs) -> Result<BasinRequest, String> {
+    let orbit = a.body.request(200, a.orbit_depth.min(4))?;
+    let (lo, hi) = match &a.drop_box {
+        Some(t) => parse_box(t)?,
+        None => BasinRequest::paper_box(),
+    };
+    check_box_and_limits(&lo, &hi, a.depth, a.max_prefix)?;
     if !(a.entry > 0.0 && a.entry <= 1.0) {
         return Err(format!("--entry: {} is not in (0, 1]", a.entry));
     }

@@ -85,19 +85,7 @@ fn validate(a: &BasinMapArgs) -> Result<MapRequest, String> {
     grid.validate()?;
     let pattern = a.pattern.as_deref().map(|p| super::orbit_cmd::parse_pattern(p, a.n)).transpose()?;
     let (lo, hi) = parse_box(a.drop_box.as_deref().unwrap_or(TINY_BOX))?;
-    if let Some(k) = (0..lo.len()).find(|&k| lo[k] >= hi[k]) {
-        return Err(format!("--box: coordinate {} has lo >= hi", k + 1));
-    }
-    if lo[4] <= Q::int(0) {
-        return Err("--box: h must be > 0".into());
-    }
-    if a.depth > chatter_kernel::basin::MAX_PATH || a.max_prefix > chatter_kernel::basin::MAX_PREFIX {
-        return Err(format!(
-            "--depth at most {}, --max-prefix at most {}",
-            chatter_kernel::basin::MAX_PATH,
-            chatter_kernel::basin::MAX_PREFIX
-        ));
-    }
+    super::basin_cmd::check_box_and_limits(&lo, &hi, a.depth, a.max_prefix)?;
     if a.jobs.is_some_and(|j| !(1..=1024).contains(&j)) {
         return Err("--jobs: give a number of threads in 1..=1024".into());
     }

@@ -6,7 +6,7 @@
 use super::basin::ICC;
 use super::cover::UNDECIDED;
 use super::map::{CC, COMPLETE, body_name, curve_entry};
-use super::{Entry, Figure, LABEL, Sample, TICKS, TITLE, err, legend};
+use super::{Entry, Figure, Sample, err, legend};
 use crate::exact::{Q, QExt};
 use crate::sweep::curves::Curves;
 use crate::sweep::grid::{Axis, Variable};
@@ -118,22 +118,7 @@ impl Figure for BasinMapFigure {
         let (left, right) = root.split_horizontally(840);
         let (x0, x1) = (self.x.lo.to_f64(), self.x.hi.to_f64());
         let (g0, g1) = (self.gamma.lo.to_f64(), self.gamma.hi.to_f64());
-        let mut chart = ChartBuilder::on(&left)
-            .caption(&self.title, (super::FONT, TITLE))
-            .margin(18)
-            .x_label_area_size(62)
-            .y_label_area_size(76)
-            .build_cartesian_2d(x0..x1, g0..g1)
-            .map_err(err)?;
-        chart
-            .configure_mesh()
-            .disable_mesh()
-            .x_desc(if self.variable == Variable::Rho { "ρ = √κ" } else { "κ" })
-            .y_desc("γ")
-            .axis_desc_style((super::FONT, LABEL))
-            .label_style((super::FONT, TICKS))
-            .draw()
-            .map_err(err)?;
+        let mut chart = super::map::plane_chart(&left, &self.title, (x0, x1), (g0, g1), self.variable)?;
         let (dx, dg) = ((x1 - x0) / f64::from(self.x.steps), (g1 - g0) / f64::from(self.gamma.steps));
         let mut bars = Vec::new();
         for c in &self.cells {

@@ -180,6 +180,33 @@ impl MapFigure {
     }
 }
 
+/// The (ρ or κ, γ) plane of a map figure with its caption and axes, no mesh (map, basin map).
+pub(crate) fn plane_chart<'a, DB: DrawingBackend>(
+    area: &'a DrawingArea<DB, Shift>,
+    title: &str,
+    x: (f64, f64),
+    g: (f64, f64),
+    variable: Variable,
+) -> Result<MapChart<'a, 'a, DB>, String> {
+    let mut chart = ChartBuilder::on(area)
+        .caption(title, (super::FONT, TITLE))
+        .margin(18)
+        .x_label_area_size(62)
+        .y_label_area_size(76)
+        .build_cartesian_2d(x.0..x.1, g.0..g.1)
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_desc(x_name(variable))
+        .y_desc("γ")
+        .axis_desc_style((super::FONT, LABEL))
+        .label_style((super::FONT, TICKS))
+        .draw()
+        .map_err(err)?;
+    Ok(chart)
+}
+
 pub(crate) fn draw_lines<DB: DrawingBackend>(
     chart: &mut MapChart<'_, '_, DB>,
     lines: &[Polyline],
@@ -208,22 +235,7 @@ impl Figure for MapFigure {
         root.fill(&WHITE).map_err(err)?;
         let (left, right) = root.split_horizontally(840);
         let ((x0, x1), (g0, g1)) = ranges(&self.grid);
-        let mut chart = ChartBuilder::on(&left)
-            .caption(&self.title, (super::FONT, TITLE))
-            .margin(18)
-            .x_label_area_size(62)
-            .y_label_area_size(76)
-            .build_cartesian_2d(x0..x1, g0..g1)
-            .map_err(err)?;
-        chart
-            .configure_mesh()
-            .disable_mesh()
-            .x_desc(x_name(self.grid.variable))
-            .y_desc("γ")
-            .axis_desc_style((super::FONT, LABEL))
-            .label_style((super::FONT, TICKS))
-            .draw()
-            .map_err(err)?;
+        let mut chart = plane_chart(&left, &self.title, (x0, x1), (g0, g1), self.grid.variable)?;
         let (dx, dg) = ((x1 - x0) / self.grid.x.steps as f64, (g1 - g0) / self.grid.gamma.steps as f64);
         let ny = self.grid.gamma.steps as usize;
         let centre =
