@@ -106,13 +106,15 @@ fn a_pentagon_drop_that_the_paper_protocol_calls_cc_is_proved_icc() {
 
 /// Issue 22: drops at the pentagon's and the octagon's band points, where S_1's criterion fails,
 /// are proved CC in Q(cos 2π/n) by the corpus's orbit certificates (seeds whose f64 runs settle
-/// into the certified cycle; most drops there end in ICC; at n = 8 the mirror cycle 6,6,6,6 of
-/// other seeds is not the certificate's, up to rotation). Without the certificate: no proof.
+/// into the certified cycle; most drops there end in ICC; at n = 8 the corpus has both the cycle
+/// 2,2,2,2 and its mirror image 6,6,6,6, which other seeds settle into and which is not the
+/// first one up to rotation). Without the certificate: no proof.
 #[test]
 fn pentagon_and_octagon_band_drops_are_proved_cc_by_the_corpus_orbit_certificates() {
     for (n, kappa, gamma, file, seeds) in [
         (5, "961/25600", "61/160", "orbit-n5-kappa961_25600-gamma61_160.ron", [29, 68]),
         (8, "1/100", "2/5", "orbit-n8-kappa1_100-gamma2_5.ron", [15, 43]),
+        (8, "1/100", "2/5", "orbit-n8-kappa1_100-gamma2_5-mirror.ron", [4, 11]),
     ] {
         let model = polygon(n, kappa, gamma);
         let mut sets = Certified::empty();
@@ -258,10 +260,11 @@ fn the_command_refuses_certificates_that_cannot_serve() {
 /// every orbit certificate of the corpus with drops that enter it: n = 3, 5, 8).
 #[test]
 fn orbit_entries_bound_the_time_to_rest_and_simulations_respect_the_bound() {
-    let cases: [(u64, &str, &str, &str, &[u64]); 3] = [
+    let cases: [(u64, &str, &str, &str, &[u64]); 4] = [
         (3, "1/8", "3/20", "orbit-n3-kappa1_8-gamma3_20.ron", &[0, 1, 2, 3]),
         (5, "961/25600", "61/160", "orbit-n5-kappa961_25600-gamma61_160.ron", &[29, 68]),
         (8, "1/100", "2/5", "orbit-n8-kappa1_100-gamma2_5.ron", &[15, 43]),
+        (8, "1/100", "2/5", "orbit-n8-kappa1_100-gamma2_5-mirror.ron", &[4, 11]),
     ];
     let mut compared = 0;
     for (n, kappa, gamma, file, seeds) in cases {
