@@ -70,6 +70,10 @@ done <<'REFUTATIONS'
 6 1/20 1/10 effectively-invariant refutation-n6-kappa1_20-gamma1_10.ron
 2 1/3 1/10 effectively-invariant refutation-n2-kappa1_3-gamma1_10.ron
 REFUTATIONS
+# A general body given by its full inertia tensor (rule K0 checks that J is its J_eff): the
+# catalogue's lander, built from its 3-D geometry (docs/bodies.md).
+"$bin" certify --body lander --gamma 1/20 -o "$out/convex-lander-gamma1_20-inertia-tensor.ron" >/dev/null
+written=$((written + 1))
 # JSON twins (docs/certificate-format.md §11) of the doc example and of a refutation.
 for name in doc-example-square refutation-n4-kappa1_6-gamma1_20; do
   "$bin" convert "$out/$name.ron" --to json -o "$out/$name.json"

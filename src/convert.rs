@@ -97,7 +97,7 @@ pub fn refutation_to_json(r: &Refutation) -> String {
 /// Writes a family certificate (a general convex body, docs/certificate-format.md §13) as its
 /// JSON twin: one contact per line, each cone as a list of generators one per line.
 pub fn convex_to_json(c: &ConvexCertificate) -> String {
-    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma } = &c.body;
+    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma, inertia_tensor } = &c.body;
     let tuple = |xs: &[&String]| format!("[{}]", xs.iter().map(|s| quoted(s)).collect::<Vec<_>>().join(", "));
     let contacts: Vec<String> = contacts.iter().map(|(x, y)| format!("    {}", tuple(&[x, y]))).collect();
     let cones: Vec<String> = c
@@ -110,12 +110,15 @@ pub fn convex_to_json(c: &ConvexCertificate) -> String {
         })
         .collect();
     format!(
-        "{{\n    \"format\": {},\n    \"version\": {},\n    \"body\": {{\"ConvexPolygon\": {{\n        \"contacts\": {},\n        \"inertia\": {},\n        \"gamma\": {}\n    }}}},\n    \"coordinates\": \"PaperVelocities\",\n    \"claim\": \"{}\",\n    \"cones\": {},\n    \"producer\": {}\n}}\n",
+        "{{\n    \"format\": {},\n    \"version\": {},\n    \"body\": {{\"ConvexPolygon\": {{\n        \"contacts\": {},\n        \"inertia\": {},\n        \"gamma\": {}{}\n    }}}},\n    \"coordinates\": \"PaperVelocities\",\n    \"claim\": \"{}\",\n    \"cones\": {},\n    \"producer\": {}\n}}\n",
         quoted(&c.format),
         c.version,
         list(&contacts).replace("\n    ]", "\n        ]"),
         tuple(&[&inertia.0, &inertia.1, &inertia.2]),
         quoted(gamma),
+        inertia_tensor.as_ref().map_or(String::new(), |t| {
+            format!(",\n        \"inertia_tensor\": {}", tuple(&[&t.0, &t.1, &t.2, &t.3, &t.4, &t.5]))
+        }),
         c.claim.name(),
         list(&cones),
         quoted(&c.producer)

@@ -58,7 +58,7 @@ pub fn write(c: &Certificate) -> String {
 /// per line, cones in order.
 pub fn write_convex(c: &ConvexCertificate) -> String {
     let q = |s: &str| quoted(s);
-    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma } = &c.body;
+    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma, inertia_tensor } = &c.body;
     let mut out = String::new();
     out.push_str("Certificate(\n");
     out.push_str(&format!("    format: {},\n", q(&c.format)));
@@ -71,6 +71,10 @@ pub fn write_convex(c: &ConvexCertificate) -> String {
     out.push_str("        ],\n");
     out.push_str(&format!("        inertia: ({}, {}, {}),\n", q(&inertia.0), q(&inertia.1), q(&inertia.2)));
     out.push_str(&format!("        gamma: {},\n", q(gamma)));
+    if let Some(t) = inertia_tensor {
+        let six = [&t.0, &t.1, &t.2, &t.3, &t.4, &t.5].map(|x| q(x)).join(", ");
+        out.push_str(&format!("        inertia_tensor: Some(({six})),\n"));
+    }
     out.push_str("    ),\n");
     out.push_str("    coordinates: PaperVelocities,\n");
     out.push_str(&format!("    claim: {},\n", c.claim.name()));

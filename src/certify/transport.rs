@@ -101,6 +101,7 @@ pub fn convex_certificate(
             contacts: body.contacts().iter().map(|r| (t(&r[0]), t(&r[1]))).collect(),
             inertia: (t(&j[0][0]), t(&j[0][1]), t(&j[1][1])),
             gamma: t(body.gamma()),
+            inertia_tensor: None,
         },
         coordinates: ConvexCoordinates::PaperVelocities,
         claim,

@@ -5,16 +5,22 @@
 use super::certify_cmd::{CertifyArgs, ms};
 use super::convex_args::GeneralBody;
 use super::{Env, Outcome, emit, emit_report};
+use crate::bodies::inertia::Tensor;
 use crate::certify::Failure;
 use crate::certify::convex::{ConvexReport, ConvexRequest, certify_convex};
 use crate::exact::parse_user_number;
 use crate::write::write_convex;
+use chatter_kernel::exact::{ParseLimits, to_canonical};
+use chatter_kernel::syntax::family::ConvexBodyText;
+use chatter_kernel::verify::{Backend, Verdict, verify_convex_on};
 use std::path::PathBuf;
 
 /// Validated arguments of a general body's certification.
 struct Validated {
     req: ConvexRequest,
     description: String,
+    /// The full inertia tensor the body was given by, recorded in the certificate (rule K0).
+    tensor: Option<Tensor>,
     output: Option<PathBuf>,
     json: bool,
     timings: bool,
@@ -25,7 +31,8 @@ fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
         return Err("--gamma: intervals (box certificates) are for regular polygons; give one number".into());
     }
     let gamma = parse_user_number(a.body.gamma_text()).map_err(|e| format!("--gamma: {e}"))?;
-    let Some(GeneralBody { body, description }) = a.general.parse(&gamma, a.body.gamma.is_some())? else {
+    let Some(GeneralBody { body, description, tensor }) = a.general.parse(&gamma, a.body.gamma.is_some())?
+    else {
         return Err("no general body given (--rectangle, --box, --polygon or --body)".into());
     };
     if a.max_vertices < 3 {
@@ -36,7 +43,7 @@ fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
     req.finder.max_iterations = a.max_iterations;
     req.finder.max_vertices = a.max_vertices;
     req.backends = env.backends;
-    Ok(Validated { req, description, output: a.output, json: a.json, timings: a.timings })
+    Ok(Validated { req, description, tensor, output: a.output, json: a.json, timings: a.timings })
 }
 
 fn summary(v: &Validated, r: &ConvexReport) -> String {
@@ -78,7 +85,10 @@ pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
         Ok(v) => v,
         Err(e) => return Outcome::Usage(e),
     };
-    let report = certify_convex(&v.req);
+    let mut report = certify_convex(&v.req);
+    if let Some(t) = &v.tensor {
+        record_tensor(&mut report, t, &v.req.backends);
+    }
     if let (Ok(cert), Some(path)) = (&report.result, &v.output)
         && let Err(e) = std::fs::write(path, write_convex(cert))
     {
@@ -94,5 +104,25 @@ pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
         Ok(_) => Outcome::Success,
         Err(Failure::Internal(s)) => Outcome::Internal(s.clone()),
         Err(_) => Outcome::Negative,
+    }
+}
+
+/// Records the full inertia tensor in an accepted certificate and has the kernel check the file
+/// again with it (rule K0: J is its J_eff, docs/model.md Proposition 11.0), so that what is
+/// written is what the kernel accepted.
+fn record_tensor(report: &mut ConvexReport, t: &Tensor, backends: &[Backend]) {
+    let Ok(cert) = &mut report.result else { return };
+    let [a, b, c, d, e, f] = t.urdf().map(|x| to_canonical(&x));
+    let ConvexBodyText::ConvexPolygon { inertia_tensor, .. } = &mut cert.body;
+    *inertia_tensor = Some((a, b, c, d, e, f));
+    let start = std::time::Instant::now();
+    let verdict = verify_convex_on(cert, ParseLimits::default(), backends);
+    report.timings.kernel += start.elapsed();
+    match verdict {
+        Verdict::Accepted(_) => report.notes.push(
+            "the certificate records the full inertia tensor; the kernel checked that J is its J_eff (rule K0)".into(),
+        ),
+        Verdict::Rejected(r) => report.result = Err(Failure::Kernel(r)),
+        Verdict::Disagree(s) => report.result = Err(Failure::Internal(s)),
     }
 }

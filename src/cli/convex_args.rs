@@ -71,6 +71,9 @@ pub struct GeneralBody {
     pub body: ConvexBody<Q>,
     /// E.g. "rectangle 2 x 1 (uniform plate)".
     pub description: String,
+    /// The full inertia tensor per unit mass about the centre of mass, when the body was given
+    /// by one (its J_eff is `body`'s J; certificates record it for rule K0).
+    pub tensor: Option<Tensor>,
 }
 
 fn numbers(flag: &str, s: &str, count: usize) -> Result<Vec<Q>, String> {
@@ -86,13 +89,13 @@ fn all_numbers(flag: &str, s: &str) -> Result<Vec<Q>, String> {
 }
 
 /// `--inertia`: three numbers (J) or six (the full tensor in URDF's order, reduced to J_eff).
-fn inertia(s: &str) -> Result<(Mat2<Q>, &'static str), String> {
+fn inertia(s: &str) -> Result<(Mat2<Q>, &'static str, Option<Tensor>), String> {
     let v = all_numbers("--inertia", s)?;
     match v.as_slice() {
-        [a, b, c] => Ok(([[a.clone(), b.clone()], [b.clone(), c.clone()]], "given inertia")),
+        [a, b, c] => Ok(([[a.clone(), b.clone()], [b.clone(), c.clone()]], "given inertia", None)),
         [_, _, _, _, _, _] => {
             let t = Tensor::from_urdf(&std::array::from_fn(|k| v[k].clone()));
-            Ok((effective_inertia("--inertia", &t)?, "given inertia tensor, J_eff"))
+            Ok((effective_inertia("--inertia", &t)?, "given inertia tensor, J_eff", Some(t)))
         }
         _ => Err(format!(
             "--inertia: expected 3 numbers (JXX,JXY,JYY) or 6 (IXX,IXY,IXZ,IYY,IYZ,IZZ), found {}",
@@ -176,7 +179,7 @@ impl ConvexArgs {
             positive("--rectangle", &v)?;
             let body = rectangle_plate(&v[0], &v[1], g()).map_err(|e| body_error("--rectangle", e))?;
             let description = format!("rectangle {} x {} (uniform plate)", v[0], v[1]);
-            return Ok(Some(GeneralBody { body, description }));
+            return Ok(Some(GeneralBody { body, description, tensor: None }));
         }
         if let Some(s) = &self.box_ {
             let v = numbers("--box", s, 3)?;
@@ -184,7 +187,7 @@ impl ConvexArgs {
             let body = uniform_box(&v[0], &v[1], &v[2], g()).map_err(|e| body_error("--box", e))?;
             let description =
                 format!("box {} x {} x {} (uniform, on its {} x {} face)", v[0], v[1], v[2], v[0], v[1]);
-            return Ok(Some(GeneralBody { body, description }));
+            return Ok(Some(GeneralBody { body, description, tensor: None }));
         }
         if let Some(s) = &self.polygon {
             let pts = points(s)?;
@@ -196,14 +199,14 @@ impl ConvexArgs {
                 (true, None) => {
                     let body = polygon_plate(&pts, g()).map_err(|e| body_error("--polygon", e))?;
                     let description = format!("uniform plate of a polygon with {} corners", pts.len());
-                    Ok(Some(GeneralBody { body, description }))
+                    Ok(Some(GeneralBody { body, description, tensor: None }))
                 }
                 (false, None) => {
                     Err("--polygon needs --plate or --inertia JXX,JXY,JYY (or IXX,IXY,IXZ,IYY,IYZ,IZZ)"
                         .into())
                 }
                 (false, Some(j)) => {
-                    let (inertia, how) = inertia(j)?;
+                    let (inertia, how, tensor) = inertia(j)?;
                     let c = match &self.centre {
                         None => vec![Q::int(0), Q::int(0)],
                         Some(c) => numbers("--centre", c, 2)?,
@@ -212,7 +215,7 @@ impl ConvexArgs {
                     let body = ConvexBody::new(pts, inertia, g())
                         .map_err(|e| body_error("--polygon/--inertia", e))?;
                     let description = format!("polygon with {} contacts, {how}", body.n());
-                    Ok(Some(GeneralBody { body, description }))
+                    Ok(Some(GeneralBody { body, description, tensor }))
                 }
             };
         }
@@ -222,7 +225,7 @@ impl ConvexArgs {
                     return Err("--contacts is for URDF files, not for the catalogue's bodies".into());
                 }
                 let description = format!("{} (general catalogue)", entry.name);
-                return Ok(Some(GeneralBody { body: entry.body, description }));
+                return Ok(Some(GeneralBody { body: entry.body, description, tensor: Some(entry.tensor) }));
             }
             let path = Path::new(value);
             let flag = format!("--body {}", path.display());
@@ -234,9 +237,9 @@ impl ConvexArgs {
             };
             let body =
                 ConvexBody::new(data.contacts, data.inertia, gamma).map_err(|e| body_error(&flag, e))?;
-            let tensor = if data.tensor.is_some() { ", inertia tensor, J_eff" } else { "" };
-            let description = format!("body file {} ({} contacts{tensor})", path.display(), body.n());
-            return Ok(Some(GeneralBody { body, description }));
+            let how = if data.tensor.is_some() { ", inertia tensor, J_eff" } else { "" };
+            let description = format!("body file {} ({} contacts{how})", path.display(), body.n());
+            return Ok(Some(GeneralBody { body, description, tensor: data.tensor }));
         }
         Ok(None)
     }

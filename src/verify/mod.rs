@@ -87,6 +87,11 @@ pub struct FileVerdict {
     /// For a box certificate: [lo, hi] of kappa and of gamma.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub region: Option<[[String; 2]; 2]>,
+    /// For an accepted family certificate that records a full inertia tensor (Ixx, Ixy, Ixz,
+    /// Iyy, Iyz, Izz per unit mass about the centre of mass): the tensor, of which the kernel
+    /// checked that the planar J is J_eff (rule K0, docs/model.md Proposition 11.0).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub inertia_tensor: Option<[String; 6]>,
     /// For a box certificate with rule R4: the sub-boxes of the Bernstein subdivision.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pcc_boxes: Option<usize>,
@@ -142,6 +147,7 @@ impl FileVerdict {
             reason: None,
             gzip: None,
             region: None,
+            inertia_tensor: None,
             pcc_boxes: None,
             orbit_boxes: None,
             refutation: None,
@@ -228,8 +234,12 @@ impl FileVerdict {
             }
             _ => String::new(),
         };
+        let tensor = match &self.inertia_tensor {
+            Some(t) => format!("; J is J_eff of the recorded inertia tensor ({}) (rule K0)", t.join(", ")),
+            None => String::new(),
+        };
         format!(
-            "{}: OK ({}, n = {}{region}, {} generators{red}, denominators <= {} bits{pcc}{gzip}{vacuous}{finite})",
+            "{}: OK ({}, n = {}{region}, {} generators{red}, denominators <= {} bits{pcc}{tensor}{gzip}{vacuous}{finite})",
             self.path,
             self.claim.unwrap_or("?"),
             self.n.unwrap_or(0),
@@ -322,6 +332,14 @@ enum Kind {
     Proof,
 }
 
+/// The full inertia tensor an accepted family certificate records (rule K0 checked it).
+fn recorded_tensor(text: &str, encoding: Encoding) -> Option<[String; 6]> {
+    use chatter_kernel::syntax::family::{ConvexBodyText, ConvexCertificate};
+    let cert: ConvexCertificate = chatter_kernel::syntax::read(text, encoding).ok()?;
+    let ConvexBodyText::ConvexPolygon { inertia_tensor, .. } = cert.body;
+    inertia_tensor.map(|(a, b, c, d, e, f)| [a, b, c, d, e, f])
+}
+
 /// Verifies certificate or refutation text on the backends; the kind of a rejected certificate
 /// is looked up only when its format is not a certificate's.
 fn verify_any(
@@ -333,7 +351,11 @@ fn verify_any(
     let path = Path::new("");
     let verdict = verify_text_in(text, encoding, limits, backends);
     if !matches!(&verdict, Verdict::Rejected(r) if r.code == Code::WrongFormat || r.code == Code::Syntax) {
-        return (verdict_of(path, verdict), Kind::Certificate);
+        let mut v = verdict_of(path, verdict);
+        if v.status == Status::Ok {
+            v.inertia_tensor = recorded_tensor(text, encoding);
+        }
+        return (v, Kind::Certificate);
     }
     match format_of_in(text, encoding).as_deref() {
         Some(chatter_kernel::refute::FORMAT) => {

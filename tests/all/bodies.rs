@@ -1,10 +1,12 @@
 //! Tests of `bodies`: kappa derived from geometry, the catalogue's thresholds and comparisons;
 //! [`convex`]: the general convex bodies of `bodies::convex`; [`general`]: the named ones;
-//! [`inertia`]: full inertia tensors and J_eff against a 3-D impulse computation.
+//! [`inertia`]: full inertia tensors and J_eff against a 3-D impulse computation; [`rule_k0`]: the
+//! kernel's check that a family certificate's J is J_eff of the tensor it records.
 
 mod convex;
 mod general;
 mod inertia;
+mod rule_k0;
 
 use chatter::bodies::{self, PaperValue, catalogue, platonic, prism, thresholds, uniform_rod};
 use chatter::exact::{Q, Ring};

@@ -80,6 +80,8 @@ pub(super) fn words(detail: &Detail, locus: &Locus) -> String {
         Detail::Internal(i) => internal(i),
         #[cfg(feature = "family")]
         Detail::Kind(KindDetail::Convex(e)) => format!("{e} (docs/model.md §11.1)"),
+        #[cfg(feature = "family")]
+        Detail::Kind(KindDetail::Tensor(f)) => tensor(f),
         #[allow(unreachable_patterns)]
         _ => format!("{detail:?}"),
     }
@@ -339,3 +341,19 @@ impl std::fmt::Display for crate::model::convex::ConvexBodyError {
 
 #[cfg(feature = "family")]
 impl std::error::Error for crate::model::convex::ConvexBodyError {}
+
+/// Rule K0 (docs/model.md Proposition 11.0), in words.
+#[cfg(feature = "family")]
+fn tensor(f: &crate::rules::family::TensorFailure) -> String {
+    use crate::rules::family::TensorFailure as T;
+    match f {
+        T::ZzNotPositive(zz) => {
+            format!("Izz = {zz} <= 0: no rigid body has this inertia tensor (rule K0)")
+        }
+        T::Differs { entry, written, derived } => format!(
+            "the planar inertia J is not J_eff of the inertia tensor: {entry} is {written}, but the \
+             tensor's J_eff = [[Ixx, Ixy], [Ixy, Iyy]] - b b^T / Izz, b = (Ixz, Iyz), has {entry} = \
+             {derived} (rule K0, docs/model.md Proposition 11.0)"
+        ),
+    }
+}

@@ -14,6 +14,8 @@ use crate::model::convex::shape::ConvexBodyError;
 use crate::rules::basin::Failure as BasinFailure;
 #[cfg(feature = "boxes")]
 use crate::rules::boxes::PccPolynomial;
+#[cfg(feature = "family")]
+use crate::rules::family::TensorFailure;
 #[cfg(feature = "orbit")]
 use crate::rules::orbit::Failure as OrbitFailure;
 #[cfg(feature = "proof")]
@@ -59,6 +61,8 @@ macro_rules! codes {
             SetNotInvariant = "set-not-invariant",
             /// Orbit condition 3 is not shown on a sub-box.
             NoContraction = "no-contraction",
+            /// A family certificate's J is not J_eff of its full inertia tensor (rule K0).
+            InertiaNotDerived = "inertia-not-derived",
             /// A basin certificate's box, paths, prefixes or embedded orbit certificate's body are out of range.
             BasinOutOfRange = "basin-out-of-range",
             /// A basin certificate's leaves are not the leaves of one bisection tree of its box.
@@ -178,6 +182,9 @@ pub enum KindDetail {
     /// A family certificate's body.
     #[cfg(feature = "family")]
     Convex(ConvexBodyError),
+    /// Rule K0: a family certificate's J is not J_eff of its inertia tensor.
+    #[cfg(feature = "family")]
+    Tensor(TensorFailure),
     /// An orbit certificate's failure.
     #[cfg(feature = "orbit")]
     Orbit(OrbitFailure),

@@ -7,6 +7,8 @@
 //! - convex body: (A1) strictly convex counter-clockwise contacts, (A2) the origin strictly
 //!   inside, J symmetric positive definite, 0 <= γ <= 1 (`unsupported-body`,
 //!   `parameter-out-of-range`); range of γ: 0 < γ < 1 for the claims about drops;
+//! - K0 (with `inertia_tensor`): Izz > 0 and J = J_eff = [[Ixx, Ixy], [Ixy, Iyy]] - b bᵀ / Izz,
+//!   b = (Ixz, Iyz), exactly (`inertia-not-derived`; docs/model.md Proposition 11.0);
 //! - count: one cone per contact, three coordinates per generator (`wrong-arity`);
 //! - K1: each K_i is a 3-D cone with every generator in v < 0 (`generator-not-below`,
 //!   `degenerate-cone`);
@@ -28,7 +30,7 @@ use crate::model::linalg::{Vec3, mat_vec};
 use crate::model::pcc::PccExclusion;
 use crate::reject::{Code, Counted, Detail, Internal, KindDetail, KindLocus, Locus, Rejection};
 use crate::syntax::cone::Claim;
-use crate::syntax::family::{ConvexBodyText, ConvexCertificate};
+use crate::syntax::family::{ConvexBodyText, ConvexCertificate, TensorText};
 use crate::syntax::numbers::{at_most, in_time, number, total};
 use crate::syntax::{Kind, expect};
 
@@ -36,6 +38,59 @@ use crate::syntax::{Kind, expect};
 pub fn check<F: Field>(cert: &ConvexCertificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
     prelude(cert, limits)?;
     let body = body::<F>(cert, limits)?;
+    if let ConvexBodyText::ConvexPolygon { inertia_tensor: Some(t), .. } = &cert.body {
+        derived(&body, t, limits)?;
+    }
+    rest(cert, body, limits)
+}
+
+/// K0: J is J_eff of the full tensor (Proposition 11.0): Izz > 0 (with J positive definite,
+/// the tensor is then positive definite) and each entry of J equal to its Schur complement's.
+fn derived<F: Field>(body: &ConvexBody<F>, t: &TensorText, limits: ParseLimits) -> Result<(), Rejection> {
+    let names = ["Ixx", "Ixy", "Ixz", "Iyy", "Iyz", "Izz"];
+    let texts = [&t.0, &t.1, &t.2, &t.3, &t.4, &t.5];
+    let mut v = Vec::with_capacity(6);
+    for (name, text) in names.iter().zip(texts) {
+        v.push(number::<F>(&format!("body.inertia_tensor.{name}"), text, limits)?);
+    }
+    let fail = |f| Rejection::at(Code::InertiaNotDerived, "body.inertia_tensor", KindDetail::Tensor(f));
+    if !v[5].is_positive() {
+        return Err(fail(TensorFailure::ZzNotPositive(to_canonical(&v[5]))));
+    }
+    let (h, b) = ([[&v[0], &v[1]], [&v[1], &v[3]]], [&v[2], &v[4]]);
+    for (entry, (r, c)) in ["Jxx", "Jxy", "Jyy"].into_iter().zip([(0, 0), (0, 1), (1, 1)]) {
+        let schur = b[r].times(b[c]).over(&v[5]).map(|x| h[r][c].minus(&x));
+        let written = &body.inertia()[r][c];
+        if schur.as_ref() != Some(written) {
+            let derived = schur.map_or_else(String::new, |x| to_canonical(&x));
+            return Err(fail(TensorFailure::Differs { entry, written: to_canonical(written), derived }));
+        }
+    }
+    Ok(())
+}
+
+/// Why rule K0 fails.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum TensorFailure {
+    /// Izz <= 0 (as written): no rigid body has this tensor.
+    ZzNotPositive(String),
+    /// An entry of J (`Jxx`, `Jxy` or `Jyy`) differs from J_eff's (as written, as derived).
+    Differs {
+        /// The entry.
+        entry: &'static str,
+        /// J's entry, canonical text.
+        written: String,
+        /// J_eff's entry, canonical text.
+        derived: String,
+    },
+}
+
+/// The rules after the body (and K0): the range of γ, K1 to K4.
+fn rest<F: Field>(
+    cert: &ConvexCertificate,
+    body: ConvexBody<F>,
+    limits: ParseLimits,
+) -> Result<Accepted, Rejection> {
     let g = body.gamma();
     if cert.claim > Claim::EffectivelyInvariant && (g.is_zero() || *g == F::one()) {
         let detail = Detail::GammaForClaim(to_canonical(g), cert.claim, true);
@@ -104,7 +159,7 @@ fn prelude(cert: &ConvexCertificate, limits: ParseLimits) -> Result<(), Rejectio
 /// The body: canonical numbers, and the assumptions of docs/model.md §11.1 checked by
 /// [`ConvexBody::new`].
 fn body<F: Field>(cert: &ConvexCertificate, limits: ParseLimits) -> Result<ConvexBody<F>, Rejection> {
-    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma } = &cert.body;
+    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma, .. } = &cert.body;
     let mut points = Vec::with_capacity(contacts.len());
     for (k, (x, y)) in contacts.iter().enumerate() {
         in_time(limits, "reading the contacts")?;

@@ -49,8 +49,16 @@ pub enum ConvexBodyText {
         inertia: (String, String, String),
         /// Newton's coefficient of restitution.
         gamma: String,
+        /// Optional: the full inertia tensor per unit mass about the centre of mass, in URDF's
+        /// order (Ixx, Ixy, Ixz, Iyy, Iyz, Izz), of which `inertia` must be J_eff (rule K0,
+        /// docs/model.md Proposition 11.0).
+        #[serde(default)]
+        inertia_tensor: Option<TensorText>,
     },
 }
+
+/// Six canonical numbers: a full inertia tensor in URDF's order (Ixx, Ixy, Ixz, Iyy, Iyz, Izz).
+pub type TensorText = (String, String, String, String, String, String);
 
 /// The coordinates of a family certificate's generators.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
@@ -67,13 +75,15 @@ impl Schema for ConvexCertificate {
 impl ConvexCertificate {
     /// Every number of the file as text, in order (for `max-total-digits`).
     pub fn numbers(&self) -> impl Iterator<Item = &str> {
-        let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma } = &self.body;
+        let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma, inertia_tensor } = &self.body;
         let body = contacts.iter().flat_map(|(x, y)| [x.as_str(), y.as_str()]).chain([
             inertia.0.as_str(),
             inertia.1.as_str(),
             inertia.2.as_str(),
             gamma.as_str(),
         ]);
-        body.chain(self.cones.iter().flatten().flat_map(|g| g.0.iter().map(String::as_str)))
+        let tensor =
+            inertia_tensor.iter().flat_map(|t| [&t.0, &t.1, &t.2, &t.3, &t.4, &t.5].map(String::as_str));
+        body.chain(tensor).chain(self.cones.iter().flatten().flat_map(|g| g.0.iter().map(String::as_str)))
     }
 }

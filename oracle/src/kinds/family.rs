@@ -7,7 +7,7 @@ use crate::claim::Claim;
 use crate::convex::model::{Body, BodyFault};
 use crate::convex::rules::check_family;
 use crate::read::Value;
-use crate::read::schema::{integer, list, string, strings, unit_variant, variant, walk};
+use crate::read::schema::{integer, list, optional, string, strings, unit_variant, variant, walk};
 use crate::verdict::{Checked, Fail, Report};
 
 /// The generators of every cone of a family.
@@ -17,6 +17,8 @@ type Cones = Vec<Vec<[Num; 3]>>;
 pub struct FamilyFile<'a> {
     contacts: Vec<Vec<&'a str>>,
     inertia: Vec<&'a str>,
+    /// The optional full inertia tensor (Ixx, Ixy, Ixz, Iyy, Iyz, Izz) as written (rule K0).
+    tensor: Option<Vec<&'a str>>,
     gamma: &'a str,
     claim: Claim,
     cones: Vec<Vec<Vec<&'a str>>>,
@@ -28,10 +30,12 @@ fn body<'a>(value: &'a Value, f: &mut FamilyFile<'a>) -> Checked<()> {
         return Err(Fail::new("unknown-variant", format!("unknown body `{name}`")));
     }
     let fields = fields.ok_or_else(|| Fail::new("syntax", "ConvexPolygon needs its fields"))?;
-    walk(fields, &[("contacts", true), ("inertia", true), ("gamma", true)], |name, v| {
+    let known = [("contacts", true), ("inertia", true), ("gamma", true), ("inertia_tensor", false)];
+    walk(fields, &known, |name, v| {
         match name {
             "contacts" => f.contacts = list(v)?.iter().map(strings).collect::<Checked<_>>()?,
             "inertia" => f.inertia = strings(v)?,
+            "inertia_tensor" => f.tensor = optional(v)?.map(strings).transpose()?,
             _ => f.gamma = string(v)?,
         }
         Ok(())
@@ -43,6 +47,7 @@ pub fn read(v: &Value) -> Checked<FamilyFile<'_>> {
     let mut f = FamilyFile {
         contacts: vec![],
         inertia: vec![],
+        tensor: None,
         gamma: "",
         claim: Claim::EffectivelyInvariant,
         cones: vec![],
@@ -82,7 +87,8 @@ fn size(f: &FamilyFile, limits: &Limits) -> Checked<()> {
     if f.cones.iter().any(|c| c.len() > limits.max_generators) {
         return Err(Fail::new("too-large", "a cone with more generators than max-generators"));
     }
-    let numbers = f.contacts.iter().flatten().chain(&f.inertia).chain([&f.gamma]);
+    let numbers =
+        f.contacts.iter().flatten().chain(&f.inertia).chain([&f.gamma]).chain(f.tensor.iter().flatten());
     let chars: usize = numbers.chain(f.cones.iter().flatten().flatten()).map(|s| s.len()).sum();
     if chars > limits.max_total_digits {
         return Err(Fail::new("too-large", "more characters of numbers than max-total-digits"));
@@ -106,14 +112,42 @@ fn the_body(f: &FamilyFile, limits: &Limits) -> Checked<Body> {
     let j: Vec<Num> =
         f.inertia.iter().map(|s| element("body.inertia", s, &q, limits)).collect::<Checked<_>>()?;
     let gamma = element("body.gamma", f.gamma, &q, limits)?;
-    Body::new(contacts, [j[0].clone(), j[1].clone(), j[2].clone()], gamma).map_err(|e| match e {
-        BodyFault::Gamma => Fail::new("parameter-out-of-range", "gamma must lie in [0, 1]"),
-        BodyFault::Inertia => Fail {
-            codes: vec!["unsupported-body", "parameter-out-of-range"],
-            why: "J is not positive definite".into(),
-        },
-        other => Fail::new("unsupported-body", format!("{other:?}")),
-    })
+    let body =
+        Body::new(contacts, [j[0].clone(), j[1].clone(), j[2].clone()], gamma).map_err(|e| match e {
+            BodyFault::Gamma => Fail::new("parameter-out-of-range", "gamma must lie in [0, 1]"),
+            BodyFault::Inertia => Fail {
+                codes: vec!["unsupported-body", "parameter-out-of-range"],
+                why: "J is not positive definite".into(),
+            },
+            other => Fail::new("unsupported-body", format!("{other:?}")),
+        })?;
+    if let Some(t) = &f.tensor {
+        effective_inertia(t, &j, limits)?;
+    }
+    Ok(body)
+}
+
+/// Rule K0 read from docs/model.md Proposition 11.0: the tensor [[A, b], [bᵀ, c]] (A the
+/// horizontal block, b = (Ixz, Iyz), c = Izz) has c > 0 and A - b bᵀ / c equal to J, entry by
+/// entry (J = (Jxx, Jxy, Jyy)).
+fn effective_inertia(t: &[&str], j: &[Num], limits: &Limits) -> Checked<()> {
+    if t.len() != 6 {
+        return Err(Fail::new("syntax", "the inertia tensor has six numbers"));
+    }
+    let q = Field::rationals();
+    let i: Vec<Num> =
+        t.iter().map(|s| element("body.inertia_tensor", s, &q, limits)).collect::<Checked<_>>()?;
+    let (a, b, c) = ([[&i[0], &i[1]], [&i[1], &i[3]]], [&i[2], &i[4]], &i[5]);
+    if !c.is_positive() {
+        return Err(Fail::new("inertia-not-derived", "Izz <= 0"));
+    }
+    for (k, (r, s)) in [(0, 0), (0, 1), (1, 1)].into_iter().enumerate() {
+        let schur = a[r][s] - &(&(b[r] * b[s]) / c);
+        if schur != j[k] {
+            return Err(Fail::new("inertia-not-derived", format!("J entry {k} is not J_eff's")));
+        }
+    }
+    Ok(())
 }
 
 /// Every content rule evaluated on its own (K1 alone if it fails; then K2, K3, K4), for

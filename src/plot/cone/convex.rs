@@ -26,7 +26,7 @@ fn q(text: &str) -> Result<Q, String> {
 
 /// The exact body of the certificate.
 fn body(b: &ConvexBodyText) -> Result<ConvexBody<Q>, String> {
-    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma } = b;
+    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma, .. } = b;
     let pts = contacts.iter().map(|(x, y)| Ok([q(x)?, q(y)?])).collect::<Result<Vec<_>, String>>()?;
     let jxy = q(&inertia.1)?;
     let j = [[q(&inertia.0)?, jxy.clone()], [jxy, q(&inertia.2)?]];
