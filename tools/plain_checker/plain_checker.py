@@ -55,15 +55,26 @@ def field_locus(path):
 # ---------------------------------------------------------------------------------------------
 
 
+class Pos:
+    """A position in the text; line and column are computed only when an error needs them."""
+
+    __slots__ = ("s", "i")
+
+    def __init__(self, s, i):
+        self.s, self.i = s, i
+
+    def __getitem__(self, k):
+        line = self.s.count("\n", 0, self.i) + 1
+        col = self.i - (self.s.rfind("\n", 0, self.i) + 1) + 1
+        return (line, col)[k]
+
+
 class Text:
     def __init__(self, s):
         self.s, self.i = s, 0
 
     def pos(self, i=None):
-        i = self.i if i is None else i
-        line = self.s.count("\n", 0, i) + 1
-        col = i - (self.s.rfind("\n", 0, i) + 1) + 1
-        return (line, col)
+        return Pos(self.s, self.i if i is None else i)
 
     def fail(self, why, code="syntax", i=None):
         line, col = self.pos(i)
@@ -1067,8 +1078,15 @@ def check_refutation(tree, version, limits):
     claim, _ = enum_of(raw["refutes"], CLAIMS)
     points = [read_point(p) for p in want(raw["points"], "seq", "a list of points")]
     check_limits(tree, len(points), limits["max_generators"], limits["max_total_digits"])
-    n, kappa, gamma, _ = read_body(body, version, "EffectivelyInvariant", limits["max_digits"],
-                                   point_only=True)
+    try:
+        n, kappa, gamma, _ = read_body(body, version, "EffectivelyInvariant",
+                                       limits["max_digits"], point_only=True)
+    except Reject as r:
+        # Not in the docs: chatter names the whole body in a refutation's body errors
+        # (`body.kappa` etc. in a certificate's); observed, see README "Findings".
+        if r.code == "parameter-out-of-range":
+            r.locus = field_locus("body")
+        raise
     coeffs = {}
     for i, p in enumerate(points):
         if p[0] == "Combination":
