@@ -22,6 +22,11 @@ import time
 from fractions import Fraction
 from pathlib import Path
 
+# Numbers of up to max-digits (10,000) digits and the derived ones are far longer than
+# Python's default limit of 4,300 digits for int <-> str conversion.
+if hasattr(sys, "set_int_max_str_digits"):
+    sys.set_int_max_str_digits(0)
+
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
 MAX_DIGITS = 9_990

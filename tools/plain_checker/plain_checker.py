@@ -18,6 +18,11 @@ import sys
 from fractions import Fraction
 from math import gcd
 
+# Numbers of up to max-digits (10,000) digits and the derived ones are far longer than
+# Python's default limit of 4,300 digits for int <-> str conversion.
+if hasattr(sys, "set_int_max_str_digits"):
+    sys.set_int_max_str_digits(0)
+
 MAX_FILE_SIZE = 16 * 1024 * 1024
 MAX_GENERATORS = 100_000
 MAX_TOTAL_DIGITS = 2_000_000
@@ -50,7 +55,7 @@ def field_locus(path):
 #   ("struct", name or None, [(key, value, pos)], pos)   RON Name(k: v) / ( k: v ) / JSON object
 #   ("unit", name, pos)                                  RON bare identifier
 #   ("call", name, [values], pos)                        RON Name(v, ...) e.g. Some("1/2")
-#   ("seq", [values], pos)                               RON tuple or list, JSON array
+#   ("seq", [values], shape, pos)                        shape: RON "tuple" or "list", JSON "array"
 #   ("str", text, pos), ("int", value, pos)
 # ---------------------------------------------------------------------------------------------
 
@@ -218,12 +223,12 @@ def ron_value(t):
         return ("int", t.integer(), pos)
     if c == "[":
         t.i += 1
-        return ("seq", ron_items(t, "]", lambda: ron_value(t)), pos)
+        return ("seq", ron_items(t, "]", lambda: ron_value(t)), "list", pos)
     if c == "(":
         t.i += 1
         if ron_looks_like_fields(t):
             return ("struct", None, ron_items(t, ")", lambda: ron_field(t)), pos)
-        return ("seq", ron_items(t, ")", lambda: ron_value(t)), pos)
+        return ("seq", ron_items(t, ")", lambda: ron_value(t)), "tuple", pos)
     if is_ident_start(c):
         name = ron_ident(t)
         save = t.i
@@ -293,7 +298,7 @@ def json_value(t, must_object=False):
         t.ws()
         if t.peek() == "]":
             t.i += 1
-            return ("seq", items, pos)
+            return ("seq", items, "array", pos)
         while True:
             items.append(json_value(t))
             t.ws()
@@ -303,7 +308,7 @@ def json_value(t, must_object=False):
                 continue
             if c == "]":
                 t.i += 1
-                return ("seq", items, pos)
+                return ("seq", items, "array", pos)
             t.fail("expected ',' or ']'")
     if c == '"':
         return ("str", t.string(), pos)
@@ -370,6 +375,13 @@ def enum_of(v, variants):
     if name not in variants:
         text_fail(v[-1], "unknown-variant", f"unknown variant `{name}`")
     return name, payload
+
+
+def seq_of(v, shape, what):
+    """The items of a RON tuple or list (as `shape` says) or of a JSON array."""
+    if v[0] != "seq" or v[2] not in (shape, "array"):
+        text_fail(v[-1], "syntax", f"expected {what}")
+    return v[1]
 
 
 def want(v, kind, what):
@@ -546,7 +558,8 @@ def parameter(v, path, version, max_digits):
     if v[0] == "str":
         x = number(v[1], path, max_digits)
         return (x, x), False
-    if v[0] == "seq" and len(v[1]) == 2 and all(x[0] == "str" for x in v[1]):
+    if (v[0] == "seq" and v[2] != "tuple" and len(v[1]) == 2
+            and all(x[0] == "str" for x in v[1])):
         lo = number(v[1][0][1], f"{path}[0]", max_digits)
         hi = number(v[1][1][1], f"{path}[1]", max_digits)
         return (lo, hi), True
@@ -569,7 +582,8 @@ def read_body(raw, version, claim, max_digits, point_only=False):
     if n not in RATIONAL_N:
         raise Unsupported(f"number field n = {n}")
     if point_only and (raw["kappa"][0] != "str" or raw["gamma"][0] != "str"):
-        text_fail(raw["kappa"][-1], "syntax", "a refutation's body is at a point")
+        # Not in the docs (§10: "the body is at a point", no code): chatter's code and locus.
+        raise Reject("parameter-out-of-range", field_locus("body"), "a refutation is at a point")
     kappa, kbox = parameter(raw["kappa"], "body.kappa", version, max_digits)
     gamma, gbox = parameter(raw["gamma"], "body.gamma", version, max_digits)
     if (kbox or gbox) and version < 2:
@@ -612,10 +626,10 @@ def read_certificate(tree, version, limits):
     body = body_of(raw["body"])
     enum_of(raw["coordinates"], ("ContactVelocities",))
     claim, _ = enum_of(raw["claim"], CLAIMS)
-    cone = want(raw["cone"], "seq", "a list of generators")
+    cone = seq_of(raw["cone"], "list", "a list of generators")
     gens_raw = []
     for g in cone:
-        if g[0] != "seq" or any(x[0] != "str" for x in g[1]):
+        if g[0] != "seq" or g[2] == "list" or any(x[0] != "str" for x in g[1]):
             text_fail(g[-1], "syntax", "expected a tuple of numbers")
         gens_raw.append([x[1] for x in g[1]])
     bound_raw = None
@@ -1064,8 +1078,8 @@ def read_point(v):
         return ("Image", want(f["step"], "int", "an integer"), want(f["of"], "int", "an integer"))
     f = fields_of(payload, ("terms",), ("terms",), ("Combination",))
     terms = []
-    for t in want(f["terms"], "seq", "a list of terms"):
-        if t[0] != "seq" or len(t[1]) != 2 or t[1][0][0] != "int" or t[1][1][0] != "str":
+    for t in seq_of(f["terms"], "list", "a list of terms"):
+        if t[0] != "seq" or t[2] == "list" or len(t[1]) != 2 or t[1][0][0] != "int" or t[1][1][0] != "str":
             text_fail(t[-1], "syntax", "expected a term (index, \"c\")")
         terms.append((t[1][0][1], t[1][1][1]))
     return ("Combination", terms)
@@ -1076,7 +1090,10 @@ def check_refutation(tree, version, limits):
     body = body_of(raw["body"])
     enum_of(raw["coordinates"], ("ContactVelocities",))
     claim, _ = enum_of(raw["refutes"], CLAIMS)
-    points = [read_point(p) for p in want(raw["points"], "seq", "a list of points")]
+    points = [read_point(p) for p in seq_of(raw["points"], "list", "a list of points")]
+    if not points:
+        # Not in the docs (§10 does not say what an empty list is): chatter's code and locus.
+        raise Reject("step-failed", field_locus("points"), "no points")
     check_limits(tree, len(points), limits["max_generators"], limits["max_total_digits"])
     try:
         n, kappa, gamma, _ = read_body(body, version, "EffectivelyInvariant",

@@ -154,3 +154,70 @@ def test_mutants_get_the_same_verdicts(tmp_path):
         rejected += plain["verdict"] == "rejected"
     # the mutants exercise both verdicts
     assert 0 < rejected < len(files)
+
+
+# --- hand-written edge cases (each found a difference or probes a gap of the docs) ---------------
+
+SQUARE = (ROOT / "certificates/valid/doc-example-square.ron").read_text()
+ROD_REFUTATION = """Refutation(
+    format: "chatter-refutation",
+    version: 1,
+    body: RegularPolygon(n: 2, kappa: "9/10", gamma: "1/2"),
+    coordinates: ContactVelocities,
+    refutes: CcOrPccFromAllDown,
+    points: [
+        Seed(index: 1),
+    ],
+)
+"""
+SEED = "        Seed(index: 1),\n"
+
+EDGE_CASES = {
+    # the rod's all-down seeds: §10 names "-m_{i,i+1}", §8 lists D's generators (0,-1), (-1,0)
+    "rod-seed-1": ROD_REFUTATION,
+    "rod-seed-0": ROD_REFUTATION.replace("index: 1", "index: 0"),
+    "rod-seed-2": ROD_REFUTATION.replace("index: 1", "index: 2"),
+    "refutation-no-name": ROD_REFUTATION.replace("Refutation(", "(", 1),
+    "refutation-empty-points": ROD_REFUTATION.replace(SEED, ""),
+    "refutation-kappa-interval": ROD_REFUTATION.replace('"9/10"', '["9/10", "1"]'),
+    "combination-no-terms": ROD_REFUTATION.replace(SEED, SEED + "        Combination(terms: []),\n"),
+    "combination-forward": ROD_REFUTATION.replace(
+        SEED, SEED + '        Combination(terms: [(1, "1")]),\n'),
+    "image-no-such-step": ROD_REFUTATION.replace(SEED, SEED + "        Image(step: 2, of: 0),\n"),
+    "combination-bad-number": ROD_REFUTATION.replace(
+        SEED, SEED + '        Combination(terms: [(0, "2/4")]),\n'),
+    "generator-as-list": SQUARE.replace('("0", "-11/4", "-1")', '["0", "-11/4", "-1"]'),
+    "certificate-no-name": SQUARE.replace("Certificate(", "(", 1),
+    "time-bound-none": SQUARE.replace("    producer", "    time_to_rest_bound: None,\n    producer"),
+    "box-in-version-3": SQUARE.replace("version: 1", "version: 3").replace(
+        'kappa: "1/6"', 'kappa: ["1/6", "1/5"]'),
+    "field-element-for-n-4": SQUARE.replace("version: 1", "version: 3").replace(
+        '"1/6"', '"1/6 + c"'),
+    "two-faults-kappa-first": SQUARE.replace('"1/6"', '"-1/6"').replace(
+        '("1/20", "-11/4"', '("2/40", "-11/4"', 1),
+}
+
+KNOWN = {
+    "combination-bad-number": "docs §2: a malformed number is bad-number; chatter: step-failed",
+}
+
+
+@pytest.mark.parametrize("name", sorted(EDGE_CASES))
+def test_edge_case_gets_the_same_verdict(name, tmp_path):
+    if name in KNOWN:
+        pytest.xfail(KNOWN[name])
+    path = tmp_path / f"{name}.ron"
+    path.write_text(EDGE_CASES[name])
+    assert_same(plain_checker.check_file(str(path)), chatter_verdicts([path])[str(path)])
+
+
+def test_numbers_of_ten_thousand_digits_are_read(tmp_path):
+    """Regression: Python >= 3.11 refuses int(str) beyond 4,300 digits unless told otherwise."""
+    import compare
+
+    path = tmp_path / "square-long.ron"
+    path.write_text(compare.heavier(SQUARE, 9_990, lambda i: True))
+    assert max(len(s) for s in path.read_text().split('"')) > 9_000
+    plain = plain_checker.check_file(str(path))
+    assert plain["verdict"] != "error"
+    assert_same(plain, chatter_verdicts([path])[str(path)])
