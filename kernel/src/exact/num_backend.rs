@@ -14,7 +14,7 @@ ring_by_operators!(BigInt, <BigInt as Zero>::zero(), BigInt::from, |x: &BigInt| 
 
 impl Int for BigInt {
     fn gcd(&self, o: &Self) -> Self {
-        BigInt::from(lehmer_gcd(self.magnitude().clone(), o.magnitude().clone()))
+        gcd(self, o)
     }
     fn div_exact(&self, o: &Self) -> Self {
         self / o
@@ -43,14 +43,28 @@ impl Ring for BigRational {
     fn from_i64(v: i64) -> Self {
         BigRational::from_integer(BigInt::from(v))
     }
+    /// Henrici's sum (Knuth, TAOCP vol. 2, §4.5.1), gcds of the inputs' size: with g = gcd(b, d),
+    /// b = g b', d = g d', a/b + c/d = t/(g b' d') for t = a d' + c b', and t shares only the
+    /// factors of g2 = gcd(t, g) with the denominator: the sum is (t/g2)/(b' (d/g2)), reduced.
     fn plus(&self, o: &Self) -> Self {
-        reduced(self.numer() * o.denom() + o.numer() * self.denom(), self.denom() * o.denom())
+        let (a, b, c, d) = (self.numer(), self.denom(), o.numer(), o.denom());
+        let g = gcd(b, d);
+        let (b1, d1) = (b / &g, d / &g);
+        let t = a * &d1 + c * &b1;
+        let g2 = gcd(&t, &g);
+        if Zero::is_zero(&t) { Ring::zero() } else { BigRational::new_raw(&t / &g2, b1 * (d / &g2)) }
     }
     fn minus(&self, o: &Self) -> Self {
         self.plus(&-o)
     }
+    /// a/b · c/d with the cross gcds gcd(a, d), gcd(c, b) divided out first: reduced.
     fn times(&self, o: &Self) -> Self {
-        reduced(self.numer() * o.numer(), self.denom() * o.denom())
+        let (a, b, c, d) = (self.numer(), self.denom(), o.numer(), o.denom());
+        if Zero::is_zero(a) || Zero::is_zero(c) {
+            return Ring::zero();
+        }
+        let (g1, g2) = (gcd(a, d), gcd(c, b));
+        BigRational::new_raw((a / &g1) * (c / &g2), (b / &g2) * (d / &g1))
     }
     fn negated(&self) -> Self {
         -self
@@ -60,9 +74,14 @@ impl Ring for BigRational {
     }
 }
 
+/// gcd(|x|, |y|) by [`lehmer_gcd`].
+fn gcd(x: &BigInt, y: &BigInt) -> BigInt {
+    BigInt::from(lehmer_gcd(x.magnitude().clone(), y.magnitude().clone()))
+}
+
 /// n/d in lowest terms with d > 0 (d != 0), as `BigRational::new` makes it, by [`lehmer_gcd`].
 fn reduced(n: BigInt, d: BigInt) -> BigRational {
-    let g = BigInt::from(lehmer_gcd(n.magnitude().clone(), d.magnitude().clone()));
+    let g = gcd(&n, &d);
     let (n, d) = if g.is_one() { (n, d) } else { (n / &g, d / &g) };
     if Ring::is_negative(&d) { BigRational::new_raw(-n, -d) } else { BigRational::new_raw(n, d) }
 }

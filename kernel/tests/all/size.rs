@@ -29,7 +29,7 @@ const KINDS: [(&str, &str, &[&str]); 10] = [
 /// at its measurement (1,821 before the JSON twin, the codes of the other kinds and the
 /// conveniences left the point kernel's files; docs/kernel-soundness.md §4 says where the lines
 /// still are) so that it cannot grow unseen.
-const POINT_BUDGET: (usize, usize) = (1_662, 291);
+const POINT_BUDGET: (usize, usize) = (1_675, 291);
 
 fn src() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
