@@ -6,7 +6,8 @@ use super::certify_cmd::{CertifyArgs, is_general};
 use super::map_cmd::progress;
 use super::{Env, Outcome, emit, emit_report};
 use crate::certify::bisect::{default_interval, largest_certified_gamma};
-use crate::certify::convex::{ConvexRequest, certify_convex};
+use crate::certify::convex::{ConvexRequest, TRANSPORT_FAILED, certify_convex};
+use crate::certify::transport::regular_preimage;
 use crate::certify::{ClaimChoice, Request, certify};
 use crate::exact::Q;
 use crate::report::convex::GeneralBodyReport;
@@ -43,6 +44,7 @@ fn general(a: &CertifyArgs, env: &Env) -> Result<(BodyInfo, Pipeline, Simulation
         n: gb.body.n() as u64,
         kappa: Q::int(0),
         general: Some(GeneralBodyReport::of(&gb.description, &gb.body)),
+        regular: regular_preimage(&gb.body).map(|p| (p.n as u64, p.kappa)),
     };
     let (body, sim_body) = (gb.body.clone(), gb.body);
     let (claim, finder, backends) = (choice(a), (a.max_iterations, a.max_vertices), env.backends);
@@ -50,7 +52,10 @@ fn general(a: &CertifyArgs, env: &Env) -> Result<(BodyInfo, Pipeline, Simulation
         let mut req = ConvexRequest::new(with_gamma(&body, g));
         (req.claim, req.backends) = (claim, backends);
         (req.finder.max_iterations, req.finder.max_vertices) = finder;
-        certify_convex(&req).result.map(|c| c.claim).map_err(|e| e.to_string())
+        let r = certify_convex(&req);
+        let transport: String =
+            r.notes.iter().filter(|n| n.starts_with(TRANSPORT_FAILED)).map(|n| format!("; {n}")).collect();
+        r.result.map(|c| c.claim).map_err(|e| format!("{e}{transport}"))
     });
     let sim: Simulation = Box::new(move |g| Ok(Model::convex(&with_gamma(&sim_body, g))));
     Ok((info, pipeline, sim))
@@ -68,7 +73,13 @@ fn regular(a: &CertifyArgs, env: &Env) -> Result<(BodyInfo, Pipeline, Simulation
     let (n, kappa, _) = super::BodyArgs { gamma: Some("0".into()), ..a.body.clone() }.parse()?;
     crate::certify::check_body(n, &kappa, &Q::int(0)).map_err(|e| format!("--n/--kappa: {e}"))?;
     let info =
-        BodyInfo { description: format!("n={n} kappa={kappa}"), n, kappa: kappa.clone(), general: None };
+        BodyInfo {
+        description: format!("n={n} kappa={kappa}"),
+        n,
+        kappa: kappa.clone(),
+        general: None,
+        regular: Some((n, kappa.clone())),
+    };
     let (k, claim, finder, backends) =
         (kappa.clone(), choice(a), (a.max_iterations, a.max_vertices), env.backends);
     let pipeline: Pipeline = Box::new(move |g| {
