@@ -223,7 +223,9 @@ fn kernel_check(
             Attempt { result: Ok(cert), finder, method: Some(method), bits: a.max_denominator_bits }
         }
         Verdict::Rejected(rej) => Attempt::failed(Failure::Kernel(rej), finder),
-        Verdict::Disagree(s) => Attempt::failed(Failure::Internal(format!("the backends disagree: {s}")), finder),
+        Verdict::Disagree(s) => {
+            Attempt::failed(Failure::Internal(format!("the backends disagree: {s}")), finder)
+        }
     }
 }
 
@@ -237,7 +239,8 @@ fn transported(
     t: &mut Timings,
 ) -> Attempt<ConvexCertificate> {
     let mut r = Request::new(pre.n as u64, pre.kappa.clone(), req.body.gamma().clone());
-    (r.claim, r.finder, r.exactify, r.backends) = (ClaimChoice::Exactly(claim), req.finder, req.exactify, req.backends);
+    (r.claim, r.finder, r.exactify, r.backends) =
+        (ClaimChoice::Exactly(claim), req.finder, req.exactify, req.backends);
     let regular = certify(&r);
     t.finder += regular.timings.finder;
     t.exactify += regular.timings.exactify;

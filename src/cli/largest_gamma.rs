@@ -11,7 +11,7 @@ use crate::certify::transport::regular_preimage;
 use crate::certify::{ClaimChoice, Request, certify};
 use crate::exact::Q;
 use crate::report::convex::GeneralBodyReport;
-use crate::report::largest_gamma::{BodyInfo, LargestGammaReport, drops};
+use crate::report::largest_gamma::{BodyInfo, LargestGammaReport, ThresholdOf, drops};
 use crate::simulate::{Model, Shape};
 use chatter_kernel::certificate::Claim;
 use chatter_kernel::model::ConvexBody;
@@ -44,7 +44,10 @@ fn general(a: &CertifyArgs, env: &Env) -> Result<(BodyInfo, Pipeline, Simulation
         n: gb.body.n() as u64,
         kappa: Q::int(0),
         general: Some(GeneralBodyReport::of(&gb.description, &gb.body)),
-        regular: regular_preimage(&gb.body).map(|p| (p.n as u64, p.kappa)),
+        threshold: Some(match regular_preimage(&gb.body) {
+            Some(p) => ThresholdOf::regular(p.n as u64, &p.kappa),
+            None => ThresholdOf::product(&gb.body),
+        }),
     };
     let (body, sim_body) = (gb.body.clone(), gb.body);
     let (claim, finder, backends) = (choice(a), (a.max_iterations, a.max_vertices), env.backends);
@@ -72,13 +75,12 @@ fn regular(a: &CertifyArgs, env: &Env) -> Result<(BodyInfo, Pipeline, Simulation
     }
     let (n, kappa, _) = super::BodyArgs { gamma: Some("0".into()), ..a.body.clone() }.parse()?;
     crate::certify::check_body(n, &kappa, &Q::int(0)).map_err(|e| format!("--n/--kappa: {e}"))?;
-    let info =
-        BodyInfo {
+    let info = BodyInfo {
         description: format!("n={n} kappa={kappa}"),
         n,
         kappa: kappa.clone(),
         general: None,
-        regular: Some((n, kappa.clone())),
+        threshold: Some(ThresholdOf::regular(n, &kappa)),
     };
     let (k, claim, finder, backends) =
         (kappa.clone(), choice(a), (a.max_iterations, a.max_vertices), env.backends);

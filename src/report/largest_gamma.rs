@@ -6,8 +6,8 @@ use super::convex::GeneralBodyReport;
 use super::{Interval, Number, Report, ms};
 use crate::certify::bisect::Bisection;
 use crate::exact::{Q, QExt};
-use chatter_kernel::exact::OrderedField;
 use crate::simulate::{Arithmetic, Model, Options, Outcome, counts, simulate_many};
+use chatter_kernel::exact::OrderedField;
 use schemars::JsonSchema;
 use serde::Serialize;
 
@@ -62,74 +62,111 @@ pub struct LargestGammaReport {
     pub median_ms: Option<f64>,
 }
 
-/// Where the bisection's failure lies relative to the S_1 CC threshold gamma* of the regular
-/// body (the body itself, or the regular polygon it is an affine image of, docs/model.md §11.7).
+/// Where the bisection's failure lies relative to a threshold gamma* of a CC criterion.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, JsonSchema)]
 #[serde(rename_all = "kebab-case")]
 pub enum LimitKind {
-    /// Above gamma*: the paper conjectures that no effectively invariant cone exists there (§6).
+    /// Above gamma*: where the criterion conjectures that no effectively invariant cone exists.
     AboveThreshold,
-    /// Below gamma*: the pipeline's limit (the conjecture says a cone exists there).
+    /// Below gamma*: the pipeline's limit (the criterion conjectures a cone there).
     BelowThreshold,
     /// Inside the enclosure of gamma*: undecided.
     InEnclosure,
-    /// A general body that is not an affine image of a regular polygon: no threshold is known.
+    /// No threshold in (0, 1) is known: nothing to compare.
     NoThreshold,
     /// The upper end certified, or not even the lower end: nothing to compare.
     NoBracket,
+}
+
+/// A threshold to compare the bisection with: the S_1 criterion of a regular body (the body
+/// itself, or the regular polygon a general body is an affine image of, docs/model.md §6, §11.7),
+/// else the product criterion of a general body (§11.11); both conjectural as criteria for cones.
+#[derive(Clone, Debug)]
+pub struct ThresholdOf {
+    /// `S_1 of n=3 kappa=1/8`, or `the product around the polygon (conjectural, §11.11)`.
+    pub criterion: String,
+    /// An exact enclosure of gamma* of width 2^-[`THRESHOLD_BITS`]; `None`: none in (0, 1).
+    pub enclosure: Option<(Q, Q)>,
+}
+
+/// Bits of the threshold's enclosure.
+pub const THRESHOLD_BITS: u32 = 40;
+
+impl ThresholdOf {
+    /// The S_1 CC threshold of the regular n-gon with this kappa (`classify --n`'s).
+    pub fn regular(n: u64, kappa: &Q) -> ThresholdOf {
+        let enclosure = crate::orbit::band::cc_threshold(n, kappa, THRESHOLD_BITS);
+        ThresholdOf { criterion: format!("S_1 of n={n} kappa={kappa} (docs/model.md §6)"), enclosure }
+    }
+
+    /// The product criterion's threshold of a general body (`classify --rectangle ...`'s).
+    pub fn product(body: &chatter_kernel::model::ConvexBody<Q>) -> ThresholdOf {
+        use crate::spectral::convex::{Direction, product_profile};
+        let lo = product_profile(body, Direction::CounterClockwise).sup_lower_bound(THRESHOLD_BITS);
+        let eps = Q::from_rational(malachite::rational::Rational::from(1u32) >> i64::from(THRESHOLD_BITS));
+        let enclosure = lo.map(|lo| (lo.clone(), &lo + &eps));
+        let criterion =
+            "the product around the polygon of this body (conjectural, docs/model.md §11.11)".into();
+        ThresholdOf { criterion, enclosure }
+    }
 }
 
 /// What stopped the bisection (issue 25 §3).
 #[derive(Clone, Debug, Serialize, JsonSchema)]
 pub struct Limit {
     pub kind: LimitKind,
-    /// The regular body whose threshold applies (`n=3 kappa=1/8`), `null` if none.
-    pub regular: Option<String>,
-    /// An exact enclosure of gamma* (width 2^-40; `classify --n`'s S_1 threshold), `null` if none.
+    /// The CC criterion whose threshold is compared, `null` if none.
+    pub criterion: Option<String>,
+    /// An exact enclosure of its threshold gamma* (width 2^-40), `null` if none in (0, 1).
     pub threshold: Option<Interval>,
-    /// (gamma* - certified) / gamma* as f64 (lower end of the enclosure), `null` if either is missing.
+    /// (gamma* - certified) / gamma* (gamma* the enclosure's lower end), `null` if either is missing.
     pub relative_gap: Option<f64>,
     /// The same in words.
     pub text: String,
 }
 
-/// Bits of the threshold's enclosure.
-pub const THRESHOLD_BITS: u32 = 40;
-
 impl Limit {
-    /// The limit of bisection `b` for a body whose regular polygon is `regular` (n, kappa).
-    pub fn of(regular: Option<&(u64, Q)>, b: &Bisection) -> Limit {
-        let thr = regular.and_then(|(n, k)| crate::orbit::band::cc_threshold(*n, k, THRESHOLD_BITS));
-        let name = regular.map(|(n, k)| format!("n={n} kappa={k}"));
-        let gap = match (&thr, &b.certified) {
+    /// The limit of bisection `b` against `thr`.
+    pub fn of(thr: Option<&ThresholdOf>, b: &Bisection) -> Limit {
+        let enc = thr.and_then(|t| t.enclosure.clone());
+        let gap = match (&enc, &b.certified) {
             (Some((lo, _)), Some((g, _))) => (lo - g).over(lo).map(|x| x.to_f64()),
             _ => None,
         };
-        let kind = match (&thr, &b.failed, &b.certified) {
+        let kind = match (&enc, &b.failed, &b.certified) {
             (_, None, _) | (_, _, None) => LimitKind::NoBracket,
             (None, ..) => LimitKind::NoThreshold,
             (Some((lo, _)), Some((g, _)), _) if g < lo => LimitKind::BelowThreshold,
             (Some((_, hi)), Some((g, _)), _) if g > hi => LimitKind::AboveThreshold,
             _ => LimitKind::InEnclosure,
         };
-        let text = limit_text(kind, name.as_deref(), thr.as_ref(), gap);
-        Limit { kind, regular: name, threshold: thr.map(|(lo, hi)| Interval::of(&lo, &hi)), relative_gap: gap, text }
+        let criterion = thr.map(|t| t.criterion.clone());
+        let text = limit_text(kind, criterion.as_deref(), enc.as_ref(), gap);
+        Limit {
+            kind,
+            criterion,
+            threshold: enc.map(|(lo, hi)| Interval::of(&lo, &hi)),
+            relative_gap: gap,
+            text,
+        }
     }
 }
 
 /// The words of a [`Limit`].
-fn limit_text(kind: LimitKind, regular: Option<&str>, thr: Option<&(Q, Q)>, gap: Option<f64>) -> String {
-    let at = match (regular, thr) {
-        (Some(r), Some((lo, _))) => format!("the S_1 CC threshold of {r} is gamma* = {:.11}", lo.to_f64()),
-        (Some(r), None) => format!("{r} has no S_1 CC threshold in (0, 1)"),
-        _ => "no threshold is known for this body (not an affine image of a regular polygon)".into(),
+fn limit_text(kind: LimitKind, criterion: Option<&str>, enc: Option<&(Q, Q)>, gap: Option<f64>) -> String {
+    let at = match (criterion, enc) {
+        (Some(c), Some((lo, _))) => format!("the CC threshold of {c} is gamma* = {:.11}", lo.to_f64()),
+        (Some(c), None) => format!("{c} has no CC threshold in (0, 1)"),
+        _ => "no CC threshold is known for this body".into(),
     };
     let gap = gap.map_or(String::new(), |g| format!("; the certified gamma is {g:.2e} (relative) below it"));
     let what = match kind {
-        LimitKind::AboveThreshold => "the failure is above it, where the paper conjectures (docs/model.md §6) that no effectively invariant cone exists",
-        LimitKind::BelowThreshold => "the failure is below it: the pipeline's limit, not the theory's",
+        LimitKind::AboveThreshold => {
+            "the failure is above it, where the criterion conjectures that no effectively invariant cone exists"
+        }
+        LimitKind::BelowThreshold => "the failure is below it: the pipeline's limit",
         LimitKind::InEnclosure => "the failure lies inside its enclosure: undecided",
-        LimitKind::NoThreshold => "the failure above is the pipeline's verdict only",
+        LimitKind::NoThreshold => "the failure is the pipeline's verdict only",
         LimitKind::NoBracket => "no bracket to compare",
     };
     format!("{at}{gap}; {what}")
@@ -153,9 +190,8 @@ pub struct BodyInfo {
     pub n: u64,
     pub kappa: Q,
     pub general: Option<GeneralBodyReport>,
-    /// The regular polygon (n, kappa) whose S_1 threshold applies: the body itself, or the one it
-    /// is an affine image of (docs/model.md §11.7); `None` if none is known.
-    pub regular: Option<(u64, Q)>,
+    /// The threshold the bisection is compared with ([`ThresholdOf`]).
+    pub threshold: Option<ThresholdOf>,
 }
 
 impl LargestGammaReport {
@@ -187,7 +223,7 @@ impl LargestGammaReport {
                 .as_ref()
                 .map(|(g, why)| NotCertifiedAt { gamma: Number::of(g), reason: why.clone() }),
             drops_above,
-            limit: Limit::of(body.regular.as_ref(), b),
+            limit: Limit::of(body.threshold.as_ref(), b),
             median_ms: timings.then(|| ms(b.median_time())),
         }
     }
