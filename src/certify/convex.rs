@@ -7,8 +7,8 @@
 //! (omega_x, omega_y, v) -> (omega_x / R, omega_y / R, v), exactly. Without it, a phone measured
 //! in millimetres puts every cone within 1e-2 of the axis and the grids lose their precision.
 
-use super::transport::convex_certificate;
-use super::{Attempt, ClaimChoice, Failure, Timings, claims_in, ladder_if, try_claims};
+use super::transport::{RegularPreimage, convex_certificate, regular_preimage, transport};
+use super::{Attempt, ClaimChoice, Failure, Request, Timings, certify, claims_in, ladder_if, try_claims};
 use crate::exact::{ParseLimits, Q, QExt, Ring};
 use crate::exactify::family::exactify_family;
 use crate::exactify::{ExactifyConfig, ExactifyError};
@@ -53,9 +53,16 @@ pub struct ConvexReport {
     pub finder: Option<Search<usize>>,
     pub timings: Timings,
     pub max_denominator_bits: u64,
+    /// How the certificate was made: [`FAMILY`] or [`TRANSPORTED`] (`None`: not certified).
+    pub method: Option<&'static str>,
     /// Facts worth telling the user (e.g. why a weaker claim was certified).
     pub notes: Vec<String>,
 }
+
+/// The method of a certificate from the family finder and exactifier (docs/model.md §11.12).
+pub const FAMILY: &str = "family finder + exactifier";
+/// The method of a certificate transported from a regular polygon's (docs/model.md §11.12, 5.).
+pub const TRANSPORTED: &str = "transport from a regular polygon certificate";
 
 /// The normalising map L of the search (docs/model.md §11.12): a rational approximation, on a
 /// grid of 2^-20 of its size, of (2 Σ / n)^(-1/2) with Σ = Σ_k r_k r_kᵀ the contacts' second
@@ -159,7 +166,7 @@ fn seeds(body: &ConvexBody<Q>, claim: Claim) -> Result<Vec<Vec<Vec3<Q>>>, Failur
 
 /// The search, the exactifier and the kernel for one claim. `body` is the normalised body, `adj`
 /// carries its generators back to `req.body`, the body of the certificate.
-fn attempt(
+fn family_attempt(
     req: &ConvexRequest,
     body: &ConvexBody<Q>,
     adj: &Mat2<Q>,
@@ -195,22 +202,91 @@ fn attempt(
         Ok(ex) => carried_back(ex.cones, adj),
         Err(e) => return Attempt::failed(Failure::Exactify(e), summary),
     };
-    let producer = format!("chatter {} certify (family finder + exactifier)", env!("CARGO_PKG_VERSION"));
+    let producer = format!("chatter {} certify ({FAMILY})", env!("CARGO_PKG_VERSION"));
     let cert = convex_certificate(&req.body, claim, &cones, &producer);
+    kernel_check(req, cert, FAMILY, summary, t)
+}
+
+/// The kernel on the request's backends; the attempt records the verdict.
+fn kernel_check(
+    req: &ConvexRequest,
+    cert: ConvexCertificate,
+    method: &'static str,
+    finder: Option<Search<usize>>,
+    t: &mut Timings,
+) -> Attempt<ConvexCertificate> {
     let start = Instant::now();
     let verdict = verify_convex_on(&cert, ParseLimits::default(), &req.backends);
     t.kernel += start.elapsed();
-    let method = Some("family finder + exactifier");
     match verdict {
         Verdict::Accepted(a) => {
-            Attempt { result: Ok(cert), finder: summary, method, bits: a.max_denominator_bits }
+            Attempt { result: Ok(cert), finder, method: Some(method), bits: a.max_denominator_bits }
         }
-        Verdict::Rejected(rej) => Attempt::failed(Failure::Kernel(rej), summary),
+        Verdict::Rejected(rej) => Attempt::failed(Failure::Kernel(rej), finder),
         Verdict::Disagree(s) => {
-            Attempt::failed(Failure::Internal(format!("the backends disagree: {s}")), summary)
+            Attempt::failed(Failure::Internal(format!("the backends disagree: {s}")), finder)
         }
     }
 }
+
+/// The fallback of docs/model.md §11.12 (5.): the regular pipeline certifies the regular body
+/// `pre` at the body's gamma and claim, [`transport`] carries its cone to the body (§11.7), and the
+/// kernel checks the family certificate on both backends like any other.
+fn transported(
+    req: &ConvexRequest,
+    pre: &RegularPreimage,
+    claim: Claim,
+    t: &mut Timings,
+) -> Attempt<ConvexCertificate> {
+    let mut r = Request::new(pre.n as u64, pre.kappa.clone(), req.body.gamma().clone());
+    (r.claim, r.finder, r.exactify, r.backends) =
+        (ClaimChoice::Exactly(claim), req.finder, req.exactify, req.backends);
+    let regular = certify(&r);
+    t.finder += regular.timings.finder;
+    t.exactify += regular.timings.exactify;
+    t.kernel += regular.timings.kernel;
+    let cert = match regular.result {
+        Ok(c) => c,
+        Err(f) => return Attempt::failed(f, regular.finder),
+    };
+    match transport(&req.body, &cert) {
+        Ok(family) => kernel_check(req, family, TRANSPORTED, regular.finder, t),
+        Err(e) => Attempt::failed(Failure::Internal(format!("transport: {e}")), regular.finder),
+    }
+}
+
+/// Whether a failure of the family route may be the pipeline's (search, exactifier, kernel)
+/// rather than a fact about the body (a seed above the floor, PCC, gamma) or a bug.
+fn worth_a_fallback(f: &Failure) -> bool {
+    matches!(f, Failure::Finder(_) | Failure::Exactify(_) | Failure::NoFamily { .. } | Failure::Kernel(_))
+}
+
+/// One claim: the family route, then, for an affine image of a regular polygon whose family
+/// route failed, the transport; `notes` says which route certified or why both failed.
+fn attempt(
+    req: &ConvexRequest,
+    (body, adj): (&ConvexBody<Q>, &Mat2<Q>),
+    pre: Option<&RegularPreimage>,
+    claim: Claim,
+    t: &mut Timings,
+    notes: &mut Vec<String>,
+) -> Attempt<ConvexCertificate> {
+    let first = family_attempt(req, body, adj, claim, t);
+    let (Some(pre), Err(f)) = (pre, &first.result) else { return first };
+    if !worth_a_fallback(f) {
+        return first;
+    }
+    let second = transported(req, pre, claim, t);
+    let what = format!("the image of the regular n = {} body with kappa = {}", pre.n, pre.kappa);
+    match &second.result {
+        Ok(_) => notes.push(format!("certified by {TRANSPORTED}: the body is {what} (docs/model.md §11.7); the family finder + exactifier failed: {f}")),
+        Err(g) => notes.push(format!("{TRANSPORT_FAILED} (the body is {what}): {g}")),
+    }
+    if second.result.is_ok() { second } else { first }
+}
+
+/// The start of the note on a failed transport (the bisection's reasons repeat it).
+pub const TRANSPORT_FAILED: &str = "transport from the regular polygon failed too";
 
 /// Runs the pipeline for a general body: claims strongest first unless one is asked for.
 pub fn certify_convex(req: &ConvexRequest) -> ConvexReport {
@@ -220,7 +296,8 @@ pub fn certify_convex(req: &ConvexRequest) -> ConvexReport {
         Ok(c) => c,
         Err(f) => {
             let timings = Timings::default();
-            return ConvexReport { result: Err(f), finder: None, timings, max_denominator_bits: 0, notes };
+            let (finder, method) = (None, None);
+            return ConvexReport { result: Err(f), finder, timings, max_denominator_bits: 0, method, notes };
         }
     };
     let Some((body, adj)) = normalised(&req.body, &normaliser(&req.body)) else {
@@ -230,9 +307,15 @@ pub fn certify_convex(req: &ConvexRequest) -> ConvexReport {
             finder: None,
             timings: Timings::default(),
             max_denominator_bits: 0,
+            method: None,
             notes,
         };
     };
-    let (a, timings, notes) = try_claims(req.claim, claims, |c, t| attempt(req, &body, &adj, c, t), notes);
-    ConvexReport { result: a.result, finder: a.finder, timings, max_denominator_bits: a.bits, notes }
+    let pre = regular_preimage(&req.body);
+    let mut extra = Vec::new();
+    let run = |c, t: &mut Timings| attempt(req, (&body, &adj), pre.as_ref(), c, t, &mut extra);
+    let (a, timings, mut notes) = try_claims(req.claim, claims, run, notes);
+    notes.append(&mut extra);
+    let (result, finder, method) = (a.result, a.finder, a.method);
+    ConvexReport { result, finder, timings, max_denominator_bits: a.bits, method, notes }
 }

@@ -182,3 +182,32 @@ pub fn regular_image(
     ];
     ConvexBody::new(contacts, j, gamma.clone())
 }
+
+/// A body recognised as the image of a regular n-gon body under some L with det L > 0.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RegularPreimage {
+    /// The regular polygon's number of contacts (3, 4 or 6).
+    pub n: usize,
+    /// The regular body's J = kappa I (circumradius 1).
+    pub kappa: Q,
+}
+
+/// Decides exactly whether `body` is the image (docs/model.md §11.7) of the regular n-gon body
+/// (n = 3, 4, 6; circumradius 1, J = kappa I, the same gamma) under some L with det L > 0, labels
+/// unchanged: then L maps the regular contacts 0 and 1 to r_0 and r_1, so the body must equal
+/// [`regular_image`] of r_0, r_1 with kappa = J_xx / J1_xx (J1 the image's J at kappa = 1), contacts
+/// and J compared exactly. Labels rotated by s need no search: the rotation R^s maps the regular
+/// body to itself (J = kappa I), so L R^s is a map of the same kind with labels unchanged.
+pub fn regular_preimage(body: &ConvexBody<Q>) -> Option<RegularPreimage> {
+    let n = body.n();
+    let c = body.contacts();
+    let (r0, r1) = (&c[0], &c[1]);
+    if !matches!(n, 3 | 4 | 6) || !r0[0].times(&r1[1]).minus(&r1[0].times(&r0[1])).is_positive() {
+        return None;
+    }
+    let unit = regular_image(n, r0, r1, &Q::one(), body.gamma()).ok()?;
+    let kappa = body.inertia()[0][0].over(&unit.inertia()[0][0])?;
+    let image = regular_image(n, r0, r1, &kappa, body.gamma()).ok()?;
+    let same = kappa.is_positive() && image.contacts() == c && image.inertia() == body.inertia();
+    same.then_some(RegularPreimage { n, kappa })
+}

@@ -46,6 +46,14 @@ fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
     Ok(Validated { req, description, tensor, output: a.output, json: a.json, timings: a.timings })
 }
 
+/// "the family finder + exactifier" or "transport from a regular polygon certificate".
+fn by(method: Option<&str>) -> String {
+    match method {
+        Some(m) if m != crate::certify::convex::FAMILY => m.to_string(),
+        _ => format!("the {}", crate::certify::convex::FAMILY),
+    }
+}
+
 fn summary(v: &Validated, r: &ConvexReport) -> String {
     let t = &r.timings;
     let head = format!("{}, gamma={}", v.description, v.req.body.gamma());
@@ -66,12 +74,13 @@ fn summary(v: &Validated, r: &ConvexReport) -> String {
                 .map_or(String::from(" (no -o: not written)"), |p| format!(" -> {}", p.display()));
             let sizes: Vec<String> = c.cones.iter().map(|k| k.len().to_string()).collect();
             format!(
-                "CERTIFIED {head} claim={}: {} cones K_0..K_{} with {} generators, largest denominator {} bits, by the family finder + exactifier; {times}{out}\nproves: {}{notes}",
+                "CERTIFIED {head} claim={}: {} cones K_0..K_{} with {} generators, largest denominator {} bits, by {}; {times}{out}\nproves: {}{notes}",
                 c.claim.name(),
                 c.cones.len(),
                 c.cones.len() - 1,
                 sizes.join("/"),
                 r.max_denominator_bits,
+                by(r.method),
                 crate::claims::proves(c.claim.name()).unwrap_or("?")
             )
         }

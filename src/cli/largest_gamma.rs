@@ -6,11 +6,12 @@ use super::certify_cmd::{CertifyArgs, is_general};
 use super::map_cmd::progress;
 use super::{Env, Outcome, emit, emit_report};
 use crate::certify::bisect::{default_interval, largest_certified_gamma};
-use crate::certify::convex::{ConvexRequest, certify_convex};
+use crate::certify::convex::{ConvexRequest, TRANSPORT_FAILED, certify_convex};
+use crate::certify::transport::regular_preimage;
 use crate::certify::{ClaimChoice, Request, certify};
 use crate::exact::Q;
 use crate::report::convex::GeneralBodyReport;
-use crate::report::largest_gamma::{BodyInfo, LargestGammaReport, drops};
+use crate::report::largest_gamma::{BodyInfo, LargestGammaReport, ThresholdOf, drops};
 use crate::simulate::{Model, Shape};
 use chatter_kernel::certificate::Claim;
 use chatter_kernel::model::ConvexBody;
@@ -43,6 +44,10 @@ fn general(a: &CertifyArgs, env: &Env) -> Result<(BodyInfo, Pipeline, Simulation
         n: gb.body.n() as u64,
         kappa: Q::int(0),
         general: Some(GeneralBodyReport::of(&gb.description, &gb.body)),
+        threshold: Some(match regular_preimage(&gb.body) {
+            Some(p) => ThresholdOf::regular(p.n as u64, &p.kappa),
+            None => ThresholdOf::product(&gb.body),
+        }),
     };
     let (body, sim_body) = (gb.body.clone(), gb.body);
     let (claim, finder, backends) = (choice(a), (a.max_iterations, a.max_vertices), env.backends);
@@ -50,7 +55,10 @@ fn general(a: &CertifyArgs, env: &Env) -> Result<(BodyInfo, Pipeline, Simulation
         let mut req = ConvexRequest::new(with_gamma(&body, g));
         (req.claim, req.backends) = (claim, backends);
         (req.finder.max_iterations, req.finder.max_vertices) = finder;
-        certify_convex(&req).result.map(|c| c.claim).map_err(|e| e.to_string())
+        let r = certify_convex(&req);
+        let transport: String =
+            r.notes.iter().filter(|n| n.starts_with(TRANSPORT_FAILED)).map(|n| format!("; {n}")).collect();
+        r.result.map(|c| c.claim).map_err(|e| format!("{e}{transport}"))
     });
     let sim: Simulation = Box::new(move |g| Ok(Model::convex(&with_gamma(&sim_body, g))));
     Ok((info, pipeline, sim))
@@ -67,8 +75,13 @@ fn regular(a: &CertifyArgs, env: &Env) -> Result<(BodyInfo, Pipeline, Simulation
     }
     let (n, kappa, _) = super::BodyArgs { gamma: Some("0".into()), ..a.body.clone() }.parse()?;
     crate::certify::check_body(n, &kappa, &Q::int(0)).map_err(|e| format!("--n/--kappa: {e}"))?;
-    let info =
-        BodyInfo { description: format!("n={n} kappa={kappa}"), n, kappa: kappa.clone(), general: None };
+    let info = BodyInfo {
+        description: format!("n={n} kappa={kappa}"),
+        n,
+        kappa: kappa.clone(),
+        general: None,
+        threshold: Some(ThresholdOf::regular(n, &kappa)),
+    };
     let (k, claim, finder, backends) =
         (kappa.clone(), choice(a), (a.max_iterations, a.max_vertices), env.backends);
     let pipeline: Pipeline = Box::new(move |g| {

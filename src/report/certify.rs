@@ -119,7 +119,7 @@ pub fn of_convex(
         max_denominator_bits: cert.map(|_| r.max_denominator_bits),
         output: output.filter(|_| cert.is_some()),
         reason: r.result.as_ref().err().map(ToString::to_string),
-        method: cert.map(|_| "family finder + exactifier"),
+        method: cert.and(r.method),
         finder: r.finder.as_ref().map(FinderReport::of),
         notes: r.notes.clone(),
         general_body: Some(GeneralBodyReport::of(description, &req.body)),

@@ -5,8 +5,9 @@ use super::classify::Drops;
 use super::convex::GeneralBodyReport;
 use super::{Interval, Number, Report, ms};
 use crate::certify::bisect::Bisection;
-use crate::exact::Q;
+use crate::exact::{Q, QExt};
 use crate::simulate::{Arithmetic, Model, Options, Outcome, counts, simulate_many};
+use chatter_kernel::exact::OrderedField;
 use schemars::JsonSchema;
 use serde::Serialize;
 
@@ -54,9 +55,121 @@ pub struct LargestGammaReport {
     pub not_certified: Option<NotCertifiedAt>,
     /// f64 drops at `not_certified.gamma` (`null` when the upper end certified).
     pub drops_above: Option<Drops>,
+    /// What stopped the bisection: the failure against the regular body's S_1 CC threshold.
+    pub limit: Limit,
     /// The median time of one pipeline run, in ms: only with `--timings`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub median_ms: Option<f64>,
+}
+
+/// Where the bisection's failure lies relative to a threshold gamma* of a CC criterion.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, JsonSchema)]
+#[serde(rename_all = "kebab-case")]
+pub enum LimitKind {
+    /// Above gamma*: where the criterion conjectures that no effectively invariant cone exists.
+    AboveThreshold,
+    /// Below gamma*: the pipeline's limit (the criterion conjectures a cone there).
+    BelowThreshold,
+    /// Inside the enclosure of gamma*: undecided.
+    InEnclosure,
+    /// No threshold in (0, 1) is known: nothing to compare.
+    NoThreshold,
+    /// The upper end certified, or not even the lower end: nothing to compare.
+    NoBracket,
+}
+
+/// A threshold to compare the bisection with: the S_1 criterion of a regular body (the body
+/// itself, or the regular polygon a general body is an affine image of, docs/model.md §6, §11.7),
+/// else the product criterion of a general body (§11.11); both conjectural as criteria for cones.
+#[derive(Clone, Debug)]
+pub struct ThresholdOf {
+    /// `S_1 of n=3 kappa=1/8`, or `the product around the polygon (conjectural, §11.11)`.
+    pub criterion: String,
+    /// An exact enclosure of gamma* of width 2^-[`THRESHOLD_BITS`]; `None`: none in (0, 1).
+    pub enclosure: Option<(Q, Q)>,
+}
+
+/// Bits of the threshold's enclosure.
+pub const THRESHOLD_BITS: u32 = 40;
+
+impl ThresholdOf {
+    /// The S_1 CC threshold of the regular n-gon with this kappa (`classify --n`'s).
+    pub fn regular(n: u64, kappa: &Q) -> ThresholdOf {
+        let enclosure = crate::orbit::band::cc_threshold(n, kappa, THRESHOLD_BITS);
+        ThresholdOf { criterion: format!("S_1 of n={n} kappa={kappa} (docs/model.md §6)"), enclosure }
+    }
+
+    /// The product criterion's threshold of a general body (`classify --rectangle ...`'s).
+    pub fn product(body: &chatter_kernel::model::ConvexBody<Q>) -> ThresholdOf {
+        use crate::spectral::convex::{Direction, product_profile};
+        let lo = product_profile(body, Direction::CounterClockwise).sup_lower_bound(THRESHOLD_BITS);
+        let eps = Q::from_rational(malachite::rational::Rational::from(1u32) >> i64::from(THRESHOLD_BITS));
+        let enclosure = lo.map(|lo| (lo.clone(), &lo + &eps));
+        let criterion =
+            "the product around the polygon of this body (conjectural, docs/model.md §11.11)".into();
+        ThresholdOf { criterion, enclosure }
+    }
+}
+
+/// What stopped the bisection (issue 25 §3).
+#[derive(Clone, Debug, Serialize, JsonSchema)]
+pub struct Limit {
+    pub kind: LimitKind,
+    /// The CC criterion whose threshold is compared, `null` if none.
+    pub criterion: Option<String>,
+    /// An exact enclosure of its threshold gamma* (width 2^-40), `null` if none in (0, 1).
+    pub threshold: Option<Interval>,
+    /// (gamma* - certified) / gamma* (gamma* the enclosure's lower end), `null` if either is missing.
+    pub relative_gap: Option<f64>,
+    /// The same in words.
+    pub text: String,
+}
+
+impl Limit {
+    /// The limit of bisection `b` against `thr`.
+    pub fn of(thr: Option<&ThresholdOf>, b: &Bisection) -> Limit {
+        let enc = thr.and_then(|t| t.enclosure.clone());
+        let gap = match (&enc, &b.certified) {
+            (Some((lo, _)), Some((g, _))) => (lo - g).over(lo).map(|x| x.to_f64()),
+            _ => None,
+        };
+        let kind = match (&enc, &b.failed, &b.certified) {
+            (_, None, _) | (_, _, None) => LimitKind::NoBracket,
+            (None, ..) => LimitKind::NoThreshold,
+            (Some((lo, _)), Some((g, _)), _) if g < lo => LimitKind::BelowThreshold,
+            (Some((_, hi)), Some((g, _)), _) if g > hi => LimitKind::AboveThreshold,
+            _ => LimitKind::InEnclosure,
+        };
+        let criterion = thr.map(|t| t.criterion.clone());
+        let text = limit_text(kind, criterion.as_deref(), enc.as_ref(), gap);
+        Limit {
+            kind,
+            criterion,
+            threshold: enc.map(|(lo, hi)| Interval::of(&lo, &hi)),
+            relative_gap: gap,
+            text,
+        }
+    }
+}
+
+/// The words of a [`Limit`].
+fn limit_text(kind: LimitKind, criterion: Option<&str>, enc: Option<&(Q, Q)>, gap: Option<f64>) -> String {
+    let at = match (criterion, enc) {
+        (Some(c), Some((lo, _))) => format!("the CC threshold of {c} is gamma* = {:.11}", lo.to_f64()),
+        (Some(c), None) => format!("{c} has no CC threshold in (0, 1)"),
+        _ => "no CC threshold is known for this body".into(),
+    };
+    let gap = gap.map_or(String::new(), |g| format!("; the certified gamma is {g:.2e} (relative) below it"));
+    let what = match kind {
+        LimitKind::AboveThreshold => {
+            "the failure is above it, where the criterion conjectures that no effectively invariant cone exists"
+        }
+        LimitKind::BelowThreshold => "the failure is below it: the pipeline's limit",
+        LimitKind::InEnclosure => "the failure lies inside its enclosure: undecided",
+        LimitKind::NoThreshold => "the failure is the pipeline's verdict only",
+        LimitKind::NoBracket => "no bracket to compare",
+    };
+    format!("{at}{gap}; {what}")
 }
 
 impl Report for LargestGammaReport {
@@ -77,6 +190,8 @@ pub struct BodyInfo {
     pub n: u64,
     pub kappa: Q,
     pub general: Option<GeneralBodyReport>,
+    /// The threshold the bisection is compared with ([`ThresholdOf`]).
+    pub threshold: Option<ThresholdOf>,
 }
 
 impl LargestGammaReport {
@@ -108,6 +223,7 @@ impl LargestGammaReport {
                 .as_ref()
                 .map(|(g, why)| NotCertifiedAt { gamma: Number::of(g), reason: why.clone() }),
             drops_above,
+            limit: Limit::of(body.threshold.as_ref(), b),
             median_ms: timings.then(|| ms(b.median_time())),
         }
     }
@@ -140,6 +256,7 @@ impl LargestGammaReport {
                 c.join(", ")
             ));
         }
+        out.push(format!("  limit: {}", self.limit.text));
         if let Some(t) = self.median_ms {
             out.push(format!("  median time of one pipeline run: {t:.2} ms"));
         }

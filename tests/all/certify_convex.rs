@@ -258,3 +258,140 @@ fn a_full_inertia_tensor_on_the_command_line_is_reduced_to_j_eff() {
         assert!(text(&o.stderr).contains(want), "{inertia}: {}", text(&o.stderr));
     }
 }
+
+/// The body with contacts and J changed by `f`, the same gamma.
+fn changed(body: &ConvexBody<Q>, f: impl Fn(&mut Vec<[Q; 2]>, &mut [[Q; 2]; 2])) -> Option<ConvexBody<Q>> {
+    let (mut c, mut j) = (body.contacts().to_vec(), body.inertia().clone());
+    f(&mut c, &mut j);
+    ConvexBody::new(c, j, body.gamma().clone()).ok()
+}
+
+#[test]
+fn the_recogniser_accepts_affine_images_and_rejects_perturbed_bodies() {
+    use chatter::certify::transport::{RegularPreimage, regular_preimage};
+    let g = q("1/50");
+    let mut images: Vec<(String, ConvexBody<Q>, usize, Q)> = plates(&g)
+        .into_iter()
+        .map(|(name, n, b)| (name.to_string(), b, n as usize, q(kappa_of(n))))
+        .collect();
+    for (n, kappa, r0, r1) in [(3, "3/20", ["2", "0"], ["-1", "3/2"]), (4, "1/10", ["2", "1"], ["-1", "3"])] {
+        for (n, kappa) in [(n, kappa), (6, "1/4")] {
+            let body = regular_image(n, &[q(r0[0]), q(r0[1])], &[q(r1[0]), q(r1[1])], &q(kappa), &g).unwrap();
+            images.push((format!("image n = {n}"), body, n, q(kappa)));
+        }
+    }
+    let tiny = q("1/1000");
+    for (name, body, n, kappa) in images {
+        let want = Some(RegularPreimage { n, kappa });
+        assert_eq!(regular_preimage(&body), want, "{name}");
+        // Labels rotated by one: L R is a map of the same kind (§11.7).
+        let rotated = changed(&body, |c, _| c.rotate_left(1)).unwrap();
+        assert_eq!(regular_preimage(&rotated), want, "{name} rotated");
+        let perturbed = [
+            ("J_xx", changed(&body, |_, j| j[0][0] = &j[0][0] + &tiny)),
+            ("J_xy", changed(&body, |_, j| (j[0][1], j[1][0]) = (&j[0][1] + &tiny, &j[1][0] + &tiny))),
+            ("J_yy", changed(&body, |_, j| j[1][1] = &j[1][1] + &tiny)),
+            ("contact 2", changed(&body, |c, _| c[2][0] = &c[2][0] + &tiny)),
+            ("contact 0", changed(&body, |c, _| c[0][1] = &c[0][1] - &tiny)),
+            ("centre", changed(&body, |c, _| c.iter_mut().for_each(|r| r[0] = &r[0] + &tiny))),
+        ];
+        for (what, b) in perturbed {
+            let b = b.unwrap_or_else(|| panic!("{name}: {what} gives an invalid body"));
+            assert_eq!(regular_preimage(&b), None, "{name} with {what} moved by 1/1000");
+        }
+    }
+    // Not images: the lander (three feet, J not of the form), a box with a != b and c != 0
+    // (§11.7), a pentagon.
+    let lander = chatter::bodies::general::general_catalogue(&g).unwrap().remove(3).body;
+    let brick = chatter::bodies::convex::uniform_box(&q("3"), &q("2"), &q("1"), g.clone()).unwrap();
+    let pentagon = chatter::bodies::convex::polygon_plate(
+        &[[q("2"), q("0")], [q("1"), q("2")], [q("-1"), q("2")], [q("-2"), q("0")], [q("0"), q("-2")]],
+        g.clone(),
+    )
+    .unwrap();
+    for (name, b) in [("lander", lander), ("box 3 x 2 x 1", brick), ("pentagon", pentagon)] {
+        assert_eq!(regular_preimage(&b), None, "{name}");
+    }
+}
+
+#[test]
+fn the_fallback_certifies_the_triangle_between_the_finders_limit_and_the_threshold() {
+    use chatter::bodies::convex::polygon_plate;
+    use chatter::certify::convex::TRANSPORTED;
+    let corners = [[q("0"), q("0")], [q("3"), q("0")], [q("1"), q("2")]];
+    // The family finder + exactifier stop below 0.14571 here; the threshold of the equilateral
+    // plate (kappa = 1/8) is 0.14589803375 (`classify --n 3 --kappa 1/8`).
+    for g in ["14589/100000", "145897/1000000"] {
+        let body = polygon_plate(&corners, q(g)).unwrap();
+        let r = certify_convex(&ConvexRequest::new(body.clone()));
+        assert_eq!(
+            r.method,
+            Some(TRANSPORTED),
+            "gamma = {g}: {:?}",
+            r.result.as_ref().err().map(ToString::to_string)
+        );
+        assert_eq!(general_claim(&body), Some(Claim::CompleteChatterFromAllDown), "gamma = {g}");
+        let cert = r.result.unwrap();
+        assert!(cert.producer.contains("transported from a regular n = 3 certificate"), "{}", cert.producer);
+        assert!(r.notes.iter().any(|n| n.contains("regular n = 3 body with kappa = 1/8")), "{:?}", r.notes);
+    }
+    // Above the threshold both routes fail, and the notes say so.
+    let r = certify_convex(&ConvexRequest::new(polygon_plate(&corners, q("1459/10000")).unwrap()));
+    assert!(r.result.is_err() && r.method.is_none());
+    assert!(
+        r.notes.iter().any(|n| n.starts_with(chatter::certify::convex::TRANSPORT_FAILED)),
+        "{:?}",
+        r.notes
+    );
+}
+
+#[test]
+fn the_largest_gamma_limit_compares_the_failure_with_the_regular_threshold() {
+    use chatter::certify::bisect::Bisection;
+    use chatter::report::largest_gamma::{Limit, LimitKind, ThresholdOf};
+    let bisection = |ok: &str, bad: &str| Bisection {
+        certified: Some((q(ok), Claim::CompleteChatterFromAllDown)),
+        failed: Some((q(bad), "why".into())),
+        times: vec![],
+    };
+    let tri = ThresholdOf::regular(3, &q("1/8"));
+    // gamma* = 0.14589803375... for n = 3, kappa = 1/8.
+    for (ok, bad, kind) in [
+        ("1457/10000", "14571/100000", LimitKind::BelowThreshold),
+        ("729/5000", "1459/10000", LimitKind::AboveThreshold),
+    ] {
+        let l = Limit::of(Some(&tri), &bisection(ok, bad));
+        assert_eq!(l.kind, kind, "{}", l.text);
+        let t = l.threshold.as_ref().unwrap();
+        assert!(t.lo.f64 <= 0.145898033751 && 0.14589803374 <= t.hi.f64, "{t:?}");
+        assert!(l.text.contains("S_1 of n=3 kappa=1/8"), "{}", l.text);
+        let gap = l.relative_gap.unwrap();
+        assert!((gap - (0.14589803375 - q(ok).to_f64()) / 0.14589803375).abs() < 1e-9, "{gap}");
+    }
+    let at = Limit::of(Some(&tri), &bisection("729/5000", "145898033751/1000000000000"));
+    assert_eq!(at.kind, LimitKind::InEnclosure, "{}", at.text);
+    let none = Limit::of(None, &bisection("1/100", "1/50"));
+    assert!(none.kind == LimitKind::NoThreshold && none.threshold.is_none() && none.relative_gap.is_none());
+    assert!(none.text.contains("no CC threshold is known"), "{}", none.text);
+    // A body that is no affine image: its product criterion's threshold (conjectural, §11.11),
+    // the lander's 0.0590763452... (`classify --body lander`).
+    let lander = chatter::bodies::general::general_catalogue(&q("1/100")).unwrap().remove(3).body;
+    let product = ThresholdOf::product(&lander);
+    let l = Limit::of(Some(&product), &bisection("2929/50000", "5859/100000"));
+    assert_eq!(l.kind, LimitKind::BelowThreshold, "{}", l.text);
+    let t = l.threshold.unwrap();
+    assert!(t.lo.f64 <= 0.0590763452725 && 0.059076345271 <= t.hi.f64, "{t:?}");
+    assert!(l.text.contains("conjectural"), "{}", l.text);
+    let open = Bisection { failed: None, ..bisection("1/100", "1/50") };
+    assert_eq!(Limit::of(Some(&tri), &open).kind, LimitKind::NoBracket);
+    // The command reports it: the triangle's bracket lies at its regular threshold.
+    let d = tempfile::tempdir().unwrap();
+    let args =
+        ["certify", "--polygon", "0,0 3,0 1,2", "--plate", "--largest-gamma", "--steps", "12", "--json"];
+    let o = chatter(&args, d.path());
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["limit"]["criterion"], "S_1 of n=3 kappa=1/8 (docs/model.md §6)", "{v}");
+    assert_eq!(v["limit"]["kind"], "above-threshold", "{v}");
+    assert!(v["certified"]["gamma"]["f64"].as_f64().unwrap() > 0.1456, "{v}");
+}
