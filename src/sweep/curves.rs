@@ -232,23 +232,22 @@ fn covered(p: (f64, f64), segs: &[((f64, f64), (f64, f64))], cell_g: f64) -> boo
     })
 }
 
-/// The column piece end within [`JOIN`] cells of `p` where a run of row crossings meets the
-/// column pieces: the nearest to the link from `p` to its neighbour `next` on the row-linked line
-/// (the nearest to `p` without one); else `next` itself.
+/// Where a run of row crossings that ends at `p` meets the column pieces, if the row-linked line
+/// goes on to `next`: the column piece end within [`JOIN`] cells of `p` nearest to the link from
+/// `p` to `next`, else `next` itself. A run that ends the line is not joined (a column piece's
+/// end near it belongs to another curve).
 fn join(
     p: (f64, f64),
     next: Option<(f64, f64)>,
     ends: &[(f64, f64)],
     cell: (f64, f64),
 ) -> Option<(f64, f64)> {
-    let to = |e: (f64, f64)| match next {
-        Some(q) => cells_to_segment(e, (q, p), cell),
-        None => cells_to_segment(p, (e, e), cell),
-    };
+    let q = next?;
+    let to = |e: &(f64, f64)| cells_to_segment(*e, (q, p), cell);
     ends.iter()
         .copied()
         .filter(|&e| cells_to_segment(p, (e, e), cell) <= JOIN)
-        .min_by(|a, b| to(*a).total_cmp(&to(*b)))
+        .min_by(|a, b| to(a).total_cmp(&to(b)))
         .or(next)
 }
 
