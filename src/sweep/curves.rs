@@ -192,8 +192,11 @@ const COVERED: f64 = 0.5;
 /// How far (in grid cells) a row-linked run may be joined to the end of a column-linked piece.
 const JOIN: f64 = 1.5;
 
+/// A segment between two points of the plane.
+type Segment = ((f64, f64), (f64, f64));
+
 /// Distance in grid cells (`cell` = the spacings of columns and rows) from `p` to the segment a-b.
-fn cells_to_segment(p: (f64, f64), (a, b): ((f64, f64), (f64, f64)), cell: (f64, f64)) -> f64 {
+fn cells_to_segment(p: (f64, f64), (a, b): Segment, cell: (f64, f64)) -> f64 {
     let s = |q: (f64, f64)| (q.0 / cell.0, q.1 / cell.1);
     let (p, a, b) = (s(p), s(a), s(b));
     let (dx, dy) = (b.0 - a.0, b.1 - a.1);
@@ -222,7 +225,7 @@ fn shallow(cols: Vec<Polyline>, cell_g: f64) -> Vec<Polyline> {
 
 /// Whether a segment of a column piece spans p's x and passes within [`COVERED`] cells of it
 /// in gamma.
-fn covered(p: (f64, f64), segs: &[((f64, f64), (f64, f64))], cell_g: f64) -> bool {
+fn covered(p: (f64, f64), segs: &[Segment], cell_g: f64) -> bool {
     segs.iter().any(|&(a, b)| {
         let (lo, hi) = (a.0.min(b.0), a.0.max(b.0));
         hi > lo && (lo..=hi).contains(&p.0) && {
@@ -257,8 +260,7 @@ fn join(
 /// ([`covered`]), each run joined at its ends to the column pieces ([`join`]).
 pub fn merge(cols: Vec<Polyline>, rows: Vec<Polyline>, cell: (f64, f64)) -> Vec<Polyline> {
     let cols = shallow(cols, cell.1);
-    let segs: Vec<((f64, f64), (f64, f64))> =
-        cols.iter().flat_map(|l| l.windows(2)).map(|w| (w[0], w[1])).collect();
+    let segs: Vec<Segment> = cols.iter().flat_map(|l| l.windows(2)).map(|w| (w[0], w[1])).collect();
     let ends: Vec<(f64, f64)> = cols.iter().flat_map(|l| [l[0], l[l.len() - 1]]).collect();
     let mut out = cols.clone();
     for line in rows {

@@ -410,9 +410,12 @@ fn the_main_jobs_simulation_maps_hide_no_piece_of_an_exact_or_proved_curve_under
     }
 }
 
+/// A straight piece of a dash: its end points (SVG units).
+type Dash = ((f64, f64), (f64, f64));
+
 /// The pieces of the dashes of `stroke` left of the legend (plotters writes each dash as a
 /// polyline at most the dash's 9 pixels long, bent where the curve bends): their end points.
-fn dashes(svg: &str, stroke: &str) -> Vec<((f64, f64), (f64, f64))> {
+fn dashes(svg: &str, stroke: &str) -> Vec<Dash> {
     let length =
         |l: &[(f64, f64)]| l.windows(2).map(|w| (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1)).sum::<f64>();
     parse(svg)
@@ -426,9 +429,9 @@ fn dashes(svg: &str, stroke: &str) -> Vec<((f64, f64), (f64, f64))> {
 /// The length (pixels) of the dashes lying along another dash, within a pixel and parallel to
 /// it (a curve drawn twice), and the dashes' total length. Dashes that share an end point (one
 /// dash bent at a vertex of its polyline) do not count.
-fn doubled(dashes: &[((f64, f64), (f64, f64))]) -> (f64, f64) {
+fn doubled(dashes: &[Dash]) -> (f64, f64) {
     let (mut twice, mut total) = (0.0, 0.0);
-    let dir = |(a, b): ((f64, f64), (f64, f64))| {
+    let dir = |(a, b): Dash| {
         let l = (b.0 - a.0).hypot(b.1 - a.1).max(1e-9);
         ((b.0 - a.0) / l, (b.1 - a.1) / l)
     };
@@ -436,9 +439,8 @@ fn doubled(dashes: &[((f64, f64), (f64, f64))]) -> (f64, f64) {
         let len = (b.0 - a.0).hypot(b.1 - a.1);
         total += len;
         let d = dir((a, b));
-        let touching = |&(c, e): &((f64, f64), (f64, f64))| {
-            [c, e].iter().any(|p| [a, b].iter().any(|q| (p.0 - q.0).hypot(p.1 - q.1) < 0.5))
-        };
+        let touching =
+            |&(c, e): &Dash| [c, e].iter().any(|p| [a, b].iter().any(|q| (p.0 - q.0).hypot(p.1 - q.1) < 0.5));
         let steps = (len * 2.0).ceil().max(1.0) as usize;
         for s in 0..=steps {
             let t = s as f64 / steps as f64;
