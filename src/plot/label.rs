@@ -1,6 +1,8 @@
 //! Where to put a curve's label: on the curve, its box clear of every curve it must not hide, of
 //! the labels already placed and of the frame, and if it can be of the other curves too, near a
-//! given fraction of the line's length; measured in pixels of the plotting area.
+//! given fraction of the line's length; where the curve has no such place, beside it with a
+//! leader, or nowhere (never over a curve it must not hide); measured in pixels of the plotting
+//! area.
 
 use crate::sweep::curves::Polyline;
 
@@ -18,6 +20,14 @@ impl Frame {
         (
             (x - self.x.0) / (self.x.1 - self.x.0) * self.pixels.0,
             (y - self.y.0) / (self.y.1 - self.y.0) * self.pixels.1,
+        )
+    }
+
+    /// The data point of a pixel (from the lower-left corner).
+    pub fn data(&self, (u, v): (f64, f64)) -> (f64, f64) {
+        (
+            self.x.0 + u / self.pixels.0 * (self.x.1 - self.x.0),
+            self.y.0 + v / self.pixels.1 * (self.y.1 - self.y.0),
         )
     }
 }
@@ -155,36 +165,107 @@ fn hard_clearance(frame: &Frame, c: (f64, f64), h: (f64, f64), hard: &Segments, 
     (box_to_segments(c, h, hard, h.0 + h.1 + GAP) - GAP).min(labels).min(edge)
 }
 
-/// The centre on `line` for a label of half-size `half` (pixels): among the places whose box
+/// A label's place: its centre (data), and where its leader meets the line (data) when no free
+/// place on the line exists and it stands beside it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Placed {
+    pub at: (f64, f64),
+    pub leader: Option<(f64, f64)>,
+}
+
+/// The most label heights a label may stand beside its line.
+const BESIDE: f64 = 3.0;
+
+/// Directions tried around a place on the line for a label beside it.
+const DIRECTIONS: usize = 16;
+
+/// Pixels between two places on the line tried for a label beside it.
+const BESIDE_STEP: f64 = 4.0;
+
+/// The place for a label of half-size `half` (pixels) on `line`: among the places whose box
 /// keeps clear of the frame, the `hard` curves and the placed labels, those that also keep clear
 /// of the `soft` curves, or else those that touch the fewest of them; of these the one nearest
 /// to the fraction `target` of the line's length (so labels of neighbouring lines spread along
-/// them). If no place keeps clear, the clearest. `None` if the line has no point.
-pub fn place(
-    frame: &Frame,
-    line: &Polyline,
-    clear: &Clear,
-    half: (f64, f64),
-    target: f64,
-) -> Option<(f64, f64)> {
+/// them). If no place on the line keeps clear, the nearest clear place beside it within
+/// [`BESIDE`] label heights whose leader crosses no `hard` curve ([`beside`]); `None` if there is
+/// none either (the label is left out).
+pub fn place(frame: &Frame, line: &Polyline, clear: &Clear, half: (f64, f64), target: f64) -> Option<Placed> {
     let hard = segments(frame, clear.hard);
     let soft: Vec<Segments> = clear.soft.iter().map(|l| segments(frame, &[*l])).collect();
+    let touched = |c: (f64, f64)| soft.iter().filter(|l| box_to_segments(c, half, l, GAP) < GAP).count();
     let mut best: Option<((usize, f64), (f64, f64))> = None;
-    let mut clearest: Option<(f64, (f64, f64))> = None;
     for (p, along) in candidates(frame, line) {
         let c = frame.px(p);
-        let room = hard_clearance(frame, c, half, &hard, clear.placed);
-        if clearest.is_none_or(|(m, _)| room > m) {
-            clearest = Some((room, p));
-        }
-        if room < 0.0 {
+        if hard_clearance(frame, c, half, &hard, clear.placed) < 0.0 {
             continue;
         }
-        let touched = soft.iter().filter(|l| box_to_segments(c, half, l, GAP) < GAP).count();
-        let key = (touched, (along - target).abs());
+        let key = (touched(c), (along - target).abs());
         if best.is_none_or(|(k, _)| key.0 < k.0 || (key.0 == k.0 && key.1 < k.1)) {
             best = Some((key, p));
         }
     }
-    best.map(|(_, p)| p).or(clearest.map(|(_, p)| p))
+    match best {
+        Some((_, p)) => Some(Placed { at: p, leader: None }),
+        None => beside(frame, line, clear, half, &hard, &touched),
+    }
+}
+
+/// The nearest place beside `line` (pixels from it, then the fewest soft curves touched) whose
+/// box keeps clear of the frame, the `hard` curves and the placed labels, and whose leader (from
+/// the line to the box's nearest point) keeps clear of the `hard` curves.
+fn beside(
+    frame: &Frame,
+    line: &Polyline,
+    clear: &Clear,
+    half: (f64, f64),
+    hard: &Segments,
+    touched: &dyn Fn((f64, f64)) -> usize,
+) -> Option<Placed> {
+    let reach = BESIDE * 2.0 * half.1;
+    let mut best: Option<((f64, usize), Placed)> = None;
+    let mut last: Option<(f64, f64)> = None;
+    for (p, _) in candidates(frame, line) {
+        let q = frame.px(p);
+        if last.is_some_and(|l| (l.0 - q.0).hypot(l.1 - q.1) < BESIDE_STEP) {
+            continue;
+        }
+        last = Some(q);
+        for k in 0..DIRECTIONS {
+            let a = std::f64::consts::TAU * k as f64 / DIRECTIONS as f64;
+            let mut d = half.1;
+            while d <= reach + half.0 {
+                let c = (q.0 + d * a.cos(), q.1 + d * a.sin());
+                d += BESIDE_STEP;
+                let gap = to_box(q, c, half);
+                if gap < GAP || gap > reach || best.is_some_and(|(k, _)| gap > k.0) {
+                    continue;
+                }
+                if hard_clearance(frame, c, half, hard, clear.placed) < 0.0 || !leader_clear(q, c, half, hard)
+                {
+                    continue;
+                }
+                let key = (gap, touched(c));
+                if best.is_none_or(|(k, _)| key.0 < k.0 || (key.0 == k.0 && key.1 < k.1)) {
+                    best = Some((key, Placed { at: frame.data(c), leader: Some(p) }));
+                }
+            }
+        }
+    }
+    best.map(|(_, p)| p)
+}
+
+/// The point of the box (centre `c`, half-size `h`) nearest to `q` (all in pixels).
+pub fn box_point(q: (f64, f64), c: (f64, f64), h: (f64, f64)) -> (f64, f64) {
+    (q.0.clamp(c.0 - h.0, c.0 + h.0), q.1.clamp(c.1 - h.1, c.1 + h.1))
+}
+
+/// Whether the leader from `q` to the box keeps [`GAP`] pixels from every `hard` segment.
+fn leader_clear(q: (f64, f64), c: (f64, f64), h: (f64, f64), hard: &Segments) -> bool {
+    let e = box_point(q, c, h);
+    let n = ((e.0 - q.0).hypot(e.1 - q.1)).ceil().max(1.0) as usize;
+    (0..=n).all(|i| {
+        let t = i as f64 / n as f64;
+        let p = (q.0 + t * (e.0 - q.0), q.1 + t * (e.1 - q.1));
+        box_to_segments(p, (0.0, 0.0), hard, GAP + 1.0) >= GAP
+    })
 }

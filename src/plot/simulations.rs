@@ -6,10 +6,11 @@
 //! §1: exact runs; evidence only when the map has no proofs, and then labelled so), the exact PCC
 //! and CC boundaries. Only what is
 //! drawn gets a legend entry; each level line is labelled where the label's box covers none of
-//! the other curves, which are drawn over the labels.
+//! the other curves: on the line, else beside it with a leader, else not at all (the legend then
+//! names the level).
 
 use super::contour::{contours, ranges};
-use super::label::{Clear, Frame, LabelBox, place};
+use super::label::{Clear, Frame, LabelBox, Placed, box_point, place};
 use super::map::{CC, LEVEL, MapChart, MapFigure, PCC, curve_entry, sub};
 use super::{Entry, Sample, err};
 use crate::simulate::Outcome;
@@ -84,13 +85,22 @@ fn half(text: &str) -> (f64, f64) {
     (4.5 * text.len() as f64 + 3.0, 10.0)
 }
 
-/// Draws a label centred at `at`, on a white box.
+/// The colour of a leader from a label beside its line to the line.
+const LEADER: RGBColor = RGBColor(80, 80, 80);
+
+/// Draws a label centred at `at`, on a white box, and its leader if it stands beside its line.
 fn draw_label<DB: DrawingBackend>(
     chart: &mut MapChart<'_, '_, DB>,
-    at: (f64, f64),
+    frame: &Frame,
+    placed: Placed,
     text: String,
 ) -> Result<(), String> {
     let (hw, hh) = half(&text);
+    let at = placed.at;
+    if let Some(on) = placed.leader {
+        let end = frame.data(box_point(frame.px(on), frame.px(at), (hw, hh)));
+        chart.draw_series(LineSeries::new([on, end], LEADER.stroke_width(1))).map_err(err)?;
+    }
     let style = (super::FONT, 16).into_font().color(&LEVEL);
     let tag = EmptyElement::at(at)
         + Rectangle::new([(-hw as i32, -hh as i32), (hw as i32, hh as i32)], WHITE.filled())
@@ -106,8 +116,8 @@ fn frame<DB: DrawingBackend>(fig: &MapFigure, chart: &MapChart<'_, '_, DB>) -> F
 }
 
 /// Draws the simulations panel's curves and returns the legend entries of what was drawn: the
-/// level lines, their labels, then the proved and exact curves over the labels (so that no label
-/// hides them, even where no free place on a level line exists).
+/// level lines, their labels, then the proved and exact curves (which no label box covers; a
+/// label without room on or beside its line is left out and its level named in the legend).
 pub fn draw<DB: DrawingBackend>(
     fig: &MapFigure,
     chart: &mut MapChart<'_, '_, DB>,
@@ -119,10 +129,14 @@ pub fn draw<DB: DrawingBackend>(
     let found = half(Field::PccShare);
     let chatter = half(Field::ChatterProved);
     let proved = fig.rows.iter().any(|r| r.sim.as_ref().is_some_and(|s| s.proved.is_some()));
-    let mut e = draw_levels(chart, &levels)?;
     let avoid: Vec<&Polyline> =
         found.iter().chain(&chatter).chain(&fig.curves.pcc).chain(&fig.curves.cc).collect();
-    label_levels(fig, chart, &levels, &avoid)?;
+    let frame = frame(fig, chart);
+    let (labels, unlabelled) = label_levels(&frame, &levels, &avoid);
+    let mut e = draw_levels(chart, &levels, &unlabelled)?;
+    for (p, text) in labels {
+        draw_label(chart, &frame, p, text)?;
+    }
     e.extend(curve_entry(chart, &chatter, Sample::Line(CC, 3), CHATTER_LINE.into())?);
     e.extend(curve_entry(chart, &found, Sample::Line(PCC, 3), pcc_line(proved).into())?);
     let m = sub(fig.grid.n - 1);
@@ -134,10 +148,11 @@ pub fn draw<DB: DrawingBackend>(
 }
 
 /// Draws the level lines of the mean impact count (the 200 level thick) and returns their
-/// legend entries.
+/// legend entries, which name the levels whose lines found no place for a label.
 fn draw_levels<DB: DrawingBackend>(
     chart: &mut MapChart<'_, '_, DB>,
     levels: &[(f64, Polyline)],
+    unlabelled: &[f64],
 ) -> Result<Vec<Entry>, String> {
     type Levels<'a> = Vec<&'a (f64, Polyline)>;
     let (thin, thick): (Levels, Levels) =
@@ -147,14 +162,24 @@ fn draw_levels<DB: DrawingBackend>(
     let mut shown: Vec<String> =
         LEVELS[..4].iter().filter(|v| thin.iter().any(|(level, _)| level == *v)).map(|v| label(*v)).collect();
     shown.dedup();
+    let mut missing: Vec<String> =
+        LEVELS[..4].iter().filter(|v| unlabelled.contains(v)).map(|v| label(*v)).collect();
+    missing.dedup();
+    let note = match missing.len() {
+        0 => String::new(),
+        _ => format!("; not labelled for want of room: {}", missing.join(", ")),
+    };
     let text = format!(
-        "evidence: mean number of impacts per f64 drop (level{}: {})",
+        "evidence: mean number of impacts per f64 drop (level{}: {}{note})",
         plural(&shown),
         shown.join(", ")
     );
     e.extend(curve_entry(chart, &thin_lines, Sample::Line(LEVEL, 1), text)?);
     let thick_lines: Vec<Polyline> = thick.iter().map(|(_, l)| l.clone()).collect();
-    let text = "evidence: level 200, above it some f64 drops end in ICC".to_string();
+    let mut text = "evidence: level 200, above it some f64 drops end in ICC".to_string();
+    if unlabelled.contains(&LEVELS[4]) {
+        text.push_str(" (not labelled for want of room)");
+    }
     e.extend(curve_entry(chart, &thick_lines, Sample::Line(LEVEL, 3), text)?);
     Ok(e)
 }
@@ -164,15 +189,13 @@ fn plural(shown: &[String]) -> &'static str {
 }
 
 /// Labels each level line of six points or more on a place whose box covers none of the `avoid`
-/// curves (and, where it can, no other level line), spread along the lines.
-fn label_levels<DB: DrawingBackend>(
-    fig: &MapFigure,
-    chart: &mut MapChart<'_, '_, DB>,
-    levels: &[(f64, Polyline)],
-    avoid: &[&Polyline],
-) -> Result<(), String> {
-    let frame = frame(fig, chart);
+/// curves (and, where it can, no other level line), spread along the lines, or beside it with a
+/// leader: the labels' places and texts, and the levels of the lines left without a label (no
+/// free place near them).
+fn label_levels(frame: &Frame, levels: &[(f64, Polyline)], avoid: &[&Polyline]) -> (Labels, Vec<f64>) {
+    let mut labels = Vec::new();
     let mut placed: Vec<LabelBox> = Vec::new();
+    let mut unlabelled = Vec::new();
     for (i, (level, line)) in levels.iter().enumerate().filter(|(_, (_, l))| l.len() >= 6) {
         let soft: Vec<&Polyline> =
             levels.iter().enumerate().filter(|(j, _)| *j != i).map(|(_, (_, l))| l).collect();
@@ -180,10 +203,16 @@ fn label_levels<DB: DrawingBackend>(
         let at = LEVELS.iter().position(|l| l == level).unwrap_or(0) as f64;
         let text = label(*level);
         let clear = Clear { hard: avoid, soft: &soft, placed: &placed };
-        if let Some(at) = place(&frame, line, &clear, half(&text), 0.15 + 0.17 * at) {
-            draw_label(chart, at, text.clone())?;
-            placed.push(LabelBox { at, half: half(&text) });
+        match place(frame, line, &clear, half(&text), 0.15 + 0.17 * at) {
+            Some(p) => {
+                placed.push(LabelBox { at: p.at, half: half(&text) });
+                labels.push((p, text));
+            }
+            None => unlabelled.push(*level),
         }
     }
-    Ok(())
+    (labels, unlabelled)
 }
+
+/// Labels' places and texts.
+type Labels = Vec<(Placed, String)>;

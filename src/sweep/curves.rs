@@ -185,6 +185,150 @@ fn link(lines: &[(f64, Vec<Crossing>)], reach: f64) -> Vec<Polyline> {
 /// crossings of the other direction.
 const REACH: f64 = 4.0;
 
+/// How near (in grid cells, along gamma) a row crossing must lie to a column-linked piece over
+/// its column strip to count as drawn by it.
+const COVERED: f64 = 0.5;
+
+/// How far (in grid cells) a row-linked run may be joined to the end of a column-linked piece.
+const JOIN: f64 = 1.5;
+
+/// A segment between two points of the plane.
+type Segment = ((f64, f64), (f64, f64));
+
+/// Distance in grid cells (`cell` = the spacings of columns and rows) from `p` to the segment a-b.
+fn cells_to_segment(p: (f64, f64), (a, b): Segment, cell: (f64, f64)) -> f64 {
+    let s = |q: (f64, f64)| (q.0 / cell.0, q.1 / cell.1);
+    let (p, a, b) = (s(p), s(a), s(b));
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 > 0.0 { (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / len2).clamp(0.0, 1.0) } else { 0.0 };
+    (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
+}
+
+/// Splits column-linked polylines (points (x, gamma)) where a link rises more than one cell:
+/// there the curve is steeper than the grid's diagonal and the rows draw it.
+fn shallow(cols: Vec<Polyline>, cell_g: f64) -> Vec<Polyline> {
+    let mut out = Vec::new();
+    for line in cols {
+        let mut piece: Polyline = Vec::new();
+        for p in line {
+            if piece.last().is_some_and(|q| (p.1 - q.1).abs() > cell_g) {
+                out.push(std::mem::take(&mut piece));
+            }
+            piece.push(p);
+        }
+        out.push(piece);
+    }
+    out.retain(|l| l.len() >= 2);
+    out
+}
+
+/// Whether a segment of a column piece spans p's x and passes within [`COVERED`] cells of it
+/// in gamma.
+fn covered(p: (f64, f64), segs: &[Segment], cell_g: f64) -> bool {
+    segs.iter().any(|&(a, b)| {
+        let (lo, hi) = (a.0.min(b.0), a.0.max(b.0));
+        hi > lo && (lo..=hi).contains(&p.0) && {
+            let g = a.1 + (b.1 - a.1) * (p.0 - a.0) / (b.0 - a.0);
+            (g - p.1).abs() <= COVERED * cell_g
+        }
+    })
+}
+
+/// Where a run of row crossings that ends at `p` meets the column pieces, if the row-linked line
+/// goes on to `next`: the column piece end within [`JOIN`] cells of `p` nearest to the link from
+/// `p` to `next`, else `next` itself. A run that ends the line is not joined (a column piece's
+/// end near it belongs to another curve).
+fn join(
+    p: (f64, f64),
+    next: Option<(f64, f64)>,
+    ends: &[(f64, f64)],
+    cell: (f64, f64),
+) -> Option<(f64, f64)> {
+    let q = next?;
+    let to = |e: &(f64, f64)| cells_to_segment(*e, (q, p), cell);
+    ends.iter()
+        .copied()
+        .filter(|&e| cells_to_segment(p, (e, e), cell) <= JOIN)
+        .min_by(|a, b| to(a).total_cmp(&to(b)))
+        .or(next)
+}
+
+/// Every stretch of a curve once (issue 26 §1: a curve seen by both columns and rows was drawn
+/// twice, and dashed it looked solid): the column-linked pieces no steeper than the grid's
+/// diagonal, and the runs of row-linked crossings that no such piece covers over its column strip
+/// ([`covered`]), each run joined at its ends to the column pieces ([`join`]).
+pub fn merge(cols: Vec<Polyline>, rows: Vec<Polyline>, cell: (f64, f64)) -> Vec<Polyline> {
+    let cols = shallow(cols, cell.1);
+    let segs: Vec<Segment> = cols.iter().flat_map(|l| l.windows(2)).map(|w| (w[0], w[1])).collect();
+    let ends: Vec<(f64, f64)> = cols.iter().flat_map(|l| [l[0], l[l.len() - 1]]).collect();
+    let mut out = cols.clone();
+    for line in rows {
+        let free: Vec<bool> = line.iter().map(|&p| !covered(p, &segs, cell.1)).collect();
+        let mut i = 0;
+        while i < line.len() {
+            if !free[i] {
+                i += 1;
+                continue;
+            }
+            let j = (i..line.len()).take_while(|&k| free[k]).last().unwrap_or(i);
+            let before = i.checked_sub(1).map(|k| line[k]);
+            let mut run: Polyline = join(line[i], before, &ends, cell).into_iter().collect();
+            run.extend_from_slice(&line[i..=j]);
+            run.extend(join(line[j], line.get(j + 1).copied(), &ends, cell));
+            if run.len() >= 2 {
+                out.push(run);
+            }
+            i = j + 1;
+        }
+    }
+    chain(out)
+}
+
+/// Appends to `line` the pieces that begin or end where it ends, while there is one.
+fn extend_end(line: &mut Polyline, pieces: &mut Vec<Polyline>) {
+    loop {
+        let end = line[line.len() - 1];
+        let Some(i) = pieces.iter().position(|p| p[0] == end || p[p.len() - 1] == end) else {
+            return;
+        };
+        let mut next = pieces.swap_remove(i);
+        if next[0] != end {
+            next.reverse();
+        }
+        line.extend_from_slice(&next[1..]);
+    }
+}
+
+/// Joins the pieces that share an end point into one polyline, so that a dash pattern runs on
+/// across the joint.
+fn chain(mut pieces: Vec<Polyline>) -> Vec<Polyline> {
+    let mut out = Vec::new();
+    while let Some(mut line) = pieces.pop() {
+        extend_end(&mut line, &mut pieces);
+        line.reverse();
+        extend_end(&mut line, &mut pieces);
+        out.push(line);
+    }
+    out
+}
+
+/// The curves from the crossings of columns (at x, gammas) and of rows (at gamma, xs), `cell`
+/// apart: linked along each direction ([`link`]), then each stretch kept once ([`merge`]).
+pub fn draw_crossings(
+    cols: &[(f64, Vec<Crossing>)],
+    rows: &[(f64, Vec<Crossing>)],
+    cell: (f64, f64),
+) -> Vec<Polyline> {
+    let by_cols = link(cols, cell.1 * REACH);
+    // Rows link in x; their points are stored as (gamma, x): swap to (x, gamma).
+    let by_rows = link(rows, cell.0 * REACH)
+        .into_iter()
+        .map(|l| l.into_iter().map(|(g, x)| (x, g)).collect())
+        .collect();
+    merge(by_cols, by_rows, cell)
+}
+
 /// The curves over a window of the map's plane ([x_lo, x_hi] x [g_lo, g_hi]), from the exact
 /// crossings of `lines` equally spaced columns (fixed kappa) and as many rows (fixed gamma).
 pub fn curves(n: u64, variable: Variable, x: (&Q, &Q), g: (&Q, &Q), lines: u32) -> Curves {
@@ -215,15 +359,12 @@ pub fn curves(n: u64, variable: Variable, x: (&Q, &Q), g: (&Q, &Q), lines: u32) 
         })
         .collect();
     let spacing = |(lo, hi): (&Q, &Q)| (hi - lo).to_f64() / lines as f64;
-    let (gx, gg) = (spacing(x) * REACH, spacing(g) * REACH);
+    let cell = (spacing(x), spacing(g));
     let both = |f: fn(&Column) -> &Vec<Crossing>| -> Vec<Polyline> {
         let pick = |ls: &[(f64, Column)]| -> Vec<(f64, Vec<Crossing>)> {
             ls.iter().map(|(p, c)| (*p, f(c).clone())).collect()
         };
-        let mut out = link(&pick(&cols), gg);
-        // Rows link in x; their points are stored as (gamma, x): swap to (x, gamma).
-        out.extend(link(&pick(&rows), gx).into_iter().map(|l| l.into_iter().map(|(g, x)| (x, g)).collect()));
-        out
+        draw_crossings(&pick(&cols), &pick(&rows), cell)
     };
     Curves { kind: both(|c| &c.kind), cc: both(|c| &c.cc), pcc: both(|c| &c.pcc) }
 }
