@@ -1107,13 +1107,23 @@ def check_refutation(tree, version, limits):
     coeffs = {}
     for i, p in enumerate(points):
         if p[0] == "Combination":
-            coeffs[i] = [number(c, f"points[{i}].terms[{t}].1", limits["max_digits"])
+            coeffs[i] = [coefficient(c, f"points[{i}].terms[{t}].1", limits["max_digits"])
                          for t, (_, c) in enumerate(p[1])]
     k, g = kappa[0], gamma[0]
     if n == 2:
         derive_rod(points, coeffs, claim, k, g)
     else:
         derive_polygon(points, coeffs, claim, Polygon(n), k, g)
+
+
+def coefficient(text, path, max_digits):
+    """A combination's coefficient, or the rejection of its text: §10 makes a malformed
+    coefficient a failure of its step (`step-failed`), found when the steps are checked in
+    order."""
+    try:
+        return number(text, path, max_digits)
+    except Reject as r:
+        return r
 
 
 def step_failed(i, kind, why):
@@ -1133,6 +1143,8 @@ def derive(points, coeffs, seeds, images, in_cone, v_of):
                 step_failed(i, "Combination", "no terms")
             acc = None
             for (j, _), c in zip(p[1], coeffs[i]):
+                if isinstance(c, Reject):
+                    step_failed(i, "Combination", f"a coefficient that is not canonical: {c}")
                 if not 0 <= j < i:
                     step_failed(i, "Combination", f"point {j} is not an earlier point")
                 if c < 0:

@@ -197,9 +197,9 @@ EDGE_CASES = {
         '("1/20", "-11/4"', '("2/40", "-11/4"', 1),
 }
 
-KNOWN = {
-    "combination-bad-number": "docs §2: a malformed number is bad-number; chatter: step-failed",
-}
+# Known differences between the docs' reading and chatter (none since §10 was made explicit
+# about a malformed coefficient: step-failed at its step).
+KNOWN: dict = {}
 
 
 @pytest.mark.parametrize("name", sorted(EDGE_CASES))
