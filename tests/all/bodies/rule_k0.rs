@@ -5,7 +5,7 @@
 //! (docs/model.md Proposition 11.0), never with the kernel's Schur complement.
 
 use crate::common::{bin, root};
-use chatter::exact::{Q, Ring};
+use chatter::exact::Q;
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::reject::Code;
 use chatter_kernel::syntax::family::{ConvexBodyText, ConvexCertificate};
