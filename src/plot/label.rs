@@ -187,7 +187,7 @@ const BESIDE_STEP: f64 = 4.0;
 /// of the `soft` curves, or else those that touch the fewest of them; of these the one nearest
 /// to the fraction `target` of the line's length (so labels of neighbouring lines spread along
 /// them). If no place on the line keeps clear, the nearest clear place beside it within
-/// [`BESIDE`] label heights whose leader crosses no `hard` curve ([`beside`]); `None` if there is
+/// `BESIDE` label heights whose leader crosses no `hard` curve (`beside`); `None` if there is
 /// none either (the label is left out).
 pub fn place(frame: &Frame, line: &Polyline, clear: &Clear, half: (f64, f64), target: f64) -> Option<Placed> {
     let hard = segments(frame, clear.hard);

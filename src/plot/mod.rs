@@ -84,6 +84,14 @@ pub trait Figure {
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), String>;
 }
 
+/// A tick label as plotters prints an f64 axis, but never "-0.0": a tick a rounding error away
+/// from zero (|v| below 1e-12) is labelled as zero.
+pub fn tick(v: &f64) -> String {
+    use plotters::coord::ranged1d::ValueFormatter;
+    let v = if v.abs() < 1e-12 { 0.0 } else { *v };
+    plotters::coord::types::RangedCoordf64::format(&v)
+}
+
 /// Turns any plotters error into the figures' error type.
 pub fn err(e: impl std::fmt::Display) -> String {
     format!("plot: {e}")

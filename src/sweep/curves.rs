@@ -257,7 +257,7 @@ fn join(
 /// Every stretch of a curve once (issue 26 §1: a curve seen by both columns and rows was drawn
 /// twice, and dashed it looked solid): the column-linked pieces no steeper than the grid's
 /// diagonal, and the runs of row-linked crossings that no such piece covers over its column strip
-/// ([`covered`]), each run joined at its ends to the column pieces ([`join`]).
+/// (`covered`), each run joined at its ends to the column pieces (`join`).
 pub fn merge(cols: Vec<Polyline>, rows: Vec<Polyline>, cell: (f64, f64)) -> Vec<Polyline> {
     let cols = shallow(cols, cell.1);
     let segs: Vec<Segment> = cols.iter().flat_map(|l| l.windows(2)).map(|w| (w[0], w[1])).collect();
@@ -314,7 +314,7 @@ fn chain(mut pieces: Vec<Polyline>) -> Vec<Polyline> {
 }
 
 /// The curves from the crossings of columns (at x, gammas) and of rows (at gamma, xs), `cell`
-/// apart: linked along each direction ([`link`]), then each stretch kept once ([`merge`]).
+/// apart: linked along each direction (`link`), then each stretch kept once ([`merge`]).
 pub fn draw_crossings(
     cols: &[(f64, Vec<Crossing>)],
     rows: &[(f64, Vec<Crossing>)],

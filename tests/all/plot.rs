@@ -110,6 +110,24 @@ fn a_certificates_cone_on_the_plane() {
     }
 }
 
+/// A tick a rounding error away from zero is labelled as zero, never "-0.0" (seen on the
+/// lander's cone figure, whose panels K_1 and K_2 have a tick at ω_y ≈ -1e-17).
+#[test]
+fn cone_figures_label_no_tick_negative_zero() {
+    let d = tempfile::tempdir().unwrap();
+    let lander = crate::common::root().join("certificates/valid/convex-lander-gamma1_20-inertia-tensor.ron");
+    ok(&chatter(&["plot", "cone", lander.to_str().unwrap(), "-o", "lander.svg"], d.path()));
+    let svg = std::fs::read_to_string(d.path().join("lander.svg")).unwrap();
+    let ticks: Vec<&str> =
+        svg.split("<text").filter_map(|t| t.split('>').nth(1)?.split('<').next()).map(str::trim).collect();
+    let zeros = ticks
+        .iter()
+        .filter(|t| t.trim_start_matches('-').trim_matches(['0', '.']).is_empty() && !t.is_empty());
+    let zeros: Vec<&&str> = zeros.collect();
+    assert!(!zeros.is_empty(), "the figure labels a zero tick somewhere");
+    assert!(zeros.iter().all(|t| !t.starts_with('-')), "negative zero among the ticks: {zeros:?}");
+}
+
 #[test]
 fn issue12_refuted_points_are_marked_on_the_map() {
     let d = tempfile::tempdir().unwrap();

@@ -505,3 +505,37 @@ fn the_main_jobs_figures_explain_the_seed_and_write_greek_letters() {
     }
     assert!(svgs >= 9, "{svgs} figures");
 }
+
+/// Cone figures (issue 26 §1): the labels of the marks p_max(S_j) stand on the side of K's centre,
+/// clear of K's outline (they used to sit across it, and across the images drawn along it).
+#[test]
+fn cone_figure_mark_labels_stand_clear_of_the_cones_outline() {
+    let d = tempfile::tempdir().unwrap();
+    let run = |args: &[&str]| {
+        let o = std::process::Command::new(crate::common::bin())
+            .args(args)
+            .current_dir(d.path())
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+    };
+    let mut checked = 0;
+    for (n, kappa, gamma) in [("3", "1/8", "3/100"), ("4", "1/6", "1/100"), ("6", "1/40", "1/100")] {
+        run(&["certify", "--n", n, "--kappa", kappa, "--gamma", gamma, "-o", "c.ron"]);
+        run(&["plot", "cone", "c.ron", "-o", "c.svg"]);
+        let drawn = parse(&std::fs::read_to_string(d.path().join("c.svg")).unwrap());
+        let outline: Vec<&Line> =
+            drawn.lines.iter().filter(|l| l.0 == "#000000" && l.1 == "3" && l.2.len() > 4).collect();
+        assert!(!outline.is_empty(), "n = {n}: no outline of K");
+        for t in drawn.texts.iter().filter(|t| t.3.starts_with("p_max(S")) {
+            let rect = (t.0, t.1, 11.0 * t.3.chars().count() as f64, 20.0);
+            for l in &outline {
+                let gap =
+                    l.2.windows(2).map(|w| segment_to_rect(w[0], w[1], rect)).fold(f64::INFINITY, f64::min);
+                assert!(gap > 1.0, "n = {n}: the label {} at ({}, {}) touches K's outline", t.3, t.0, t.1);
+            }
+            checked += 1;
+        }
+    }
+    assert!(checked >= 4, "only {checked} mark labels checked");
+}

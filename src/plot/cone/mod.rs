@@ -188,6 +188,8 @@ fn draw_panel<DB: DrawingBackend>(
         .x_desc(axes.0.as_str())
         .y_desc(axes.1.as_str())
         .x_labels(6)
+        .x_label_formatter(&super::tick)
+        .y_label_formatter(&super::tick)
         .axis_desc_style((super::FONT, LABEL))
         .label_style((super::FONT, TICKS))
         .draw()
@@ -223,7 +225,7 @@ fn draw_panel<DB: DrawingBackend>(
         }
     }
     chart.draw_series(panel.seeds.iter().map(|p| Circle::new((p.x, p.y), 5, SEED.filled()))).map_err(err)?;
-    draw_marks(&mut chart, &panel.marks, panel.window)?;
+    draw_marks(&mut chart, &panel.marks, panel)?;
     if let Some(note) = window::stretch_note(panel.stretch) {
         let style = (super::FONT, TICKS).into_font().color(&BLACK);
         let at = (lo.x, hi.y);
@@ -239,11 +241,74 @@ type Chart<'a, DB> = ChartContext<
     Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
 >;
 
+/// Where a mark's label goes, in pixels from the mark (its top-left corner), when no place clear
+/// of every outline is found: on the side of the certified set's centre; `stacked` labels of
+/// marks at the same place go one line further.
+pub fn label_offset(mark: P2, centre: P2, chars: usize, stacked: usize) -> (i32, i32) {
+    let dx = if mark.x > centre.x { -18 - 12 * chars as i32 } else { 18 };
+    let dy = if mark.y > centre.y { 22 + 26 * stacked as i32 } else { -48 - 26 * stacked as i32 };
+    (dx, dy)
+}
+
+type Px = (f64, f64);
+
+/// Whether the segment a-b meets the box (x0, y0, x1, y1) (pixels).
+fn meets(a: Px, b: Px, (x0, y0, x1, y1): (f64, f64, f64, f64)) -> bool {
+    let inside = |p: Px| p.0 >= x0 && p.0 <= x1 && p.1 >= y0 && p.1 <= y1;
+    if inside(a) || inside(b) {
+        return true;
+    }
+    let side = |p: Px, q: Px, r: Px| ((q.0 - p.0) * (r.1 - p.1) - (q.1 - p.1) * (r.0 - p.0)).signum();
+    let cross = |c: Px, d: Px| side(a, b, c) * side(a, b, d) <= 0.0 && side(c, d, a) * side(c, d, b) <= 0.0;
+    let corners = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)];
+    (0..4).any(|i| cross(corners[i], corners[(i + 1) % 4]))
+}
+
+/// The first label box (top-left offset from the mark, pixels) of size `size` that meets no
+/// segment of `outlines` and stays in `area`: rings of growing distance around the mark, each
+/// starting in the direction `toward` (the set's centre) and turning by 45° either way.
+fn clear_spot(mark: Px, toward: Px, size: Px, outlines: &[Vec<Px>], area: (Px, Px)) -> Option<(i32, i32)> {
+    let base = (toward.1 - mark.1).atan2(toward.0 - mark.0);
+    for r in [14.0, 30.0, 50.0, 75.0, 105.0, 140.0] {
+        for k in [0.0, 1.0, -1.0, 2.0, -2.0, 3.0, -3.0, 4.0] {
+            let (dx, dy) = (
+                (base + k * std::f64::consts::FRAC_PI_4).cos(),
+                (base + k * std::f64::consts::FRAC_PI_4).sin(),
+            );
+            let c =
+                (mark.0 + dx * (r + size.0 / 2.0 * dx.abs()), mark.1 + dy * (r + size.1 / 2.0 * dy.abs()));
+            let b = (c.0 - size.0 / 2.0, c.1 - size.1 / 2.0, c.0 + size.0 / 2.0, c.1 + size.1 / 2.0);
+            let within = b.0 >= area.0.0 && b.1 >= area.0.1 && b.2 <= area.1.0 && b.3 <= area.1.1;
+            let clear = outlines.iter().all(|o| (0..o.len()).all(|i| !meets(o[i], o[(i + 1) % o.len()], b)));
+            if within && clear {
+                return Some(((b.0 - mark.0).round() as i32, (b.1 - mark.1).round() as i32));
+            }
+        }
+    }
+    None
+}
+
 fn draw_marks<DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
     marks: &[Mark],
-    window: (P2, P2),
+    panel: &Panel,
 ) -> Result<(), String> {
+    let k = &panel.k;
+    let centre =
+        k.iter().fold(P2::new(0.0, 0.0), |s, p| P2::new(s.x + p.x, s.y + p.y)) / k.len().max(1) as f64;
+    let (xr, yr) = chart.plotting_area().get_pixel_range();
+    let area = ((f64::from(xr.start), f64::from(yr.start)), (f64::from(xr.end), f64::from(yr.end)));
+    let (outlines, marks_px, centre_px) = {
+        let px = |p: &P2| {
+            let (x, y) = chart.backend_coord(&(p.x, p.y));
+            (f64::from(x), f64::from(y))
+        };
+        let outlines: Vec<Vec<Px>> = std::iter::once(k)
+            .chain(panel.images.iter().map(|r| &r.polygon))
+            .map(|poly| poly.iter().map(px).collect())
+            .collect();
+        (outlines, marks.iter().map(|m| px(&m.at)).collect::<Vec<_>>(), px(&centre))
+    };
     for (i, m) in marks.iter().enumerate() {
         let at = (m.at.x, m.at.y);
         match m.marker {
@@ -254,14 +319,18 @@ fn draw_marks<DB: DrawingBackend>(
             Marker::Dot => chart.draw_series(std::iter::once(Circle::new(at, 5, BLACK.filled()))),
         }
         .map_err(err)?;
-        // Labels of marks at the same place are stacked; in the right half they go left.
+        // Labels of marks at the same place are stacked; a label goes where its white box meets
+        // no outline of K or of an image (over hatching only), else toward K's centre.
         let stacked = marks[..i].iter().filter(|o| (o.at - m.at).norm() < 1e-9 * (1.0 + m.at.norm())).count();
-        let right = 2.0 * m.at.x > window.0.x + window.1.x;
-        let low = 2.0 * m.at.y < window.0.y + window.1.y;
-        let dx = if right { -14 - 12 * m.label.chars().count() as i32 } else { 12 };
-        let dy = if low { 10 + 24 * stacked as i32 } else { -30 - 24 * stacked as i32 };
-        let tag =
-            EmptyElement::at(at) + Text::new(m.label.clone(), (dx, dy), (super::FONT, LABEL).into_font());
+        let chars = m.label.chars().count();
+        let size = (12.0 * chars as f64 + 6.0, 26.0 + 26.0 * stacked as f64);
+        let spot = clear_spot(marks_px[i], centre_px, size, &outlines, area);
+        let (bx, by) = spot.unwrap_or_else(|| label_offset(m.at, centre, chars, stacked));
+        let (dx, dy) = (bx + 3, by + 2 + 26 * stacked as i32);
+        let box_ = Rectangle::new([(dx - 3, dy - 2), (dx + 12 * chars as i32 + 3, dy + 24)], WHITE.filled());
+        let tag = EmptyElement::at(at)
+            + box_
+            + Text::new(m.label.clone(), (dx, dy), (super::FONT, LABEL).into_font());
         chart.draw_series(std::iter::once(tag)).map_err(err)?;
     }
     Ok(())
