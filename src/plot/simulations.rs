@@ -85,9 +85,6 @@ fn half(text: &str) -> (f64, f64) {
     (4.5 * text.len() as f64 + 3.0, 10.0)
 }
 
-/// The colour of a leader from a label beside its line to the line.
-const LEADER: RGBColor = RGBColor(80, 80, 80);
-
 /// Draws a label centred at `at`, on a white box, and its leader if it stands beside its line.
 fn draw_label<DB: DrawingBackend>(
     chart: &mut MapChart<'_, '_, DB>,
@@ -98,8 +95,11 @@ fn draw_label<DB: DrawingBackend>(
     let (hw, hh) = half(&text);
     let at = placed.at;
     if let Some(on) = placed.leader {
+        // In the label's colour, 2 px, with a dot where it meets its line: visible on the grey
+        // and white backgrounds alike, and telling which line the label names.
         let end = frame.data(box_point(frame.px(on), frame.px(at), (hw, hh)));
-        chart.draw_series(LineSeries::new([on, end], LEADER.stroke_width(1))).map_err(err)?;
+        chart.draw_series(LineSeries::new([on, end], LEVEL.stroke_width(2))).map_err(err)?;
+        chart.draw_series(std::iter::once(Circle::new(on, 3, LEVEL.filled()))).map_err(err)?;
     }
     let style = (super::FONT, 16).into_font().color(&LEVEL);
     let tag = EmptyElement::at(at)
