@@ -243,18 +243,23 @@ def ron_value(t):
     lex_common(t, c)
 
 
-def read_ron(text):
+def read_whole(text, value):
+    """One value filling the whole text (no byte order mark, not empty, nothing after it)."""
     t = Text(text)
     if text.startswith("\ufeff"):
         t.fail("a byte order mark (U+FEFF) is not part of the format")
     t.ws()
     if t.peek() == "":
         t.fail("the file is empty")
-    v = ron_value(t)
+    v = value(t)
     t.ws()
     if t.peek() != "":
         t.fail("trailing characters")
     return v
+
+
+def read_ron(text):
+    return read_whole(text, ron_value)
 
 
 def json_value(t, must_object=False):
@@ -320,17 +325,7 @@ def json_value(t, must_object=False):
 
 
 def read_json(text):
-    t = Text(text)
-    if text.startswith("\ufeff"):
-        t.fail("a byte order mark (U+FEFF) is not part of the format")
-    t.ws()
-    if t.peek() == "":
-        t.fail("the file is empty")
-    v = json_value(t, must_object=True)
-    t.ws()
-    if t.peek() != "":
-        t.fail("trailing characters")
-    return v
+    return read_whole(text, lambda t: json_value(t, must_object=True))
 
 
 # ---------------------------------------------------------------------------------------------
