@@ -6,12 +6,13 @@
 //! or 5) is written in its current form. Content rules (numbers, body, cone) are not checked: an
 //! invalid certificate converts to an equally invalid one.
 
-use crate::write::{quoted, write, write_convex, write_orbit, write_refutation};
+use crate::write::{quoted, write, write_convex, write_orbit, write_refutation, write_rest};
 use chatter_kernel::certificate::{
     Body, Certificate, ConvexBodyText, ConvexCertificate, Encoding, OrbitBody, OrbitCertificate, OrbitSet,
     Param, Rejection,
 };
 use chatter_kernel::refute::{Refutation, Step};
+use chatter_kernel::rest::TimeToRest;
 use chatter_kernel::syntax::{self, Kind, kind_of, schema};
 
 /// The encoding to convert to.
@@ -94,6 +95,35 @@ pub fn refutation_to_json(r: &Refutation) -> String {
     )
 }
 
+/// Writes a time-to-rest certificate as its JSON twin, one node per line (docs/certificate-format.md
+/// §16).
+pub fn rest_to_json(c: &TimeToRest) -> String {
+    let arr = |xs: &[String]| format!("[{}]", xs.iter().map(|x| quoted(x)).collect::<Vec<_>>().join(", "));
+    let nodes: Vec<String> = c
+        .nodes
+        .iter()
+        .map(|n| {
+            let cone: Vec<String> = n.cone.iter().map(|g| arr(&g.0)).collect();
+            let next: Vec<String> = n.next.iter().map(|(j, s)| format!("[{j}, {s}]")).collect();
+            format!(
+                "{{\"cone\": [{}], \"weight\": {}, \"scale\": {}, \"next\": [{}]}}",
+                cone.join(", "),
+                arr(&n.weight.0),
+                quoted(&n.scale),
+                next.join(", ")
+            )
+        })
+        .collect();
+    format!(
+        "{}    \"claim\": \"{}\",\n    \"bound\": {},\n    \"nodes\": {},\n    \"producer\": {}\n}}\n",
+        head(&c.format, c.version, &c.body),
+        c.claim.name(),
+        quoted(&c.bound),
+        list(&nodes),
+        quoted(&c.producer)
+    )
+}
+
 /// Writes a family certificate (a general convex body, docs/certificate-format.md §13) as its
 /// JSON twin: one contact per line, each cone as a list of generators one per line.
 pub fn convex_to_json(c: &ConvexCertificate) -> String {
@@ -172,6 +202,10 @@ pub fn convert(text: &str, from: Encoding, target: Target) -> Result<String, Str
     match kind {
         Kind::Proof => Err("a proof file (chatter-proof) has no JSON twin".into()),
         Kind::Basin => Err("a basin certificate (chatter-basin-certificate) has no JSON twin".into()),
+        Kind::Rest => {
+            let c: TimeToRest = schema(text, from).map_err(unreadable)?;
+            Ok(if json { rest_to_json(&c) } else { write_rest(&c) })
+        }
         Kind::Refutation => {
             let r: Refutation = schema(text, from).map_err(unreadable)?;
             Ok(if json { refutation_to_json(&r) } else { write_refutation(&r) })

@@ -193,3 +193,36 @@ impl VersionNeeded for Certificate {
         }
     }
 }
+
+/// A tuple of canonical numbers, RON: `("a", "b", "c")`.
+fn ron_tuple(xs: &[String]) -> String {
+    format!("({})", xs.iter().map(|x| quoted(x)).collect::<Vec<_>>().join(", "))
+}
+
+/// Writes a time-to-rest certificate as RON, one node per block (deterministic;
+/// docs/certificate-format.md §16).
+pub fn write_rest(c: &chatter_kernel::rest::TimeToRest) -> String {
+    let Body::RegularPolygon { n, kappa, gamma } = &c.body;
+    let mut out = String::from("TimeToRest(\n");
+    out.push_str(&format!("    format: {},\n    version: {},\n", quoted(&c.format), c.version));
+    out.push_str(&format!(
+        "    body: RegularPolygon(n: {n}, kappa: {}, gamma: {}),\n",
+        param(kappa),
+        param(gamma)
+    ));
+    out.push_str(&format!("    coordinates: ContactVelocities,\n    claim: {},\n", c.claim.name()));
+    out.push_str(&format!("    bound: {},\n    nodes: [\n", quoted(&c.bound)));
+    for node in &c.nodes {
+        let cone: Vec<String> = node.cone.iter().map(|g| ron_tuple(&g.0)).collect();
+        let next: Vec<String> = node.next.iter().map(|(j, s)| format!("({j}, {s})")).collect();
+        out.push_str(&format!(
+            "        (\n            cone: [{}],\n            weight: {},\n            scale: {},\n            next: [{}],\n        ),\n",
+            cone.join(", "),
+            ron_tuple(&node.weight.0),
+            quoted(&node.scale),
+            next.join(", ")
+        ));
+    }
+    out.push_str(&format!("    ],\n    producer: {},\n)\n", quoted(&c.producer)));
+    out
+}

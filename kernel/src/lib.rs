@@ -112,5 +112,12 @@ pub mod refute {
     pub use crate::syntax::refutation::{FORMAT, Refutation, Step, VERSION};
 }
 
+/// Time-to-rest certificates (feature `rest`): the schema and the kernel on one backend.
+#[cfg(feature = "rest")]
+pub mod rest {
+    pub use crate::rules::rest::{Rested, check};
+    pub use crate::syntax::rest::{FORMAT, Node, TimeToRest, VERSION};
+}
+
 #[cfg(feature = "proof")]
 pub use rules::proof;

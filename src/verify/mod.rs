@@ -111,6 +111,10 @@ pub struct FileVerdict {
     /// For a basin certificate: the share with no verdict; the three shares sum to 1.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub undecided_share: Option<String>,
+    /// For an accepted time-to-rest certificate: the nodes of its virtual-time graph (rules
+    /// G1-G5, docs/time-to-rest.md §5); its bound B is `time_to_rest_bound`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rest_nodes: Option<usize>,
     /// For a basin certificate: its leaves (CC, ICC, undecided).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub basin_leaves: Option<[usize; 3]>,
@@ -154,6 +158,7 @@ impl FileVerdict {
             cc_share: None,
             icc_share: None,
             undecided_share: None,
+            rest_nodes: None,
             basin_leaves: None,
         }
     }
@@ -197,6 +202,14 @@ impl FileVerdict {
                 l[0],
                 l[1],
                 l[2]
+            );
+        }
+        if let (Some(nodes), Some(b)) = (self.rest_nodes, &self.time_to_rest_bound) {
+            return format!(
+                "{}: OK ({}, n = {}: every all-down drop's impacts accumulate within T <= {b} h/|v|; a virtual time on {nodes} nodes, rules G1-G5)",
+                self.path,
+                self.claim.unwrap_or("?"),
+                self.n.unwrap_or(0)
             );
         }
         if let Some(b) = self.orbit_boxes {
@@ -324,6 +337,21 @@ pub fn basin_verdict_of(path: &Path, verdict: Verdict<chatter_kernel::basin::Bas
     }
 }
 
+/// The verdict on time-to-rest certificate text, reported for `path`.
+pub fn rest_verdict_of(path: &Path, verdict: Verdict<chatter_kernel::rest::Rested>) -> FileVerdict {
+    match verdict {
+        Verdict::Accepted(a) => {
+            let mut v = FileVerdict::new(path, Status::Ok);
+            (v.claim, v.n) = (Some(a.claim.name()), Some(a.n));
+            v.proves = Some(crate::claims::proves_virtual_time(a.claim.name()));
+            (v.time_to_rest_bound, v.rest_nodes) = (Some(a.bound), Some(a.nodes));
+            v
+        }
+        Verdict::Rejected(r) => verdict_of(path, Verdict::Rejected(r)),
+        Verdict::Disagree(s) => verdict_of(path, Verdict::Disagree(s)),
+    }
+}
+
 /// Which kind of file the text is, by its `format` field.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Kind {
@@ -363,6 +391,10 @@ fn verify_any(
             (refutation_verdict_of(path, v), Kind::Refutation)
         }
         Some(chatter_kernel::proof::FORMAT) => (verdict_of(path, verdict), Kind::Proof),
+        Some(chatter_kernel::rest::FORMAT) => {
+            let v = chatter_kernel::verify::verify_rest_text_in(text, encoding, limits, backends);
+            (rest_verdict_of(path, v), Kind::Certificate)
+        }
         Some(chatter_kernel::syntax::basin::FORMAT) => {
             let v = chatter_kernel::verify::verify_basin_text_in(text, encoding, limits, backends);
             (basin_verdict_of(path, v), Kind::Certificate)

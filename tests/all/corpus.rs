@@ -59,6 +59,11 @@ fn is_refutation(p: &std::path::Path) -> bool {
     p.file_name().is_some_and(|n| n.to_string_lossy().starts_with("refutation-"))
 }
 
+/// Time-to-rest certificates (docs/certificate-format.md §16; kernel/tests/all/rest.rs checks them).
+fn is_rest(p: &std::path::Path) -> bool {
+    p.file_name().is_some_and(|n| n.to_string_lossy().starts_with("rest-"))
+}
+
 /// The kernel's rejection of certificate or refutation text (RON or JSON, by the file's name) on
 /// the backends, if any.
 fn rejection(
@@ -67,8 +72,15 @@ fn rejection(
     backends: &[chatter_kernel::verify::Backend],
 ) -> Option<chatter_kernel::certificate::Rejection> {
     let encoding = encoding_of(path);
-    let refutation = chatter::verify::format::format_of_in(text, encoding).as_deref()
-        == Some(chatter_kernel::refute::FORMAT);
+    let format = chatter::verify::format::format_of_in(text, encoding);
+    if format.as_deref() == Some(chatter_kernel::rest::FORMAT) {
+        let limits = ParseLimits::default();
+        return match chatter_kernel::verify::verify_rest_text_in(text, encoding, limits, backends) {
+            Verdict::Rejected(r) => Some(r),
+            other => panic!("expected a rejection, got {other:?}"),
+        };
+    }
+    let refutation = format.as_deref() == Some(chatter_kernel::refute::FORMAT);
     if refutation {
         match chatter_kernel::verify::verify_refutation_text_in(
             text,
@@ -114,7 +126,7 @@ fn every_valid_refutation_verifies_on_both_backends() {
 #[test]
 fn every_valid_certificate_verifies_on_both_backends() {
     let files: Vec<PathBuf> =
-        ron_files("certificates/valid").into_iter().filter(|f| !is_refutation(f)).collect();
+        ron_files("certificates/valid").into_iter().filter(|f| !is_refutation(f) && !is_rest(f)).collect();
     assert!(files.len() >= 30, "the valid corpus has {} files", files.len());
     let (mut ns, mut claims) = (BTreeSet::new(), BTreeSet::new());
     for f in &files {
@@ -202,6 +214,12 @@ fn corpus_certificates_round_trip_through_the_writer() {
         if kind == Kind::Orbit {
             let cert = chatter_kernel::certificate::read_orbit(&text, Encoding::Ron).unwrap();
             assert_eq!(chatter::write::write_orbit(&cert), text, "{}", f.display());
+            continue;
+        }
+        if kind == Kind::Rest {
+            let cert: chatter_kernel::rest::TimeToRest =
+                chatter_kernel::syntax::read(&text, Encoding::Ron).unwrap();
+            assert_eq!(chatter::write::write_rest(&cert), text, "{}", f.display());
             continue;
         }
         let cert = read(&text).unwrap();

@@ -25,7 +25,13 @@ fn verify_says_that_no_cone_certificate_proves_a_finite_accumulation_time() {
     assert_eq!(o.status.code(), Some(0));
     let out = stdout(&o);
     let (mut seen, mut bounded) = (0, 0);
-    for line in out.lines().filter(|l| l.contains(": OK (")) {
+    // Time-to-rest certificates prove the finite time (rules G1-G5, docs/time-to-rest.md §5).
+    let rest: Vec<&str> = out.lines().filter(|l| l.contains("rules G1-G5")).collect();
+    assert_eq!(rest.len(), 1, "{out}");
+    assert!(
+        rest.iter().all(|l| l.contains("accumulate within T <= ") && !l.contains(FINITE_TIME_NOT_DERIVED))
+    );
+    for line in out.lines().filter(|l| l.contains(": OK (") && !l.contains("rules G1-G5")) {
         let about_drops = DROP_CLAIMS.iter().any(|c| line.contains(&format!("OK ({c},")));
         // Only rod point certificates may carry a kernel-checked bound (rule T1).
         let bound = line.contains("time to rest T <= ");
@@ -45,6 +51,11 @@ fn verify_says_that_no_cone_certificate_proves_a_finite_accumulation_time() {
     for f in v["files"].as_array().unwrap() {
         let Some(claim) = f["claim"].as_str() else { continue };
         if !f["refutation"].is_null() {
+            continue;
+        }
+        if !f["rest_nodes"].is_null() {
+            assert_eq!(f["proves"].as_str(), Some(chatter::claims::proves_virtual_time(claim)));
+            assert!(f["time_to_rest_bound"].is_string(), "{f}");
             continue;
         }
         let p = f["proves"].as_str().unwrap_or_else(|| panic!("no `proves` for {f}"));
@@ -70,7 +81,8 @@ fn certify_reports_what_the_claim_proves_and_no_time_to_rest_bound() {
     assert!(line.contains("PCC excluded") && line.ends_with(FINITE_TIME_NOT_DERIVED), "{line}");
     // The help says which certificates prove the finite time.
     let help = stdout(&chatter(&["--help"], d.path()));
-    assert!(help.contains("proved only by orbit certificates"), "{help}");
+    assert!(help.contains("proved only by orbit certificates, by the rod's bound"), "{help}");
+    assert!(help.contains("time-to-rest certificates (rules G1-G5"), "{help}");
 }
 
 /// One exact flight of the rod (docs/model.md §7, §3 with n = 2): right after an impact at end 0,
@@ -270,4 +282,127 @@ fn the_reproduce_table_bounds_are_never_below_the_simulated_times() {
         assert!(bound >= time * (1.0 - ROUNDING), "{row:?}");
         assert!(!row.constants.is_empty(), "{row:?}");
     }
+}
+
+/// The square plate's time-to-rest certificate against brute force (docs/time-to-rest.md
+/// Theorem 5.1): 200 random all-down drops, simulated in `f64` with the physics of docs/model.md
+/// §2-§3 written again here, follow the certificate's nodes; along each, the virtual time after an
+/// impact never exceeds the virtual time before it minus the flight (steps (c)-(d) of the proof),
+/// and the time from the first impact to the 300th stays below B h/|v|.
+#[test]
+fn the_virtual_time_of_the_square_plates_certificate_falls_along_simulated_drops() {
+    let text =
+        std::fs::read_to_string(root().join("certificates/valid/rest-n4-kappa1_6-gamma1_100.ron")).unwrap();
+    let cert: chatter_kernel::rest::TimeToRest =
+        chatter_kernel::syntax::read(&text, chatter_kernel::syntax::Encoding::Ron).unwrap();
+    let plate = Plate { n: 4, kappa: 1.0 / 6.0, gamma: 1.0 / 100.0 };
+    let bound = num(&cert.bound);
+    let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+    let (mut drops, mut largest) = (0, 0.0_f64);
+    while drops < 200 {
+        let (q, p) = random_drop(&mut seed);
+        let Some(ratio) = follow(&plate, &cert, q, p) else { continue };
+        assert!(ratio <= bound * (1.0 + 1e-9), "T |v|/h = {ratio} > B = {bound}");
+        largest = largest.max(ratio);
+        drops += 1;
+    }
+    // The drops take time: the check is not vacuous (the bound is loose, about 33 times).
+    assert!(largest > 1.0 && largest < bound, "largest T |v|/h = {largest}");
+}
+
+/// A regular n-gon plate (docs/model.md §2-§3) in `f64`.
+struct Plate {
+    n: usize,
+    kappa: f64,
+    gamma: f64,
+}
+
+impl Plate {
+    fn angle(&self, m: i64) -> f64 {
+        2.0 * std::f64::consts::PI * m as f64 / self.n as f64
+    }
+    /// u_k = a_k u0 + b_k u1 + (1 - a_k - b_k) v, a_k = -sin θ_{k-1}/sin θ_1, b_k = sin θ_k/sin θ_1.
+    fn row(&self, k: i64) -> [f64; 3] {
+        let s1 = self.angle(1).sin();
+        let (a, b) = (-self.angle(k - 1).sin() / s1, self.angle(k).sin() / s1);
+        [a, b, 1.0 - a - b]
+    }
+    /// p - β u_k d_k, d_k = (κ + c_k, κ + c_{k-1}, κ), β = (1 + γ)/(1 + κ).
+    fn impact(&self, k: i64, p: [f64; 3]) -> [f64; 3] {
+        let (uk, beta) = (dot(self.row(k), p), (1.0 + self.gamma) / (1.0 + self.kappa));
+        let d = [self.kappa + self.angle(k).cos(), self.kappa + self.angle(k - 1).cos(), self.kappa];
+        std::array::from_fn(|i| p[i] - beta * uk * d[i])
+    }
+    /// Coordinates in the frame of contact k (the relabelling R_k of docs/model.md §3).
+    fn frame(&self, k: i64, x: [f64; 3]) -> [f64; 3] {
+        [dot(self.row(k), x), dot(self.row(k + 1), x), x[2]]
+    }
+    /// The next contact to land and the flight before it.
+    fn next(&self, q: [f64; 3], p: [f64; 3]) -> Option<(i64, f64)> {
+        (0..self.n as i64)
+            .filter(|&k| dot(self.row(k), p) < 0.0)
+            .map(|k| (k, dot(self.row(k), q) / -dot(self.row(k), p)))
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+    }
+}
+
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn num(s: &str) -> f64 {
+    let (a, b) = s.split_once('/').unwrap_or((s, "1"));
+    a.parse::<f64>().unwrap() / b.parse::<f64>().unwrap()
+}
+
+/// A drop with every contact up and moving down (velocity (u0, u1, -1), centre at height 1).
+fn random_drop(seed: &mut u64) -> ([f64; 3], [f64; 3]) {
+    let mut uniform = || {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        (*seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let q = [0.05 + 1.9 * uniform(), 0.05 + 1.9 * uniform(), 1.0];
+    let p = [-1.95 * uniform() - 0.02, -1.95 * uniform() - 0.02, -1.0];
+    (q, p)
+}
+
+/// Follows a drop through the certificate's nodes for 300 impacts, checking that the virtual time
+/// falls; the time from the first impact over h/|v| there, or `None` for a drop that is not
+/// all-down with every contact up.
+fn follow(
+    plate: &Plate,
+    cert: &chatter_kernel::rest::TimeToRest,
+    mut q: [f64; 3],
+    mut p: [f64; 3],
+) -> Option<f64> {
+    let n = plate.n as i64;
+    if (0..n).any(|k| dot(plate.row(k), q) <= 0.0 || dot(plate.row(k), p) >= 0.0) {
+        return None;
+    }
+    let phi = |r: usize, k: i64, q: [f64; 3], p: [f64; 3]| {
+        let node = &cert.nodes[r];
+        let b = [0, 1, 2].map(|i| num(&node.weight.0[i]));
+        num(&node.scale) * dot(b, plate.frame(k, q)) / -dot(b, plate.frame(k, p))
+    };
+    let (mut last, t) = plate.next(q, p)?;
+    q = std::array::from_fn(|i| q[i] + t * p[i]);
+    let (h, v) = (q[2], -p[2]);
+    p = plate.impact(last, p);
+    let (mut node, mut time) = (0, 0.0);
+    let mut after = phi(node, last, q, p);
+    for _ in 0..300 {
+        let (k, f) = plate.next(q, p).expect("v < 0: another contact lands");
+        let j = (k - last).rem_euclid(n) as u64;
+        let to = cert.nodes[node].next.iter().find(|s| s.0 == j).expect("a successor").1;
+        q = std::array::from_fn(|i| q[i] + f * p[i]);
+        let before = phi(node, last, q, p);
+        assert!((before - (after - num(&cert.nodes[node].scale) * f)).abs() <= 1e-9 * after.abs());
+        p = plate.impact(k, p);
+        let now = phi(to, k, q, p);
+        assert!(now <= before * (1.0 + 1e-9), "the virtual time grows: {before} -> {now}");
+        (node, last, after, time) = (to, k, now, time + f);
+    }
+    Some(time * v / h)
 }

@@ -19,13 +19,11 @@ def hull(pts):
 
 EPS = 1e-3
 def enlarge(P, d):
+    """The hull of P scaled by 1 + d about its centroid, plus a square of half-side EPS at each
+    vertex, so that images contained in it stay contained after rounding to rationals."""
     cx = sum(p[0] for p in P)/len(P); cy = sum(p[1] for p in P)/len(P)
-    out = []
-    for p in P:
-        dx, dy = p[0]-cx, p[1]-cy; r = math.hypot(dx, dy) or 1
-
-        out.append((cx+dx*(1+d)+(dx/r)*EPS, cy+dy*(1+d)+(dy/r)*EPS, -1.0))
-    return out
+    pts = [(cx+(p[0]-cx)*(1+d)+sx*EPS, cy+(p[1]-cy)*(1+d)+sy*EPS, -1.0) for p in P for sx in (-1, 1) for sy in (-1, 1)]
+    return hull(pts)
 
 def contains(K, P, tol=1e-12):
     return all(inside(K, p, -tol) for p in P)
@@ -36,7 +34,7 @@ def area(P):
 def build(M, d=0.3, maxnodes=200, clip_u0=False):
     n = M['n']
     K0 = hull([norm(M['I0'](tuple(-x for x in M['m'](k, (k+1) % n)))) for k in range(n)])
-    nodes = [K0]; edges = {}; todo = [0]
+    nodes = [enlarge(K0, 0.0)]; edges = {}; todo = [0]
     while todo:
         r = todo.pop(0)
         for j in range(1, n):

@@ -19,7 +19,7 @@ def ratio(M, br, bt, j, P):
 
 def admissible(M, b, N):
     n = M['n']
-    return min(dot(b, M['m'](0, 1)), dot(b, M['m'](n-1, 0))) > 1e-9 and all(-dot(b, g) > 1e-12 for g in N)
+    return min(dot(b, M['m'](0, 1)), dot(b, M['m'](n-1, 0))) > 1e-9 and all(-dot(b, g) > 1e-6 for g in N)
 
 def refine(M, score, b0, steps=60):
     b = b0; s = score(b); h = 0.2

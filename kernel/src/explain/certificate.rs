@@ -219,6 +219,11 @@ fn image(f: &ImageFailure, locus: &Locus) -> String {
         Locus::Kind(KindLocus::ConvexAllDown { cone: i, generator: m, outside }) => {
             (format!("I_{i} maps the all-down generator -m_({m},{}) = {p} into K_{i}", m1(*m)), outside)
         }
+        #[cfg(feature = "rest")]
+        Locus::Kind(KindLocus::RestNode { node, step: Some(j), vertex: Some(i), outside }) => {
+            let what = format!("node {node}: vertex {i} of K_{node}∩C_{j}, at {p}, maps under S_{j}");
+            (format!("{what} (K: the cone of the node `next` names)"), outside)
+        }
         _ => (format!("the point {p}"), &None),
     };
     let q = f.image.as_deref().map(tuple).unwrap_or_default();

@@ -12,6 +12,8 @@ mod orbit;
 mod proof;
 #[cfg(feature = "refutation")]
 mod refutation;
+#[cfg(feature = "rest")]
+mod rest;
 
 use crate::exact::NumberError;
 use crate::model::polygon::BodyError;
@@ -71,6 +73,8 @@ fn words(detail: &Detail, locus: &Locus) -> String {
         Detail::Kind(KindDetail::Basin(f)) => basin::words(f, locus),
         #[cfg(feature = "refutation")]
         Detail::Kind(KindDetail::Refutation(f)) => refutation::words(f, locus),
+        #[cfg(feature = "rest")]
+        Detail::Kind(KindDetail::Rest(f)) => rest::words(f, locus),
         #[cfg(feature = "proof")]
         Detail::Kind(KindDetail::Proof(f)) => match locus {
             Locus::Kind(KindLocus::Step { index, id }) => format!("step {index} `{id}`: {f}"),

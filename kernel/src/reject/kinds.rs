@@ -6,7 +6,7 @@
 use super::{Detail, Locus};
 use serde::Serialize;
 
-#[cfg(feature = "family")]
+#[cfg(any(feature = "family", feature = "rest"))]
 use super::Boundary;
 #[cfg(feature = "family")]
 use crate::model::convex::shape::ConvexBodyError;
@@ -22,6 +22,8 @@ use crate::rules::orbit::Failure as OrbitFailure;
 use crate::rules::proof::Failure as ProofFailure;
 #[cfg(feature = "refutation")]
 use crate::rules::refutation::Failure as RefutationFailure;
+#[cfg(feature = "rest")]
+use crate::rules::rest::Failure as RestFailure;
 
 /// Declares [`Code`](super::Code) with the codes of point certificates (`$t`, in `reject/mod.rs`)
 /// and those of the other kinds, below.
@@ -69,6 +71,14 @@ macro_rules! codes {
             NotAPartition = "not-a-partition",
             /// A basin certificate's leaf: its prefix, or where it ends, is not shown on the whole leaf.
             LeafNotShown = "leaf-not-shown",
+            /// A time-to-rest node's virtual time is not defined and >= 0 (rules G1, G2).
+            VirtualTimeNotPositive = "virtual-time-not-positive",
+            /// A step that a time-to-rest node allows has no successor node (rule G3).
+            MissingSuccessor = "missing-successor",
+            /// The virtual time grows at an impact (rule G3).
+            VirtualTimeIncreases = "virtual-time-increases",
+            /// The bound B of a time-to-rest certificate is too small (rule G5).
+            BoundTooSmall = "bound-too-small",
         }
     };
 }
@@ -157,6 +167,21 @@ pub enum KindLocus {
         /// Its bisection path.
         path: String,
     },
+    /// A node of a time-to-rest certificate, with the step j and the vertex of K_r ∩ C_j.
+    #[cfg(feature = "rest")]
+    RestNode {
+        /// The node r.
+        node: usize,
+        /// The step j.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        step: Option<u64>,
+        /// The vertex of K_r ∩ C_j (G3).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        vertex: Option<usize>,
+        /// For an image outside the successor's cone: the boundary it crosses.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        outside: Option<Boundary>,
+    },
 }
 
 /// The exact values that explain a rejection of another kind of file.
@@ -194,6 +219,9 @@ pub enum KindDetail {
     /// A refutation's failure.
     #[cfg(feature = "refutation")]
     Refutation(RefutationFailure),
+    /// A time-to-rest certificate's failure.
+    #[cfg(feature = "rest")]
+    Rest(RestFailure),
     /// A proof's failure.
     #[cfg(feature = "proof")]
     Proof(ProofFailure),

@@ -8,7 +8,8 @@
 //! - `boxes` (feature `boxes`): parameter intervals; `field` (feature `field`): the number fields
 //!   Q(cos 2 pi/n); `family` (feature `family`): general convex bodies (K1-K4);
 //!   `orbit` (feature `orbit`): orbit certificates (O1, O2); `refutation` (feature
-//!   `refutation`); `proof` (feature `proof`): the proof checker.
+//!   `refutation`); `proof` (feature `proof`): the proof checker; `rest` (feature `rest`):
+//!   time-to-rest certificates (G1-G5).
 
 #[cfg(feature = "basin")]
 pub mod basin;
@@ -28,4 +29,6 @@ pub mod outcome;
 pub mod proof;
 #[cfg(feature = "refutation")]
 pub mod refutation;
+#[cfg(feature = "rest")]
+pub mod rest;
 pub mod rod;

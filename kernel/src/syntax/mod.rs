@@ -19,6 +19,8 @@ pub mod orbit;
 pub mod proof;
 #[cfg(feature = "refutation")]
 pub mod refutation;
+#[cfg(feature = "rest")]
+pub mod rest;
 pub mod strict;
 
 use crate::reject::{Code, Detail, Locus, Needs, Rejection};
@@ -49,18 +51,21 @@ pub enum Kind {
     Refutation,
     /// A proof (docs/proof-format.md).
     Proof,
+    /// A time-to-rest certificate (§16).
+    Rest,
 }
 
 /// Every header this build knows: (format, versions, kind, the Cargo feature that builds the kind
 /// (`""`: always built), whether it is built). Each kind's own format first, then the legacy
 /// aliases.
-const HEADERS: [(&str, [u64; 2], Kind, &str, bool); 8] = [
+const HEADERS: [(&str, [u64; 2], Kind, &str, bool); 9] = [
     ("chatter-certificate", [1, 3], Kind::Cone, "", true),
     ("chatter-family-certificate", [1, 1], Kind::Family, "family", cfg!(feature = "family")),
     ("chatter-orbit-certificate", [1, 1], Kind::Orbit, "orbit", cfg!(feature = "orbit")),
     ("chatter-basin-certificate", [1, 1], Kind::Basin, "basin", cfg!(feature = "basin")),
     ("chatter-refutation", [1, 1], Kind::Refutation, "refutation", cfg!(feature = "refutation")),
     ("chatter-proof", [1, 1], Kind::Proof, "proof", cfg!(feature = "proof")),
+    ("chatter-time-to-rest", [1, 1], Kind::Rest, "rest", cfg!(feature = "rest")),
     ("chatter-certificate", [4, 4], Kind::Family, "family", cfg!(feature = "family")),
     ("chatter-certificate", [5, 5], Kind::Orbit, "orbit", cfg!(feature = "orbit")),
 ];

@@ -16,6 +16,7 @@ mod point_kernel;
 mod proof_check;
 mod proof_hostile;
 mod proof_poly;
+mod rest;
 mod size;
 mod syntax;
 mod worst;

@@ -11,7 +11,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The kinds of verdict: name in the table, the rules file (under src/), the features.
-const KINDS: [(&str, &str, &[&str]); 10] = [
+const KINDS: [(&str, &str, &[&str]); 11] = [
     ("point certificates, n = 3, 4, 6", "rules/cone.rs", &[]),
     ("point certificates of the rod", "rules/rod.rs", &[]),
     ("box certificates", "rules/boxes.rs", &["boxes"]),
@@ -22,6 +22,7 @@ const KINDS: [(&str, &str, &[&str]); 10] = [
     ("basin certificates, n = 3, 4, 6", "rules/basin.rs", &["basin", "orbit"]),
     ("refutations", "rules/refutation.rs", &["refutation"]),
     ("proofs", "rules/proof/mod.rs", &["proof"]),
+    ("time-to-rest certificates", "rules/rest.rs", &["rest"]),
 ];
 
 /// Point certificates for n = 3, 4, 6: at most this many lines to read, of which at most this many
@@ -29,7 +30,7 @@ const KINDS: [(&str, &str, &[&str]); 10] = [
 /// at its measurement (1,821 before the JSON twin, the codes of the other kinds and the
 /// conveniences left the point kernel's files; docs/kernel-soundness.md §4 says where the lines
 /// still are) so that it cannot grow unseen.
-const POINT_BUDGET: (usize, usize) = (1_675, 291);
+const POINT_BUDGET: (usize, usize) = (1_679, 291);
 
 fn src() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")

@@ -19,6 +19,8 @@ mod orbit;
 mod proof;
 #[cfg(feature = "refutation")]
 mod refutation;
+#[cfg(feature = "rest")]
+mod rest;
 
 #[cfg(feature = "basin")]
 pub use basin::{verify_basin, verify_basin_text_in};
@@ -30,6 +32,8 @@ pub use orbit::{verify_orbit, verify_orbit_on};
 pub use proof::{verify_proof, verify_proof_text};
 #[cfg(feature = "refutation")]
 pub use refutation::{verify_refutation, verify_refutation_text, verify_refutation_text_in};
+#[cfg(feature = "rest")]
+pub use rest::{verify_rest, verify_rest_text_in};
 
 #[cfg(feature = "basin")]
 use crate::rules::basin::{self as basin_rules, BasinReport};
@@ -43,6 +47,8 @@ use crate::rules::outcome::Accepted;
 use crate::rules::proof::{self as proof_rules, Checked};
 #[cfg(feature = "refutation")]
 use crate::rules::refutation::{self as refutation_rules, Refuted};
+#[cfg(feature = "rest")]
+use crate::rules::rest::{self as rest_rules, Rested};
 #[cfg(feature = "basin")]
 use crate::syntax::basin::BasinCertificate;
 #[cfg(feature = "family")]
@@ -53,6 +59,8 @@ use crate::syntax::orbit::OrbitCertificate;
 use crate::syntax::proof::ProofFile;
 #[cfg(feature = "refutation")]
 use crate::syntax::refutation::Refutation;
+#[cfg(feature = "rest")]
+use crate::syntax::rest::TimeToRest;
 #[cfg(any(feature = "family", feature = "orbit"))]
 use crate::syntax::schema;
 
@@ -74,6 +82,9 @@ pub struct Kinds {
     /// Basin certificates.
     #[cfg(feature = "basin")]
     pub basin: fn(&BasinCertificate, ParseLimits) -> Result<BasinReport, Rejection>,
+    /// Time-to-rest certificates.
+    #[cfg(feature = "rest")]
+    pub rest: fn(&TimeToRest, ParseLimits) -> Result<Rested, Rejection>,
 }
 
 impl Kinds {
@@ -90,6 +101,8 @@ impl Kinds {
             proof: proof_rules::check::<F>,
             #[cfg(feature = "basin")]
             basin: basin_rules::check::<F>,
+            #[cfg(feature = "rest")]
+            rest: rest_rules::check::<F>,
         }
     }
 }

@@ -1,0 +1,47 @@
+//! The words of the rejections of time-to-rest certificates.
+
+use super::abbreviate;
+use crate::reject::{KindLocus, Locus};
+use crate::rules::rest::Failure;
+
+/// The words of a failure of a time-to-rest certificate (at a locus).
+pub(super) fn words(f: &Failure, locus: &Locus) -> String {
+    let at = match locus {
+        Locus::Kind(KindLocus::RestNode { node, step, vertex, .. }) => {
+            let step = step.map_or(String::new(), |j| format!(", step j = {j}"));
+            let vertex = vertex.map_or(String::new(), |i| format!(", vertex {i}"));
+            format!("node {node}{step}{vertex}: ")
+        }
+        _ => String::new(),
+    };
+    let what = match f {
+        Failure::Claim(c) => format!("the claim {c:?} is not about all-down drops"),
+        Failure::NotAtPoint => "kappa and gamma must be numbers, not intervals".into(),
+        Failure::Denominator(index, value) => {
+            format!("-b·g = {value} at generator {index}, scaled to v = -1 (rule G1 needs > 0)")
+        }
+        Failure::Height(first, value) => {
+            let m = if *first { "m_{0,1}" } else { "m_{n-1,0}" };
+            format!("b·{m} = {value} (rule G2 needs >= 0)")
+        }
+        Failure::Scale(c) => format!("the scale c = {c} (rule G2 needs >= 1)"),
+        Failure::Successor(step, Some(s)) => format!("step {step} names node {s}, which does not exist"),
+        Failure::Successor(0, None) => "the graph has no node".into(),
+        Failure::Successor(step, None) => {
+            format!("K ∩ C_{step} is not {{0}} but `next` names no node for step {step} (rule G3)")
+        }
+        Failure::Increases(left, lhs, rhs) => {
+            let q = if *left { "m_{j-1,j}" } else { "m_{j,j+1}" };
+            let (l, r) = (abbreviate(lhs), abbreviate(rhs));
+            format!(
+                "the virtual time grows at q = {q}: c_s (b_s·R_j q)(-b_r·p) = {l} > c_r (b_r·q)(-b_s·S_j p) = {r} (rule G3)"
+            )
+        }
+        Failure::Bound(generator, lhs, rhs) => format!(
+            "B is too small at generator {generator} of D: B (-b_0·I_0 g) = {} < c_0 (b_0·m) = {} (rule G5)",
+            abbreviate(lhs),
+            abbreviate(rhs)
+        ),
+    };
+    format!("{at}{what}")
+}

@@ -1,0 +1,243 @@
+//! Time-to-rest certificates (feature `rest`; docs/certificate-format.md §16, why:
+//! docs/kernel-soundness.md §9 and docs/time-to-rest.md Theorem 5.1): a virtual-time graph of a
+//! regular polygon with rational cos(2 pi/n) at a point. Rules, in the order they are checked:
+//!
+//! - the file: the header, claim `CcOrPccFromAllDown` or `CompleteChatterFromAllDown`
+//!   (`unknown-variant`), at most max-generators nodes and generators per node, the total digits
+//!   (`too-large`), a body at a point (`parameter-out-of-range`) with 0 < γ < 1;
+//! - G1: every generator of K_r has v < 0 (`generator-not-below`), K_r has an interior
+//!   (`degenerate-cone`), and -b_r·g > 0 (`virtual-time-not-positive`);
+//! - G2: b_r·m_{0,1} >= 0, b_r·m_{n-1,0} >= 0 and c_r >= 1 (`virtual-time-not-positive`);
+//! - G3: for j = 1..n-1 with K_r ∩ C_j not {0}, a successor s in `next` (`missing-successor`);
+//!   on each vertex p of K_r ∩ C_j, S_j p is 0 or lies in K_s with v < 0 (`image-outside`,
+//!   `image-not-below`), and for q in {m_{j-1,j}, m_{j,j+1}}:
+//!   c_s (b_s·R_j q)(-b_r·p) <= c_r (b_r·q)(-b_s·S_j p) (`virtual-time-increases`);
+//! - G4: I_0(-m_{k,k+1}) ∈ K_0 for every k (`initial-outside`);
+//! - G5: B (-b_0·I_0(-m_{k,k+1})) >= c_0 (b_0·m) for every k and m in {m_{0,1}, m_{n-1,0}}
+//!   (`bound-too-small`);
+//! - R4 (`CompleteChatterFromAllDown`): PCC excluded (`pcc-not-excluded`), as for cone certificates.
+
+use super::body::{body_error, gamma_range};
+use super::cone::{self as cone_rules, Cone, R2, Target, check_image, int_mat};
+use super::generators;
+use crate::exact::{Field, ParseLimits, Ring};
+use crate::model::linalg::{Vec3, dot, mat_vec, neg};
+use crate::model::polygon::Polygon;
+use crate::reject::{Code, Counted, Detail, KindDetail, KindLocus, Locus, Rejection};
+use crate::syntax::cone::{Body, Claim, Param};
+use crate::syntax::numbers::{at_most, in_time, number, total};
+use crate::syntax::rest::{Node, TimeToRest};
+use crate::syntax::{Kind, expect};
+
+/// What an accepted time-to-rest certificate established.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Rested {
+    /// The claim (with PCC excluded for `CompleteChatterFromAllDown`).
+    pub claim: Claim,
+    /// Number of contacts.
+    pub n: u64,
+    /// B, canonical text: T <= B h/|v| for every all-down drop.
+    pub bound: String,
+    /// Number of nodes.
+    pub nodes: usize,
+}
+
+/// Why a time-to-rest certificate is rejected (besides the shared codes), with the exact values.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Failure {
+    /// The claim is not about all-down drops.
+    Claim(Claim),
+    /// κ or γ is an interval.
+    NotAtPoint,
+    /// G1: -b_r·g <= 0 at generator `.0` of K_r; `.1` its value at the generator scaled to v = -1.
+    Denominator(usize, String),
+    /// G2: b_r·m < 0 at m_{0,1} (`.0` true) or m_{n-1,0}; `.1` its value.
+    Height(bool, String),
+    /// G2: c_r < 1.
+    Scale(String),
+    /// G3: no successor for step `.0`, or one (`.1`) naming no node; step 0: no node at all.
+    Successor(u64, Option<usize>),
+    /// G3: the inequality fails at q = m_{j-1,j} (`.0` true) or m_{j,j+1}; both sides.
+    Increases(bool, String, String),
+    /// G5 fails at generator `.0` of D: B (-b_0·I_0 g) and c_0 (b_0·m).
+    Bound(usize, String, String),
+}
+
+/// Checks a time-to-rest certificate on the backend `F`.
+pub fn check<F: Field>(cert: &TimeToRest, limits: ParseLimits) -> Result<Rested, Rejection> {
+    expect(&cert.format, cert.version, Kind::Rest)?;
+    if !matches!(cert.claim, Claim::CcOrPccFromAllDown | Claim::CompleteChatterFromAllDown) {
+        return Err(fail(Code::UnknownVariant, None, Failure::Claim(cert.claim)));
+    }
+    at_most("max-generators", cert.nodes.len(), limits.max_generators, Counted::Generators)?;
+    total(cert.numbers(), limits)?;
+    let body = body::<F>(cert, limits)?;
+    let graph: Vec<Read<F>> =
+        cert.nodes.iter().enumerate().map(|(r, n)| read(&body, r, n, limits)).collect::<Result<_, _>>()?;
+    for r in 0..graph.len() {
+        transitions(&body, &graph, r, limits)?;
+    }
+    cone_rules::all_down(&body, &graph.first().ok_or_else(no_nodes)?.cone, None)?;
+    let bound: F = number("bound", &cert.bound, limits)?;
+    bound_holds(&body, &graph[0], &bound)?;
+    if cert.claim == Claim::CompleteChatterFromAllDown {
+        cone_rules::pcc(&body)?;
+    }
+    let Body::RegularPolygon { n, .. } = cert.body;
+    Ok(Rested { claim: cert.claim, n, bound: cert.bound.clone(), nodes: graph.len() })
+}
+
+/// The body at a point, with 0 < γ < 1.
+fn body<F: Field>(cert: &TimeToRest, limits: ParseLimits) -> Result<Polygon<F>, Rejection> {
+    let Body::RegularPolygon { n, kappa: Param::Point(k), gamma: Param::Point(g) } = &cert.body else {
+        return Err(Rejection::at(Code::ParameterOutOfRange, "body", KindDetail::Rest(Failure::NotAtPoint)));
+    };
+    let (kappa, gamma) = (number("body.kappa", k, limits)?, number("body.gamma", g, limits)?);
+    let body = Polygon::new(*n, kappa, gamma).map_err(|e| body_error(e, "body.kappa", "body.gamma"))?;
+    gamma_range(body.gamma(), "body.gamma", cert.claim)?;
+    Ok(body)
+}
+
+/// A node read: K_r (R1's checks), b_r, c_r and the successors.
+struct Read<'a, F: Field> {
+    cone: Cone<F::Int>,
+    weight: Vec3<F>,
+    scale: F,
+    next: &'a [(u64, usize)],
+}
+
+/// Reads node r and checks G1 and G2 on it.
+fn read<'a, F: Field>(
+    body: &Polygon<F>,
+    r: usize,
+    node: &'a Node,
+    limits: ParseLimits,
+) -> Result<Read<'a, F>, Rejection> {
+    at_most("max-generators", node.cone.len(), limits.max_generators, Counted::Generators)?;
+    let gens =
+        generators::read::<F>(&node.cone, &["u0", "u1", "v"], |i| format!("nodes[{r}].cone[{i}]"), limits)?;
+    let cone = cone_rules::cone::<F>(&gens).map_err(|e| Rejection { locus: locus(r, None, None), ..e })?;
+    let w = generators::read::<F>(
+        std::slice::from_ref(&node.weight),
+        &["b0", "b1", "b2"],
+        |_| format!("nodes[{r}].weight"),
+        limits,
+    )?;
+    let weight: Vec3<F> = std::array::from_fn(|i| F::from_int(&w.vectors[0][i]));
+    let scale: F = number(&format!("nodes[{r}].scale"), &node.scale, limits)?;
+    for (index, g) in gens.vectors.iter().enumerate() {
+        let value =
+            dot(&weight, &[g[0].clone(), g[1].clone(), g[2].clone()].map(|x| F::from_int(&x))).negated();
+        if !value.is_positive() {
+            let at_v = value.over(&F::from_int(&g[2]).negated()).unwrap_or(value);
+            return Err(fail(
+                Code::VirtualTimeNotPositive,
+                Some((r, None, None)),
+                Failure::Denominator(index, text(&at_v)),
+            ));
+        }
+    }
+    for (first, m) in [(true, rest(body, 0)), (false, rest(body, -1))] {
+        let value = dot(&weight, &m);
+        if value.is_negative() {
+            return Err(fail(
+                Code::VirtualTimeNotPositive,
+                Some((r, None, None)),
+                Failure::Height(first, text(&value)),
+            ));
+        }
+    }
+    if scale < F::one() {
+        return Err(fail(Code::VirtualTimeNotPositive, Some((r, None, None)), Failure::Scale(text(&scale))));
+    }
+    Ok(Read { cone, weight, scale, next: &node.next })
+}
+
+/// G3 on node r: for each step j with K_r ∩ C_j not {0}, containment in K_s and the virtual time.
+fn transitions<F: Field>(
+    body: &Polygon<F>,
+    graph: &[Read<F>],
+    r: usize,
+    limits: ParseLimits,
+) -> Result<(), Rejection> {
+    let pieces = cone_rules::pieces(body, &graph[r].cone);
+    for (j, piece) in (1..).zip(&pieces) {
+        if piece.iter().all(|p| p.iter().all(Ring::is_zero)) {
+            continue;
+        }
+        let to = graph[r].next.iter().find(|(step, _)| *step == j).map(|&(_, s)| s);
+        let s = to.filter(|&s| s < graph.len()).ok_or_else(|| {
+            fail(Code::MissingSuccessor, Some((r, Some(j), None)), Failure::Successor(j, to))
+        })?;
+        let step = body.step(j as i64);
+        for (i, p) in piece.iter().enumerate() {
+            in_time(limits, "checking the virtual time (rule G3)")?;
+            let at = |outside| {
+                Locus::Kind(KindLocus::RestNode { node: r, step: Some(j), vertex: Some(i), outside })
+            };
+            let t = Target { point: p, locus: &at, codes: R2, n: body.n(), corner: None };
+            check_image::<F>(&graph[s].cone, &mat_vec(&int_mat(&step), p), &t)?;
+            let p: Vec3<F> = std::array::from_fn(|k| F::from_int(&p[k]));
+            decreases(body, (&graph[r], &graph[s]), j, &p, (r, i))?;
+        }
+    }
+    Ok(())
+}
+
+/// G3's inequality at the vertex p for both generators q of the configurations with h_j = 0.
+fn decreases<F: Field>(
+    body: &Polygon<F>,
+    (from, to): (&Read<F>, &Read<F>),
+    j: u64,
+    p: &Vec3<F>,
+    (r, i): (usize, usize),
+) -> Result<(), Rejection> {
+    let (relabel, sp) = (body.relabel(j as i64), mat_vec(&body.step(j as i64), p));
+    let j = j as i64;
+    for (left, q) in [(true, rest(body, j - 1)), (false, rest(body, j))] {
+        let lhs =
+            to.scale.times(&dot(&to.weight, &mat_vec(&relabel, &q))).times(&dot(&from.weight, p).negated());
+        let rhs = from.scale.times(&dot(&from.weight, &q)).times(&dot(&to.weight, &sp).negated());
+        if lhs > rhs {
+            let failure = Failure::Increases(left, text(&lhs), text(&rhs));
+            return Err(fail(Code::VirtualTimeIncreases, Some((r, Some(j as u64), Some(i))), failure));
+        }
+    }
+    Ok(())
+}
+
+/// G5: B (-b_0·I_0 g) >= c_0 (b_0·m) for every generator g of D and both m.
+fn bound_holds<F: Field>(body: &Polygon<F>, entry: &Read<F>, bound: &F) -> Result<(), Rejection> {
+    let i0 = body.impact(0);
+    let heights = [rest(body, 0), rest(body, -1)].map(|m| entry.scale.times(&dot(&entry.weight, &m)));
+    for (generator, g) in body.all_down_generators().iter().enumerate() {
+        let lhs = bound.times(&dot(&entry.weight, &mat_vec(&i0, g)).negated());
+        if let Some(rhs) = heights.iter().find(|h| lhs < **h) {
+            let failure = Failure::Bound(generator, text(&lhs), text(rhs));
+            return Err(fail(Code::BoundTooSmall, Some((0, None, None)), failure));
+        }
+    }
+    Ok(())
+}
+
+/// m_{k,k+1} (k mod n): minus generator k of D.
+fn rest<F: Field>(body: &Polygon<F>, k: i64) -> Vec3<F> {
+    neg(&body.all_down_generators()[k.rem_euclid(body.n() as i64) as usize])
+}
+
+fn text<F: Field>(x: &F) -> String {
+    crate::exact::to_canonical(x)
+}
+
+fn locus(node: usize, step: Option<u64>, vertex: Option<usize>) -> Locus {
+    Locus::Kind(KindLocus::RestNode { node, step, vertex, outside: None })
+}
+
+fn fail(code: Code, at: Option<(usize, Option<u64>, Option<usize>)>, f: Failure) -> Rejection {
+    let locus = at.map_or(Locus::Nowhere, |(r, j, i)| locus(r, j, i));
+    Rejection::new(code, locus, Detail::Kind(KindDetail::Rest(f)))
+}
+
+fn no_nodes() -> Rejection {
+    fail(Code::MissingSuccessor, None, Failure::Successor(0, None))
+}

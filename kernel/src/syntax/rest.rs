@@ -1,0 +1,65 @@
+//! The schema of time-to-rest certificates (docs/certificate-format.md §16): a regular polygon at
+//! a point, a claim about all-down drops, a bound B and a virtual-time graph (docs/time-to-rest.md
+//! §5). Format `"chatter-time-to-rest"`, version 1. The numbers stay text here.
+
+use super::cone::{Body, Claim, Coordinates, Generator};
+use super::{Kind, Schema};
+use serde::Deserialize;
+
+/// Value of the `format` field.
+pub const FORMAT: &str = "chatter-time-to-rest";
+/// The version this build reads.
+pub const VERSION: u64 = 1;
+
+/// A time-to-rest certificate.
+#[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
+#[serde(rename = "TimeToRest", deny_unknown_fields)]
+pub struct TimeToRest {
+    /// Always [`FORMAT`].
+    pub format: String,
+    /// Always [`VERSION`].
+    pub version: u64,
+    /// The falling body, at a point.
+    pub body: Body,
+    /// The coordinates of the generators and covectors.
+    pub coordinates: Coordinates,
+    /// `CcOrPccFromAllDown` or `CompleteChatterFromAllDown`.
+    pub claim: Claim,
+    /// B: the impacts of every all-down drop accumulate within B h/|v| (rule G5).
+    pub bound: String,
+    /// The nodes; node 0 is entered at the first impact (rule G4).
+    pub nodes: Vec<Node>,
+    /// Informational only, never trusted.
+    #[serde(default)]
+    pub producer: String,
+}
+
+/// A node of the graph: the cone K_r, the covector b_r, the scale c_r and the successors.
+#[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Node {
+    /// Generators of K_r, (u0, u1, v).
+    pub cone: Vec<Generator>,
+    /// b_r, applied to configurations (h0, h1, hc) and velocities (u0, u1, v).
+    pub weight: Generator,
+    /// c_r >= 1.
+    pub scale: String,
+    /// (j, s(r, j)): the node of the velocity after an impact j places on.
+    pub next: Vec<(u64, usize)>,
+}
+
+impl Schema for TimeToRest {
+    const KIND: Kind = Kind::Rest;
+}
+
+impl TimeToRest {
+    /// Every number of the file as text, in order (for `max-total-digits`).
+    pub fn numbers(&self) -> impl Iterator<Item = &str> {
+        let Body::RegularPolygon { kappa, gamma, .. } = &self.body;
+        let nodes = self.nodes.iter().flat_map(|n| {
+            let gens = n.cone.iter().chain([&n.weight]).flat_map(|g| g.0.iter().map(String::as_str));
+            gens.chain([n.scale.as_str()])
+        });
+        kappa.texts().into_iter().chain(gamma.texts()).chain([self.bound.as_str()]).chain(nodes)
+    }
+}
