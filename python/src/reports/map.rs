@@ -56,7 +56,7 @@ fn point(row: &Row, done: &Done, variable: Variable) -> Map<String, Value> {
     let proved = |o: Outcome| sim.and_then(|s| s.proved).map(|p| p[o.index()]);
     let rho = match variable {
         Variable::Rho => json!(row.rho),
-        Variable::Kappa => json!(row.rho.parse::<f64>().ok()),
+        Variable::Kappa | Variable::Parameter => json!(row.rho.parse::<f64>().ok()),
     };
     let obj = json!({
         "index": row.index, "n": row.n, "rho": rho,
