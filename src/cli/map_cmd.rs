@@ -50,7 +50,7 @@ pub struct MapArgs {
     pub n: Option<String>,
     /// A body family instead of --n and --rho/--kappa: one parameter of a general body on the
     /// horizontal axis, KIND:PARAM=A:B:STEPS with rectangle:aspect (plate aspect x 1),
-    /// box:height (box 2 x 1 x height; box=A,B:height for the base A x B) or lander:spread (the
+    /// box:height (box 2 x 1 x height; box=PxQ:height for the base P x Q) or lander:spread (the
     /// lander's feet at spread x their catalogue positions); docs/map.md "Body families".
     #[arg(long, value_name = "KIND:PARAM=A:B:STEPS", conflicts_with_all = ["rho", "kappa", "refute"])]
     pub family: Option<String>,

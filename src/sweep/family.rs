@@ -57,10 +57,10 @@ pub struct BodyFamily {
 }
 
 /// The families `--family` accepts, for messages.
-pub const FAMILIES: &str = "rectangle:aspect=A:B:STEPS, box:height=A:B:STEPS (base 2 x 1), box=A,B:height=A:B:STEPS, lander:spread=A:B:STEPS";
+pub const FAMILIES: &str = "rectangle:aspect=A:B:STEPS, box:height=A:B:STEPS (base 2 x 1), box=PxQ:height=A:B:STEPS (base P x Q), lander:spread=A:B:STEPS";
 
 impl BodyFamily {
-    /// Reads `--family KIND[=A,B]:PARAM=LO:HI:STEPS`: the family and the parameter's axis.
+    /// Reads `--family KIND[=PxQ]:PARAM=LO:HI:STEPS`: the family and the parameter's axis.
     pub fn parse(text: &str) -> Result<(BodyFamily, Axis), String> {
         let bad = || format!("{text:?} is not a body family; give one of {FAMILIES}");
         let (head, rest) = text.split_once(':').ok_or_else(bad)?;
@@ -84,16 +84,19 @@ impl BodyFamily {
         };
         let axis = Axis::parse(axis)?;
         if axis.lo.is_negative() {
-            return Err(format!("the {} axis must start at 0 or above (cell centres are then > 0)", param.trim()));
+            return Err(format!(
+                "the {} axis must start at 0 or above (cell centres are then > 0)",
+                param.trim()
+            ));
         }
         Ok((BodyFamily { kind, base }, axis))
     }
 
-    /// E.g. `rectangle:aspect` or `box=2,1:height` (the CSV's `family` column).
+    /// E.g. `rectangle:aspect` or `box=2x1:height` (the CSV's `family` column: no commas).
     pub fn text(&self) -> String {
         let (name, param) = self.kind.names();
         match &self.base {
-            Some([a, b]) => format!("{name}={a},{b}:{param}"),
+            Some([a, b]) => format!("{name}={a}x{b}:{param}"),
             None => format!("{name}:{param}"),
         }
     }
@@ -123,10 +126,10 @@ impl BodyFamily {
 }
 
 fn box_base(b: &str) -> Result<[Q; 2], String> {
-    let v: Vec<Q> = b.split(',').map(parse_user_number).collect::<Result<_, _>>()?;
+    let v: Vec<Q> = b.split('x').map(parse_user_number).collect::<Result<_, _>>()?;
     match v.as_slice() {
-        [a, b] if a.is_positive() && b.is_positive() => Ok([a.clone(), b.clone()]),
-        _ => Err(format!("box={b}: the base is two numbers > 0, A,B")),
+        [p, q] if p.is_positive() && q.is_positive() => Ok([p.clone(), q.clone()]),
+        _ => Err(format!("box={b}: the base is two numbers > 0, PxQ (e.g. box=2x1)")),
     }
 }
 
@@ -157,8 +160,14 @@ pub fn point_seed(family: &BodyFamily, t: &Q, gamma: &Q) -> u64 {
 /// polygon).
 fn simulate(family: &BodyFamily, p: &Point, body: &ConvexBody<Q>, runs: u64) -> SimStats {
     let seed = point_seed(family, &p.kappa, &p.gamma);
-    let briefs =
-        simulate_many(&Model::convex(body), seed, runs, Arithmetic::Float, &Options::new(PAPER_BUDGET), &|| {});
+    let briefs = simulate_many(
+        &Model::convex(body),
+        seed,
+        runs,
+        Arithmetic::Float,
+        &Options::new(PAPER_BUDGET),
+        &|| {},
+    );
     let impacts = briefs
         .iter()
         .map(|b| if b.outcome == Outcome::Pcc { PAPER_BUDGET } else { b.impacts.min(PAPER_BUDGET) } as u64)
@@ -245,7 +254,10 @@ pub fn curves(family: &BodyFamily, x: &Axis, g: &Axis, lines: u32) -> super::cur
             let cs = match family.body(t, &Q::new(1, 2)) {
                 Ok((body, _)) => {
                     let p = product_profile(&body, Direction::CounterClockwise);
-                    super::curves::crossings(&p, "cc").into_iter().filter(|c| c.at >= g0 && c.at <= g1).collect()
+                    super::curves::crossings(&p, "cc")
+                        .into_iter()
+                        .filter(|c| c.at >= g0 && c.at <= g1)
+                        .collect()
                 }
                 Err(_) => Vec::new(),
             };
