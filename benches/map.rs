@@ -28,7 +28,7 @@ fn main() {
     let steps: u32 = args.first().and_then(|s| s.parse().ok()).unwrap_or(100);
     let repeats: usize = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(2);
     let axis = Axis { lo: Q::int(0), hi: Q::int(1), steps };
-    let grid = Grid { n: 3, variable: Variable::Rho, x: axis.clone(), gamma: axis };
+    let grid = Grid { n: 3, variable: Variable::Rho, x: axis.clone(), gamma: axis, family: None };
     let req = Request {
         grid,
         tasks: Tasks { certify: true, refute: false, simulate: None, proof_budget: 0 },

@@ -41,12 +41,16 @@ fn from_parts(parts: &[Part], feet: &[Vec3], gamma: Q) -> Result<(ConvexBody<Q>,
 /// (radius 1, height 1.5, centre at the origin) and three legs of 1/15 lumped at their feet,
 /// H = 1 m below the cylinder's centre, at (2.2, 0), (-1, ±1.732).
 pub fn lander_parts() -> (Vec<Part>, Vec<Vec3>) {
+    lander_parts_spread(&q(1, 1))
+}
+
+/// The lander with its feet's horizontal positions multiplied by `spread` (> 0; 1 is the
+/// catalogue's lander): the legs' masses move with the feet, so J_eff changes with the spread
+/// (the body family `lander:spread`, docs/map.md "Body families").
+pub fn lander_parts_spread(spread: &Q) -> (Vec<Part>, Vec<Vec3>) {
     let h = q(-1, 1);
-    let feet = vec![
-        v3(q(22, 10), q(0, 1), h.clone()),
-        v3(q(-1, 1), q(1732, 1000), h.clone()),
-        v3(q(-1, 1), q(-1732, 1000), h),
-    ];
+    let foot = |x: Q, y: Q| v3(&x * spread, &y * spread, h.clone());
+    let feet = vec![foot(q(22, 10), q(0, 1)), foot(q(-1, 1), q(1732, 1000)), foot(q(-1, 1), q(-1732, 1000))];
     let mut parts = vec![Part {
         mass: q(4, 5),
         at: v3(q(0, 1), q(0, 1), q(0, 1)),
@@ -74,6 +78,12 @@ fn box_parts(a: &Q, b: &Q, c: &Q) -> (Vec<Part>, Vec<Vec3>) {
     let feet = rectangle_contacts(a, b).into_iter().map(|[x, y]| v3(x, y, z.clone())).collect();
     let origin = v3(q(0, 1), q(0, 1), q(0, 1));
     (vec![Part { mass: q(1, 1), at: origin, own: Tensor::uniform_box(a, b, c) }], feet)
+}
+
+/// The lander of [`lander_parts_spread`] with restitution `gamma`: its planar model and full tensor.
+pub fn lander_with_spread(spread: &Q, gamma: &Q) -> Result<(ConvexBody<Q>, Tensor), ConvexBodyError> {
+    let (parts, feet) = lander_parts_spread(spread);
+    from_parts(&parts, &feet, gamma.clone())
 }
 
 /// The phone, the brick, the table and the lander with restitution `gamma`, each from its 3-D

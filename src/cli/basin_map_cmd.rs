@@ -81,7 +81,7 @@ fn validate(a: &BasinMapArgs) -> Result<MapRequest, String> {
         _ => return Err("give the horizontal axis with --kappa a:b:STEPS or --rho a:b:STEPS".into()),
     };
     let gamma = Axis::parse(&a.gamma).map_err(|e| format!("--gamma: {e}"))?;
-    let grid = Grid { n: a.n, variable, x, gamma };
+    let grid = Grid { n: a.n, variable, x, gamma, family: None };
     grid.validate()?;
     let pattern = a.pattern.as_deref().map(|p| super::orbit_cmd::parse_pattern(p, a.n)).transpose()?;
     let (lo, hi) = parse_box(a.drop_box.as_deref().unwrap_or(TINY_BOX))?;

@@ -1,6 +1,8 @@
 //! `chatter map`: the paper's maps over (rho, gamma) as data (issue 12), and `chatter map merge`.
 
 use super::{self as cli, emit};
+use crate::exact::Q;
+use crate::sweep::family::BodyFamily;
 use crate::sweep::grid::{Axis, Grid, Shard, Variable};
 use crate::sweep::point::Tasks;
 use crate::sweep::summary::Summary;
@@ -32,14 +34,26 @@ Exit status 0 when the map was written, 2 on bad input, 3 if the kernel's backen
 Examples:\n  chatter map --n 3 --rho 0:1:100 --gamma 0:1:100 --certify --out map3\n  \
 chatter map --n 4 --rho 0:1:40 --gamma 0:0.2:40 --simulate 20 --out map4\n  \
 chatter map --n 3 --rho 0:1:100 --gamma 0:1:100 --shard 0/4 --out part0   (and 1/4, 2/4, 3/4)\n  \
-chatter map merge part0 part1 part2 part3 --out map3"
+chatter map merge part0 part1 part2 part3 --out map3\n  \
+chatter map --family rectangle:aspect=1:4:50 --gamma 0:0.1:50 --certify --out rect\n\n\
+With --family the horizontal axis is one parameter of a general body (docs/map.md \"Body families\"): \
+the cc_criterion column is the conjectural product criterion (docs/model.md §11.11), pcc_criterion \
+says whether the PCC Lemma leaves PCC possible at some adjacent pair, finder is the family finder's \
+verdict from I_i(0, 0, -1), --certify makes family certificates checked by the kernel on both \
+backends, --simulate runs f64 drops (evidence only); --refute is for regular polygons."
 )]
 pub struct MapArgs {
     #[command(subcommand)]
     pub merge: Option<MapSub>,
     /// Number of contacts of the regular polygon: 3, 4, 5 or 6.
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "family")]
     pub n: Option<String>,
+    /// A body family instead of --n and --rho/--kappa: one parameter of a general body on the
+    /// horizontal axis, KIND:PARAM=A:B:STEPS with rectangle:aspect (plate aspect x 1),
+    /// box:height (box 2 x 1 x height; box=PxQ:height for the base P x Q) or lander:spread (the
+    /// lander's feet at spread x their catalogue positions); docs/map.md "Body families".
+    #[arg(long, value_name = "KIND:PARAM=A:B:STEPS", conflicts_with_all = ["rho", "kappa", "refute"])]
+    pub family: Option<String>,
     /// Horizontal axis in rho = sqrt(kappa): a:b:STEPS (the paper's axis).
     #[arg(long, value_name = "A:B:STEPS", conflicts_with = "kappa", allow_hyphen_values = true)]
     pub rho: Option<String>,
@@ -102,18 +116,34 @@ struct Validated {
     jobs: Option<usize>,
 }
 
-fn validate(a: MapArgs, env_var: impl Fn(&str) -> Option<String>) -> Result<Validated, String> {
-    let n_text = a.n.ok_or("--n is required (3, 4, 5 or 6)")?;
+/// The grid of a body family (`--family`): n from its body, the parameter on the x axis.
+fn family_grid(text: &str, gamma: Axis) -> Result<Grid, String> {
+    let (family, x) = BodyFamily::parse(text).map_err(|e| format!("--family: {e}"))?;
+    let (body, _) = family.body(&x.value(0), &Q::new(1, 2)).map_err(|e| format!("--family: {e}"))?;
+    Ok(Grid { n: body.n() as u64, variable: Variable::Parameter, x, gamma, family: Some(family) })
+}
+
+/// The grid of a regular n-gon's map (`--n` with `--rho` or `--kappa`).
+fn regular_grid(a: &MapArgs, gamma: Axis) -> Result<Grid, String> {
+    let n_text = a.n.as_deref().ok_or("--n is required (3, 4, 5 or 6), or --family")?;
     let n: u64 = n_text.trim().parse().map_err(|_| format!("--n: {n_text:?} is not a positive integer"))?;
-    let (variable, x) = match (a.rho, a.kappa) {
-        (Some(r), None) => (Variable::Rho, Axis::parse(&r).map_err(|e| format!("--rho: {e}"))?),
-        (None, Some(k)) => (Variable::Kappa, Axis::parse(&k).map_err(|e| format!("--kappa: {e}"))?),
+    let (variable, x) = match (&a.rho, &a.kappa) {
+        (Some(r), None) => (Variable::Rho, Axis::parse(r).map_err(|e| format!("--rho: {e}"))?),
+        (None, Some(k)) => (Variable::Kappa, Axis::parse(k).map_err(|e| format!("--kappa: {e}"))?),
         _ => return Err("give the horizontal axis with --rho a:b:STEPS or --kappa a:b:STEPS".into()),
     };
-    let gamma_text = a.gamma.ok_or("--gamma c:d:STEPS is required")?;
-    let gamma = Axis::parse(&gamma_text).map_err(|e| format!("--gamma: {e}"))?;
-    let grid = Grid { n, variable, x, gamma };
+    Ok(Grid { n, variable, x, gamma, family: None })
+}
+
+fn validate(a: MapArgs, env_var: impl Fn(&str) -> Option<String>) -> Result<Validated, String> {
+    let gamma_text = a.gamma.as_deref().ok_or("--gamma c:d:STEPS is required")?;
+    let gamma = Axis::parse(gamma_text).map_err(|e| format!("--gamma: {e}"))?;
+    let grid = match &a.family {
+        Some(f) => family_grid(f, gamma)?,
+        None => regular_grid(&a, gamma)?,
+    };
     grid.validate()?;
+    let n = grid.n;
     let simulate = match a.simulate {
         None => None,
         Some(s) => {
@@ -137,7 +167,7 @@ fn validate(a: MapArgs, env_var: impl Fn(&str) -> Option<String>) -> Result<Vali
             _ => return Err(format!("--jobs: {j:?} is not a number of threads in 1..=1024")),
         },
     };
-    if a.certify && n == 5 {
+    if a.certify && n == 5 && grid.family.is_none() {
         eprintln!(
             "note: certificates for n = 5 need the number-field kernel (not available yet); the certified and claim columns stay empty"
         );
@@ -154,7 +184,14 @@ fn validate(a: MapArgs, env_var: impl Fn(&str) -> Option<String>) -> Result<Vali
             crate::cli::simulate_cmd::MAX_IMPACTS
         ));
     }
-    let tasks = Tasks { certify: a.certify, refute: a.refute, simulate, proof_budget: a.proof_budget };
+    let mut proof_budget = a.proof_budget;
+    if grid.family.is_some() && simulate.is_some() && proof_budget > 0 {
+        eprintln!(
+            "note: a family map's drops are f64 evidence only (the sim_*_evidence columns): proofs by certified sets need a regular polygon"
+        );
+        proof_budget = 0;
+    }
+    let tasks = Tasks { certify: a.certify, refute: a.refute, simulate, proof_budget };
     Ok(Validated { request: Request { grid, tasks, shard }, out: a.out, jobs })
 }
 
@@ -230,11 +267,13 @@ fn sweep(v: Validated) -> cli::Outcome {
     } else {
         String::new()
     };
+    let body = match (&g.family, g.variable) {
+        (Some(f), _) => format!("family {}={}", f.text(), g.x.text()),
+        (None, Variable::Rho) => format!("n={} rho={}", g.n, g.x.text()),
+        (None, _) => format!("n={} kappa={}", g.n, g.x.text()),
+    };
     emit(&format!(
-        "map n={} {}={} gamma={}: {count} points{part} in {secs:.1} s ({:.0} points/s) -> {}",
-        g.n,
-        if g.variable == Variable::Rho { "rho" } else { "kappa" },
-        g.x.text(),
+        "map {body} gamma={}: {count} points{part} in {secs:.1} s ({:.0} points/s) -> {}",
         g.gamma.text(),
         count as f64 / secs.max(1e-9),
         v.out.display()

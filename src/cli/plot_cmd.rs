@@ -180,18 +180,27 @@ pub fn map_figure(dir: &Path, panel: Panel) -> Result<MapFigure, String> {
             dir.display()
         ));
     }
-    let curves = curves::curves(
-        grid.n,
-        grid.variable,
-        (&grid.x.lo, &grid.x.hi),
-        (&grid.gamma.lo, &grid.gamma.hi),
-        CURVE_LINES,
-    );
-    let what = match panel {
-        Panel::Cones => "cone finder and exact eigenvalue curves".to_string(),
-        Panel::Simulations => crate::plot::simulations::title_of(computed.simulate, computed.proof_budget),
+    let curves = match &grid.family {
+        Some(f) => crate::sweep::family::curves(f, &grid.x, &grid.gamma, CURVE_LINES),
+        None => curves::curves(
+            grid.n,
+            grid.variable,
+            (&grid.x.lo, &grid.x.hi),
+            (&grid.gamma.lo, &grid.gamma.hi),
+            CURVE_LINES,
+        ),
     };
-    let title = format!("n = {} ({}): {what}", grid.n, body_name(grid.n));
+    let what = match (panel, &grid.family) {
+        (Panel::Cones, None) => "cone finder and exact eigenvalue curves".to_string(),
+        (Panel::Cones, Some(_)) => "family finder and certificates".to_string(),
+        (Panel::Simulations, _) => {
+            crate::plot::simulations::title_of(computed.simulate, computed.proof_budget)
+        }
+    };
+    let title = match &grid.family {
+        Some(f) => format!("{}: {what}", f.title()),
+        None => format!("n = {} ({}): {what}", grid.n, body_name(grid.n)),
+    };
     Ok(MapFigure { grid, rows, curves, panel, title, points: Vec::new() })
 }
 

@@ -118,7 +118,8 @@ impl Figure for BasinMapFigure {
         let (left, right) = root.split_horizontally(840);
         let (x0, x1) = (self.x.lo.to_f64(), self.x.hi.to_f64());
         let (g0, g1) = (self.gamma.lo.to_f64(), self.gamma.hi.to_f64());
-        let mut chart = super::map::plane_chart(&left, &self.title, (x0, x1), (g0, g1), self.variable)?;
+        let x_desc = if self.variable == Variable::Rho { "ρ = √κ" } else { "κ" };
+        let mut chart = super::map::plane_chart(&left, &self.title, (x0, x1), (g0, g1), x_desc)?;
         let (dx, dg) = ((x1 - x0) / f64::from(self.x.steps), (g1 - g0) / f64::from(self.gamma.steps));
         let mut bars = Vec::new();
         for c in &self.cells {

@@ -48,10 +48,12 @@ pub struct MapFigure {
     pub points: Vec<(f64, f64, String)>,
 }
 
-fn x_name(v: Variable) -> &'static str {
-    match v {
-        Variable::Rho => "ρ = √κ",
-        Variable::Kappa => "κ",
+/// The horizontal axis's name: ρ, κ, or a body family's parameter.
+pub fn x_name(grid: &Grid) -> String {
+    match (grid.variable, &grid.family) {
+        (_, Some(f)) => f.kind.names().1.to_string(),
+        (Variable::Rho, None) => "ρ = √κ".into(),
+        (_, None) => "κ".into(),
     }
 }
 
@@ -105,22 +107,32 @@ pub fn drawn(lines: &[Polyline]) -> bool {
 
 /// The legend entries of the background: one per finder verdict that occurs, and what the
 /// finder starts from.
-fn background_entries(rows: &[Row]) -> Vec<Entry> {
-    let verdicts = [
-        ("found", FOUND, "cone finder: effectively invariant cone found"),
-        ("inconclusive", INCONCLUSIVE, "cone finder: inconclusive (budget exhausted)"),
-        ("no-cone", NO_CONE, "cone finder: no cone contains the seed"),
-    ];
+fn background_entries(rows: &[Row], family: bool) -> Vec<Entry> {
+    let verdicts = if family {
+        [
+            ("found", FOUND, "family finder: effectively invariant cones found"),
+            ("inconclusive", INCONCLUSIVE, "family finder: inconclusive (budget exhausted)"),
+            ("no-cone", NO_CONE, "family finder: no family contains the seeds"),
+        ]
+    } else {
+        [
+            ("found", FOUND, "cone finder: effectively invariant cone found"),
+            ("inconclusive", INCONCLUSIVE, "cone finder: inconclusive (budget exhausted)"),
+            ("no-cone", NO_CONE, "cone finder: no cone contains the seed"),
+        ]
+    };
+    let seed = if family {
+        "the finder's seeds: Iᵢ(0, 0, −1), the velocities after the first impact of a flat drop"
+    } else {
+        "the finder's seed: −U₀u₃, the velocity after the first impact of a flat drop (the paper's)"
+    };
     let mut e: Vec<Entry> = verdicts
         .into_iter()
         .filter(|(v, ..)| rows.iter().any(|r| r.finder == *v))
         .map(|(_, c, text)| Entry::new(Sample::Fill(c), text))
         .collect();
     if !e.is_empty() {
-        e.push(Entry::new(
-            Sample::Note,
-            "the finder's seed: −U₀u₃, the velocity after the first impact of a flat drop (the paper's)",
-        ));
+        e.push(Entry::new(Sample::Note, seed));
     }
     e
 }
@@ -153,7 +165,11 @@ impl MapFigure {
         let mut e = Vec::new();
         let kind = "exact: S₁'s dominant eigenvalue changes sign or becomes complex";
         e.extend(curve_entry(chart, &self.curves.kind, Sample::Line(KIND, 2), kind.into())?);
-        let cc = "exact: CC criterion boundary (real positive dominant eigenvalue below)";
+        let cc = if self.grid.family.is_some() {
+            "exact: boundary of the conjectural CC criterion (the product around the contacts has a real positive dominant eigenvalue)"
+        } else {
+            "exact: CC criterion boundary (real positive dominant eigenvalue below)"
+        };
         e.extend(curve_entry(chart, &self.curves.cc, Sample::Dashed(CC, 3), cc.into())?);
         let pcc = format!("exact: PCC criterion boundary (S{m}S₁ has real eigenvalues: PCC possible)");
         e.extend(curve_entry(chart, &self.curves.pcc, Sample::Dashed(PCC, 3), pcc)?);
@@ -186,7 +202,7 @@ pub(crate) fn plane_chart<'a, DB: DrawingBackend>(
     title: &str,
     x: (f64, f64),
     g: (f64, f64),
-    variable: Variable,
+    x_desc: &str,
 ) -> Result<MapChart<'a, 'a, DB>, String> {
     let mut chart = ChartBuilder::on(area)
         .caption(title, (super::FONT, TITLE))
@@ -198,7 +214,7 @@ pub(crate) fn plane_chart<'a, DB: DrawingBackend>(
     chart
         .configure_mesh()
         .disable_mesh()
-        .x_desc(x_name(variable))
+        .x_desc(x_desc)
         .y_desc("γ")
         .axis_desc_style((super::FONT, LABEL))
         .label_style((super::FONT, TICKS))
@@ -235,7 +251,7 @@ impl Figure for MapFigure {
         root.fill(&WHITE).map_err(err)?;
         let (left, right) = root.split_horizontally(840);
         let ((x0, x1), (g0, g1)) = ranges(&self.grid);
-        let mut chart = plane_chart(&left, &self.title, (x0, x1), (g0, g1), self.grid.variable)?;
+        let mut chart = plane_chart(&left, &self.title, (x0, x1), (g0, g1), &x_name(&self.grid))?;
         let (dx, dg) = ((x1 - x0) / self.grid.x.steps as f64, (g1 - g0) / self.grid.gamma.steps as f64);
         let ny = self.grid.gamma.steps as usize;
         let centre =
@@ -249,7 +265,7 @@ impl Figure for MapFigure {
                 )
             }))
             .map_err(err)?;
-        let mut entries = background_entries(&self.rows);
+        let mut entries = background_entries(&self.rows, self.grid.family.is_some());
         entries.extend(match self.panel {
             Panel::Cones => {
                 let (w, _) = left.dim_in_pixel();

@@ -434,7 +434,7 @@ struct MapRun {
 fn compute_map(ctx: &Context, n: u64) -> Result<(MapRun, [FigureRef; 2]), String> {
     let steps = if n == 5 { ctx.plan.grid5 } else { ctx.plan.grid };
     let axis = Axis { lo: Q::int(0), hi: Q::int(1), steps };
-    let grid = Grid { n, variable: Variable::Rho, x: axis.clone(), gamma: axis };
+    let grid = Grid { n, variable: Variable::Rho, x: axis.clone(), gamma: axis, family: None };
     let tasks = Tasks {
         certify: n != 5,
         refute: false,

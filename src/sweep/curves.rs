@@ -64,7 +64,7 @@ fn to_f64<F: OrderedField>(t: &Threshold<F>) -> f64 {
     ((&r.lo + &r.hi) / Q::int(2)).to_f64()
 }
 
-fn crossings<F: OrderedField>(p: &Profile<F>, name: &str) -> Vec<Crossing> {
+pub(crate) fn crossings<F: OrderedField>(p: &Profile<F>, name: &str) -> Vec<Crossing> {
     p.thresholds
         .iter()
         .map(|t| Crossing { at: to_f64(t), tag: format!("{name}:{}>{}", t.below, t.above) })

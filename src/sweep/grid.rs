@@ -15,6 +15,8 @@ pub enum Variable {
     Rho,
     /// kappa itself.
     Kappa,
+    /// The parameter of a body family (`map --family`, docs/map.md "Body families").
+    Parameter,
 }
 
 /// One axis `a:b:STEPS`: the centres of STEPS equal cells of [a, b],
@@ -61,13 +63,18 @@ impl Axis {
     }
 }
 
-/// A map's grid: the body (regular n-gon), the horizontal axis and the gamma axis.
+/// A map's grid: the body (regular n-gon, or a body family with n contacts), the horizontal
+/// axis and the gamma axis.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct Grid {
     pub n: u64,
     pub variable: Variable,
     pub x: Axis,
     pub gamma: Axis,
+    /// The body family whose parameter is the horizontal axis (variable `parameter`); absent for
+    /// the regular n-gon's maps.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub family: Option<super::family::BodyFamily>,
 }
 
 /// One grid point, with exact parameters.
@@ -79,6 +86,7 @@ pub struct Point {
     pub ig: u32,
     /// rho when it is the grid's variable (exact); else sqrt(kappa) is printed as a decimal.
     pub rho: Option<Q>,
+    /// kappa; on a family's grid, the body parameter.
     pub kappa: Q,
     pub gamma: Q,
 }
@@ -102,12 +110,16 @@ impl Grid {
         let gamma = self.gamma.value(ig);
         match self.variable {
             Variable::Rho => Point { index, ix, ig, kappa: &x * &x, rho: Some(x), gamma },
-            Variable::Kappa => Point { index, ix, ig, rho: None, kappa: x, gamma },
+            Variable::Kappa | Variable::Parameter => Point { index, ix, ig, rho: None, kappa: x, gamma },
         }
     }
 
-    /// Checks that every point is a body: kappa > 0 and 0 <= gamma <= 1.
+    /// Checks that every point is a body: kappa > 0 (a family's body at every parameter) and
+    /// 0 <= gamma <= 1.
     pub fn validate(&self) -> Result<(), String> {
+        if let Some(f) = &self.family {
+            return self.validate_family(f);
+        }
         if !(3..=6).contains(&self.n) {
             return Err(format!(
                 "--n: {0} is not supported by maps, which cover n = 3, 4, 5 and 6 (the paper's triangle, square and pentagon, and the hexagon); for n = {0} take single points (`chatter classify --n {0} ...`, `chatter simulate --n {0} ...`); the rod's (n = 2) CC region is Goyal's closed formula (`chatter bodies`)",
@@ -127,6 +139,25 @@ impl Grid {
                 "--gamma: the axis from {} to {} is not accepted: it must lie in [0, 1]",
                 self.gamma.lo, self.gamma.hi
             ));
+        }
+        Ok(())
+    }
+}
+
+impl Grid {
+    /// A family's grid: the body at every parameter of the axis, gamma within [0, 1].
+    fn validate_family(&self, f: &super::family::BodyFamily) -> Result<(), String> {
+        if self.gamma.lo < Q::int(0) || self.gamma.hi > Q::int(1) {
+            return Err(format!(
+                "--gamma: the axis from {} to {} is not accepted: it must lie in [0, 1]",
+                self.gamma.lo, self.gamma.hi
+            ));
+        }
+        for i in 0..self.x.steps {
+            let (body, _) = f.body(&self.x.value(i), &Q::new(1, 2)).map_err(|e| format!("--family: {e}"))?;
+            if body.n() as u64 != self.n {
+                return Err(format!("--family: {} contacts, not {}", body.n(), self.n));
+            }
         }
         Ok(())
     }

@@ -5,6 +5,7 @@
 //! merged into exactly the files of one run: results never depend on threads or shards.
 
 pub mod curves;
+pub mod family;
 pub mod general;
 pub mod grid;
 pub mod point;
@@ -66,7 +67,10 @@ pub fn run(req: &Request, tick: &(dyn Fn() + Sync)) -> Vec<Done> {
         .with_max_len(1)
         .map(|i| {
             let p = req.grid.point(i);
-            let e: Evaluation = evaluate(req.grid.n, &p, req.tasks);
+            let e: Evaluation = match &req.grid.family {
+                Some(f) => family::evaluate(f, &p, req.tasks),
+                None => evaluate(req.grid.n, &p, req.tasks),
+            };
             tick();
             let row = Row::new(&req.grid, &p, &e);
             Done {
@@ -151,7 +155,7 @@ pub fn write_output(dir: &Path, req: &Request, done: &[Done]) -> Result<Option<S
         }
     }
     let rows: Vec<Row> = done.iter().map(|d| d.row.clone()).collect();
-    write(dir.join(POINTS), &csv(&rows))?;
+    write(dir.join(POINTS), &csv(&req.grid, &rows))?;
     if req.shard.count == 1 {
         let summary = Summary::new(&req.grid, &req.computed(), &rows);
         write(dir.join(SUMMARY), &summary.json())?;
@@ -212,7 +216,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Summary, String> {
         }
     }
     let rows: Vec<Row> = rows.into_iter().map(|(r, _)| r).collect();
-    write(out.join(POINTS), &csv(&rows))?;
+    write(out.join(POINTS), &csv(&grid, &rows))?;
     let summary = Summary::new(&grid, &computed, &rows);
     write(out.join(SUMMARY), &summary.json())?;
     Ok(summary)

@@ -13,6 +13,19 @@ mean_impacts,sim_cc_proved,sim_no_icc_no_pcc_proved,sim_pcc_proved,sim_icc_prove
 sim_undecided,sim_contradicted,\
 certificate,refutation,orbit";
 
+/// The start of a family map's header: `rho,kappa` are `family,parameter` there (the family's
+/// text and the body parameter, exact); every other column is the regular map's.
+pub const FAMILY_COLUMNS: &str = "index,n,family,parameter,";
+
+/// The header of a map's points.csv: [`HEADER`], with `family,parameter` for a family map.
+pub fn header(grid: &Grid) -> String {
+    if grid.family.is_some() {
+        HEADER.replacen("index,n,rho,kappa,", FAMILY_COLUMNS, 1)
+    } else {
+        HEADER.to_string()
+    }
+}
+
 /// One row of points.csv.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Row {
@@ -56,9 +69,10 @@ pub fn certificate_path(p: &Point) -> String {
 impl Row {
     /// The row of an evaluated point.
     pub fn new(grid: &Grid, p: &Point, e: &Evaluation) -> Row {
-        let rho = match &p.rho {
-            Some(r) => r.to_string(),
-            None => format!("{}", p.kappa.to_f64().sqrt()),
+        let rho = match (&p.rho, &grid.family) {
+            (_, Some(f)) => f.text(),
+            (Some(r), None) => r.to_string(),
+            (None, None) => format!("{}", p.kappa.to_f64().sqrt()),
         };
         Row {
             index: p.index,
@@ -199,9 +213,9 @@ impl Row {
     }
 }
 
-/// The whole file: header and rows in index order.
-pub fn csv(rows: &[Row]) -> String {
-    let mut out = String::from(HEADER);
+/// The whole file: the grid's header and rows in index order.
+pub fn csv(grid: &Grid, rows: &[Row]) -> String {
+    let mut out = header(grid);
     out.push('\n');
     for r in rows {
         out.push_str(&r.to_csv());
@@ -210,10 +224,11 @@ pub fn csv(rows: &[Row]) -> String {
     out
 }
 
-/// Reads points.csv (the header must match).
+/// Reads points.csv (the header must be a regular or a family map's).
 pub fn parse_csv(text: &str) -> Result<Vec<Row>, String> {
     let mut lines = text.lines();
-    if lines.next() != Some(HEADER) {
+    let family = HEADER.replacen("index,n,rho,kappa,", FAMILY_COLUMNS, 1);
+    if !matches!(lines.next(), Some(h) if h == HEADER || h == family) {
         return Err("not a points.csv of this version of chatter (header differs)".into());
     }
     lines.enumerate().map(|(i, l)| Row::from_csv(l).map_err(|e| format!("line {}: {e}", i + 2))).collect()

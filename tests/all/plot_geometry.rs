@@ -137,7 +137,7 @@ fn share(x: f64, g: f64) -> f64 {
 /// A 30 x 30 map over (0, 1)^2 with those fields, every cell "inconclusive" (one colour).
 fn synthetic(curves: Curves) -> MapFigure {
     let axis = Axis { lo: Q::int(0), hi: Q::int(1), steps: STEPS };
-    let grid = Grid { n: 3, variable: Variable::Rho, x: axis.clone(), gamma: axis };
+    let grid = Grid { n: 3, variable: Variable::Rho, x: axis.clone(), gamma: axis, family: None };
     let rows = (0..(STEPS * STEPS) as usize)
         .map(|index| {
             let (ix, ig) = (index / STEPS as usize, index % STEPS as usize);

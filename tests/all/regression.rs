@@ -386,3 +386,22 @@ fn issue_25_certify_with_a_body_file_uses_the_gamma_of_the_command_line() {
     let out = run(&["certify", "--body", lander]);
     assert!(out.contains("gamma=1/20 claim=CompleteChatterFromAllDown"), "{out}");
 }
+
+#[test]
+fn a_body_files_gamma_yields_to_the_command_lines_in_simulate_and_classify() {
+    // Issue 25 §2: `--body FILE --gamma G` uses G in every command that takes a body file.
+    let lander = concat!(env!("CARGO_MANIFEST_DIR"), "/certificates/bodies/lander.ron");
+    let run = |args: &[&str]| {
+        let o = Command::new(bin()).args(args).output().expect("run chatter");
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    let out = run(&["simulate", "--body", lander, "--gamma", "1/100", "--runs", "1"]);
+    assert!(out.contains("n=3 gamma=1/100,"), "{out}");
+    let out = run(&["simulate", "--body", lander, "--runs", "1"]);
+    assert!(out.contains("n=3 gamma=1/20,"), "{out}");
+    let out = run(&["classify", "--body", lander, "--gamma", "1/100"]);
+    assert!(out.contains("3 contacts, gamma = 1/100 "), "{out}");
+    let out = run(&["classify", "--body", lander]);
+    assert!(out.contains("3 contacts, gamma = 1/20 "), "{out}");
+}

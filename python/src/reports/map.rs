@@ -35,7 +35,7 @@ fn request(a: &Args) -> Result<Request, Fail> {
     };
     let x = Axis::parse(&a.x).map_err(|e| bad(format!("{}: {e}", a.variable)))?;
     let gamma = Axis::parse(&a.gamma).map_err(|e| bad(format!("gamma: {e}")))?;
-    let grid = Grid { n: a.n, variable, x, gamma };
+    let grid = Grid { n: a.n, variable, x, gamma, family: None };
     grid.validate().map_err(bad)?;
     if a.simulate.is_some_and(|r| !(1..=MAX_RUNS).contains(&r)) {
         return Err(bad(format!("simulate: runs must be between 1 and {MAX_RUNS}")));
@@ -56,7 +56,7 @@ fn point(row: &Row, done: &Done, variable: Variable) -> Map<String, Value> {
     let proved = |o: Outcome| sim.and_then(|s| s.proved).map(|p| p[o.index()]);
     let rho = match variable {
         Variable::Rho => json!(row.rho),
-        Variable::Kappa => json!(row.rho.parse::<f64>().ok()),
+        Variable::Kappa | Variable::Parameter => json!(row.rho.parse::<f64>().ok()),
     };
     let obj = json!({
         "index": row.index, "n": row.n, "rho": rho,

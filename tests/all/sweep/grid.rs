@@ -22,6 +22,7 @@ fn rho_grids_have_exact_kappa_and_rows_in_order() {
         variable: Variable::Rho,
         x: Axis::parse("0:1:2").unwrap(),
         gamma: Axis::parse("0:1:3").unwrap(),
+        family: None,
     };
     assert_eq!(g.len(), 6);
     let p = g.point(4); // ix = 1, ig = 1

@@ -3,5 +3,6 @@
 
 mod cli;
 mod curves;
+mod family;
 mod grid;
 mod proofs;

@@ -47,6 +47,7 @@ fn a_map_with_proofs_times_every_drop_and_its_shares_add_up_to_the_proved_counts
         variable: Variable::Kappa,
         x: Axis::parse("0.125:0.135:1").unwrap(),
         gamma: Axis::parse("0.14:0.94:2").unwrap(),
+        family: None,
     };
     let tasks = Tasks { certify: false, refute: false, simulate: Some(4), proof_budget: 300 };
     let done = run(&Request { grid, tasks, shard: Shard::ALL }, &|| {});
