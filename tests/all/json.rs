@@ -12,7 +12,9 @@ use chatter::verify::read::{Input, read_input};
 use chatter::write::write;
 use chatter_kernel::certificate::{Code, Encoding, read, read_in};
 use chatter_kernel::exact::ParseLimits;
-use chatter_kernel::verify::{MALACHITE, NUM, verify_refutation_text_in, verify_text_in};
+use chatter_kernel::verify::{
+    MALACHITE, NUM, verify_basin_text_in, verify_refutation_text_in, verify_text_in,
+};
 use std::path::Path;
 use std::process::Command;
 
@@ -26,7 +28,11 @@ fn text_of(p: &Path) -> String {
 /// The verdict on certificate or refutation text on both backends, as comparable text.
 fn verdict(text: &str, encoding: Encoding) -> String {
     let limits = ParseLimits::default();
-    if format_of_in(text, encoding).as_deref() == Some(chatter_kernel::refute::FORMAT) {
+    let format = format_of_in(text, encoding);
+    if format.as_deref() == Some(chatter_kernel::syntax::basin::FORMAT) {
+        return format!("{:?}", verify_basin_text_in(text, encoding, limits, &[MALACHITE, NUM]));
+    }
+    if format.as_deref() == Some(chatter_kernel::refute::FORMAT) {
         format!("{:?}", verify_refutation_text_in(text, encoding, limits, &[MALACHITE, NUM]))
     } else {
         format!("{:?}", verify_text_in(text, encoding, limits, &[MALACHITE, NUM]))
@@ -108,7 +114,7 @@ fn json_code(text: &str) -> Code {
 
 #[test]
 fn the_json_twins_in_the_corpus_are_the_conversions_of_their_ron_files_and_the_doc_example() {
-    for name in ["doc-example-square", "refutation-n4-kappa1_6-gamma1_20"] {
+    for name in ["doc-example-square", "refutation-n4-kappa1_6-gamma1_20", "basin-icc-n3-kappa1_8-gamma1_2"] {
         let dir = root().join("certificates/valid");
         let ron = text_of(&dir.join(format!("{name}.ron")));
         let json = text_of(&dir.join(format!("{name}.json")));
