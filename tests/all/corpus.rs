@@ -267,6 +267,10 @@ fn every_acceptance_rule_has_a_corpus_file_rejected_with_its_code() {
         "K2",
         "K3",
         "K4",
+        "B1",
+        "B2",
+        "B3",
+        "B4",
     ] {
         assert!(rules.contains(rule), "rule {rule} has a row");
     }
