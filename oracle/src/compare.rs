@@ -181,7 +181,14 @@ pub fn compare(k: &KernelView, o: &Judgement) -> Result<Agreement, Finding> {
         (Outcome::Reject { codes, why }, false) => {
             let content = ["pattern-not-forced", "set-not-invariant", "no-contraction"];
             let both_content = content.contains(&code) && codes.iter().all(|c| content.contains(c));
-            if codes.contains(&code) || (o.sided == Sided::One && both_content) {
+            // A basin certificate's orbit conditions (O2) come before B3 and B4: where the
+            // kernel finds O2 false or not shown and the oracle's sample points pass it, the
+            // oracle goes on to the later rules and may meet one of them first.
+            let later = ["not-a-partition", "leaf-not-shown"];
+            let basin_later = o.kind == Kind::Basin
+                && content.contains(&code)
+                && codes.iter().all(|c| content.contains(c) || later.contains(c));
+            if codes.contains(&code) || (o.sided == Sided::One && (both_content || basin_later)) {
                 Ok(Agreement::BothReject)
             } else {
                 let detail = format!("kernel {code} ({}); oracle {codes:?}: {why}", k.message);

@@ -30,10 +30,17 @@ fn ron_files(rel: &str) -> Vec<PathBuf> {
 fn every_valid_basin_certificate_is_accepted_with_shares_summing_to_one() {
     let files = ron_files("valid");
     assert!(!files.is_empty());
+    let mut twins = 0;
     for f in files {
         let text = std::fs::read_to_string(&f).unwrap();
-        let Verdict::Accepted(r) = verify_basin_text_in(&text, Encoding::Ron, ParseLimits::default(), &BOTH)
-        else {
+        let verdict = verify_basin_text_in(&text, Encoding::Ron, ParseLimits::default(), &BOTH);
+        // The JSON twin (docs/certificate-format.md §11, §15), where the corpus has one: the
+        // kernel's JSON reader gives the same report.
+        if let Ok(json) = std::fs::read_to_string(f.with_extension("json")) {
+            assert_eq!(verify_basin_text_in(&json, Encoding::Json, ParseLimits::default(), &BOTH), verdict);
+            twins += 1;
+        }
+        let Verdict::Accepted(r) = verdict else {
             panic!("{}: not accepted", f.display());
         };
         let share = |s: &str| parse_canonical::<Q>(s, ParseLimits::default()).unwrap();
@@ -46,6 +53,7 @@ fn every_valid_basin_certificate_is_accepted_with_shares_summing_to_one() {
             assert!(share(b).is_positive(), "{}", f.display());
         }
     }
+    assert!(twins >= 1, "a basin certificate's JSON twin in the corpus");
 }
 
 #[test]
