@@ -74,8 +74,9 @@ REFUTATIONS
 # catalogue's lander, built from its 3-D geometry (docs/bodies.md).
 "$bin" certify --body lander --gamma 1/20 -o "$out/convex-lander-gamma1_20-inertia-tensor.ron" >/dev/null
 written=$((written + 1))
-# JSON twins (docs/certificate-format.md §11) of the doc example and of a refutation.
-for name in doc-example-square refutation-n4-kappa1_6-gamma1_20; do
+# JSON twins (docs/certificate-format.md §11) of the doc example, of a refutation and of a basin
+# certificate (written by `chatter basin`, docs/basin-certificates.md; not regenerated here).
+for name in doc-example-square refutation-n4-kappa1_6-gamma1_20 basin-icc-n3-kappa1_8-gamma1_2; do
   "$bin" convert "$out/$name.ron" --to json -o "$out/$name.json"
   written=$((written + 1))
 done

@@ -13,6 +13,7 @@ use chatter_kernel::certificate::{
 };
 use chatter_kernel::refute::{Refutation, Step};
 use chatter_kernel::rest::TimeToRest;
+use chatter_kernel::syntax::basin::{BasinCertificate, LeafVerdict};
 use chatter_kernel::syntax::{self, Kind, kind_of, schema};
 
 /// The encoding to convert to.
@@ -193,6 +194,47 @@ pub fn orbit_to_json(c: &OrbitCertificate) -> String {
     )
 }
 
+/// Writes a basin certificate (docs/certificate-format.md §15) as its JSON twin: the embedded
+/// orbit certificate as [`orbit_to_json`] writes it (indented; the member is absent when the RON
+/// has none), one leaf per line, a leaf's verdict `"Undecided"` or `{"Cc": {...}}`.
+pub fn basin_to_json(c: &BasinCertificate) -> String {
+    let OrbitBody::RegularPolygon { n, kappa, gamma } = &c.body;
+    let strings = |v: &[String]| v.iter().map(|s| quoted(s)).collect::<Vec<_>>().join(", ");
+    let ints = |v: &[u64]| v.iter().map(u64::to_string).collect::<Vec<_>>().join(", ");
+    let orbit = c.orbit.as_ref().map_or(String::new(), |o| {
+        format!("    \"orbit\": {},\n", orbit_to_json(o).trim_end().replace('\n', "\n    "))
+    });
+    let leaves: Vec<String> = c
+        .leaves
+        .iter()
+        .map(|l| {
+            let verdict = match &l.verdict {
+                LeafVerdict::Cc { first, steps, cuts } | LeafVerdict::Icc { first, steps, cuts } => {
+                    let name = if matches!(l.verdict, LeafVerdict::Cc { .. }) { "Cc" } else { "Icc" };
+                    format!(
+                        "{{\"{name}\": {{\"first\": {first}, \"steps\": [{}], \"cuts\": [{}]}}}}",
+                        ints(steps),
+                        ints(cuts)
+                    )
+                }
+                LeafVerdict::Undecided => "\"Undecided\"".into(),
+            };
+            format!("{{\"path\": {}, \"verdict\": {verdict}}}", quoted(&l.path))
+        })
+        .collect();
+    format!(
+        "{{\n    \"format\": {},\n    \"version\": {},\n    \"body\": {{\"RegularPolygon\": {{\"n\": {n}, \"kappa\": {}, \"gamma\": {}}}}},\n    \"drops\": {{\"lo\": [{}], \"hi\": [{}]}},\n{orbit}    \"leaves\": {},\n    \"producer\": {}\n}}\n",
+        quoted(&c.format),
+        c.version,
+        quoted(kappa),
+        quoted(gamma),
+        strings(&c.drops.lo),
+        strings(&c.drops.hi),
+        list(&leaves),
+        quoted(&c.producer)
+    )
+}
+
 /// Converts certificate or refutation text in the encoding `from` to `target`; an error in words
 /// (with the rejection code) when the text is not a readable certificate or refutation.
 pub fn convert(text: &str, from: Encoding, target: Target) -> Result<String, String> {
@@ -201,7 +243,10 @@ pub fn convert(text: &str, from: Encoding, target: Target) -> Result<String, Str
     let json = target == Target::Json;
     match kind {
         Kind::Proof => Err("a proof file (chatter-proof) has no JSON twin".into()),
-        Kind::Basin => Err("a basin certificate (chatter-basin-certificate) has no JSON twin".into()),
+        Kind::Basin => {
+            let c: BasinCertificate = schema(text, from).map_err(unreadable)?;
+            Ok(if json { basin_to_json(&c) } else { crate::basin::write_basin(&c) })
+        }
         Kind::Rest => {
             let c: TimeToRest = schema(text, from).map_err(unreadable)?;
             Ok(if json { rest_to_json(&c) } else { write_rest(&c) })

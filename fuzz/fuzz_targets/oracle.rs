@@ -18,7 +18,9 @@
 #![no_main]
 
 use chatter_kernel::syntax::{Encoding as KernelEncoding, Kind, kind_of};
-use chatter_kernel::verify::{MALACHITE, NUM, Verdict, verify_refutation_text, verify_text};
+use chatter_kernel::verify::{
+    MALACHITE, NUM, Verdict, verify_basin_text_in, verify_refutation_text, verify_text,
+};
 use chatter_oracle::compare::{KernelView, differential};
 use chatter_oracle::mutate::{decode, mutated};
 use chatter_oracle::read::{Encoding, Value, parse::parse};
@@ -59,6 +61,25 @@ fn kernel(text: &str) -> KernelView {
         message,
         ..KernelView::default()
     };
+    if kind_of(text, KernelEncoding::Ron, Kind::Basin).is_ok_and(|(kind, _)| kind == Kind::Basin) {
+        return match verify_basin_text_in(text, KernelEncoding::Ron, Default::default(), &[MALACHITE, NUM]) {
+            Verdict::Accepted(a) => KernelView {
+                accepted: true,
+                report: Report {
+                    n: a.n,
+                    basin: Some(([a.cc_share, a.icc_share, a.undecided_share], a.leaves)),
+                    ..Report::default()
+                },
+                orbit_boxes: Some(a.orbit_boxes),
+                time_to_rest_bound: Some(a.time_to_rest_bound),
+                ..KernelView::default()
+            },
+            Verdict::Rejected(r) => {
+                rejected(r.code.as_str(), serde_json::to_value(&r.locus).unwrap(), r.message())
+            }
+            Verdict::Disagree(d) => KernelView { disagree: Some(d), ..KernelView::default() },
+        };
+    }
     if kind_of(text, KernelEncoding::Ron, Kind::Refutation).is_ok_and(|(kind, _)| kind == Kind::Refutation) {
         return match verify_refutation_text(text, Default::default(), &[MALACHITE, NUM]) {
             Verdict::Accepted(a) => KernelView {
@@ -93,6 +114,7 @@ fn kernel(text: &str) -> KernelView {
                     contains_translation: cone.then_some(a.contains_translation),
                     region: a.region,
                     refutation: None,
+                    basin: None,
                 },
                 pcc_boxes: a.pcc_boxes,
                 orbit_boxes: a.orbit_boxes,

@@ -22,6 +22,7 @@ pub fn every_failure(text: &str, encoding: Encoding) -> Vec<&'static str> {
     match header(&value) {
         Ok(Reader::Cone(_)) => cone_failures(&value).unwrap_or_else(|f| f.codes),
         Ok(Reader::Family) => crate::kinds::family::every_failure(&value).unwrap_or_else(|f| f.codes),
+        Ok(Reader::Basin) => crate::kinds::basin::every_failure(&value).unwrap_or_else(|f| f.codes),
         _ => judged.codes().to_vec(),
     }
 }

@@ -15,6 +15,7 @@
 #![deny(clippy::float_arithmetic)]
 
 pub mod arith;
+pub mod basin;
 pub mod claim;
 pub mod compare;
 pub mod cone3;
@@ -93,6 +94,10 @@ fn judge_value(value: &Value, reader: Reader, limits: &Limits) -> Judgement {
             Err(f) => unread(f),
             Ok(file) => done(Kind::Family, Sided::Two, kinds::family::check(&file, limits)),
         },
+        Reader::Basin => match kinds::basin::read(value) {
+            Err(f) => unread(f),
+            Ok(file) => basin(&file, limits),
+        },
         Reader::Orbit => match kinds::orbit::read(value) {
             Err(f) => unread(f),
             Ok(file) => match kinds::orbit::rules(&file, limits) {
@@ -109,5 +114,19 @@ fn judge_value(value: &Value, reader: Reader, limits: &Limits) -> Judgement {
                 }
             },
         },
+    }
+}
+
+/// A basin certificate: rules B1, O1 (two-sided), then O2, B3 and B4 (one-sided overall).
+fn basin(file: &kinds::basin::BasinFile, limits: &Limits) -> Judgement {
+    let checked = kinds::basin::rules(file, limits).and_then(|b| kinds::basin::check(file, &b));
+    match checked {
+        Err(f) => done(Kind::Basin, Sided::One, Err(f)),
+        Ok(found) => {
+            let n = kinds::basin::n(file);
+            let report = Report { n, basin: Some((found.shares, found.leaves)), ..Report::default() };
+            let time = found.time.as_ref().map(kinds::basin::time_text);
+            Judgement { time_to_rest_bound: time, ..done(Kind::Basin, Sided::One, Ok(report)) }
+        }
     }
 }

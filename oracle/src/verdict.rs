@@ -29,6 +29,8 @@ pub enum Kind {
     Orbit,
     /// A refutation.
     Refutation,
+    /// A basin certificate.
+    Basin,
 }
 
 /// What an accepted file established, for comparison with the kernel's report.
@@ -54,6 +56,9 @@ pub struct Report {
     pub region: Option<[[String; 2]; 2]>,
     /// For a refutation: the number of points, the last point's text and whether its v > 0.
     pub refutation: Option<(usize, Vec<String>, bool)>,
+    /// For a basin certificate: the shares of the box (CC, ICC, undecided; canonical text) and
+    /// the leaves of each kind.
+    pub basin: Option<([String; 3], [usize; 3])>,
 }
 
 /// The oracle's verdict.
@@ -81,7 +86,9 @@ pub struct Judgement {
     pub outcome: Outcome,
     /// The bound B on the time to rest, T ≤ B h/|v| (canonical text), of an accepted file: for a
     /// rod point certificate, its `time_to_rest_bound` as rule T1 shows it; for an orbit
-    /// certificate T̄/(1 - ρ) (docs/certificate-format.md §5). Kept beside the [`Report`], whose
+    /// certificate T̄/(1 - ρ) (docs/certificate-format.md §5); for a basin certificate, the largest
+    /// exact (time to rest)/h over the drops the oracle followed into X, a lower bound of the
+    /// kernel's bound. Kept beside the [`Report`], whose
     /// fields other crates fill in literally.
     pub time_to_rest_bound: Option<String>,
 }

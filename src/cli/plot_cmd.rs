@@ -53,7 +53,7 @@ pub enum PlotWhat {
     after_help = "Drop coordinates (the paper's, before the first impact): velocity (omega_x, omega_y, -1), \
 position (phi_x, phi_y, h). The kernel re-checks the file on both backends before drawing (a file \
 it rejects is refused, exit status 1); the title gives its exact shares of the whole box.\n\n\
-Example:\n  chatter plot basin certificates/basin/valid/basin-n3-kappa1_8-gamma3_20.ron --axes phi_x,h \
+Example:\n  chatter plot basin certificates/valid/basin-n3-kappa1_8-gamma3_20.ron --axes phi_x,h \
 --at omega_x=0.0495 -o slice.png"
 )]
 pub struct BasinPlotArgs {

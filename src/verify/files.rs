@@ -74,8 +74,14 @@ pub fn encoding_of(p: &Path) -> chatter_kernel::certificate::Encoding {
 }
 
 /// The format strings of the files `chatter verify` checks (docs/certificate-format.md §7).
-pub const FORMATS: [&str; 4] =
-    ["chatter-certificate", "chatter-family-certificate", "chatter-orbit-certificate", "chatter-refutation"];
+pub const FORMATS: [&str; 6] = [
+    "chatter-certificate",
+    "chatter-family-certificate",
+    "chatter-orbit-certificate",
+    "chatter-basin-certificate",
+    "chatter-time-to-rest",
+    "chatter-refutation",
+];
 
 /// Whether JSON text declares a certificate's or refutation's format: it contains the key
 /// `"format"` followed, after optional whitespace, a colon and optional whitespace, by one of the

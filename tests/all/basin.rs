@@ -12,7 +12,7 @@ use chatter_kernel::syntax::orbit::OrbitBody;
 use chatter_kernel::syntax::{Encoding, read};
 
 fn corpus() -> BasinCertificate {
-    let path = root().join("certificates/basin/valid/basin-n3-kappa1_8-gamma3_20.ron");
+    let path = root().join("certificates/valid/basin-n3-kappa1_8-gamma3_20.ron");
     read(&std::fs::read_to_string(path).unwrap(), Encoding::Ron).unwrap()
 }
 
@@ -137,7 +137,7 @@ fn plot_basin_draws_each_leaf_of_the_slice_where_it_lies_in_its_verdicts_colour(
     use chatter::plot::map::COMPLETE;
     let rgb = |c: plotters::style::RGBColor| [c.0, c.1, c.2];
     let d = tempfile::tempdir().unwrap();
-    let icc = "certificates/basin/valid/basin-icc-n3-kappa1_8-gamma1_2.ron";
+    let icc = "certificates/valid/basin-icc-n3-kappa1_8-gamma1_2.ron";
     // Its leaves split (omega_x, omega_y) only: 0 (omega_x in [0.049, 0.05]), 13 (both upper
     // halves), 120 (omega_x in [0.05, 0.0505], omega_y lower), 1212 (undecided: omega_x in
     // [0.0505, 0.051], omega_y in [0.049, 0.0495]) and 1213 (omega_y in [0.0495, 0.05]).
@@ -169,7 +169,7 @@ fn plot_basin_draws_each_leaf_of_the_slice_where_it_lies_in_its_verdicts_colour(
     // A certificate with CC leaves: 0 (omega_x in [0.049, 0.05]), 10 ([0.05, 0.0505]), 11
     // undecided ([0.0505, 0.051]).
     let c = d.path().join("c.png");
-    let fig = slice("certificates/basin/valid/basin-n3-kappa1_8-gamma3_20.ron", "omega_x,omega_y", &[], &c);
+    let fig = slice("certificates/valid/basin-n3-kappa1_8-gamma3_20.ron", "omega_x,omega_y", &[], &c);
     assert_eq!(colour_at(&c, &fig, 0.0495, 0.0495), rgb(COMPLETE), "leaf 0");
     assert_eq!(colour_at(&c, &fig, 0.05025, 0.0505), rgb(COMPLETE), "leaf 10");
     assert_eq!(colour_at(&c, &fig, 0.05075, 0.0495), rgb(UNDECIDED), "leaf 11");
@@ -179,7 +179,7 @@ fn plot_basin_draws_each_leaf_of_the_slice_where_it_lies_in_its_verdicts_colour(
 fn plot_basin_refuses_a_file_the_kernel_rejects() {
     let d = tempfile::tempdir().unwrap();
     let out = d.path().join("x.png");
-    let bad = root().join("certificates/basin/invalid/basin-first-out-of-range.ron");
+    let bad = root().join("certificates/invalid/basin-first-out-of-range.ron");
     let o = std::process::Command::new(bin())
         .args(["plot", "basin", bad.to_str().unwrap(), "-o", out.to_str().unwrap()])
         .output()

@@ -64,6 +64,12 @@ fn is_rest(p: &std::path::Path) -> bool {
     p.file_name().is_some_and(|n| n.to_string_lossy().starts_with("rest-"))
 }
 
+/// Whether a corpus file is a basin certificate (by its name; the kernel checks the format
+/// field): its own report, checked in kernel/tests/all/basin.rs and tests/all/basin.rs.
+fn is_basin(p: &std::path::Path) -> bool {
+    p.file_name().is_some_and(|n| n.to_string_lossy().starts_with("basin-"))
+}
+
 /// The kernel's rejection of certificate or refutation text (RON or JSON, by the file's name) on
 /// the backends, if any.
 fn rejection(
@@ -80,8 +86,14 @@ fn rejection(
             other => panic!("expected a rejection, got {other:?}"),
         };
     }
-    let refutation = format.as_deref() == Some(chatter_kernel::refute::FORMAT);
-    if refutation {
+    if format.as_deref() == Some(chatter_kernel::syntax::basin::FORMAT) {
+        let limits = ParseLimits::default();
+        return match chatter_kernel::verify::verify_basin_text_in(text, encoding, limits, backends) {
+            Verdict::Rejected(r) => Some(r),
+            other => panic!("expected a rejection, got {other:?}"),
+        };
+    }
+    if format.as_deref() == Some(chatter_kernel::refute::FORMAT) {
         match chatter_kernel::verify::verify_refutation_text_in(
             text,
             encoding,
@@ -126,7 +138,7 @@ fn every_valid_refutation_verifies_on_both_backends() {
 #[test]
 fn every_valid_certificate_verifies_on_both_backends() {
     let files: Vec<PathBuf> =
-        ron_files("certificates/valid").into_iter().filter(|f| !is_refutation(f) && !is_rest(f)).collect();
+        ron_files("certificates/valid").into_iter().filter(|f| !is_refutation(f) && !is_basin(f) && !is_rest(f)).collect();
     assert!(files.len() >= 30, "the valid corpus has {} files", files.len());
     let (mut ns, mut claims) = (BTreeSet::new(), BTreeSet::new());
     for f in &files {
@@ -203,6 +215,7 @@ fn every_invalid_certificate_is_rejected_for_its_stated_reason() {
 
 #[test]
 fn corpus_certificates_round_trip_through_the_writer() {
+    let mut basins = 0;
     for f in ron_files("certificates/valid").into_iter().filter(|f| !is_refutation(f)) {
         let text = std::fs::read_to_string(&f).unwrap();
         let kind = chatter_kernel::syntax::kind_of(&text, Encoding::Ron, Kind::Cone).unwrap().0;
@@ -222,9 +235,16 @@ fn corpus_certificates_round_trip_through_the_writer() {
             assert_eq!(chatter::write::write_rest(&cert), text, "{}", f.display());
             continue;
         }
+        if kind == Kind::Basin {
+            let cert = chatter_kernel::syntax::read(&text, Encoding::Ron).unwrap();
+            assert_eq!(chatter::basin::write_basin(&cert), text, "{}", f.display());
+            basins += 1;
+            continue;
+        }
         let cert = read(&text).unwrap();
         assert_eq!(chatter::write::write(&cert), text, "{}: the writer's layout is canonical", f.display());
     }
+    assert!(basins >= 2, "the valid corpus has {basins} basin certificates");
 }
 
 /// The rows `| rule | code | file |` of docs/kernel-soundness.md §5 ("Which file breaks which rule").
@@ -265,6 +285,10 @@ fn every_acceptance_rule_has_a_corpus_file_rejected_with_its_code() {
         "K2",
         "K3",
         "K4",
+        "B1",
+        "B2",
+        "B3",
+        "B4",
     ] {
         assert!(rules.contains(rule), "rule {rule} has a row");
     }

@@ -12,7 +12,9 @@ use chatter::verify::read::{Input, read_input};
 use chatter::write::write;
 use chatter_kernel::certificate::{Code, Encoding, read, read_in};
 use chatter_kernel::exact::ParseLimits;
-use chatter_kernel::verify::{MALACHITE, NUM, verify_refutation_text_in, verify_text_in};
+use chatter_kernel::verify::{
+    MALACHITE, NUM, verify_basin_text_in, verify_refutation_text_in, verify_text_in,
+};
 use std::path::Path;
 use std::process::Command;
 
@@ -26,11 +28,15 @@ fn text_of(p: &Path) -> String {
 /// The verdict on certificate or refutation text on both backends, as comparable text.
 fn verdict(text: &str, encoding: Encoding) -> String {
     let limits = ParseLimits::default();
-    if format_of_in(text, encoding).as_deref() == Some(chatter_kernel::rest::FORMAT) {
+    let format = format_of_in(text, encoding);
+    if format.as_deref() == Some(chatter_kernel::rest::FORMAT) {
         let v = chatter_kernel::verify::verify_rest_text_in(text, encoding, limits, &[MALACHITE, NUM]);
         return format!("{v:?}");
     }
-    if format_of_in(text, encoding).as_deref() == Some(chatter_kernel::refute::FORMAT) {
+    if format.as_deref() == Some(chatter_kernel::syntax::basin::FORMAT) {
+        return format!("{:?}", verify_basin_text_in(text, encoding, limits, &[MALACHITE, NUM]));
+    }
+    if format.as_deref() == Some(chatter_kernel::refute::FORMAT) {
         format!("{:?}", verify_refutation_text_in(text, encoding, limits, &[MALACHITE, NUM]))
     } else {
         format!("{:?}", verify_text_in(text, encoding, limits, &[MALACHITE, NUM]))
@@ -91,7 +97,7 @@ fn every_invalid_corpus_file_whose_defect_survives_conversion_is_rejected_the_sa
             }
         }
     }
-    assert_eq!((converted, not_converted), (86, 19), "the defects that survive conversion");
+    assert_eq!((converted, not_converted), (101, 19), "the defects that survive conversion");
 }
 
 /// The doc example's JSON twin (certificates/valid/doc-example-square.json).
@@ -112,7 +118,7 @@ fn json_code(text: &str) -> Code {
 
 #[test]
 fn the_json_twins_in_the_corpus_are_the_conversions_of_their_ron_files_and_the_doc_example() {
-    for name in ["doc-example-square", "refutation-n4-kappa1_6-gamma1_20"] {
+    for name in ["doc-example-square", "refutation-n4-kappa1_6-gamma1_20", "basin-icc-n3-kappa1_8-gamma1_2"] {
         let dir = root().join("certificates/valid");
         let ron = text_of(&dir.join(format!("{name}.ron")));
         let json = text_of(&dir.join(format!("{name}.json")));
@@ -307,6 +313,10 @@ fn verify_reads_json_files_and_skips_json_that_is_not_a_certificate() {
     assert!(out.contains("REJECTED: field `format`"), "{out}");
     // The text test of the directory search.
     assert!(declares_format("{ \"format\" :\n \"chatter-refutation\" }"));
+    // Every kind's format, basin certificates included (their JSON twins were once skipped).
+    for kind in ["certificate", "family-certificate", "orbit-certificate", "basin-certificate"] {
+        assert!(declares_format(&format!("{{\"format\": \"chatter-{kind}\"}}")), "{kind}");
+    }
     assert!(!declares_format("[{\"file\": \"x.ron\", \"code\": \"wrong-format\", \"format\": \"x\"}]"));
 }
 
@@ -316,7 +326,8 @@ fn the_corpus_directories_verify_with_their_json_twins_and_the_manifest_is_skipp
     let (code, out, _) = run(&["verify", valid.to_str().unwrap()]);
     assert_eq!(code, Some(0), "{out}");
     let ron = ron_files("certificates/valid").len();
-    assert!(out.contains(&format!("{} files: {} OK, 0 rejected, 0 errors", ron + 2, ron + 2)), "{out}");
+    assert!(out.contains(&format!("{} files: {} OK, 0 rejected, 0 errors", ron + 3, ron + 3)), "{out}");
+    assert!(out.contains("basin-icc-n3-kappa1_8-gamma1_2.json: OK (basin, n = 3"), "{out}");
     assert!(
         out.contains("refutation-n4-kappa1_6-gamma1_20.json: OK (refutes EffectivelyInvariant at n = 4"),
         "{out}"

@@ -1,7 +1,7 @@
-//! Basin certificates (issue 27, docs/basin-certificates.md): the corpus under
-//! `certificates/basin/` on both backends: the valid files are accepted with shares that are
-//! exact rationals summing to 1, and every invalid file is rejected with the code recorded in
-//! `certificates/basin/invalid/expected.json` (each breaks one rule of B1-B4).
+//! Basin certificates (issue 27, docs/basin-certificates.md): the corpus's `basin-*.ron` files
+//! in `certificates/valid` and `certificates/invalid` on both backends: the valid files are
+//! accepted with shares that are exact rationals summing to 1, and every invalid file is rejected
+//! with the code recorded in `certificates/invalid/expected.json` (each breaks one rule of B1-B4).
 #![cfg(feature = "basin")]
 
 use chatter_kernel::exact::{ParseLimits, Ring, parse_canonical};
@@ -12,7 +12,7 @@ use std::path::PathBuf;
 type Q = malachite::rational::Rational;
 
 fn dir(rel: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../certificates/basin").join(rel)
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../certificates").join(rel)
 }
 
 fn ron_files(rel: &str) -> Vec<PathBuf> {
@@ -20,6 +20,7 @@ fn ron_files(rel: &str) -> Vec<PathBuf> {
         .unwrap()
         .map(|e| e.unwrap().path())
         .filter(|p| p.extension().is_some_and(|e| e == "ron"))
+        .filter(|p| p.file_name().is_some_and(|n| n.to_string_lossy().starts_with("basin-")))
         .collect();
     v.sort();
     v
@@ -29,10 +30,17 @@ fn ron_files(rel: &str) -> Vec<PathBuf> {
 fn every_valid_basin_certificate_is_accepted_with_shares_summing_to_one() {
     let files = ron_files("valid");
     assert!(!files.is_empty());
+    let mut twins = 0;
     for f in files {
         let text = std::fs::read_to_string(&f).unwrap();
-        let Verdict::Accepted(r) = verify_basin_text_in(&text, Encoding::Ron, ParseLimits::default(), &BOTH)
-        else {
+        let verdict = verify_basin_text_in(&text, Encoding::Ron, ParseLimits::default(), &BOTH);
+        // The JSON twin (docs/certificate-format.md §11, §15), where the corpus has one: the
+        // kernel's JSON reader gives the same report.
+        if let Ok(json) = std::fs::read_to_string(f.with_extension("json")) {
+            assert_eq!(verify_basin_text_in(&json, Encoding::Json, ParseLimits::default(), &BOTH), verdict);
+            twins += 1;
+        }
+        let Verdict::Accepted(r) = verdict else {
             panic!("{}: not accepted", f.display());
         };
         let share = |s: &str| parse_canonical::<Q>(s, ParseLimits::default()).unwrap();
@@ -45,12 +53,16 @@ fn every_valid_basin_certificate_is_accepted_with_shares_summing_to_one() {
             assert!(share(b).is_positive(), "{}", f.display());
         }
     }
+    assert!(twins >= 1, "a basin certificate's JSON twin in the corpus");
 }
 
 #[test]
 fn every_invalid_basin_certificate_is_rejected_with_its_recorded_code() {
     let manifest = std::fs::read_to_string(dir("invalid/expected.json")).unwrap();
     let entries: Vec<serde_json::Value> = serde_json::from_str(&manifest).unwrap();
+    let entries: Vec<serde_json::Value> =
+        entries.into_iter().filter(|e| e["file"].as_str().unwrap().starts_with("basin-")).collect();
+    assert!(entries.len() >= 15, "{} basin files", entries.len());
     let listed: Vec<String> = entries.iter().map(|e| e["file"].as_str().unwrap().to_string()).collect();
     let mut on_disk: Vec<String> =
         ron_files("invalid").iter().map(|p| p.file_name().unwrap().to_string_lossy().to_string()).collect();

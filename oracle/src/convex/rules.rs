@@ -90,5 +90,6 @@ pub fn check_family(b: &Body, claim: Claim, cones: &[Vec<V3>], bits: u64) -> Che
         contains_translation: Some(translation),
         region: None,
         refutation: None,
+        basin: None,
     })
 }

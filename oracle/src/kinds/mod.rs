@@ -1,5 +1,6 @@
 //! The kinds of files and their rules, after the syntax and the header.
 
+pub mod basin;
 pub mod cone;
 pub mod family;
 pub mod limits;

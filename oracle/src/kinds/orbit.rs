@@ -140,6 +140,13 @@ pub fn read(v: &Value) -> Checked<OrbitFile<'_>> {
     Ok(f)
 }
 
+impl OrbitFile<'_> {
+    /// The body as written: (n, κ, γ).
+    pub fn body(&self) -> (u64, &str, &str) {
+        (self.n, self.kappa, self.gamma)
+    }
+}
+
 fn all_numbers<'a>(f: &'a OrbitFile) -> Vec<&'a str> {
     let mut out = vec![f.kappa, f.gamma, f.rho, f.lambda, f.period];
     match f.set.as_ref().expect("read") {

@@ -11,6 +11,8 @@ pub const CERTIFICATE: &str = "chatter-certificate";
 pub const FAMILY: &str = "chatter-family-certificate";
 /// `format` of orbit certificates (§14).
 pub const ORBIT: &str = "chatter-orbit-certificate";
+/// `format` of basin certificates (§15).
+pub const BASIN: &str = "chatter-basin-certificate";
 /// `format` of refutations (§10).
 pub const REFUTATION: &str = "chatter-refutation";
 
@@ -25,6 +27,8 @@ pub enum Reader {
     Orbit,
     /// Refutations, version 1 (§10).
     Refutation,
+    /// Basin certificates, version 1 (§15).
+    Basin,
 }
 
 /// Reads `format` and `version` and picks the reader. The top-level struct's name, when written,
@@ -54,7 +58,7 @@ pub fn header(v: &Value) -> Checked<Reader> {
         }
     }
     let format = format.flatten().ok_or_else(|| Fail::new("missing-field", "missing field `format`"))?;
-    if ![CERTIFICATE, FAMILY, ORBIT, REFUTATION].contains(&format) {
+    if ![CERTIFICATE, FAMILY, ORBIT, REFUTATION, BASIN].contains(&format) {
         return Err(Fail::new("wrong-format", format!("format {format:?}")));
     }
     let version = version.flatten().ok_or_else(|| Fail::new("missing-field", "missing field `version`"))?;
@@ -64,6 +68,7 @@ pub fn header(v: &Value) -> Checked<Reader> {
         (CERTIFICATE, 1..=3) => Reader::Cone(version),
         (CERTIFICATE, 4) | (FAMILY, 1) => Reader::Family,
         (CERTIFICATE, 5) | (ORBIT, 1) => Reader::Orbit,
+        (BASIN, 1) => Reader::Basin,
         _ => return Err(Fail::new("unsupported-version", format!("version {version}"))),
     };
     let expected_name = if reader == Reader::Refutation { "Refutation" } else { "Certificate" };

@@ -135,5 +135,6 @@ pub fn check_rod(rod: &Rod, claim: Claim, gens: &[V2], bits: u64) -> Checked<Rep
         contains_translation: Some(position(&translation).is_some_and(|x| k.lo <= x && x <= k.hi)),
         region: None,
         refutation: None,
+        basin: None,
     })
 }

@@ -116,5 +116,6 @@ pub fn check_point(b: &Polygon, claim: Claim, gens: &[V3], bits: u64) -> Checked
         contains_translation: Some(contains_translation(b, &k)),
         region: None,
         refutation: None,
+        basin: None,
     })
 }

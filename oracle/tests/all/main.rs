@@ -4,6 +4,7 @@
 
 mod common;
 
+mod basin;
 mod boundary;
 mod corpus;
 mod family;

@@ -36,7 +36,21 @@ fn every_acceptance_rule_has_a_corpus_file_that_breaks_only_it() {
     {
         assert!(rows.iter().any(|r| r.0 == rule), "rule {rule} has a row");
     }
-    for rule in ["convex body", "K1", "K2", "K3", "K4", "field R2", "field R4", "box R2", "box R4"] {
+    for rule in [
+        "convex body",
+        "K1",
+        "K2",
+        "K3",
+        "K4",
+        "field R2",
+        "field R4",
+        "box R2",
+        "box R4",
+        "B1",
+        "B2",
+        "B3",
+        "B4",
+    ] {
         assert!(rows.iter().any(|r| r.0 == rule), "rule {rule} has a row");
     }
     for (rule, code, file) in &rows {

@@ -5,7 +5,9 @@
 #![allow(dead_code)]
 
 use chatter::verify::format::format_of;
-use chatter_kernel::verify::{MALACHITE, NUM, Verdict, verify_refutation_text, verify_text};
+use chatter_kernel::verify::{
+    MALACHITE, NUM, Verdict, verify_basin_text_in, verify_refutation_text, verify_text,
+};
 use chatter_oracle::compare::{Agreement, Finding, KernelView, differential};
 use chatter_oracle::read::Encoding;
 use chatter_oracle::verdict::{Judgement, Report};
@@ -23,6 +25,9 @@ fn rejected(code: &str, locus: serde_json::Value, message: String) -> KernelView
 /// The kernel (both backends) on RON text: a certificate, or a refutation when the text's
 /// `format` says so.
 pub fn kernel_ron(text: &str) -> KernelView {
+    if format_of(text).as_deref() == Some("chatter-basin-certificate") {
+        return kernel_basin(text);
+    }
     if format_of(text).as_deref() == Some("chatter-refutation") {
         return match verify_refutation_text(text, Default::default(), &[MALACHITE, NUM]) {
             Verdict::Accepted(a) => KernelView {
@@ -55,9 +60,32 @@ pub fn kernel_ron(text: &str) -> KernelView {
                 contains_translation: a.orbit_boxes.is_none().then_some(a.contains_translation),
                 region: a.region,
                 refutation: None,
+                basin: None,
             },
             pcc_boxes: a.pcc_boxes,
             orbit_boxes: a.orbit_boxes,
+            time_to_rest_bound: Some(a.time_to_rest_bound),
+            ..KernelView::default()
+        },
+        Verdict::Rejected(r) => {
+            rejected(r.code.as_str(), serde_json::to_value(&r.locus).expect("json"), r.message())
+        }
+        Verdict::Disagree(d) => KernelView { disagree: Some(d), ..KernelView::default() },
+    }
+}
+
+/// The kernel (both backends) on a basin certificate in RON: its shares, leaves and bound.
+fn kernel_basin(text: &str) -> KernelView {
+    use chatter_kernel::syntax::Encoding as KernelEncoding;
+    match verify_basin_text_in(text, KernelEncoding::Ron, Default::default(), &[MALACHITE, NUM]) {
+        Verdict::Accepted(a) => KernelView {
+            accepted: true,
+            report: Report {
+                n: a.n,
+                basin: Some(([a.cc_share, a.icc_share, a.undecided_share], a.leaves)),
+                ..Report::default()
+            },
+            orbit_boxes: Some(a.orbit_boxes),
             time_to_rest_bound: Some(a.time_to_rest_bound),
             ..KernelView::default()
         },
@@ -87,6 +115,10 @@ pub fn kernel_file(path: &Path) -> KernelView {
                 contains_translation: v.contains_translation,
                 region: v.region,
                 refutation: v.refutation.map(|r| (r.points, r.last, r.v_positive)),
+                basin: match (v.cc_share, v.icc_share, v.undecided_share, v.basin_leaves) {
+                    (Some(c), Some(i), Some(u), Some(l)) => Some(([c, i, u], l)),
+                    _ => None,
+                },
                 ..Report::default()
             },
             pcc_boxes: v.pcc_boxes,

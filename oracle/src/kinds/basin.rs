@@ -1,0 +1,350 @@
+//! Basin certificates (docs/certificate-format.md §15, docs/basin-certificates.md): the schema,
+//! rules B1 and B2's comparison of bodies and rule O1 of the embedded orbit certificate, decided
+//! exactly (two-sided); rule B3, the partition, decided exactly (two-sided); the orbit
+//! certificate's conditions at its sample points and rule B4 at three exact drops of every leaf
+//! with a verdict (one-sided: a failing drop proves the certificate false, passing drops prove
+//! nothing). In the kernel's order of rules, so that the first failing rule gives its code.
+
+use super::limits::Limits;
+use super::numbers::element;
+use super::orbit::{self, OrbitFile};
+use crate::arith::rational::rational_text;
+use crate::arith::{Field, Num, Rat};
+use crate::basin::{DIMS, End, drop_state, follow, leaf_box, leaf_points, partition, share};
+use crate::orbit::map::Orbit;
+use crate::read::Value;
+use crate::read::header::{Reader, header};
+use crate::read::schema::{integer, list, optional, regular_polygon, string, variant, walk};
+use crate::regular::model::Polygon;
+use crate::verdict::{Checked, Fail};
+use num_traits::Zero;
+
+/// The most leaves (`max-basin-leaves`), the longest path (`max-basin-depth`) and the longest
+/// prefix (`max-basin-prefix`) of docs/certificate-format.md §15.
+const MAX_LEAVES: usize = 1 << 20;
+const MAX_PATH: usize = 64;
+const MAX_PREFIX: usize = 4096;
+
+/// A leaf's verdict as read: `Cc` or `Icc` with (first, steps, cuts), or `Undecided`.
+#[derive(Clone, Debug)]
+enum LeafText {
+    Prefix { cc: bool, first: u64, steps: Vec<u64>, cuts: Vec<u64> },
+    Undecided,
+}
+
+/// A basin certificate as read.
+pub struct BasinFile<'a> {
+    n: u64,
+    kappa: &'a str,
+    gamma: &'a str,
+    lo: Vec<&'a str>,
+    hi: Vec<&'a str>,
+    orbit: Option<(&'a Value, OrbitFile<'a>)>,
+    leaves: Vec<(&'a str, LeafText)>,
+}
+
+fn strings(v: &Value) -> Checked<Vec<&str>> {
+    list(v)?.iter().map(string).collect()
+}
+
+fn integers(v: &Value) -> Checked<Vec<u64>> {
+    list(v)?.iter().map(integer).collect()
+}
+
+/// A leaf's verdict: `Cc(first, steps, cuts)`, `Icc(...)` or `Undecided`.
+fn verdict(v: &Value) -> Checked<LeafText> {
+    match variant(v)? {
+        ("Undecided", None) => Ok(LeafText::Undecided),
+        (name @ ("Cc" | "Icc"), Some(fields)) => {
+            let (mut first, mut steps, mut cuts) = (0, vec![], vec![]);
+            walk(fields, &[("first", true), ("steps", true), ("cuts", true)], |f, v| {
+                match f {
+                    "first" => first = integer(v)?,
+                    "steps" => steps = integers(v)?,
+                    _ => cuts = integers(v)?,
+                }
+                Ok(())
+            })?;
+            Ok(LeafText::Prefix { cc: name == "Cc", first, steps, cuts })
+        }
+        ("Undecided" | "Cc" | "Icc", _) => Err(Fail::new("syntax", "a leaf's verdict has the wrong form")),
+        (name, _) => Err(Fail::new("unknown-variant", format!("unknown verdict `{name}`"))),
+    }
+}
+
+fn leaf(v: &Value) -> Checked<(&str, LeafText)> {
+    let (mut path, mut text) = ("", LeafText::Undecided);
+    walk(v, &[("path", true), ("verdict", true)], |f, v| {
+        if f == "path" {
+            path = string(v)?;
+        } else {
+            text = verdict(v)?;
+        }
+        Ok(())
+    })?;
+    Ok((path, text))
+}
+
+/// The schema of §15.
+pub fn read(v: &Value) -> Checked<BasinFile<'_>> {
+    let mut f = BasinFile { n: 0, kappa: "", gamma: "", lo: vec![], hi: vec![], orbit: None, leaves: vec![] };
+    let fields = [
+        ("format", true),
+        ("version", true),
+        ("body", true),
+        ("drops", true),
+        ("orbit", false),
+        ("leaves", true),
+        ("producer", false),
+    ];
+    walk(v, &fields, |name, value| {
+        match name {
+            "format" | "producer" => drop(string(value)?),
+            "version" => drop(integer(value)?),
+            "body" => regular_polygon(value, |k, v| {
+                match k {
+                    "n" => f.n = integer(v)?,
+                    "kappa" => f.kappa = string(v)?,
+                    _ => f.gamma = string(v)?,
+                }
+                Ok(())
+            })?,
+            "drops" => walk(value, &[("lo", true), ("hi", true)], |k, v| {
+                if k == "lo" {
+                    f.lo = strings(v)?;
+                } else {
+                    f.hi = strings(v)?;
+                }
+                Ok(())
+            })?,
+            "orbit" => {
+                if let Some(o) = optional(value)? {
+                    f.orbit = Some((o, orbit::read(o)?));
+                }
+            }
+            _ => f.leaves = list(value)?.iter().map(leaf).collect::<Checked<_>>()?,
+        }
+        Ok(())
+    })?;
+    Ok(f)
+}
+
+fn out_of_range(why: impl Into<String>) -> Fail {
+    Fail::new("basin-out-of-range", why)
+}
+
+fn too_large(why: &str) -> Fail {
+    Fail::new("too-large", why)
+}
+
+/// The exact content of a basin certificate that passed rules B1 and O1.
+pub struct Basin {
+    body: Polygon,
+    orbit: Option<Orbit>,
+    lo: [Rat; DIMS],
+    hi: [Rat; DIMS],
+}
+
+/// The body's numbers (B1, as rule O1 reads a body): κ > 0, 0 ≤ γ ≤ 1, 3 ≤ n ≤ 64.
+fn body(f: &BasinFile, limits: &Limits) -> Checked<(Num, Num)> {
+    let q = Field::rationals();
+    let kappa = element("body.kappa", f.kappa, &q, limits)?;
+    let gamma = element("body.gamma", f.gamma, &q, limits)?;
+    if !(3..=orbit::MAX_N).contains(&f.n) {
+        return Err(Fail::new(
+            "unsupported-body",
+            format!("n = {}: basin certificates need 3 <= n <= 64", f.n),
+        ));
+    }
+    if !kappa.is_positive() || gamma.is_negative() || gamma > Num::int(&q, 1) {
+        return Err(Fail::new("parameter-out-of-range", "kappa > 0 and 0 <= gamma <= 1"));
+    }
+    Ok((kappa, gamma))
+}
+
+/// Rule B2's first half: the embedded certificate names the same body, has the orbit header,
+/// and passes rule O1.
+fn embedded(f: &BasinFile, kappa: &Num, gamma: &Num, limits: &Limits) -> Checked<Option<Orbit>> {
+    let Some((value, o)) = &f.orbit else { return Ok(None) };
+    let q = Field::rationals();
+    let (on, ok, og) = o.body();
+    let ok = element("orbit.body.kappa", ok, &q, limits)?;
+    let og = element("orbit.body.gamma", og, &q, limits)?;
+    if on != f.n || ok != *kappa || og != *gamma {
+        return Err(out_of_range("the orbit certificate names another body"));
+    }
+    if header(value)? != Reader::Orbit {
+        return Err(Fail::new("wrong-format", "the embedded certificate is not an orbit certificate"));
+    }
+    orbit::rules(o, limits).map(Some)
+}
+
+/// A corner of the box: five canonical numbers.
+fn corner(path: &str, v: &[&str], limits: &Limits) -> Checked<[Rat; DIMS]> {
+    if v.len() != DIMS {
+        return Err(out_of_range(format!("{path} has {} coordinates, not 5", v.len())));
+    }
+    let q = Field::rationals();
+    let mut out: [Rat; DIMS] = std::array::from_fn(|_| Rat::zero());
+    for (i, s) in v.iter().enumerate() {
+        out[i] = element(&format!("{path}[{i}]"), s, &q, limits)?.as_rational().expect("rational").clone();
+    }
+    Ok(out)
+}
+
+/// Rule B1's fields of a leaf with a prefix: the limits, the contacts, the orbit it needs, the cuts.
+fn prefix_fields(t: &LeafText, n: u64, has_orbit: bool) -> Checked<()> {
+    let LeafText::Prefix { cc, first, steps, cuts } = t else { return Ok(()) };
+    if steps.len() + 1 > MAX_PREFIX {
+        return Err(too_large("a prefix longer than max-basin-prefix"));
+    }
+    if *first >= n || steps.iter().any(|&j| j == 0 || j >= n) {
+        return Err(out_of_range("a contact or step out of range"));
+    }
+    if !has_orbit && (*cc || !cuts.is_empty()) {
+        return Err(out_of_range("a Cc leaf or cuts without an orbit certificate"));
+    }
+    let len = steps.len() as u64 + 1;
+    if cuts.windows(2).any(|w| w[0] >= w[1]) || cuts.iter().any(|&c| c == 0 || c > len) {
+        return Err(out_of_range("the cuts are not strictly increasing impact counts in the prefix"));
+    }
+    Ok(())
+}
+
+/// Rules B1, B2's comparison of bodies and O1, in the kernel's order.
+pub fn rules(f: &BasinFile, limits: &Limits) -> Checked<Basin> {
+    let numbers = [f.kappa, f.gamma].into_iter().chain(f.lo.iter().copied()).chain(f.hi.iter().copied());
+    if numbers.map(str::len).sum::<usize>() > limits.max_total_digits {
+        return Err(too_large("more characters of numbers than max-total-digits"));
+    }
+    let (kappa, gamma) = body(f, limits)?;
+    let orbit = embedded(f, &kappa, &gamma, limits)?;
+    let (lo, hi) = (corner("drops.lo", &f.lo, limits)?, corner("drops.hi", &f.hi, limits)?);
+    if (0..DIMS).any(|i| lo[i] >= hi[i]) || lo[4] <= Rat::zero() {
+        return Err(out_of_range("the box is flat, or h <= 0 in it"));
+    }
+    if f.leaves.len() > MAX_LEAVES {
+        return Err(too_large("more leaves than max-basin-leaves"));
+    }
+    for (path, t) in &f.leaves {
+        if path.len() > MAX_PATH {
+            return Err(too_large("a path longer than max-basin-depth"));
+        }
+        prefix_fields(t, f.n, orbit.is_some())?;
+    }
+    let body = match &orbit {
+        Some(o) => o.body.clone(),
+        None => {
+            let field = Field::cos(f.n as u32);
+            let to = |x: &Num| Num::rational(&field, x.as_rational().expect("rational").clone());
+            Polygon::new(f.n as usize, to(&kappa), to(&gamma))
+        }
+    };
+    Ok(Basin { body, orbit, lo, hi })
+}
+
+/// What the oracle found for an accepted basin certificate: the shares (CC, ICC, undecided) as
+/// canonical text, the leaves of each kind, and the largest exact (time to rest)/h over the drops
+/// it followed into X (a lower bound of the kernel's `time_to_rest_bound`, which bounds every drop
+/// of every CC leaf).
+pub struct Found {
+    /// The three shares.
+    pub shares: [String; 3],
+    /// The leaves of each kind.
+    pub leaves: [usize; 3],
+    /// The largest time to rest over h of the drops followed, if any leaf is CC.
+    pub time: Option<Num>,
+}
+
+/// Rule O2 at the orbit certificate's sample points, B3, then B4 at three drops of every leaf.
+pub fn check(f: &BasinFile, b: &Basin) -> Checked<Found> {
+    if let Some(o) = &b.orbit {
+        orbit::check(o)?;
+    }
+    partition(&paths(f))?;
+    leaves(f, b)
+}
+
+fn paths<'a>(f: &'a BasinFile) -> Vec<&'a [u8]> {
+    f.leaves.iter().map(|(p, _)| p.as_bytes()).collect()
+}
+
+/// Rule B4 at the sample drops of every leaf with a verdict, and the shares.
+fn leaves(f: &BasinFile, b: &Basin) -> Checked<Found> {
+    let (mut shares, mut leaves, mut time) = ([Rat::zero(), Rat::zero(), Rat::zero()], [0; 3], None::<Num>);
+    for (i, (path, t)) in f.leaves.iter().enumerate() {
+        let kind = match t {
+            LeafText::Prefix { cc: true, .. } => 0,
+            LeafText::Prefix { .. } => 1,
+            LeafText::Undecided => 2,
+        };
+        if let LeafText::Prefix { cc, first, steps, .. } = t {
+            let worst = sample_leaf(b, path.as_bytes(), *cc, *first, steps)
+                .map_err(|e| Fail { codes: e.codes, why: format!("leaf {i} (path {path:?}): {}", e.why) })?;
+            time = match (time, worst) {
+                (Some(t), Some(w)) if w > t => Some(w),
+                (None, w) => w,
+                (t, _) => t,
+            };
+        }
+        shares[kind] = &shares[kind] + &share(path.len());
+        leaves[kind] += 1;
+    }
+    Ok(Found { shares: shares.map(|s| rational_text(&s)), leaves, time })
+}
+
+/// Rule B4 at the leaf's sample drops: the largest time to rest over h (CC leaves).
+fn sample_leaf(b: &Basin, path: &[u8], cc: bool, first: u64, steps: &[u64]) -> Checked<Option<Num>> {
+    if !path.iter().all(u8::is_ascii_digit) {
+        return Ok(None); // not a leaf of the box (rule B3)
+    }
+    let (lo, hi) = leaf_box(&b.lo, &b.hi, path);
+    let list: Vec<i64> = std::iter::once(first as i64).chain(steps.iter().map(|&j| j as i64)).collect();
+    let mut worst: Option<Num> = None;
+    for m in leaf_points(&lo, &hi) {
+        let Some((q, p)) = drop_state(&b.body, &m, &lo, &hi) else { continue };
+        let end = match (&b.orbit, cc) {
+            (Some(o), true) => End::Cc(o),
+            _ => End::Icc,
+        };
+        if let Some(t) = follow(&b.body, q, p, &list, end)? {
+            worst = Some(match worst {
+                Some(w) if w >= t => w,
+                _ => t,
+            });
+        }
+    }
+    Ok(worst)
+}
+
+/// The codes of every failing rule, each evaluated on its own where it can be (for the test that a
+/// corpus file breaks one rule only): B1 with O1 (the first failure), B3 (it needs only the
+/// paths), and where B1 holds, O2 at the orbit's sample points and B4 at the leaves' drops.
+pub fn every_failure(v: &Value) -> Checked<Vec<&'static str>> {
+    let f = read(v)?;
+    let mut out = vec![];
+    let mut collect = |r: Checked<()>| {
+        if let Err(e) = r {
+            out.extend(e.codes.into_iter().filter(|c| !out.contains(c)).collect::<Vec<_>>());
+        }
+    };
+    let rules = rules(&f, &Limits::default());
+    collect(rules.as_ref().map(|_| ()).map_err(Clone::clone));
+    collect(partition(&paths(&f)));
+    if let Ok(b) = &rules {
+        collect(b.orbit.as_ref().map_or(Ok(()), orbit::check));
+        collect(leaves(&f, b).map(|_| ()));
+    }
+    Ok(out)
+}
+
+/// A rational lower bound of an exact time (within 2^-64), as canonical text: the kernel's
+/// `time_to_rest_bound` must be at least this.
+pub fn time_text(x: &Num) -> String {
+    rational_text(&x.enclosure(64).0)
+}
+
+/// n as written.
+pub fn n(f: &BasinFile) -> u64 {
+    f.n
+}
