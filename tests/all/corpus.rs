@@ -137,8 +137,10 @@ fn every_valid_refutation_verifies_on_both_backends() {
 
 #[test]
 fn every_valid_certificate_verifies_on_both_backends() {
-    let files: Vec<PathBuf> =
-        ron_files("certificates/valid").into_iter().filter(|f| !is_refutation(f) && !is_basin(f) && !is_rest(f)).collect();
+    let files: Vec<PathBuf> = ron_files("certificates/valid")
+        .into_iter()
+        .filter(|f| !is_refutation(f) && !is_basin(f) && !is_rest(f))
+        .collect();
     assert!(files.len() >= 30, "the valid corpus has {} files", files.len());
     let (mut ns, mut claims) = (BTreeSet::new(), BTreeSet::new());
     for f in &files {

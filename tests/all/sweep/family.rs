@@ -147,7 +147,10 @@ fn family_maps_are_identical_across_shards_and_drawn_with_the_parameter_on_the_x
         svg.contains("\nspread\n") && svg.contains("family finder"),
         "the axis and legend name the family"
     );
-    assert!(svg.contains("boundary of the conjectural CC"), "the product criterion's boundary is drawn and named");
+    assert!(
+        svg.contains("boundary of the conjectural CC"),
+        "the product criterion's boundary is drawn and named"
+    );
 }
 
 #[test]
