@@ -335,8 +335,8 @@ fn versions_one_to_three_are_unchanged() {
             );
             assert_eq!(read_convex(&text, Encoding::Ron).unwrap_err().code, Code::WrongFormat);
             old += 1;
-        } else if kind == Kind::Orbit || kind == Kind::Basin {
-            // An orbit or basin certificate is read by neither of the other readers.
+        } else if kind == Kind::Orbit || kind == Kind::Basin || kind == Kind::Rest {
+            // An orbit, basin or time-to-rest certificate is read by neither of the other readers.
             assert_eq!(read_convex(&text, Encoding::Ron).unwrap_err().code, Code::WrongFormat);
         } else {
             let c = read_convex(&text, Encoding::Ron).unwrap();
