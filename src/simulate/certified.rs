@@ -10,7 +10,10 @@
 //!   run's proved outcome is `no-ICC-no-PCC` ([`super::Outcome::NoIccNoPcc`], not CC), and the
 //!   report's `entered.finite_time` is false;
 //! - an orbit certificate proves CC from any post-impact state in its set X (claim
-//!   `CompleteChatterFromSet`, n, κ, γ equal).
+//!   `CompleteChatterFromSet`, n, κ, γ equal);
+//! - a time-to-rest certificate (claim `CompleteChatterFromAllDown`, rules G1-G5, n, κ, γ equal)
+//!   proves CC for every drop that is all-down at its first impact, with T <= B h/|v| from there
+//!   (docs/time-to-rest.md Theorem 5.1); it has no set to enter: the run tests the drop.
 //!
 //! Sets come from files (`chatter simulate --certificate FILE...`) or are made on the fly
 //! (`crate::prove::made`, cached per body and parameters; `crate::prove::add_orbit_for` once a
@@ -19,12 +22,14 @@
 use super::scalar::Nf;
 use super::{Model, Shape};
 use crate::exact::Q;
+use chatter_kernel::certificate::{Body, Param};
 use chatter_kernel::certificate::{Certificate, Claim, Encoding, OrbitCertificate, read_in, read_orbit};
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::membership::{CertifiedCone, CertifiedOrbit, NotCertified};
 use chatter_kernel::model::linalg::Vec3;
-use chatter_kernel::syntax::{Kind, kind_of};
-use chatter_kernel::verify::Verdict;
+use chatter_kernel::rest::TimeToRest;
+use chatter_kernel::syntax::{Kind, kind_of, read};
+use chatter_kernel::verify::{BOTH, Verdict, verify_rest};
 use std::sync::Arc;
 
 /// The kind of a certified set.
@@ -34,6 +39,8 @@ pub enum SetKind {
     Cone,
     /// The set X of an orbit certificate (normalised post-impact states).
     Orbit,
+    /// A time-to-rest certificate: every all-down drop (tested at the first impact).
+    Rest,
 }
 
 impl SetKind {
@@ -42,6 +49,7 @@ impl SetKind {
         match self {
             SetKind::Cone => "cone",
             SetKind::Orbit => "orbit",
+            SetKind::Rest => "time-to-rest",
         }
     }
 }
@@ -49,6 +57,7 @@ impl SetKind {
 enum Inner {
     Cone(Box<CertifiedCone<Q>>),
     Orbit(Box<CertifiedOrbit<Q>>),
+    Rest,
 }
 
 /// The certificate a set comes from (as read or made; the kernel accepted it).
@@ -58,6 +67,8 @@ pub enum Source {
     Cone(Box<Certificate>),
     /// An orbit certificate.
     Orbit(Box<OrbitCertificate>),
+    /// A time-to-rest certificate.
+    Rest(Box<TimeToRest>),
 }
 
 /// One certified set, with where it came from.
@@ -86,6 +97,7 @@ impl Set {
         match &self.inner {
             Inner::Cone(c) => c.contains(p),
             Inner::Orbit(o) => o.contains(q, p),
+            Inner::Rest => false,
         }
     }
 }
@@ -140,6 +152,11 @@ impl Certified {
         self.sets.iter().map(|s| &**s).find(|s| s.kind == kind && s.contains(q, p))
     }
 
+    /// A time-to-rest certificate, if one was added (it proves every all-down drop CC).
+    pub fn rest(&self) -> Option<&Set> {
+        self.sets.iter().map(|s| &**s).find(|s| s.kind == SetKind::Rest)
+    }
+
     /// Whether some set is an orbit certificate's X (then a run that entered a cone may go on,
     /// looking for it: [`super::Options::after_cone`]).
     pub fn has_orbits(&self) -> bool {
@@ -189,12 +206,49 @@ impl Certified {
         Ok(())
     }
 
+    /// Adds a time-to-rest certificate that the kernel accepts on both backends, whose claim
+    /// excludes PCC and whose body is the model's (n, κ, γ equal); `Err` says why it cannot serve.
+    pub fn add_rest(&mut self, model: &Model, cert: &TimeToRest, name: &str) -> Result<(), String> {
+        let Body::RegularPolygon { n, kappa: Param::Point(k), gamma: Param::Point(g) } = &cert.body else {
+            return Err("its body is not at a point".into());
+        };
+        let same = |text: &str, x: &Q| text.parse::<Q>().is_ok_and(|y| &y == x);
+        if model.shape() != Shape::Polygon(*n) || !same(k, &model.kappa) || !same(g, &model.gamma) {
+            return Err(format!("it is not about n = {n}, kappa = {}, gamma = {}", model.kappa, model.gamma));
+        }
+        if cert.claim != Claim::CompleteChatterFromAllDown {
+            return Err(format!("its claim {} does not exclude PCC", cert.claim.name()));
+        }
+        let accepted = match verify_rest(cert, ParseLimits::default(), &BOTH) {
+            Verdict::Accepted(a) => a,
+            Verdict::Rejected(r) => return Err(format!("rejected by the kernel: {r}")),
+            Verdict::Disagree(s) => return Err(format!("the kernel's backends disagree: {s}")),
+        };
+        let bound = accepted.bound.parse::<Q>().map_err(|e| format!("its bound cannot be read: {e}"))?;
+        let (claim, source) = (cert.claim, Source::Rest(Box::new(cert.clone())));
+        let set = Set {
+            name: name.into(),
+            kind: SetKind::Rest,
+            claim,
+            source,
+            time_to_rest_bound: Some(bound),
+            inner: Inner::Rest,
+        };
+        self.sets.push(Arc::new(set));
+        Ok(())
+    }
+
     /// Adds the certificate in a file (RON, or its JSON twin by the extension `.json`).
     pub fn add_file(&mut self, model: &Model, path: &std::path::Path) -> Result<(), String> {
         let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read it: {e}"))?;
         let json = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"));
         let encoding = if json { Encoding::Json } else { Encoding::Ron };
         let name = path.display().to_string();
+        if kind_of(&text, encoding, Kind::Cone).is_ok_and(|k| k.0 == Kind::Rest) {
+            let cert: TimeToRest =
+                read(&text, encoding).map_err(|r| format!("rejected by the kernel: {r}"))?;
+            return self.add_rest(model, &cert, &name);
+        }
         if kind_of(&text, encoding, Kind::Cone).is_ok_and(|k| k.0 == Kind::Orbit) {
             let cert = read_orbit(&text, encoding).map_err(|r| format!("rejected by the kernel: {r}"))?;
             return self.add_orbit(model, &cert, &name);

@@ -327,6 +327,11 @@ impl Decision {
                          this drop, all-down at its first impact (docs/time-to-rest.md §2)",
                         by("the first impact", t),
                     ),
+                    (SetKind::Rest, t) => (
+                        "the drop is all-down; by its rules G1-G5 (a virtual time),",
+                        "complete chatter for every all-down drop (docs/time-to-rest.md Theorem 5.1)",
+                        t.as_ref().map_or(String::new(), |t| by("the first impact", t)),
+                    ),
                     (SetKind::Orbit, t) => (
                         "the state lies, up to relabelling and scaling, in the set X",
                         "complete chatter from there, the impacts accumulating at a finite time",
@@ -678,6 +683,10 @@ impl<'a, E: Engine> Driver<'a, E> {
     fn entered(&mut self, after: usize) -> Option<Verdict> {
         let (q, p) = self.eng.relabelled()?;
         let sets = self.certified?;
+        // A time-to-rest certificate proves CC for a drop that was all-down at its first impact.
+        if let Some(set) = sets.rest().filter(|_| after == 1 && self.eng.first_drop().is_some()) {
+            return Some(Verdict::cc(self.certified_decision(after, set)));
+        }
         if let Some(set) = sets.entered_kind(SetKind::Orbit, &q, &p) {
             return Some(Verdict::cc(self.certified_decision(after, set)));
         }
@@ -713,7 +722,7 @@ impl<'a, E: Engine> Driver<'a, E> {
     fn rest_by(&self, kind: SetKind, b: &Q) -> Option<Q> {
         let (t, ratio) = match kind {
             SetKind::Orbit => (self.eng.time_above()?, self.eng.centre_ratio_above()?),
-            SetKind::Cone => self.eng.first_drop()?,
+            SetKind::Cone | SetKind::Rest => self.eng.first_drop()?,
         };
         Some(&t + &(b * &ratio))
     }

@@ -406,3 +406,32 @@ fn follow(
     }
     Some(time * v / h)
 }
+
+/// `simulate --exact` with a time-to-rest certificate proves every all-down drop CC at its first
+/// impact, with a bound that the drop's own accumulation time (an `f64` run, evidence) respects;
+/// a drop with a contact moving up is not decided by it.
+#[test]
+fn simulate_proves_all_down_drops_cc_by_a_time_to_rest_certificate() {
+    let cert = root().join("certificates/valid/rest-n4-kappa1_6-gamma1_100.ron");
+    let body = ["simulate", "--n", "4", "--kappa", "1/6", "--gamma", "1/100", "--json"];
+    for seed in ["0", "1", "2"] {
+        let mut args = body.to_vec();
+        args.extend(["--exact", "--seed", seed, "--certificate", cert.to_str().unwrap()]);
+        let v: serde_json::Value = serde_json::from_slice(&chatter(&args, &root()).stdout).unwrap();
+        assert_eq!((v["outcome"].as_str(), v["proved"].as_bool()), (Some("CC"), Some(true)), "{v}");
+        let entered = &v["entered"];
+        assert_eq!((entered["kind"].as_str(), entered["impact"].as_u64()), (Some("time-to-rest"), Some(1)));
+        let bound: f64 = entered["time_to_rest_bound"].as_str().unwrap().parse().unwrap();
+        let mut args = body.to_vec();
+        args.extend(["--seed", seed, "--impacts", "2000"]);
+        let f: serde_json::Value = serde_json::from_slice(&chatter(&args, &root()).stdout).unwrap();
+        let t = f["accumulation_time"].as_f64().unwrap_or_else(|| panic!("{f}"));
+        assert!(t > 0.0 && t <= bound, "seed {seed}: accumulation time {t} > proved bound {bound}");
+    }
+    // A drop whose contact 1 moves up at the start is not all-down: the certificate does not decide it.
+    let mut args = body.to_vec();
+    args.extend(["--exact", "--position", "0.001,0.002,1", "--velocity", "0.3,0.1,-1"]);
+    args.extend(["--certificate", cert.to_str().unwrap()]);
+    let v: serde_json::Value = serde_json::from_slice(&chatter(&args, &root()).stdout).unwrap();
+    assert_ne!(v["entered"]["kind"].as_str(), Some("time-to-rest"), "{v}");
+}
