@@ -6,7 +6,7 @@ refutations, §11 JSON), docs/model.md §2-§5, §7 (maps, cones), docs/kernel-s
 Standard library only; exact arithmetic (int, fractions.Fraction).
 
 Supported: cone certificates of regular polygons with rational cos 2pi/n (n = 2, 3, 4, 6), at a
-point or on a box, and refutations. Every other kind (family, orbit, basin, proof, number
+point or on a box, and refutations. Every other kind (family, orbit, basin, proof, time-to-rest, number
 fields) is reported "unsupported".
 
 Usage: plain_checker.py [--json] FILE...
@@ -1194,7 +1194,7 @@ def derive_rod(points, coeffs, claim, k, g):
 # ---------------------------------------------------------------------------------------------
 
 OTHER_FORMATS = ("chatter-family-certificate", "chatter-orbit-certificate",
-                 "chatter-basin-certificate", "chatter-proof")
+                 "chatter-basin-certificate", "chatter-proof", "chatter-time-to-rest")
 
 
 def header(tree):
