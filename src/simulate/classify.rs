@@ -684,7 +684,10 @@ impl<'a, E: Engine> Driver<'a, E> {
         let (q, p) = self.eng.relabelled()?;
         let sets = self.certified?;
         // A time-to-rest certificate proves CC for a drop that was all-down at its first impact.
-        if let Some(set) = sets.rest().filter(|_| after == 1 && self.eng.first_drop().is_some()) {
+        if after == 1
+            && self.eng.first_drop().is_some()
+            && let Some(set) = sets.rest()
+        {
             return Some(Verdict::cc(self.certified_decision(after, set)));
         }
         if let Some(set) = sets.entered_kind(SetKind::Orbit, &q, &p) {

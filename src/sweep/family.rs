@@ -215,19 +215,7 @@ fn record_tensor(report: &mut ConvexReport, t: &Tensor, backends: &[Backend]) {
 pub fn evaluate(family: &BodyFamily, p: &Point, tasks: Tasks) -> Evaluation {
     let (body, tensor) = family.body(&p.kappa, &p.gamma).expect("a validated family grid");
     let (cc_criterion, pcc_criterion) = criteria(&body);
-    let mut e = Evaluation {
-        cc_criterion,
-        pcc_criterion,
-        finder: finder(&body),
-        certified: None,
-        certificate: None,
-        refuted: None,
-        refutation: None,
-        sim: None,
-        orbit: None,
-        internal: None,
-        proof_times: Vec::new(),
-    };
+    let mut e = Evaluation::new(cc_criterion, pcc_criterion, finder(&body));
     if let Some(runs) = tasks.simulate {
         e.sim = Some(simulate(family, p, &body, runs));
     }

@@ -89,6 +89,25 @@ pub struct Evaluation {
     pub proof_times: Vec<(Outcome, f64)>,
 }
 
+impl Evaluation {
+    /// The criteria and the finder's verdict at a point; nothing else computed yet.
+    pub fn new(cc_criterion: bool, pcc_criterion: bool, finder: &'static str) -> Evaluation {
+        Evaluation {
+            cc_criterion,
+            pcc_criterion,
+            finder,
+            certified: None,
+            certificate: None,
+            refuted: None,
+            refutation: None,
+            sim: None,
+            orbit: None,
+            internal: None,
+            proof_times: Vec::new(),
+        }
+    }
+}
+
 /// What [`prove_point`] returns: proved counts, contradicted drops, an orbit certificate (RON),
 /// and per drop its proved outcome and exact wall time.
 type ProofsAt = ([u64; Outcome::COUNT], u64, Option<String>, Vec<(Outcome, f64)>);
@@ -207,19 +226,7 @@ pub fn evaluate(n: u64, p: &Point, tasks: Tasks) -> Evaluation {
     let (cc_criterion, pcc_criterion) = criteria(n, &p.kappa, &p.gamma);
     let body = float_model(n, &p.kappa, &p.gamma);
     let finder = find_cone(&FloatBody::new(&body), Seed::Translation, &FinderConfig::default()).label();
-    let mut e = Evaluation {
-        cc_criterion,
-        pcc_criterion,
-        finder,
-        certified: None,
-        certificate: None,
-        refuted: None,
-        refutation: None,
-        sim: None,
-        orbit: None,
-        internal: None,
-        proof_times: Vec::new(),
-    };
+    let mut e = Evaluation::new(cc_criterion, pcc_criterion, finder);
     if tasks.certify && model_cosine(n).1 {
         let report = certify(&Request::new(n, p.kappa.clone(), p.gamma.clone()).survey());
         match report.result {
