@@ -9,6 +9,7 @@ pub mod convex;
 mod field;
 pub mod rest;
 pub mod transport;
+pub mod virtual_time;
 
 use crate::exact::{OrderedField, ParseLimits, Q, QField};
 use crate::exactify::{Exact, Exactified, ExactifyConfig, ExactifyError, exactify};

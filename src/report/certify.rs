@@ -33,9 +33,14 @@ pub struct CertifyReport {
     pub proves: Option<&'static str>,
     /// An exact bound B ("p/q") with T <= B h/|v| on the time until the impacts of an all-down drop
     /// accumulate, h and v the centre's height and velocity just before the first impact (rule T1,
-    /// docs/time-to-rest.md §2): rod point certificates with a claim about drops; null otherwise
-    /// (no other cone or family certificate derives a finite accumulation time).
+    /// docs/time-to-rest.md §2): rod point certificates with a claim about drops; with
+    /// `--time-to-rest`, the B of the time-to-rest certificate the kernel accepted (Theorem 5.1,
+    /// docs/time-to-rest.md §5); null otherwise (no other cone or family certificate derives a
+    /// finite accumulation time).
     pub time_to_rest_bound: Option<String>,
+    /// With `certify --time-to-rest FILE`: the time-to-rest certificate tried (docs/time-to-rest.md
+    /// §5); null without the option.
+    pub time_to_rest: Option<RestReport>,
     /// Generators of the cone.
     pub generators: Option<usize>,
     /// The largest denominator of the certificate's numbers, in bits.
@@ -58,6 +63,52 @@ pub struct CertifyReport {
     pub timings: Option<Timings>,
 }
 
+/// A time-to-rest certificate tried by `certify --time-to-rest` (docs/time-to-rest.md §5,
+/// docs/certificate-format.md §16).
+#[derive(Clone, Debug, Serialize, JsonSchema)]
+pub struct RestReport {
+    /// Whether the kernel accepted it on both backends (then it was written to `output`).
+    pub accepted: bool,
+    /// The file written (accepted only).
+    pub output: Option<String>,
+    /// Its claim (`CompleteChatterFromAllDown` or `CcOrPccFromAllDown`); null when not accepted.
+    pub claim: Option<&'static str>,
+    /// B ("p/q"): every all-down drop's impacts accumulate within B h/|v| of its first impact
+    /// (Theorem 5.1; also reported as `time_to_rest_bound`); null when not accepted.
+    pub bound: Option<String>,
+    /// Nodes of the virtual-time graph written; null when not accepted.
+    pub nodes: Option<usize>,
+    /// What was searched and which check failed, when not accepted (no bound is derived).
+    pub reason: Option<String>,
+}
+
+impl RestReport {
+    /// The report of a producer run whose file (if accepted) was written to `output`.
+    pub fn of(
+        r: &Result<crate::certify::virtual_time::Produced, crate::certify::virtual_time::NotProduced>,
+        output: &str,
+    ) -> Self {
+        match r {
+            Ok(p) => RestReport {
+                accepted: true,
+                output: Some(output.to_string()),
+                claim: Some(p.cert.claim.name()),
+                bound: Some(p.bound.to_string()),
+                nodes: Some(p.nodes),
+                reason: None,
+            },
+            Err(e) => RestReport {
+                accepted: false,
+                output: None,
+                claim: None,
+                bound: None,
+                nodes: None,
+                reason: Some(e.to_string()),
+            },
+        }
+    }
+}
+
 impl Report for CertifyReport {
     const SCHEMA: &'static str = "chatter.certify/1";
 }
@@ -78,6 +129,7 @@ pub fn of(req: &Request, r: &pipeline::Report, output: Option<String>, timings: 
         claim: cert.map(|c| c.claim.name()),
         proves: cert.and_then(|c| crate::claims::proves_with(c.claim.name(), c.time_to_rest_bound.is_some())),
         time_to_rest_bound: cert.and_then(|c| c.time_to_rest_bound.clone()),
+        time_to_rest: None,
         generators: cert.map(|c| c.cone.len()),
         max_denominator_bits: cert.map(|_| r.max_denominator_bits),
         output: output.filter(|_| cert.is_some()),
@@ -115,6 +167,7 @@ pub fn of_convex(
         claim: cert.map(|c| c.claim.name()),
         proves: cert.and_then(|c| crate::claims::proves(c.claim.name())),
         time_to_rest_bound: None,
+        time_to_rest: None,
         generators: cert.map(|c| c.cones.iter().map(Vec::len).sum()),
         max_denominator_bits: cert.map(|_| r.max_denominator_bits),
         output: output.filter(|_| cert.is_some()),

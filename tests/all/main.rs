@@ -40,3 +40,4 @@ mod time_to_rest;
 mod toolchain;
 mod transport;
 mod verify;
+mod virtual_time;

@@ -21,7 +21,7 @@ fn committed(name: &str) -> Value {
 }
 
 /// Validates a document against the committed schema it names; returns the schema name.
-fn validate(doc: &Value) -> String {
+pub(crate) fn validate(doc: &Value) -> String {
     let name = doc["schema"].as_str().unwrap_or_else(|| panic!("no schema name in {doc}")).to_string();
     let validator = jsonschema::validator_for(&committed(&name)).expect("a valid JSON Schema");
     let errors: Vec<String> =

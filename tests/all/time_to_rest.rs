@@ -311,10 +311,10 @@ fn the_virtual_time_of_the_square_plates_certificate_falls_along_simulated_drops
 }
 
 /// A regular n-gon plate (docs/model.md §2-§3) in `f64`.
-struct Plate {
-    n: usize,
-    kappa: f64,
-    gamma: f64,
+pub(crate) struct Plate {
+    pub(crate) n: usize,
+    pub(crate) kappa: f64,
+    pub(crate) gamma: f64,
 }
 
 impl Plate {
@@ -350,13 +350,13 @@ fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-fn num(s: &str) -> f64 {
+pub(crate) fn num(s: &str) -> f64 {
     let (a, b) = s.split_once('/').unwrap_or((s, "1"));
     a.parse::<f64>().unwrap() / b.parse::<f64>().unwrap()
 }
 
 /// A drop with every contact up and moving down (velocity (u0, u1, -1), centre at height 1).
-fn random_drop(seed: &mut u64) -> ([f64; 3], [f64; 3]) {
+pub(crate) fn random_drop(seed: &mut u64) -> ([f64; 3], [f64; 3]) {
     let mut uniform = || {
         *seed ^= *seed << 13;
         *seed ^= *seed >> 7;
@@ -371,7 +371,7 @@ fn random_drop(seed: &mut u64) -> ([f64; 3], [f64; 3]) {
 /// Follows a drop through the certificate's nodes for 300 impacts, checking that the virtual time
 /// falls; the time from the first impact over h/|v| there, or `None` for a drop that is not
 /// all-down with every contact up.
-fn follow(
+pub(crate) fn follow(
     plate: &Plate,
     cert: &chatter_kernel::rest::TimeToRest,
     mut q: [f64; 3],

@@ -1,0 +1,165 @@
+//! The covectors b_r in `f64` (docs/time-to-rest.md §5): per tied component, a direction on the
+//! sphere that keeps (G1), (G2) with margin, makes the component's own edges contract and needs
+//! the least scale c_r = max over outgoing edges of ratio × c_s (a pattern search, a few rounds
+//! over the components). Untrusted: the scales that go into the file are exact ([`super::scale`]).
+
+use super::graph::{Edge, Graph};
+use super::tie::Ties;
+use crate::finder::geometry::{P2, lift};
+use crate::model::float::FloatPolygon;
+use nalgebra::{Matrix3, Vector3};
+
+type V3 = Vector3<f64>;
+
+/// The float model pieces the search needs.
+pub struct Maps<'a> {
+    pub body: &'a FloatPolygon,
+    /// (R_j^{-1})^T, j = 0..n-1 (index 0 unused): b_s = (R_j^{-1})^T b_r.
+    inverse_t: Vec<Matrix3<f64>>,
+}
+
+impl<'a> Maps<'a> {
+    pub fn new(body: &'a FloatPolygon) -> Self {
+        let inv = |j: usize| body.relabel(j as i64).try_inverse().unwrap_or_else(Matrix3::zeros).transpose();
+        Maps { body, inverse_t: (0..body.n()).map(inv).collect() }
+    }
+
+    /// b transported along the steps of a tie path (docs/time-to-rest.md §5).
+    pub fn transport(&self, path: &[usize], b: V3) -> V3 {
+        path.iter().fold(b, |b, &j| self.inverse_t[j] * b)
+    }
+
+    fn m(&self, k: i64) -> V3 {
+        self.body.rest_point(k, k + 1).unwrap_or_else(V3::zeros)
+    }
+}
+
+/// The largest ratio Φ_s(after)/Φ_r(before) over the piece's vertices and q ∈ {m_{j−1,j},
+/// m_{j,j+1}} (the float form of (G3)); infinite where a denominator is not positive.
+pub fn ratio(maps: &Maps, br: &V3, bs: &V3, j: usize, piece: &[P2]) -> f64 {
+    let (s, rel) = (maps.body.step(j as i64), maps.body.relabel(j as i64));
+    let mut worst: f64 = 0.0;
+    for p in piece.iter().map(lift) {
+        let sp = s * p;
+        let (dr, ds) = (-br.dot(&p), -bs.dot(&sp));
+        if dr <= 0.0 || ds <= 0.0 {
+            return f64::INFINITY;
+        }
+        for q in [maps.m(j as i64 - 1), maps.m(j as i64)] {
+            let (after, before) = (bs.dot(&(rel * q)) / ds, br.dot(&q) / dr);
+            if after <= 1e-15 && before <= 1e-15 {
+                continue;
+            }
+            if before <= 1e-15 {
+                return f64::INFINITY;
+            }
+            worst = worst.max(after / before);
+        }
+    }
+    worst
+}
+
+/// (G1) and (G2) with margins: b·m_{0,1}, b·m_{n−1,0} > 1e-9 and −b·g > 1e-6 on the node.
+pub fn admissible(maps: &Maps, b: &V3, node: &[P2]) -> bool {
+    b.dot(&maps.m(0)).min(b.dot(&maps.m(-1))) > 1e-9 && node.iter().all(|g| -b.dot(&lift(g)) > 1e-6)
+}
+
+/// n × n/2 unit directions on a latitude-longitude grid.
+fn sphere(n: usize) -> impl Iterator<Item = V3> {
+    let half = n / 2;
+    (0..n).flat_map(move |i| {
+        (0..half).map(move |k| {
+            let th = std::f64::consts::TAU * i as f64 / n as f64;
+            let ph = std::f64::consts::PI * (k as f64 + 0.5) / half as f64;
+            V3::new(ph.sin() * th.cos(), ph.sin() * th.sin(), ph.cos())
+        })
+    })
+}
+
+/// Coordinate pattern search on the sphere from b0, halving the step when nothing improves.
+fn refine(score: &dyn Fn(&V3) -> f64, b0: V3, steps: usize) -> (V3, f64) {
+    let (mut b, mut s, mut h) = (b0, score(&b0), 0.2);
+    for _ in 0..steps {
+        let mut improved = false;
+        for d in [V3::x(), -V3::x(), V3::y(), -V3::y(), V3::z(), -V3::z()] {
+            let c = (b + d * h).normalize();
+            let sc = score(&c);
+            if sc < s {
+                (b, s, improved) = (c, sc, true);
+            }
+        }
+        if !improved {
+            h /= 2.0;
+        }
+    }
+    (b, s)
+}
+
+/// The best direction of the grid (and `extra`), refined.
+fn best(score: &dyn Fn(&V3) -> f64, grid: usize, extra: Option<V3>, steps: usize) -> (V3, f64) {
+    let start = sphere(grid).chain(extra).min_by(|a, b| score(a).total_cmp(&score(b))).unwrap_or_else(V3::z);
+    refine(score, start, steps)
+}
+
+/// A first covector of node k alone: its own outgoing edges contract with b_s = b_r.
+fn first(maps: &Maps, g: &Graph, k: usize, grid: usize) -> V3 {
+    let outs: Vec<&Edge> = g.edges.iter().filter(|e| e.from == k).collect();
+    let score = |b: &V3| {
+        if !admissible(maps, b, &g.nodes[k]) {
+            return f64::INFINITY;
+        }
+        outs.iter().map(|e| ratio(maps, b, b, e.step, &e.piece)).fold(0.0, f64::max)
+    };
+    best(&score, grid, None, 60).0
+}
+
+/// The search's state: the representatives' covectors and float scales.
+struct State {
+    b: Vec<V3>,
+    c: Vec<f64>,
+}
+
+/// The scale a candidate covector `cand` of the component of `k` needs (infinite if a node of it
+/// is not admissible, large if one of its internal edges does not contract).
+fn required(maps: &Maps, g: &Graph, t: &Ties, st: &State, k: usize, cand: &V3) -> f64 {
+    let bof = |r: usize| maps.transport(&t.path[r], if t.rep[r] == k { *cand } else { st.b[t.rep[r]] });
+    if !t.members(k).iter().all(|&r| admissible(maps, &bof(r), &g.nodes[r])) {
+        return f64::INFINITY;
+    }
+    let mut v: f64 = 1.0;
+    for e in g.edges.iter().filter(|e| t.rep[e.from] == k) {
+        let x = ratio(maps, &bof(e.from), &bof(e.to), e.step, &e.piece);
+        if t.rep[e.to] == k {
+            if x > 1.0 + 1e-12 {
+                return 1e6 * x;
+            }
+        } else {
+            v = v.max(x * (1.0 + 1e-3) * st.c[t.rep[e.to]]);
+        }
+    }
+    v
+}
+
+/// The representatives' covectors (indexed by node; only representatives are meaningful).
+pub fn search(maps: &Maps, g: &Graph, t: &Ties, rounds: usize, grid: usize) -> Vec<V3> {
+    let reps = t.reps();
+    let mut st = State { b: vec![V3::z(); g.nodes.len()], c: vec![1.0; g.nodes.len()] };
+    for &k in &reps {
+        st.b[k] = first(maps, g, k, grid);
+    }
+    for _ in 0..rounds {
+        let mut delta: f64 = 0.0;
+        for &k in reps.iter().rev() {
+            let score = |b: &V3| required(maps, g, t, &st, k, b);
+            let (b, s) = best(&score, grid, Some(st.b[k]), 40);
+            if s.is_finite() {
+                delta = delta.max((s - st.c[k]).abs() / st.c[k]);
+                (st.b[k], st.c[k]) = (b, s);
+            }
+        }
+        if delta < 1e-12 {
+            break;
+        }
+    }
+    st.b
+}

@@ -1,0 +1,126 @@
+//! The exact graph (docs/time-to-rest.md §5): cones rounded to dyadic rationals (hull taken
+//! exactly), representatives' covectors rounded, balanced and transported exactly to their tied
+//! nodes ([`tie`]), the pieces K_r ∩ C_j clipped exactly and their images checked in K_s,
+//! and (G1), (G2), (G4) checked exactly. Untrusted: the kernel checks the file.
+
+use super::graph::Graph;
+use super::tie::{self, Ties};
+use crate::exact::{Q, QExt, Ring};
+use crate::finder::geometry::P2;
+use chatter_kernel::geometry::{ConvexPolygon, clip, hull};
+use chatter_kernel::model::Polygon;
+use chatter_kernel::model::linalg::{Vec3, dot, is_zero, mat_vec};
+use nalgebra::Vector3;
+
+/// Bits of the dyadic rounding of cones and covectors.
+const BITS: u64 = 24;
+
+/// A node made exact: K_r (its extreme generators, counter-clockwise) and b_r.
+pub struct Node {
+    pub cone: ConvexPolygon<Q>,
+    pub weight: Vec3<Q>,
+}
+
+/// An exact edge: r --j--> s with the exact piece K_r ∩ C_j (nonzero).
+pub struct Edge {
+    pub from: usize,
+    pub step: usize,
+    pub to: usize,
+    pub piece: Vec<Vec3<Q>>,
+}
+
+fn rat(x: f64) -> Result<Q, String> {
+    Q::from_f64_exact(x)
+        .map(|q| q.floor_dyadic(BITS))
+        .ok_or_else(|| format!("a float search value {x} is not finite"))
+}
+
+/// K_r with generators (x, y, -1) rounded to 2^-24, its exact hull.
+fn cone(node: &[P2], r: usize) -> Result<ConvexPolygon<Q>, String> {
+    let gens: Vec<Vec3<Q>> = node
+        .iter()
+        .map(|p| -> Result<Vec3<Q>, String> { Ok([rat(p.x)?, rat(p.y)?, Q::int(-1)]) })
+        .collect::<Result<_, _>>()?;
+    let idx = hull(&gens);
+    if idx.len() < 3 {
+        return Err(format!("node {r}'s cone is degenerate after rounding"));
+    }
+    Ok(ConvexPolygon::new(idx.into_iter().map(|i| gens[i].clone()).collect()))
+}
+
+/// The rounded covector of a representative, scaled to largest |component| 1.
+fn rounded(b: &Vector3<f64>) -> Result<Vec3<Q>, String> {
+    let m = b.amax();
+    if !(m > 0.0) {
+        return Err("a covector of the float search is zero".into());
+    }
+    Ok([rat(b.x / m)?, rat(b.y / m)?, rat(b.z / m)?])
+}
+
+/// The exact nodes, with (G1) and (G2) checked (c_r comes later, [`super::scale`]).
+pub fn nodes(body: &Polygon<Q>, g: &Graph, t: &Ties, reps: &[Vector3<f64>]) -> Result<Vec<Node>, String> {
+    let mut balanced = vec![[Q::int(0), Q::int(0), Q::int(0)]; g.nodes.len()];
+    for k in t.reps() {
+        balanced[k] = tie::balanced(body, g, t, k, rounded(&reps[k])?)?;
+    }
+    let mut out = Vec::with_capacity(g.nodes.len());
+    for (r, node) in g.nodes.iter().enumerate() {
+        let weight = tie::transported(body, &t.path[r], balanced[t.rep[r]].clone())?;
+        let cone = cone(node, r)?;
+        if let Some(i) = cone.vertices.iter().position(|v| !dot(&weight, v).is_negative()) {
+            return Err(format!("(G1) fails exactly at node {r}, generator {i}: -b_r·g <= 0"));
+        }
+        let ms = [rest(body, 0), rest(body, -1)];
+        if ms.iter().any(|m| dot(&weight, m).is_negative()) {
+            return Err(format!("(G2) fails exactly at node {r}: b_r·m < 0"));
+        }
+        out.push(Node { cone, weight });
+    }
+    Ok(out)
+}
+
+/// m_{k,k+1}.
+pub fn rest(body: &Polygon<Q>, k: i64) -> Vec3<Q> {
+    body.rest_point(k, k + 1).unwrap_or_else(|| [Q::int(0), Q::int(0), Q::int(0)])
+}
+
+/// Whether x (nonzero) lies in K with v < 0.
+pub fn inside(k: &ConvexPolygon<Q>, x: &Vec3<Q>) -> bool {
+    x[2].is_negative() && k.contains(x)
+}
+
+/// The exact edges: for each node r and step j with K_r ∩ C_j ≠ {0}, the float successor, or
+/// (where the float piece was degenerate) the first node that contains the exact images; every
+/// image of a vertex lies in K_s (else an error naming it).
+pub fn edges(body: &Polygon<Q>, g: &Graph, nodes: &[Node]) -> Result<Vec<Edge>, String> {
+    let mut out = Vec::new();
+    for (r, node) in nodes.iter().enumerate() {
+        for j in 1..body.n() {
+            let cov = body.next_contact_cone(j as i64);
+            let piece: Vec<Vec3<Q>> = cov.iter().fold(node.cone.vertices.clone(), |p, l| clip(&p, l));
+            if piece.iter().all(is_zero) {
+                continue;
+            }
+            let images: Vec<Vec3<Q>> = piece.iter().map(|p| mat_vec(&body.step(j as i64), p)).collect();
+            let fits = |s: usize| images.iter().all(|x| is_zero(x) || inside(&nodes[s].cone, x));
+            let float = g.edges.iter().find(|e| e.from == r && e.step == j).map(|e| e.to);
+            let to = float.filter(|&s| fits(s)).or_else(|| (0..nodes.len()).find(|&s| fits(s)));
+            let Some(to) = to else {
+                return Err(format!(
+                    "an exact image S_{j}(K_{r} ∩ C_{j}) lies in no node (float successor {float:?}): the rounding moved it out"
+                ));
+            };
+            out.push(Edge { from: r, step: j, to, piece });
+        }
+    }
+    Ok(out)
+}
+
+/// (G4): I_0(−m_{k,k+1}) ∈ K_0 for every k.
+pub fn initial_inside(body: &Polygon<Q>, nodes: &[Node]) -> Result<(), String> {
+    let i0 = body.impact(0);
+    match body.all_down_generators().iter().position(|g| !inside(&nodes[0].cone, &mat_vec(&i0, g))) {
+        Some(k) => Err(format!("(G4) fails exactly: I_0(-m_{{{k},{}}}) is outside node 0", k + 1)),
+        None => Ok(()),
+    }
+}

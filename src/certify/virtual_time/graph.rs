@@ -1,0 +1,88 @@
+//! The virtual-time graph's nodes and successors in `f64` (docs/time-to-rest.md §5, "a graph
+//! built from the images of I_0(D)"): node 0 is the hull of I_0(D); each image S_j(K_r ∩ C_j)
+//! goes to the smallest node that contains it, or becomes a new node, enlarged. Untrusted.
+
+use super::Config;
+use crate::finder::geometry::{P2, clip, hull, lift, outside_distance, project};
+use crate::model::float::FloatPolygon;
+use std::collections::VecDeque;
+
+/// An edge r --j--> s(r, j), with the float piece K_r ∩ C_j that it maps.
+pub struct Edge {
+    pub from: usize,
+    pub step: usize,
+    pub to: usize,
+    pub piece: Vec<P2>,
+}
+
+/// The float graph: cones K_r on the plane v = -1 and the edges; `closed` when every image found
+/// a node within the node cap.
+pub struct Graph {
+    pub nodes: Vec<Vec<P2>>,
+    pub edges: Vec<Edge>,
+    pub closed: bool,
+}
+
+/// The piece K ∩ C_j on the plane v = -1 (K clipped by C_j's four covectors, docs/model.md §4).
+pub fn piece(body: &FloatPolygon, k: &[P2], j: usize) -> Vec<P2> {
+    body.next_contact_cone(j as i64).iter().fold(k.to_vec(), |p, l| clip(&p, l))
+}
+
+/// S_j of the piece's vertices, on the plane v = -1; `None` if an image is not below v = 0.
+fn image(body: &FloatPolygon, j: usize, piece: &[P2]) -> Option<Vec<P2>> {
+    let s = body.step(j as i64);
+    piece.iter().map(|p| s * lift(p)).map(|x| (x.z < 0.0).then(|| project(&x))).collect()
+}
+
+/// The hull of P scaled by 1 + d about its vertex centroid, with a square of half-side `pad` at
+/// each vertex, so that images inside stay inside after rounding to rationals.
+fn enlarge(p: &[P2], d: f64, pad: f64) -> Vec<P2> {
+    let c = p.iter().fold(P2::zeros(), |a, x| a + x) / p.len() as f64;
+    let corners = [P2::new(-pad, -pad), P2::new(pad, -pad), P2::new(pad, pad), P2::new(-pad, pad)];
+    let pts: Vec<P2> = p.iter().flat_map(|x| corners.map(|e| c + (x - c) * (1.0 + d) + e)).collect();
+    hull(&pts, 1e-15)
+}
+
+/// Area of a convex polygon (shoelace).
+fn area(p: &[P2]) -> f64 {
+    let m = p.len();
+    0.5 * (0..m).map(|i| p[i].x * p[(i + 1) % m].y - p[(i + 1) % m].x * p[i].y).sum::<f64>().abs()
+}
+
+/// The node of smallest area that contains every point of `img`.
+fn smallest_containing(nodes: &[Vec<P2>], img: &[P2]) -> Option<usize> {
+    let inside = |k: &[P2]| img.iter().all(|q| outside_distance(k, q) <= 1e-12);
+    (0..nodes.len())
+        .filter(|&s| inside(&nodes[s]))
+        .min_by(|&a, &b| area(&nodes[a]).total_cmp(&area(&nodes[b])))
+}
+
+/// Builds the graph breadth first from node 0 = I_0(D) (padded), at most `cfg.max_nodes` nodes.
+pub fn build(body: &FloatPolygon, cfg: &Config) -> Graph {
+    let i0 = body.impact(0);
+    let first: Vec<P2> = body.all_down_generators().iter().map(|g| project(&(i0 * g))).collect();
+    let mut g =
+        Graph { nodes: vec![enlarge(&hull(&first, 1e-15), 0.0, cfg.pad)], edges: vec![], closed: false };
+    let mut todo = VecDeque::from([0]);
+    while let Some(r) = todo.pop_front() {
+        for j in 1..body.n() {
+            let piece = piece(body, &g.nodes[r], j);
+            if piece.len() < 3 {
+                continue;
+            }
+            let Some(img) = image(body, j, &piece) else { return g };
+            let to = match smallest_containing(&g.nodes, &img) {
+                Some(s) => s,
+                None if g.nodes.len() >= cfg.max_nodes => return g,
+                None => {
+                    g.nodes.push(enlarge(&hull(&img, 1e-15), cfg.enlarge, cfg.pad));
+                    todo.push_back(g.nodes.len() - 1);
+                    g.nodes.len() - 1
+                }
+            };
+            g.edges.push(Edge { from: r, step: j, to, piece });
+        }
+    }
+    g.closed = true;
+    g
+}

@@ -1,0 +1,174 @@
+//! A producer of time-to-rest certificates (issue 24 §1; docs/time-to-rest.md §5, Theorem 5.1;
+//! the file format docs/certificate-format.md §16) for a regular polygon (n = 3, 4, 6) at a
+//! point: the virtual-time graph and covectors searched in `f64` ([`graph`], [`covector`],
+//! [`tie`]), made exact ([`exactify`]), the scales and the bound computed exactly ([`scale`],
+//! [`bound`]), and the file's text accepted by the kernel on both backends before anything is
+//! written or reported. Untrusted: only the kernel's acceptance is a proof.
+
+mod bound;
+mod covector;
+mod exactify;
+mod graph;
+mod scale;
+mod tie;
+
+use crate::exact::{Q, QExt, Ring};
+use crate::model::float::FloatPolygon;
+use chatter_kernel::certificate::{Body, Claim, Coordinates, Encoding, Generator, Param};
+use chatter_kernel::exact::ParseLimits;
+use chatter_kernel::model::{PccExclusion, Polygon, pcc_quadratic};
+use chatter_kernel::rest::{FORMAT, Node, TimeToRest, VERSION};
+use chatter_kernel::verify::{Backend, Verdict, verify_rest_text_in};
+
+/// The search's budgets (all finite: the producer always stops).
+#[derive(Clone, Debug)]
+pub struct Config {
+    /// Node cap of the float graph.
+    pub max_nodes: usize,
+    /// A new node is its image's hull enlarged by this share about its centroid.
+    pub enlarge: f64,
+    /// Half-side of the square added at every vertex of a node (room for rounding).
+    pub pad: f64,
+    /// Rounds of the covector search over the tied components.
+    pub rounds: usize,
+    /// Grid of the covector search: grid × grid/2 directions.
+    pub grid: usize,
+}
+
+impl Default for Config {
+    fn default() -> Self {
+        Config { max_nodes: 200, enlarge: 0.3, pad: 1e-3, rounds: 12, grid: 40 }
+    }
+}
+
+/// A time-to-rest certificate the kernel accepted on both backends.
+pub struct Produced {
+    pub cert: TimeToRest,
+    /// The file's RON text (what the kernel read).
+    pub text: String,
+    /// B as the kernel accepted it.
+    pub bound: Q,
+    pub nodes: usize,
+    pub edges: usize,
+}
+
+/// Why no certificate was produced: what was searched and which check failed.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum NotProduced {
+    /// The search or an exact check failed (the message says which).
+    Failed(String),
+    /// The kernel's backends disagree (a bug).
+    Disagree(String),
+}
+
+impl std::fmt::Display for NotProduced {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            NotProduced::Failed(s) => f.write_str(s),
+            NotProduced::Disagree(s) => write!(f, "the kernel's backends disagree: {s}"),
+        }
+    }
+}
+
+/// The `producer` field of the files written.
+pub const PRODUCER: &str = "chatter certify --time-to-rest (untrusted f64 graph and covectors, exact scales)";
+
+/// The claim the kernel can accept: `CompleteChatterFromAllDown` where R4 excludes PCC, else
+/// `CcOrPccFromAllDown` (docs/certificate-format.md §16).
+fn claim(body: &Polygon<Q>) -> Claim {
+    match pcc_quadratic(body).map(|q| q.exclusion()) {
+        Ok(PccExclusion::Excluded) => Claim::CompleteChatterFromAllDown,
+        _ => Claim::CcOrPccFromAllDown,
+    }
+}
+
+/// Produces a time-to-rest certificate at (n, κ, γ), accepted by the kernel on `backends`.
+pub fn produce(
+    n: u64,
+    kappa: &Q,
+    gamma: &Q,
+    cfg: &Config,
+    backends: &[Backend],
+) -> Result<Produced, NotProduced> {
+    let failed = |s: String| NotProduced::Failed(s);
+    let body = Polygon::new(n, kappa.clone(), gamma.clone()).map_err(|e| {
+        failed(format!(
+            "no exact model of n = {n} at this point ({e:?}): time-to-rest certificates take n = 3, 4, 6"
+        ))
+    })?;
+    if !(gamma.is_positive() && gamma < &Q::int(1)) {
+        return Err(failed("time-to-rest certificates need 0 < gamma < 1".into()));
+    }
+    let fbody = FloatPolygon::new(n, kappa.to_f64(), gamma.to_f64()).map_err(|e| failed(format!("{e:?}")))?;
+    let g = graph::build(&fbody, cfg);
+    let size = format!("{} nodes, {} edges", g.nodes.len(), g.edges.len());
+    if !g.closed {
+        return Err(failed(format!(
+            "the float graph did not close within {} nodes ({size}; an image left every node and the cap was reached, or left v < 0)",
+            cfg.max_nodes
+        )));
+    }
+    let exact =
+        |e: String| failed(format!("the float graph closed ({size}) but the exact check failed: {e}"));
+    let maps = covector::Maps::new(&fbody);
+    let ties = tie::ties(fbody.n(), g.nodes.len(), &g.edges);
+    let reps = covector::search(&maps, &g, &ties, cfg.rounds, cfg.grid);
+    let nodes = exactify::nodes(&body, &g, &ties, &reps).map_err(exact)?;
+    let edges = exactify::edges(&body, &g, &nodes).map_err(exact)?;
+    exactify::initial_inside(&body, &nodes).map_err(exact)?;
+    let cons = scale::constraints(&body, &nodes, &edges).map_err(exact)?;
+    let c = scale::scales(nodes.len(), &cons).map_err(exact)?;
+    let b = bound::bound(&body, &nodes[0], &c[0]).map_err(exact)?;
+    let cert = certificate(n, (kappa, gamma), claim(&body), &b, (&nodes, &edges, &c));
+    accepted(cert, backends, edges.len())
+}
+
+/// The certificate's fields.
+fn certificate(
+    n: u64,
+    (kappa, gamma): (&Q, &Q),
+    claim: Claim,
+    bound: &Q,
+    (nodes, edges, c): (&[exactify::Node], &[exactify::Edge], &[Q]),
+) -> TimeToRest {
+    let text = |v: &[Q; 3]| Generator(v.iter().map(ToString::to_string).collect());
+    let node = |(r, x): (usize, &exactify::Node)| Node {
+        cone: x.cone.vertices.iter().map(text).collect(),
+        weight: text(&x.weight),
+        scale: c[r].to_string(),
+        next: edges.iter().filter(|e| e.from == r).map(|e| (e.step as u64, e.to)).collect(),
+    };
+    TimeToRest {
+        format: FORMAT.into(),
+        version: VERSION,
+        body: Body::RegularPolygon {
+            n,
+            kappa: Param::Point(kappa.to_string()),
+            gamma: Param::Point(gamma.to_string()),
+        },
+        coordinates: Coordinates::ContactVelocities,
+        claim,
+        bound: bound.to_string(),
+        nodes: nodes.iter().enumerate().map(node).collect(),
+        producer: PRODUCER.into(),
+    }
+}
+
+/// The file's text checked by the kernel on both backends, as `chatter verify` reads it.
+fn accepted(cert: TimeToRest, backends: &[Backend], edges: usize) -> Result<Produced, NotProduced> {
+    let text = crate::write::write_rest(&cert);
+    match verify_rest_text_in(&text, Encoding::Ron, ParseLimits::default(), backends) {
+        Verdict::Accepted(a) => {
+            let bound = a
+                .bound
+                .parse::<Q>()
+                .map_err(|e| NotProduced::Failed(format!("the bound cannot be read: {e}")))?;
+            Ok(Produced { nodes: a.nodes, cert, text, bound, edges })
+        }
+        Verdict::Rejected(r) => Err(NotProduced::Failed(format!(
+            "the kernel rejected the graph ({} nodes): {r}",
+            cert.nodes.len()
+        ))),
+        Verdict::Disagree(s) => Err(NotProduced::Disagree(s)),
+    }
+}

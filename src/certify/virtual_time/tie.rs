@@ -1,0 +1,125 @@
+//! Tied nodes (docs/time-to-rest.md §5, "nodes linked both ways by j and n − j share their
+//! covector up to relabelling"): where r --j--> s and s --(n−j)--> r, b_s = b_r R_j^{-1} and
+//! c_s = c_r, so that (G3) holds with equality at the vertices with u_j = 0. Then b_s·S_j p =
+//! b_r·I_j p = b_r·p − β u_j(p) (b_r·d_j), so (G3) on the edges r -> s and s -> r holds at every
+//! vertex only if b_r·d_j = 0 (the two edges ask for opposite signs, the pattern of PCC with its
+//! eigenvalue 1 of S_{n−j} S_j): the exact covectors are balanced to meet it exactly. Untrusted.
+
+use super::graph::{Edge, Graph};
+use crate::exact::{Q, Ring};
+use chatter_kernel::model::Polygon;
+use chatter_kernel::model::linalg::{Mat3, Vec3, dot, mat_vec};
+
+/// Each node's representative and the steps j_1, j_2, ... from it: b = b_rep R_{j_1}^{-1} R_{j_2}^{-1} ...
+pub struct Ties {
+    pub rep: Vec<usize>,
+    pub path: Vec<Vec<usize>>,
+}
+
+impl Ties {
+    /// The representatives, in increasing order.
+    pub fn reps(&self) -> Vec<usize> {
+        (0..self.rep.len()).filter(|&r| self.rep[r] == r).collect()
+    }
+
+    /// The nodes tied to the representative `k` (itself included).
+    pub fn members(&self, k: usize) -> Vec<usize> {
+        (0..self.rep.len()).filter(|&r| self.rep[r] == k).collect()
+    }
+}
+
+/// The components of the "linked both ways by j and n − j" relation, explored depth first from
+/// the lowest node.
+pub fn ties(n: usize, nodes: usize, edges: &[Edge]) -> Ties {
+    let linked = |r: usize, s: usize, j: usize| edges.iter().any(|e| (e.from, e.step, e.to) == (s, n - j, r));
+    let mut adj: Vec<Vec<(usize, usize)>> = vec![Vec::new(); nodes];
+    for e in edges.iter().filter(|e| e.to != e.from && linked(e.from, e.to, e.step)) {
+        adj[e.from].push((e.to, e.step));
+    }
+    let (mut rep, mut path) = ((0..nodes).collect::<Vec<_>>(), vec![Vec::new(); nodes]);
+    let mut seen = vec![false; nodes];
+    for r0 in 0..nodes {
+        if seen[r0] {
+            continue;
+        }
+        seen[r0] = true;
+        let mut stack = vec![r0];
+        while let Some(r) = stack.pop() {
+            for &(s, j) in &adj[r] {
+                if !seen[s] {
+                    seen[s] = true;
+                    rep[s] = r0;
+                    path[s] = [path[r].clone(), vec![j]].concat();
+                    stack.push(s);
+                }
+            }
+        }
+    }
+    Ties { rep, path }
+}
+
+/// The 3 × 3 inverse by the adjugate (`None` if singular).
+fn inverse(m: &Mat3<Q>) -> Option<Mat3<Q>> {
+    let c = |i: usize, j: usize| {
+        let (a, b) = ([(i + 1) % 3, (i + 2) % 3], [(j + 1) % 3, (j + 2) % 3]);
+        &(&m[a[0]][b[0]] * &m[a[1]][b[1]]) - &(&m[a[0]][b[1]] * &m[a[1]][b[0]])
+    };
+    let det = (0..3).fold(Q::int(0), |s, j| &s + &(&m[0][j] * &c(0, j)));
+    (!det.is_zero()).then(|| std::array::from_fn(|i| std::array::from_fn(|j| &c(j, i) / &det)))
+}
+
+fn relabel_inverse(body: &Polygon<Q>, j: usize) -> Result<Mat3<Q>, String> {
+    inverse(&body.relabel(j as i64)).ok_or_else(|| "a relabelling is singular".to_string())
+}
+
+/// b transported along a tie path, exactly: b R_{j_1}^{-1} R_{j_2}^{-1} ... as a covector.
+pub fn transported(body: &Polygon<Q>, path: &[usize], b: Vec3<Q>) -> Result<Vec3<Q>, String> {
+    path.iter().try_fold(b, |b, &j| -> Result<Vec3<Q>, String> {
+        let inv = relabel_inverse(body, j)?;
+        Ok(std::array::from_fn(|c| (0..3).fold(Q::int(0), |s, r| &s + &(&b[r] * &inv[r][c]))))
+    })
+}
+
+/// The vector a with b_rep·a = b_r·d_j for the tied edge r --j--> (the kick direction d_j of
+/// an impact at contact j in r's frame, carried back along r's tie path).
+fn kick_at_rep(body: &Polygon<Q>, path: &[usize], j: usize) -> Result<Vec3<Q>, String> {
+    let d = body.impact_direction(j as i64);
+    path.iter().rev().try_fold(d, |d, &i| Ok(mat_vec(&relabel_inverse(body, i)?, &d)))
+}
+
+/// b minus its exact orthogonal projection on the span of the tied edges' kick directions, so
+/// that b_r·d_j = 0 exactly on every tied edge of the component of `k`.
+pub fn balanced(body: &Polygon<Q>, g: &Graph, t: &Ties, k: usize, b: Vec3<Q>) -> Result<Vec3<Q>, String> {
+    let n = body.n();
+    let step_of = |x: usize, y: usize, i: usize| {
+        let (px, py) = (&t.path[x], &t.path[y]);
+        let child = |a: &[usize], b: &[usize], j: usize| {
+            a.len() == b.len() + 1 && a[..b.len()] == *b && a[b.len()] == j
+        };
+        child(py, px, i) || child(px, py, n - i)
+    };
+    // Only edges along the tie tree have b_s = b_r R_j^{-1} exactly.
+    let tied =
+        |e: &&Edge| t.rep[e.from] == k && t.rep[e.to] == k && e.from != e.to && step_of(e.from, e.to, e.step);
+    let mut basis: Vec<Vec3<Q>> = Vec::new();
+    for e in g.edges.iter().filter(tied) {
+        let mut a = kick_at_rep(body, &t.path[e.from], e.step)?;
+        for u in &basis {
+            a = minus_along(&a, u);
+        }
+        if a.iter().any(|x| !x.is_zero()) {
+            basis.push(a);
+        }
+    }
+    let b = basis.iter().fold(b, |b, u| minus_along(&b, u));
+    if b.iter().all(Ring::is_zero) {
+        return Err(format!("the tied edges of node {k}'s component leave no covector"));
+    }
+    Ok(b)
+}
+
+/// x minus its component along u (u ≠ 0), exactly.
+fn minus_along(x: &Vec3<Q>, u: &Vec3<Q>) -> Vec3<Q> {
+    let f = &dot(x, u) / &dot(u, u);
+    std::array::from_fn(|i| &x[i] - &(&f * &u[i]))
+}

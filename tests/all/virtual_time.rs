@@ -1,0 +1,116 @@
+//! The time-to-rest producer (src/certify/virtual_time; docs/time-to-rest.md §5): its files are
+//! accepted by the kernel on both backends, their bound respects simulated drops, their exact
+//! scales are tight, a graph that does not close fails cleanly, and `certify --time-to-rest`
+//! writes a file that `verify` accepts.
+
+use crate::common::{bin, q, root};
+use crate::time_to_rest::{Plate, follow, num, random_drop};
+use chatter::certify::virtual_time::{Config, NotProduced, Produced, produce};
+use chatter_kernel::certificate::{Claim, Encoding};
+use chatter_kernel::exact::ParseLimits;
+use chatter_kernel::verify::{BOTH, Verdict, verify_rest, verify_rest_text_in};
+use std::process::{Command, Output};
+
+fn chatter(args: &[&str], dir: &std::path::Path) -> Output {
+    Command::new(bin()).args(args).current_dir(dir).output().expect("run chatter")
+}
+
+fn square_plate() -> Produced {
+    produce(4, &q("1/6"), &q("1/100"), &Config::default(), &BOTH).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// At the square plate the producer's file is accepted on both backends with the claim that
+/// excludes PCC, and B bounds T|v|/h (first 300 impacts) of 1000 simulated all-down drops, along which the virtual
+/// time of the produced graph falls at every impact (the test's own `f64` physics).
+#[test]
+fn the_square_plates_graph_is_accepted_and_bounds_simulated_drops() {
+    let p = square_plate();
+    match verify_rest_text_in(&p.text, Encoding::Ron, ParseLimits::default(), &BOTH) {
+        Verdict::Accepted(a) => {
+            assert_eq!((a.bound.parse().ok(), a.nodes), (Some(p.bound.clone()), p.cert.nodes.len()))
+        }
+        other => panic!("not accepted: {other:?}"),
+    }
+    assert_eq!(p.cert.claim, Claim::CompleteChatterFromAllDown);
+    let plate = Plate { n: 4, kappa: 1.0 / 6.0, gamma: 1.0 / 100.0 };
+    let bound = num(&p.cert.bound);
+    let (mut seed, mut drops, mut largest) = (0x9e37_79b9_7f4a_7c15_u64, 0, 0.0_f64);
+    while drops < 1000 {
+        let (q, v) = random_drop(&mut seed);
+        let Some(ratio) = follow(&plate, &p.cert, q, v) else { continue };
+        assert!(ratio <= bound * (1.0 + 1e-9), "T |v|/h = {ratio} > B = {bound}");
+        largest = largest.max(ratio);
+        drops += 1;
+    }
+    assert!(largest > 1.0, "largest T |v|/h = {largest}");
+    eprintln!(
+        "square plate: B = {bound}, largest T|v|/h of 1000 drops {largest}, factor {}",
+        bound / largest
+    );
+}
+
+/// The scales are the least ones (up to the 2^-40 rounding): lowering any raised c_r by one part
+/// in 10^6 breaks (G3) on an edge out of node r, and the kernel says `virtual-time-increases`.
+#[test]
+fn lowering_a_raised_scale_breaks_g3() {
+    let p = square_plate();
+    let raised: Vec<usize> =
+        (0..p.cert.nodes.len()).filter(|&r| num(&p.cert.nodes[r].scale) > 1.0 + 1e-5).collect();
+    assert!(!raised.is_empty(), "no scale above 1");
+    for r in raised {
+        let mut cert = p.cert.clone();
+        let lower = &q(&cert.nodes[r].scale) * &q("999999/1000000");
+        cert.nodes[r].scale = lower.to_string();
+        match verify_rest(&cert, ParseLimits::default(), &BOTH) {
+            Verdict::Rejected(e) => assert_eq!(e.code.as_str(), "virtual-time-increases", "node {r}: {e}"),
+            other => panic!("node {r}: lowered scale not rejected: {other:?}"),
+        }
+    }
+}
+
+/// A graph that cannot close within the node cap is reported, with no certificate.
+#[test]
+fn a_graph_that_does_not_close_fails_with_what_was_searched() {
+    let cfg = Config { max_nodes: 2, ..Config::default() };
+    match produce(4, &q("1/6"), &q("1/100"), &cfg, &BOTH) {
+        Err(NotProduced::Failed(m)) => assert!(m.contains("did not close within 2 nodes"), "{m}"),
+        Err(e) => panic!("{e}"),
+        Ok(_) => panic!("a graph of 2 nodes was accepted"),
+    }
+    // Above the square's CC threshold images leave v < 0 or never settle: no bound.
+    let e = produce(4, &q("1/6"), &q("1/2"), &Config::default(), &BOTH)
+        .err()
+        .expect("no bound above the threshold");
+    assert!(e.to_string().contains("graph"), "{e}");
+}
+
+/// `certify --time-to-rest FILE --json` writes a file that `verify` accepts, reports its B as
+/// `time_to_rest_bound`, and validates against the committed schema; where no graph is found the
+/// exit status is 1, no file is written and the reason is given.
+#[test]
+fn certify_writes_a_time_to_rest_file_that_verify_accepts() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("rest.ron");
+    let args = ["certify", "--n", "4", "--kappa", "1/6", "--gamma", "1/100", "--json", "--time-to-rest"];
+    let o = chatter(&[&args[..], &[file.to_str().unwrap()]].concat(), &root());
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let doc: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    crate::schema::validate(&doc);
+    let rest = &doc["time_to_rest"];
+    assert_eq!(
+        (rest["accepted"].as_bool(), rest["claim"].as_str()),
+        (Some(true), Some("CompleteChatterFromAllDown"))
+    );
+    assert_eq!(doc["time_to_rest_bound"], rest["bound"]);
+    let v = chatter(&["verify", "--json", file.to_str().unwrap()], &root());
+    assert_eq!(v.status.code(), Some(0), "{}", String::from_utf8_lossy(&v.stdout));
+    let verified: serde_json::Value = serde_json::from_slice(&v.stdout).unwrap();
+    assert!(verified.to_string().contains(rest["bound"].as_str().unwrap()), "{verified}");
+    let bad = dir.path().join("none.ron");
+    let args = ["certify", "--n", "4", "--kappa", "1/6", "--gamma", "1/2", "--time-to-rest"];
+    let o = chatter(&[&args[..], &[bad.to_str().unwrap()]].concat(), &root());
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{out}");
+    assert!(out.contains("time to rest: NOT CERTIFIED, no bound derived"), "{out}");
+    assert!(!bad.exists());
+}
