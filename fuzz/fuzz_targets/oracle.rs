@@ -3,13 +3,14 @@
 //!
 //! Each input is decoded (`chatter_oracle::mutate::decode`) into a base file of the corpus
 //! (`certificates/valid` and `certificates/invalid`, every plain `.ron` file: certificates of all
-//! kinds and refutations) and up to eight structure-aware edits of its value tree (numbers
-//! perturbed, scaled, negated or spoilt, generators dropped, duplicated, swapped or interpolated,
-//! claims, n, versions, steps and indices changed, fields swapped, parameters widened). The
-//! mutated text is verified by the kernel on both backends (`chatter_kernel::verify::verify_text`
-//! or `verify_refutation_text` with MALACHITE and NUM) and judged by the oracle; a finding (a
-//! panic) is a disagreement of `chatter_oracle::compare::compare`: the backends disagree, the
-//! kernel accepts what the oracle finds false, the kernel rejects what the oracle accepts (where
+//! kinds, time-to-rest certificates among them, and refutations) and up to eight structure-aware
+//! edits of its value tree (numbers perturbed, scaled, negated or spoilt, generators dropped,
+//! duplicated, swapped or interpolated, claims, n, versions, steps and indices changed, fields
+//! swapped, parameters widened, a weight, scale, bound, generator or successor edited). The
+//! mutated text is verified by the kernel on both backends (`chatter_kernel::verify::verify_text`,
+//! `verify_basin_text_in`, `verify_rest_text_in` or `verify_refutation_text` with MALACHITE and
+//! NUM) and judged by the oracle; a finding (a panic) is a disagreement of
+//! `chatter_oracle::compare::compare`: the backends disagree, the kernel accepts what the oracle finds false, the kernel rejects what the oracle accepts (where
 //! the oracle is two-sided and the kernel does not say "not shown"), the codes are incompatible,
 //! the reports differ, or an orbit condition the kernel says fails at a sub-box's centre holds
 //! there exactly. A panic of either side is a finding too.
@@ -19,7 +20,7 @@
 
 use chatter_kernel::syntax::{Encoding as KernelEncoding, Kind, kind_of};
 use chatter_kernel::verify::{
-    MALACHITE, NUM, Verdict, verify_basin_text_in, verify_refutation_text, verify_text,
+    MALACHITE, NUM, Verdict, verify_basin_text_in, verify_refutation_text, verify_rest_text_in, verify_text,
 };
 use chatter_oracle::compare::{KernelView, differential};
 use chatter_oracle::mutate::{decode, mutated};
@@ -80,6 +81,25 @@ fn kernel(text: &str) -> KernelView {
             Verdict::Disagree(d) => KernelView { disagree: Some(d), ..KernelView::default() },
         };
     }
+    if kind_of(text, KernelEncoding::Ron, Kind::Rest).is_ok_and(|(kind, _)| kind == Kind::Rest) {
+        return match verify_rest_text_in(text, KernelEncoding::Ron, Default::default(), &[MALACHITE, NUM]) {
+            Verdict::Accepted(a) => KernelView {
+                accepted: true,
+                report: Report {
+                    claim: a.claim.name().into(),
+                    n: a.n,
+                    rest_nodes: Some(a.nodes),
+                    ..Report::default()
+                },
+                time_to_rest_bound: Some(Some(a.bound)),
+                ..KernelView::default()
+            },
+            Verdict::Rejected(r) => {
+                rejected(r.code.as_str(), serde_json::to_value(&r.locus).unwrap(), r.message())
+            }
+            Verdict::Disagree(d) => KernelView { disagree: Some(d), ..KernelView::default() },
+        };
+    }
     if kind_of(text, KernelEncoding::Ron, Kind::Refutation).is_ok_and(|(kind, _)| kind == Kind::Refutation) {
         return match verify_refutation_text(text, Default::default(), &[MALACHITE, NUM]) {
             Verdict::Accepted(a) => KernelView {
@@ -115,6 +135,7 @@ fn kernel(text: &str) -> KernelView {
                     region: a.region,
                     refutation: None,
                     basin: None,
+                    rest_nodes: None,
                 },
                 pcc_boxes: a.pcc_boxes,
                 orbit_boxes: a.orbit_boxes,

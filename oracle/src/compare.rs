@@ -106,6 +106,7 @@ fn same_report(k: &Report, o: &Report) -> Result<(), String> {
     check("contains_translation", both(&k.contains_translation, &o.contains_translation));
     check("region", both(&k.region, &o.region));
     check("basin", both(&k.basin, &o.basin));
+    check("rest_nodes", both(&k.rest_nodes, &o.rest_nodes));
     if let (Some(kp), Some(op)) = (&k.pieces, &o.pieces) {
         // The kernel's clipped list may repeat a point of a degenerate piece.
         let ok =

@@ -98,6 +98,15 @@ fn judge_value(value: &Value, reader: Reader, limits: &Limits) -> Judgement {
             Err(f) => unread(f),
             Ok(file) => basin(&file, limits),
         },
+        Reader::Rest => match kinds::rest::read(value) {
+            Err(f) => unread(f),
+            Ok(file) => match kinds::rest::check(&file, limits) {
+                Ok((report, bound)) => {
+                    Judgement { time_to_rest_bound: Some(bound), ..done(Kind::Rest, Sided::Two, Ok(report)) }
+                }
+                Err(f) => done(Kind::Rest, Sided::Two, Err(f)),
+            },
+        },
         Reader::Orbit => match kinds::orbit::read(value) {
             Err(f) => unread(f),
             Ok(file) => match kinds::orbit::rules(&file, limits) {

@@ -3,7 +3,9 @@
 //! of edits of its [`Value`] tree (a number perturbed, scaled, negated or made non-canonical, a
 //! list element dropped, duplicated, swapped or interpolated, an identifier or integer changed
 //! (claim, n, version, pattern steps, indices), two fields' values swapped, a parameter widened
-//! to an interval), then written back as RON. Missing bytes read as 0. Sizes stay bounded.
+//! to an interval, a number or integer inside a field named in [`FIELDS`] edited, such as a
+//! time-to-rest certificate's weight, scale, bound, generator or successor), then written back as
+//! RON. Missing bytes read as 0. Sizes stay bounded.
 
 use crate::arith::Rat;
 use crate::arith::rational::{parse_rational, rational_text};
@@ -122,7 +124,21 @@ pub enum Edit {
         /// The exponent e.
         exponent: u8,
     },
+    /// Inside the `at`-th value of a field named `FIELDS[name]`: a number scaled, shifted or
+    /// negated (`how % 3`, with the parameter `how / 3`), or in `next` an integer changed.
+    Field {
+        /// Which field name of [`FIELDS`] (modulo their number).
+        name: u8,
+        /// Which value of a field of that name, then which number inside it (modulo their number).
+        at: u8,
+        /// Which edit and its parameter.
+        how: u8,
+    },
 }
+
+/// Field names an [`Edit::Field`] aims at: the parts of a time-to-rest certificate's nodes
+/// (docs/certificate-format.md §16), the bound, and a cone.
+pub const FIELDS: [&str; 5] = ["weight", "scale", "bound", "cone", "next"];
 
 /// Positive factors of [`Edit::Scale`].
 pub const FACTORS: [(i64, i64); 8] =
@@ -156,7 +172,7 @@ pub fn decode(data: &[u8]) -> Plan {
     let mut edits = vec![];
     for k in 0..MAX_EDITS.min(data.len().saturating_sub(1).div_ceil(4)) {
         let (op, a, b, c) = (byte(1 + 4 * k), byte(2 + 4 * k), byte(3 + 4 * k), byte(4 + 4 * k));
-        edits.push(match op % 13 {
+        edits.push(match op % 14 {
             0 => Edit::Nudge { at: a, denominator: b % 2 == 1, up: c % 2 == 1 },
             1 => Edit::Scale { at: a, factor: b },
             2 => Edit::Shift { at: a, up: b % 2 == 1, exponent: 1 + c % 40 },
@@ -169,6 +185,7 @@ pub fn decode(data: &[u8]) -> Plan {
             9 => Edit::Ident { at: a, to: b },
             10 => Edit::Integer { at: a, to: b },
             11 => Edit::SwapFields { at: a, a: b, b: c },
+            12 => Edit::Field { name: a, at: b, how: c },
             _ => Edit::Widen { at: a, exponent: 1 + b % 12 },
         });
     }
@@ -322,7 +339,48 @@ pub fn apply(v: &mut Value, e: Edit) {
             }
         }
         Edit::Widen { at, exponent } => widen(v, at, exponent),
+        Edit::Field { name, at, how } => field(v, name, at, how),
     }
+}
+
+/// The values of the fields named `name`, in depth-first order.
+fn field_values<'a>(v: &'a mut Value, name: &str, out: &mut Vec<&'a mut Value>) {
+    match v {
+        Value::Named { fields: Some(fs), .. } | Value::Object(fs) => {
+            for (k, x) in fs {
+                if k == name {
+                    out.push(x);
+                } else {
+                    field_values(x, name, out);
+                }
+            }
+        }
+        Value::Tuple(xs) | Value::List(xs) | Value::Array(xs) | Value::Wrapped { items: xs, .. } => {
+            for x in xs {
+                field_values(x, name, out);
+            }
+        }
+        _ => {}
+    }
+}
+
+/// [`Edit::Field`]: one edit inside the `at`-th value of a field named `FIELDS[name]`.
+fn field(v: &mut Value, name: u8, at: u8, how: u8) {
+    let (name, mut values) = (FIELDS[usize::from(name) % FIELDS.len()], vec![]);
+    field_values(v, name, &mut values);
+    let len = values.len();
+    if len == 0 {
+        return;
+    }
+    let value = values.swap_remove(usize::from(at) % len);
+    let (inner, p) = (at / 7, how / 3);
+    let edit = match how % 3 {
+        _ if name == "next" => Edit::Integer { at: inner, to: how },
+        0 => Edit::Scale { at: inner, factor: p },
+        1 => Edit::Shift { at: inner, up: p % 2 == 1, exponent: 1 + p % 24 },
+        _ => Edit::Negate { at: inner },
+    };
+    apply(value, edit);
 }
 
 /// A new tuple ((16 - t) x_a + t x_b)/16 appended to a list of equal-length number tuples.

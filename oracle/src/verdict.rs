@@ -31,6 +31,8 @@ pub enum Kind {
     Refutation,
     /// A basin certificate.
     Basin,
+    /// A time-to-rest certificate (a virtual-time graph).
+    Rest,
 }
 
 /// What an accepted file established, for comparison with the kernel's report.
@@ -59,6 +61,8 @@ pub struct Report {
     /// For a basin certificate: the shares of the box (CC, ICC, undecided; canonical text) and
     /// the leaves of each kind.
     pub basin: Option<([String; 3], [usize; 3])>,
+    /// For a time-to-rest certificate: the number of nodes of its virtual-time graph.
+    pub rest_nodes: Option<usize>,
 }
 
 /// The oracle's verdict.
@@ -86,7 +90,8 @@ pub struct Judgement {
     pub outcome: Outcome,
     /// The bound B on the time to rest, T ≤ B h/|v| (canonical text), of an accepted file: for a
     /// rod point certificate, its `time_to_rest_bound` as rule T1 shows it; for an orbit
-    /// certificate T̄/(1 - ρ) (docs/certificate-format.md §5); for a basin certificate, the largest
+    /// certificate T̄/(1 - ρ) (docs/certificate-format.md §5); for a time-to-rest certificate, its `bound`
+    /// (rule G5, §16); for a basin certificate, the largest
     /// exact (time to rest)/h over the drops the oracle followed into X, a lower bound of the
     /// kernel's bound. Kept beside the [`Report`], whose
     /// fields other crates fill in literally.

@@ -91,5 +91,6 @@ pub fn check_family(b: &Body, claim: Claim, cones: &[Vec<V3>], bits: u64) -> Che
         region: None,
         refutation: None,
         basin: None,
+        rest_nodes: None,
     })
 }

@@ -7,3 +7,4 @@ pub mod limits;
 pub mod numbers;
 pub mod orbit;
 pub mod refutation;
+pub mod rest;

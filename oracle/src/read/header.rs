@@ -13,6 +13,8 @@ pub const FAMILY: &str = "chatter-family-certificate";
 pub const ORBIT: &str = "chatter-orbit-certificate";
 /// `format` of basin certificates (§15).
 pub const BASIN: &str = "chatter-basin-certificate";
+/// `format` of time-to-rest certificates (§16).
+pub const REST: &str = "chatter-time-to-rest";
 /// `format` of refutations (§10).
 pub const REFUTATION: &str = "chatter-refutation";
 
@@ -29,10 +31,13 @@ pub enum Reader {
     Refutation,
     /// Basin certificates, version 1 (§15).
     Basin,
+    /// Time-to-rest certificates, version 1 (§16).
+    Rest,
 }
 
 /// Reads `format` and `version` and picks the reader. The top-level struct's name, when written,
-/// must be `Certificate` for certificates and `Refutation` for refutations (checked after the
+/// must be `Certificate` for certificates, `TimeToRest` for time-to-rest certificates (§16's
+/// example) and `Refutation` for refutations (checked after the
 /// header: the kernel reads the header under any struct name, then the kind's schema).
 pub fn header(v: &Value) -> Checked<Reader> {
     let named = match v {
@@ -58,7 +63,7 @@ pub fn header(v: &Value) -> Checked<Reader> {
         }
     }
     let format = format.flatten().ok_or_else(|| Fail::new("missing-field", "missing field `format`"))?;
-    if ![CERTIFICATE, FAMILY, ORBIT, REFUTATION, BASIN].contains(&format) {
+    if ![CERTIFICATE, FAMILY, ORBIT, REFUTATION, BASIN, REST].contains(&format) {
         return Err(Fail::new("wrong-format", format!("format {format:?}")));
     }
     let version = version.flatten().ok_or_else(|| Fail::new("missing-field", "missing field `version`"))?;
@@ -69,9 +74,14 @@ pub fn header(v: &Value) -> Checked<Reader> {
         (CERTIFICATE, 4) | (FAMILY, 1) => Reader::Family,
         (CERTIFICATE, 5) | (ORBIT, 1) => Reader::Orbit,
         (BASIN, 1) => Reader::Basin,
+        (REST, 1) => Reader::Rest,
         _ => return Err(Fail::new("unsupported-version", format!("version {version}"))),
     };
-    let expected_name = if reader == Reader::Refutation { "Refutation" } else { "Certificate" };
+    let expected_name = match reader {
+        Reader::Refutation => "Refutation",
+        Reader::Rest => "TimeToRest",
+        _ => "Certificate",
+    };
     if let Some(name) = named
         && name != expected_name
     {

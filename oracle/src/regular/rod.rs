@@ -136,5 +136,6 @@ pub fn check_rod(rod: &Rod, claim: Claim, gens: &[V2], bits: u64) -> Checked<Rep
         region: None,
         refutation: None,
         basin: None,
+        rest_nodes: None,
     })
 }

@@ -117,5 +117,6 @@ pub fn check_point(b: &Polygon, claim: Claim, gens: &[V3], bits: u64) -> Checked
         region: None,
         refutation: None,
         basin: None,
+        rest_nodes: None,
     })
 }

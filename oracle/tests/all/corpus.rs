@@ -1,7 +1,7 @@
 //! The oracle against the kernel on the whole corpus: every file of `certificates/valid` and
 //! `certificates/invalid` (RON, JSON, gzip'd), with the expected codes of
-//! `certificates/invalid/expected.json`, except time-to-rest certificates (`rest-*`), which the
-//! oracle does not check yet. Any disagreement fails with the file.
+//! `certificates/invalid/expected.json` (time-to-rest certificates, `rest-*`, included since the
+//! oracle checks rules G1-G5 itself). Any disagreement fails with the file.
 
 use crate::common::{differential_file, root};
 use chatter_oracle::compare::Agreement;
@@ -12,9 +12,6 @@ fn corpus(dir: &str) -> Vec<std::path::PathBuf> {
         .expect("the corpus")
         .map(|e| e.expect("entry").path())
         .filter(|p| p.file_name().is_some_and(|n| n != "expected.json"))
-        // The oracle does not check time-to-rest certificates yet (docs/kernel-soundness.md §10);
-        // kernel/tests/all/rest.rs and tests/all/time_to_rest.rs cover them.
-        .filter(|p| !p.file_name().is_some_and(|n| n.to_string_lossy().starts_with("rest-")))
         .collect();
     files.sort();
     files

@@ -3,13 +3,13 @@
 //! The same decoder drives the fuzz target `fuzz/fuzz_targets/oracle.rs`.
 
 use crate::common::{differential_ron, root};
-use chatter_oracle::mutate::{decode, mutated};
+use chatter_oracle::mutate::{Edit, FIELDS, decode, mutated};
 use chatter_oracle::read::{Encoding, parse::parse};
 use std::collections::BTreeMap;
 
 /// Base files: small certificates and refutations of every kind (the large ones cost seconds per
 /// mutation and are left to the fuzz target).
-const BASES: [&str; 17] = [
+const BASES: [&str; 19] = [
     "valid/doc-example-square.ron",
     "valid/image-on-edge-square.ron",
     "valid/n2-kappa1_4-gamma1_9-complete-chatter-from-all-down.ron",
@@ -27,7 +27,13 @@ const BASES: [&str; 17] = [
     "valid/refutation-n3-kappa1_8-gamma1_5-all-down.ron",
     "invalid/pcc-not-excluded.ron",
     "invalid/rod-time-to-rest-bound-too-small.ron",
+    "valid/rest-n4-kappa1_6-gamma1_100.ron",
+    "invalid/rest-scale-below-one.ron",
 ];
+
+/// The time-to-rest certificates whose weights, scales, bound, generators and successors
+/// [`rest_parts_mutated_alike`] edits.
+const REST: [&str; 2] = ["valid/rest-n4-kappa1_6-gamma1_100.ron", "valid/rest-n4-kappa1_6-gamma1_50.ron"];
 
 /// splitmix64, for deterministic inputs.
 fn next(state: &mut u64) -> u64 {
@@ -85,4 +91,40 @@ fn unedited_bases_round_trip_through_the_writer_with_their_verdicts() {
         assert_eq!(o1, o2, "{b}: the oracle's verdict changed");
         assert!(cmp.is_ok(), "{b}: {cmp:?}");
     }
+}
+
+/// Targeted edits of the parts of a time-to-rest certificate (docs/certificate-format.md §16): a
+/// weight, a scale, the bound, a generator or a successor, each edited alone (scaled, shifted,
+/// negated, an integer changed), judged alike by the kernel and the oracle; both verdicts occur,
+/// and the rejections cover rules G1 to G5.
+#[test]
+fn rest_parts_mutated_alike() {
+    let bases: Vec<_> = REST
+        .iter()
+        .map(|b| {
+            let text = std::fs::read_to_string(root().join("certificates").join(b)).expect("base file");
+            parse(&text, Encoding::Ron).expect("a base file parses")
+        })
+        .collect();
+    let (mut tally, mut codes): (BTreeMap<String, usize>, BTreeMap<String, usize>) = Default::default();
+    let mut failures = vec![];
+    let mut state = 24;
+    for case in 0..60 {
+        let r = next(&mut state);
+        let edit =
+            Edit::Field { name: (case % FIELDS.len()) as u8, at: (r >> 8) as u8, how: (r >> 16) as u8 };
+        let text = mutated(&bases[(r % 2) as usize], &[edit]);
+        let (kernel, _, cmp) = differential_ron(&text);
+        *codes.entry(kernel.code.clone().unwrap_or_else(|| "accepted".into())).or_default() += 1;
+        match cmp {
+            Ok(a) => *tally.entry(format!("{a:?}")).or_default() += 1,
+            Err(f) => failures.push(format!("case {case} {edit:?}: {f}\n{text}")),
+        }
+    }
+    eprintln!("rest mutations: {tally:?}\nkernel verdicts: {codes:?}");
+    assert!(failures.is_empty(), "{} disagreements:\n{}", failures.len(), failures.join("\n\n"));
+    assert!(tally.get("BothAccept").copied().unwrap_or(0) >= 3, "{tally:?}");
+    assert!(tally.get("BothReject").copied().unwrap_or(0) >= 20, "{tally:?}");
+    let g = ["virtual-time-not-positive", "image-outside", "virtual-time-increases", "bound-too-small"];
+    assert!(g.iter().all(|c| codes.contains_key(*c)), "{codes:?}");
 }

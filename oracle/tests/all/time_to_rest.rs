@@ -4,12 +4,18 @@
 //! margin of it, so a smaller B is false); and the kernel's verdict on bounds 10^-30 either side
 //! of 1/λ_1.
 
+use chatter_oracle::arith::Num;
 use chatter_oracle::arith::rational::{Rat, parse_rational, ratio, rational_text};
 use chatter_oracle::claim::Claim;
+use chatter_oracle::cone3::dot;
 use chatter_oracle::kinds::limits::Limits;
+use chatter_oracle::kinds::rest::Graph;
+use chatter_oracle::plane::{inside, project};
 use chatter_oracle::read::Encoding;
+use chatter_oracle::regular::model::{Polygon, V3};
 use chatter_oracle::regular::rest::{below_largest_root, time_to_rest};
 use chatter_oracle::regular::rod::Rod;
+use chatter_oracle::regular::virtual_time::Node;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
@@ -263,4 +269,127 @@ fn the_optional_field_and_the_header_get_the_kernels_codes() {
         assert_eq!(o.accepted(), want == "accepted", "{b}: oracle {o:?}");
     }
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The graph and B of a time-to-rest certificate of the corpus, after the oracle's file rules.
+fn rest_graph(file: &str) -> (Graph, Rat) {
+    use chatter_oracle::kinds::rest::{bound, prepare, read};
+    let text = std::fs::read_to_string(crate::common::root().join("certificates/valid").join(file)).unwrap();
+    let value = chatter_oracle::read::parse::parse(&text, Encoding::Ron).expect("parses");
+    let f = read(&value).expect("the schema");
+    (prepare(&f, &Limits::default()).expect("the file's rules"), bound(&f, &Limits::default()).expect("B"))
+}
+
+/// Φ_r(q, p) = c_r (b_r·q)/(-b_r·p), docs/time-to-rest.md §5.
+fn virtual_time(node: &Node, q: &V3, p: &V3) -> Num {
+    &(&node.scale * &dot(&node.weight, q)) / &dot(&node.weight, p).neg()
+}
+
+/// The next impact of a flight from (q, p) in the frame of the last impact: its contact j and the
+/// flight's length, `None` at a simultaneous impact (outside the model).
+fn next_impact(b: &Polygon, q: &V3, p: &V3) -> Option<(i64, Num)> {
+    let mut best: Option<(i64, Num)> = None;
+    let mut tie = false;
+    for k in 1..b.n as i64 {
+        let u = b.speed(k, p);
+        if !u.is_negative() {
+            continue;
+        }
+        let t = &b.speed(k, q) / &u.neg();
+        let earlier = best.as_ref().is_none_or(|(_, t0)| t < *t0);
+        if earlier {
+            (best, tie) = (Some((k, t)), false);
+        } else if best.as_ref().is_some_and(|(_, t0)| t == *t0) {
+            tie = true;
+        }
+    }
+    assert!(best.is_some(), "a velocity with v < 0 moves some contact down");
+    (!tie).then_some(best).flatten()
+}
+
+/// Follows the all-down drop with velocity Σ λ_k (-m_{k,k+1}) before its first impact at contact 0,
+/// in the configuration α m_{0,1} + α' m_{n-1,0}, exactly for `impacts` impacts, checking the steps
+/// of the proof of Theorem 5.1 at every impact: the velocity in its node's cone, Φ ≥ 0, Φ falling
+/// by at least each flight. Returns T (the flights' sum) + Φ at the end, B h/|v| and the number of
+/// impacts followed (fewer than `impacts` at a simultaneous impact).
+fn follow_drop(
+    (g, b_bound): &(Graph, Rat),
+    lambda: &[i64],
+    alpha: [i64; 2],
+    impacts: usize,
+) -> (Num, Num, usize) {
+    let b = &g.body;
+    let f = &b.kappa.field;
+    let int = |k: i64| Num::int(f, k);
+    let ks = &g.polygons;
+    let d = b.all_down();
+    let p0: V3 =
+        std::array::from_fn(|i| (0..b.n).fold(int(0), |acc, k| &acc + &(&int(lambda[k]) * &d[k][i])));
+    let (m01, m0) = (b.rest_point(0, 1), b.rest_point(b.n as i64 - 1, 0));
+    let mut q: V3 = std::array::from_fn(|i| &(&int(alpha[0]) * &m01[i]) + &(&int(alpha[1]) * &m0[i]));
+    let bound = &(&Num::rational(f, b_bound.clone()) * &q[2]) / &p0[2].neg();
+    let (mut p, mut r, mut time) = (b.impact(0, &p0), 0, int(0));
+    let mut phi = virtual_time(&g.nodes[0], &q, &p);
+    assert!(phi <= bound, "Φ after the first impact exceeds B h/|v|");
+    let mut followed = 1;
+    for _ in 0..impacts {
+        let inside_node = project(&p).is_some_and(|x| inside(&ks[r].sides, &x));
+        assert!(inside_node && !phi.is_negative(), "node {r}: the velocity leaves K_r or Φ < 0");
+        let Some((j, flight)) = next_impact(b, &q, &p) else { break };
+        let landed: V3 = std::array::from_fn(|i| &q[i] + &(&flight * &p[i]));
+        let s = g.nodes[r].next.iter().find(|(step, _)| *step == j as u64).expect("a successor").1 as usize;
+        q = [b.speed(j, &landed), b.speed(j + 1, &landed), landed[2].clone()];
+        p = b.step(j, &p);
+        let after = virtual_time(&g.nodes[s], &q, &p);
+        assert!(after <= &phi - &flight, "node {r} -> {s}: Φ falls by less than the flight");
+        (phi, r, time, followed) = (after, s, &time + &flight, followed + 1);
+    }
+    (&time + &phi, bound, followed)
+}
+
+/// Theorem 5.1 (docs/time-to-rest.md §5) on exact drops of the square plate at the corpus's two
+/// accepted graphs: along 40 impacts of drops from several all-down velocities and first-impact
+/// configurations, every post-impact velocity lies in the cone of the node `next` assigns, Φ ≥ 0,
+/// Φ falls by at least each flight, and T + Φ never exceeds B h/|v| (evidence for the proof's
+/// steps (a)-(f) on these drops; the proof itself is the document's).
+#[test]
+fn exact_drops_follow_the_virtual_time_of_the_corpus_graphs() {
+    let lambdas: [&[i64]; 4] = [&[1, 2, 3, 4], &[5, 1, 1, 2], &[1, 3, 1, 7], &[2, 1, 4, 1]];
+    for file in ["rest-n4-kappa1_6-gamma1_100.ron", "rest-n4-kappa1_6-gamma1_50.ron"] {
+        let g = rest_graph(file);
+        let (mut worst, mut impacts) = (Rat::zero(), vec![]);
+        for (i, lambda) in lambdas.iter().enumerate() {
+            let alpha = [[1, 1], [2, 5], [7, 1], [1, 3]][i];
+            let (spent, bound, followed) = follow_drop(&g, lambda, alpha, 40);
+            assert!(spent <= bound && spent.is_positive(), "{file}: T + Φ = {spent:?} > B h/|v|");
+            worst = worst.max((&spent / &bound).as_rational().expect("rational").clone());
+            impacts.push(followed);
+        }
+        assert!(impacts.iter().all(|&m| m > 40), "{file}: impacts followed {impacts:?}");
+        let per_mille = (worst * Rat::from_integer(1000.into())).floor();
+        eprintln!("{file}: impacts {impacts:?}, largest (T + Φ)/(B h/|v|) about {per_mille}/1000");
+    }
+}
+
+/// A time-to-rest certificate's JSON twin (written by the tool's `convert`, docs/certificate-format.md
+/// §16 and §11) gets the RON file's verdict from the oracle, and the kernel's verdict on the twin
+/// agrees with it (code, claim, nodes and B).
+#[test]
+fn json_twins_of_rest_certificates_get_the_verdict_of_their_ron() {
+    use chatter::convert::{Target, convert};
+    use chatter_kernel::syntax::Encoding as KernelEncoding;
+    let files = [
+        "valid/rest-n4-kappa1_6-gamma1_50.ron",
+        "invalid/rest-image-outside.ron",
+        "invalid/rest-bound-too-small.ron",
+    ];
+    for file in files {
+        let ron = std::fs::read_to_string(crate::common::root().join("certificates").join(file)).unwrap();
+        let json = convert(&ron, KernelEncoding::Ron, Target::Json).expect("a twin");
+        let oracle = chatter_oracle::judge(&json, Encoding::Json);
+        assert_eq!(oracle, chatter_oracle::judge(&ron, Encoding::Ron), "{file}");
+        let kernel = crate::common::kernel_rest_in(&json, KernelEncoding::Json);
+        assert!(chatter_oracle::compare::compare(&kernel, &oracle).is_ok(), "{file}: {kernel:?} {oracle:?}");
+        assert_eq!(oracle.accepted(), file.starts_with("valid/"), "{file}");
+    }
 }

@@ -6,7 +6,7 @@
 
 use chatter::verify::format::format_of;
 use chatter_kernel::verify::{
-    MALACHITE, NUM, Verdict, verify_basin_text_in, verify_refutation_text, verify_text,
+    MALACHITE, NUM, Verdict, verify_basin_text_in, verify_refutation_text, verify_rest_text_in, verify_text,
 };
 use chatter_oracle::compare::{Agreement, Finding, KernelView, differential};
 use chatter_oracle::read::Encoding;
@@ -27,6 +27,9 @@ fn rejected(code: &str, locus: serde_json::Value, message: String) -> KernelView
 pub fn kernel_ron(text: &str) -> KernelView {
     if format_of(text).as_deref() == Some("chatter-basin-certificate") {
         return kernel_basin(text);
+    }
+    if format_of(text).as_deref() == Some("chatter-time-to-rest") {
+        return kernel_rest(text);
     }
     if format_of(text).as_deref() == Some("chatter-refutation") {
         return match verify_refutation_text(text, Default::default(), &[MALACHITE, NUM]) {
@@ -61,6 +64,7 @@ pub fn kernel_ron(text: &str) -> KernelView {
                 region: a.region,
                 refutation: None,
                 basin: None,
+                rest_nodes: None,
             },
             pcc_boxes: a.pcc_boxes,
             orbit_boxes: a.orbit_boxes,
@@ -96,6 +100,32 @@ fn kernel_basin(text: &str) -> KernelView {
     }
 }
 
+/// The kernel (both backends) on a time-to-rest certificate in RON: its claim, n, nodes and B.
+fn kernel_rest(text: &str) -> KernelView {
+    kernel_rest_in(text, chatter_kernel::syntax::Encoding::Ron)
+}
+
+/// The kernel (both backends) on a time-to-rest certificate in either encoding.
+pub fn kernel_rest_in(text: &str, encoding: chatter_kernel::syntax::Encoding) -> KernelView {
+    match verify_rest_text_in(text, encoding, Default::default(), &[MALACHITE, NUM]) {
+        Verdict::Accepted(a) => KernelView {
+            accepted: true,
+            report: Report {
+                claim: a.claim.name().to_string(),
+                n: a.n,
+                rest_nodes: Some(a.nodes),
+                ..Report::default()
+            },
+            time_to_rest_bound: Some(Some(a.bound)),
+            ..KernelView::default()
+        },
+        Verdict::Rejected(r) => {
+            rejected(r.code.as_str(), serde_json::to_value(&r.locus).expect("json"), r.message())
+        }
+        Verdict::Disagree(d) => KernelView { disagree: Some(d), ..KernelView::default() },
+    }
+}
+
 /// The kernel on a file through the tool's file reader (JSON, gzip, refutations).
 pub fn kernel_file(path: &Path) -> KernelView {
     use chatter::verify::{Options, Status, verify_file};
@@ -119,6 +149,7 @@ pub fn kernel_file(path: &Path) -> KernelView {
                     (Some(c), Some(i), Some(u), Some(l)) => Some(([c, i, u], l)),
                     _ => None,
                 },
+                rest_nodes: v.rest_nodes,
                 ..Report::default()
             },
             pcc_boxes: v.pcc_boxes,

@@ -1,0 +1,210 @@
+//! Time-to-rest certificates (docs/certificate-format.md §16): the schema, the file's rules (the
+//! claim, the limits, a body at a point, n = 3, 4 or 6, 0 < γ < 1, the numbers and their arity),
+//! then the virtual-time graph's rules G1-G5 and R4 (`crate::regular::virtual_time`).
+
+use super::limits::Limits;
+use super::numbers::rational;
+use crate::arith::rational::rational_text;
+use crate::arith::{Field, Num, Rat};
+use crate::claim::Claim;
+use crate::read::Value;
+use crate::read::schema::{
+    integer, list, param, regular_polygon, string, strings, tuple, unit_variant, walk,
+};
+use crate::regular::model::{Polygon, V3};
+use crate::regular::rules::Polygon2;
+use crate::regular::virtual_time::{Node, bound_rules, graph_rules, node_rules};
+use crate::verdict::{Checked, Fail, Report};
+use std::sync::Arc;
+
+/// A node as read: its cone's generators, its covector b_r, its scale c_r and its successors.
+struct NodeText<'a> {
+    cone: Vec<Vec<&'a str>>,
+    weight: Vec<&'a str>,
+    scale: &'a str,
+    next: Vec<(u64, u64)>,
+}
+
+/// A time-to-rest certificate as read.
+pub struct RestFile<'a> {
+    n: u64,
+    kappa: Vec<&'a str>,
+    gamma: Vec<&'a str>,
+    claim: Claim,
+    bound: &'a str,
+    nodes: Vec<NodeText<'a>>,
+}
+
+/// A pair (j, s) of `next`: after step j, node s.
+fn successor(v: &Value) -> Checked<(u64, u64)> {
+    match tuple(v)? {
+        [j, s] => Ok((integer(j)?, integer(s)?)),
+        xs => Err(Fail::new("syntax", format!("a successor is a pair (j, s), found {} values", xs.len()))),
+    }
+}
+
+fn node(v: &Value) -> Checked<NodeText<'_>> {
+    let mut t = NodeText { cone: vec![], weight: vec![], scale: "", next: vec![] };
+    let fields = [("cone", true), ("weight", true), ("scale", true), ("next", true)];
+    walk(v, &fields, |name, value| {
+        match name {
+            "cone" => t.cone = list(value)?.iter().map(strings).collect::<Checked<_>>()?,
+            "weight" => t.weight = strings(value)?,
+            "scale" => t.scale = string(value)?,
+            _ => t.next = list(value)?.iter().map(successor).collect::<Checked<_>>()?,
+        }
+        Ok(())
+    })?;
+    Ok(t)
+}
+
+/// The schema of §16 ("Fields").
+pub fn read(v: &Value) -> Checked<RestFile<'_>> {
+    let mut f = RestFile {
+        n: 0,
+        kappa: vec![],
+        gamma: vec![],
+        claim: Claim::EffectivelyInvariant,
+        bound: "",
+        nodes: vec![],
+    };
+    let fields = [
+        ("format", true),
+        ("version", true),
+        ("body", true),
+        ("coordinates", true),
+        ("claim", true),
+        ("bound", true),
+        ("nodes", true),
+        ("producer", false),
+    ];
+    let known: Vec<(&str, bool)> = Claim::ALL.iter().map(|(_, n)| (*n, true)).collect();
+    walk(v, &fields, |name, value| {
+        match name {
+            "format" | "producer" => drop(string(value)?),
+            "version" => drop(integer(value)?),
+            "body" => regular_polygon(value, |k, v| {
+                match k {
+                    "n" => f.n = integer(v)?,
+                    "kappa" => f.kappa = param(v)?,
+                    _ => f.gamma = param(v)?,
+                }
+                Ok(())
+            })?,
+            "coordinates" => drop(unit_variant(value, &[("ContactVelocities", true)])?),
+            "claim" => f.claim = Claim::of_name(unit_variant(value, &known)?).expect("listed"),
+            "bound" => f.bound = string(value)?,
+            _ => f.nodes = list(value)?.iter().map(node).collect::<Checked<_>>()?,
+        }
+        Ok(())
+    })?;
+    Ok(f)
+}
+
+/// The claim must be about all-down drops (§16: `unknown-variant` otherwise).
+fn claim(f: &RestFile) -> Checked<()> {
+    match f.claim {
+        Claim::CcOrPccFromAllDown | Claim::CompleteChatterFromAllDown => Ok(()),
+        c => Err(Fail::new("unknown-variant", format!("the claim {} is not about all-down drops", c.name()))),
+    }
+}
+
+/// The limits: nodes and generators per node (`max-generators`), the characters of every number
+/// (`max-total-digits`).
+fn size(f: &RestFile, limits: &Limits) -> Checked<()> {
+    let many =
+        f.nodes.len() > limits.max_generators || f.nodes.iter().any(|n| n.cone.len() > limits.max_generators);
+    if many {
+        return Err(Fail::new("too-large", "more nodes or generators than max-generators"));
+    }
+    let numbers = f.nodes.iter().flat_map(|n| n.cone.iter().flatten().chain(&n.weight).chain([&n.scale]));
+    let chars: usize = f.kappa.iter().chain(&f.gamma).chain([&f.bound]).chain(numbers).map(|s| s.len()).sum();
+    if chars > limits.max_total_digits {
+        return Err(Fail::new("too-large", "more characters of numbers than max-total-digits"));
+    }
+    Ok(())
+}
+
+/// The body: at a point, n = 3, 4 or 6 (cos 2π/n rational), κ > 0 and 0 < γ < 1.
+fn body(f: &RestFile, limits: &Limits) -> Checked<Polygon> {
+    let out = |what: &str| Err(Fail::new("parameter-out-of-range", what.to_string()));
+    if f.kappa.len() != 1 || f.gamma.len() != 1 {
+        return out("a time-to-rest certificate is about a body at a point");
+    }
+    if ![3, 4, 6].contains(&f.n) {
+        return Err(Fail::new("unsupported-body", format!("n = {} (time-to-rest: n = 3, 4 or 6)", f.n)));
+    }
+    let field = Field::cos(f.n as u32);
+    let kappa = Num::rational(&field, rational("body.kappa", f.kappa[0], limits)?);
+    let gamma = Num::rational(&field, rational("body.gamma", f.gamma[0], limits)?);
+    if !kappa.is_positive() {
+        return out("kappa must be > 0");
+    }
+    if !gamma.is_positive() || !(&gamma - &Num::int(&field, 1)).is_negative() {
+        return out("the claims about drops need 0 < gamma < 1");
+    }
+    Ok(Polygon::new(f.n as usize, kappa, gamma))
+}
+
+/// A triple of numbers (a generator or a covector), `wrong-arity` unless it has three.
+fn triple(path: &str, texts: &[&str], field: &Arc<Field>, limits: &Limits) -> Checked<V3> {
+    if texts.len() != 3 {
+        return Err(Fail::new("wrong-arity", format!("{path} has {} coordinates", texts.len())));
+    }
+    let x = |i: usize| -> Checked<Num> { Ok(Num::rational(field, rational(path, texts[i], limits)?)) };
+    Ok([x(0)?, x(1)?, x(2)?])
+}
+
+/// Node r's numbers (cone, weight, scale).
+fn node_numbers(r: usize, t: &NodeText, field: &Arc<Field>, limits: &Limits) -> Checked<Node> {
+    let cone = (t.cone.iter().enumerate())
+        .map(|(i, g)| triple(&format!("nodes[{r}].cone[{i}]"), g, field, limits))
+        .collect::<Checked<_>>()?;
+    let weight = triple(&format!("nodes[{r}].weight"), &t.weight, field, limits)?;
+    let scale = Num::rational(field, rational(&format!("nodes[{r}].scale"), t.scale, limits)?);
+    Ok(Node { cone, weight, scale, next: t.next.clone() })
+}
+
+/// A time-to-rest certificate after the file's rules and G1-G2: the body, the graph's nodes and
+/// their polygons.
+pub struct Graph {
+    /// The regular polygon at (κ, γ).
+    pub body: Polygon,
+    /// The nodes, node 0 entered at the first impact.
+    pub nodes: Vec<Node>,
+    /// Each node's cone K_r on the plane v = -1.
+    pub polygons: Vec<Polygon2>,
+}
+
+/// The file's rules of §16 ("Acceptance rules", first item), then node after node its numbers
+/// and rules G1 and G2 (the kernel reads a node's numbers just before its rules, and B only for
+/// G5: the mutation tests show it, the documents leave it open).
+pub fn prepare(f: &RestFile, limits: &Limits) -> Checked<Graph> {
+    claim(f)?;
+    size(f, limits)?;
+    let body = body(f, limits)?;
+    let (mut nodes, mut polygons) = (vec![], vec![]);
+    for (r, t) in f.nodes.iter().enumerate() {
+        let node = node_numbers(r, t, &body.kappa.field, limits)?;
+        polygons.push(node_rules(&body, r, &node)?);
+        nodes.push(node);
+    }
+    Ok(Graph { body, nodes, polygons })
+}
+
+/// B, a canonical rational.
+pub fn bound(f: &RestFile, limits: &Limits) -> Checked<Rat> {
+    rational("bound", f.bound, limits)
+}
+
+/// Every rule of a time-to-rest certificate after its schema, in §16's order; returns the report
+/// and B (canonical text).
+pub fn check(f: &RestFile, limits: &Limits) -> Checked<(Report, String)> {
+    let g = prepare(f, limits)?;
+    graph_rules(&g.body, &g.nodes, &g.polygons)?;
+    let b = bound(f, limits)?;
+    bound_rules(&g.body, f.claim, &Num::rational(&g.body.kappa.field, b.clone()), &g.nodes[0])?;
+    let report =
+        Report { claim: f.claim.name().into(), n: f.n, rest_nodes: Some(g.nodes.len()), ..Report::default() };
+    Ok((report, rational_text(&b)))
+}
