@@ -188,7 +188,9 @@ pub fn search(maps: &Maps, g: &Graph, t: &Ties, rounds: usize, grid: usize) -> R
             break;
         }
     }
-    match reps.iter().find(|&&k| !(required(maps, g, t, &st, k, &st.b[k]) < 1e6)) {
+    match reps.iter().find(|&&k| {
+        required(maps, g, t, &st, k, &st.b[k]).partial_cmp(&1e6) != Some(std::cmp::Ordering::Less)
+    }) {
         Some(k) => Err(format!(
             "the float covector search found none for node {k}'s component of {} tied nodes ((G1), (G2) with margins and its own edges contracting)",
             t.members(*k).len()
