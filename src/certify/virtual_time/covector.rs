@@ -4,7 +4,7 @@
 //! over the components). Untrusted: the scales that go into the file are exact ([`super::scale`]).
 
 use super::graph::{Edge, Graph};
-use super::tie::Ties;
+use super::tie::{self, Ties};
 use crate::finder::geometry::{P2, lift};
 use crate::model::float::FloatPolygon;
 use nalgebra::{Matrix3, Vector3};
@@ -14,19 +14,34 @@ type V3 = Vector3<f64>;
 /// The float model pieces the search needs.
 pub struct Maps<'a> {
     pub body: &'a FloatPolygon,
-    /// (R_j^{-1})^T, j = 0..n-1 (index 0 unused): b_s = (R_j^{-1})^T b_r.
-    inverse_t: Vec<Matrix3<f64>>,
+    /// R_j^{-1}, j = 0..n-1 (index 0 unused): b_s = (R_j^{-1})^T b_r.
+    inverse: Vec<Matrix3<f64>>,
 }
 
 impl<'a> Maps<'a> {
     pub fn new(body: &'a FloatPolygon) -> Self {
-        let inv = |j: usize| body.relabel(j as i64).try_inverse().unwrap_or_else(Matrix3::zeros).transpose();
-        Maps { body, inverse_t: (0..body.n()).map(inv).collect() }
+        let inv = |j: usize| body.relabel(j as i64).try_inverse().unwrap_or_else(Matrix3::zeros);
+        Maps { body, inverse: (0..body.n()).map(inv).collect() }
     }
 
     /// b transported along the steps of a tie path (docs/time-to-rest.md §5).
     pub fn transport(&self, path: &[usize], b: V3) -> V3 {
-        path.iter().fold(b, |b, &j| self.inverse_t[j] * b)
+        path.iter().fold(b, |b, &j| self.inverse[j].transpose() * b)
+    }
+
+    /// An orthonormal basis of the kick directions d_j of the component's tie-tree edges carried
+    /// to its representative (b_r·d_j = 0 is needed there: [`super::tie`]).
+    pub fn tied_kicks(&self, g: &Graph, t: &Ties, k: usize) -> Vec<V3> {
+        let mut basis: Vec<V3> = Vec::new();
+        for e in g.edges.iter().filter(|e| t.rep[e.from] == k && tie::along_tree(t, self.body.n(), e)) {
+            let d = self.body.impact_direction(e.step as i64);
+            let a = t.path[e.from].iter().rev().fold(d, |d, &i| self.inverse[i] * d);
+            let a = basis.iter().fold(a, |a, u| a - u * u.dot(&a));
+            if a.norm() > 1e-9 {
+                basis.push(a.normalize());
+            }
+        }
+        basis
     }
 
     fn m(&self, k: i64) -> V3 {
@@ -117,11 +132,19 @@ fn first(maps: &Maps, g: &Graph, k: usize, grid: usize) -> V3 {
 struct State {
     b: Vec<V3>,
     c: Vec<f64>,
+    /// Per representative, [`Maps::tied_kicks`].
+    kicks: Vec<Vec<V3>>,
+}
+
+/// b with its components along the tied kicks removed (the float form of [`tie::balanced`]).
+fn balance(kicks: &[V3], b: &V3) -> V3 {
+    kicks.iter().fold(*b, |b, u| b - u * u.dot(&b))
 }
 
 /// The scale a candidate covector `cand` of the component of `k` needs (infinite if a node of it
 /// is not admissible, large if one of its internal edges does not contract).
 fn required(maps: &Maps, g: &Graph, t: &Ties, st: &State, k: usize, cand: &V3) -> f64 {
+    let cand = &balance(&st.kicks[k], cand);
     let bof = |r: usize| maps.transport(&t.path[r], if t.rep[r] == k { *cand } else { st.b[t.rep[r]] });
     if !t.members(k).iter().all(|&r| admissible(maps, &bof(r), &g.nodes[r])) {
         return f64::INFINITY;
@@ -140,12 +163,16 @@ fn required(maps: &Maps, g: &Graph, t: &Ties, st: &State, k: usize, cand: &V3) -
     v
 }
 
-/// The representatives' covectors (indexed by node; only representatives are meaningful).
-pub fn search(maps: &Maps, g: &Graph, t: &Ties, rounds: usize, grid: usize) -> Vec<V3> {
+/// The representatives' covectors (indexed by node; only representatives are meaningful), or
+/// the first component for which none keeps (G1), (G2) and its own edges contracting.
+pub fn search(maps: &Maps, g: &Graph, t: &Ties, rounds: usize, grid: usize) -> Result<Vec<V3>, String> {
     let reps = t.reps();
-    let mut st = State { b: vec![V3::z(); g.nodes.len()], c: vec![1.0; g.nodes.len()] };
+    let kicks = (0..g.nodes.len())
+        .map(|k| if t.rep[k] == k { maps.tied_kicks(g, t, k) } else { Vec::new() })
+        .collect();
+    let mut st = State { b: vec![V3::z(); g.nodes.len()], c: vec![1.0; g.nodes.len()], kicks };
     for &k in &reps {
-        st.b[k] = first(maps, g, k, grid);
+        st.b[k] = balance(&st.kicks[k], &first(maps, g, k, grid));
     }
     for _ in 0..rounds {
         let mut delta: f64 = 0.0;
@@ -154,12 +181,20 @@ pub fn search(maps: &Maps, g: &Graph, t: &Ties, rounds: usize, grid: usize) -> V
             let (b, s) = best(&score, grid, Some(st.b[k]), 40);
             if s.is_finite() {
                 delta = delta.max((s - st.c[k]).abs() / st.c[k]);
-                (st.b[k], st.c[k]) = (b, s);
+                (st.b[k], st.c[k]) = (balance(&st.kicks[k], &b), s);
             }
         }
         if delta < 1e-12 {
             break;
         }
     }
-    st.b
+    match reps.iter().find(|&&k| {
+        required(maps, g, t, &st, k, &st.b[k]).partial_cmp(&1e6) != Some(std::cmp::Ordering::Less)
+    }) {
+        Some(k) => Err(format!(
+            "the float covector search found none for node {k}'s component of {} tied nodes ((G1), (G2) with margins and its own edges contracting)",
+            t.members(*k).len()
+        )),
+        None => Ok(st.b),
+    }
 }

@@ -51,7 +51,7 @@ fn cone(node: &[P2], r: usize) -> Result<ConvexPolygon<Q>, String> {
 /// The rounded covector of a representative, scaled to largest |component| 1.
 fn rounded(b: &Vector3<f64>) -> Result<Vec3<Q>, String> {
     let m = b.amax();
-    if !(m > 0.0) {
+    if m.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
         return Err("a covector of the float search is zero".into());
     }
     Ok([rat(b.x / m)?, rat(b.y / m)?, rat(b.z / m)?])

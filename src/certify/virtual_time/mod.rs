@@ -104,7 +104,7 @@ pub fn produce(
     let size = format!("{} nodes, {} edges", g.nodes.len(), g.edges.len());
     if !g.closed {
         return Err(failed(format!(
-            "the float graph did not close within {} nodes ({size}; an image left every node and the cap was reached, or left v < 0)",
+            "the float graph did not close ({size}; cap {} nodes): an image left v < 0 or the cap was reached",
             cfg.max_nodes
         )));
     }
@@ -112,7 +112,8 @@ pub fn produce(
         |e: String| failed(format!("the float graph closed ({size}) but the exact check failed: {e}"));
     let maps = covector::Maps::new(&fbody);
     let ties = tie::ties(fbody.n(), g.nodes.len(), &g.edges);
-    let reps = covector::search(&maps, &g, &ties, cfg.rounds, cfg.grid);
+    let reps = covector::search(&maps, &g, &ties, cfg.rounds, cfg.grid)
+        .map_err(|e| failed(format!("the float graph closed ({size}) but {e}")))?;
     let nodes = exactify::nodes(&body, &g, &ties, &reps).map_err(exact)?;
     let edges = exactify::edges(&body, &g, &nodes).map_err(exact)?;
     exactify::initial_inside(&body, &nodes).map_err(exact)?;

@@ -58,6 +58,16 @@ pub fn ties(n: usize, nodes: usize, edges: &[Edge]) -> Ties {
     Ties { rep, path }
 }
 
+/// Whether the edge x --i--> y joins a node to its parent or child in the tie tree, where
+/// b_y = b_x R_i^{-1} holds exactly (R_{n-i} = R_i^{-1}); other edges inside a component are
+/// ordinary ones.
+pub fn along_tree(t: &Ties, n: usize, e: &Edge) -> bool {
+    let (px, py) = (&t.path[e.from], &t.path[e.to]);
+    let child =
+        |a: &[usize], b: &[usize], j: usize| a.len() == b.len() + 1 && a[..b.len()] == *b && a[b.len()] == j;
+    t.rep[e.from] == t.rep[e.to] && e.from != e.to && (child(py, px, e.step) || child(px, py, n - e.step))
+}
+
 /// The 3 × 3 inverse by the adjugate (`None` if singular).
 fn inverse(m: &Mat3<Q>) -> Option<Mat3<Q>> {
     let c = |i: usize, j: usize| {
@@ -90,17 +100,7 @@ fn kick_at_rep(body: &Polygon<Q>, path: &[usize], j: usize) -> Result<Vec3<Q>, S
 /// b minus its exact orthogonal projection on the span of the tied edges' kick directions, so
 /// that b_r·d_j = 0 exactly on every tied edge of the component of `k`.
 pub fn balanced(body: &Polygon<Q>, g: &Graph, t: &Ties, k: usize, b: Vec3<Q>) -> Result<Vec3<Q>, String> {
-    let n = body.n();
-    let step_of = |x: usize, y: usize, i: usize| {
-        let (px, py) = (&t.path[x], &t.path[y]);
-        let child = |a: &[usize], b: &[usize], j: usize| {
-            a.len() == b.len() + 1 && a[..b.len()] == *b && a[b.len()] == j
-        };
-        child(py, px, i) || child(px, py, n - i)
-    };
-    // Only edges along the tie tree have b_s = b_r R_j^{-1} exactly.
-    let tied =
-        |e: &&Edge| t.rep[e.from] == k && t.rep[e.to] == k && e.from != e.to && step_of(e.from, e.to, e.step);
+    let tied = |e: &&Edge| t.rep[e.from] == k && along_tree(t, body.n(), e);
     let mut basis: Vec<Vec3<Q>> = Vec::new();
     for e in g.edges.iter().filter(tied) {
         let mut a = kick_at_rep(body, &t.path[e.from], e.step)?;
