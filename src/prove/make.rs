@@ -1,7 +1,8 @@
 //! Certified sets made on the fly (issue 22 §1): a cone certificate with claim
-//! `CompleteChatterFromAllDown` by the certify pipeline, orbit certificates by the orbit
-//! producer; each is used only once the kernel accepts it on both backends
-//! ([`Certified::add_cone`], [`Certified::add_orbit`]).
+//! `CompleteChatterFromAllDown` by the certify pipeline, a time-to-rest certificate by the
+//! virtual-time producer where one is found (issue 24), orbit certificates by the orbit producer;
+//! each is used only once the kernel accepts it on both backends ([`Certified::add_cone`],
+//! [`Certified::add_rest`], [`Certified::add_orbit`]).
 
 use crate::exact::Q;
 use crate::simulate::Model;
@@ -47,10 +48,37 @@ pub fn cone(model: &Model, effort: Effort) -> Certified {
             if let Err(e) = out.add_cone(model, &cert, &name) {
                 out.notes.push(format!("the cone certificate made on the fly cannot serve: {e}"));
             }
+            add_rest_for(&mut out, model, n, effort);
         }
         Err(f) => out.notes.push(format!("no cone certificate with claim CompleteChatterFromAllDown: {f}")),
     }
     out
+}
+
+/// Node cap of the virtual-time graph tried at [`Effort::Survey`] (the full search's is
+/// `crate::certify::virtual_time::Config::default().max_nodes`).
+const SURVEY_REST_NODES: usize = 40;
+
+/// Tries a time-to-rest certificate (docs/time-to-rest.md §5; producer
+/// `crate::certify::virtual_time`, kernel on both backends) and adds it to `sets`: with it an
+/// all-down drop is proved CC at its first impact, with a bound on its time to rest. A failure
+/// is a note, never a verdict.
+pub fn add_rest_for(sets: &mut Certified, model: &Model, n: u64, effort: Effort) {
+    use crate::certify::virtual_time::{Config, produce};
+    let mut cfg = Config::default();
+    if effort == Effort::Survey {
+        cfg.max_nodes = SURVEY_REST_NODES;
+    }
+    let backends = [chatter_kernel::verify::MALACHITE, chatter_kernel::verify::NUM];
+    match produce(n, &model.kappa, &model.gamma, &cfg, &backends) {
+        Ok(made) => {
+            let name = format!("time-to-rest certificate made on the fly ({} nodes)", made.nodes);
+            if let Err(e) = sets.add_rest(model, &made.cert, &name) {
+                sets.notes.push(format!("the time-to-rest certificate made on the fly cannot serve: {e}"));
+            }
+        }
+        Err(e) => sets.notes.push(format!("no time-to-rest certificate: {e}")),
+    }
 }
 
 type Cache = Mutex<HashMap<(u64, Q, Q), Certified>>;

@@ -180,6 +180,7 @@ fn prove_point(n: u64, p: &Point, evidence: &[Brief], budget: usize, certificate
             if let Err(e) = sets.add_cone(&model, &cert, "the point's certificate") {
                 sets.notes.push(e);
             }
+            crate::prove::add_rest_for(&mut sets, &model, n, Effort::Survey);
             sets
         }
         _ => crate::prove::cone(&model, Effort::Survey),

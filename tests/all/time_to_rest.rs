@@ -435,3 +435,28 @@ fn simulate_proves_all_down_drops_cc_by_a_time_to_rest_certificate() {
     let v: serde_json::Value = serde_json::from_slice(&chatter(&args, &root()).stdout).unwrap();
     assert_ne!(v["entered"]["kind"].as_str(), Some("time-to-rest"), "{v}");
 }
+
+/// Issue 24 with issue 22 §1: without `--certificate`, `simulate --exact` makes the time-to-rest
+/// certificate itself (cached with the cone, kernel-checked), so a drop at the square plate is
+/// proved CC at its first impact with a bound above its `f64` accumulation time; where no graph
+/// is found (the triangle at κ = 1/10, γ = 3/20) the drop is not proved CC by one.
+#[test]
+fn simulate_makes_a_time_to_rest_certificate_on_the_fly_where_the_producer_finds_one() {
+    let square = ["simulate", "--n", "4", "--kappa", "1/6", "--gamma", "1/100", "--json", "--seed", "4"];
+    let mut args = square.to_vec();
+    args.push("--exact");
+    let v: serde_json::Value = serde_json::from_slice(&chatter(&args, &root()).stdout).unwrap();
+    assert_eq!((v["outcome"].as_str(), v["proved"].as_bool()), (Some("CC"), Some(true)), "{v}");
+    assert_eq!(v["entered"]["kind"].as_str(), Some("time-to-rest"), "{v}");
+    assert!(v["entered"]["certificate"].as_str().is_some_and(|s| s.contains("made on the fly")), "{v}");
+    let bound: f64 = v["entered"]["time_to_rest_bound"].as_str().unwrap().parse().unwrap();
+    let mut args = square.to_vec();
+    args.extend(["--impacts", "2000"]);
+    let f: serde_json::Value = serde_json::from_slice(&chatter(&args, &root()).stdout).unwrap();
+    let t = f["accumulation_time"].as_f64().unwrap_or_else(|| panic!("{f}"));
+    assert!(t > 0.0 && t <= bound, "accumulation time {t} > proved bound {bound}");
+    let triangle =
+        ["simulate", "--n", "3", "--kappa", "1/10", "--gamma", "3/20", "--json", "--exact", "--seed", "4"];
+    let v: serde_json::Value = serde_json::from_slice(&chatter(&triangle, &root()).stdout).unwrap();
+    assert_ne!(v["entered"]["kind"].as_str(), Some("time-to-rest"), "{v}");
+}

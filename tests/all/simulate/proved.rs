@@ -32,7 +32,9 @@ const PENTAGON: [(&str, &str); 7] = [
 
 #[test]
 fn an_all_down_drop_at_a_certified_point_enters_the_cone_at_its_first_impact() {
-    for (n, kappa, gamma) in [(3, "1/8", "1/10"), (4, "1/6", "1/100"), (6, "1/50", "1/5")] {
+    // The square at (1/20, 1/10): a cone certificate, and no time-to-rest certificate from the
+    // producer (docs/time-to-rest.md §5), which would decide the drop first (tests/all/time_to_rest.rs).
+    for (n, kappa, gamma) in [(3, "1/8", "1/10"), (4, "1/20", "1/10"), (6, "1/50", "1/5")] {
         let model = polygon(n, kappa, gamma);
         let sets = chatter::prove::cone(&model, chatter::prove::Effort::Full);
         assert_eq!(sets.sets().len(), 1, "n = {n}: a cone certificate is made: {:?}", sets.notes);
@@ -356,7 +358,9 @@ fn a_drop_past_a_cone_that_enters_no_orbit_set_stays_no_icc_no_pcc() {
 #[test]
 fn square_plate_drops_proved_by_the_cone_are_proved_cc_by_orbits_made_for_them() {
     use chatter::prove::{Effort, cone, prove_many};
-    let model = polygon(4, "1/6", "1/100");
+    // A square point with a cone certificate and no time-to-rest certificate made on the fly
+    // (at the square plate one is made, and decides the drops at their first impact).
+    let model = polygon(4, "1/20", "1/10");
     let proved =
         prove_many(&model, 0, 6, &Options::new(100), cone(&model, Effort::Full), Some(Effort::Full), &|| {});
     for b in &proved.briefs {
@@ -372,7 +376,8 @@ fn square_plate_drops_proved_by_the_cone_are_proved_cc_by_orbits_made_for_them()
 /// entry, with its bound); the batch counts such drops in `cc_after_cone`, within `proved.CC`.
 #[test]
 fn the_json_reports_the_cone_entry_before_an_orbit_entry() {
-    let body = ["simulate", "--n", "4", "--kappa", "1/6", "--gamma", "1/100", "--exact", "--impacts", "100"];
+    // A square point where the cone is entered first and no time-to-rest certificate is made.
+    let body = ["simulate", "--n", "4", "--kappa", "1/20", "--gamma", "1/10", "--exact", "--impacts", "100"];
     let (json, code) = chatter(&[&body[..], &["--seed", "2", "--json"]].concat());
     assert_eq!(code, 0, "{json}");
     let v: serde_json::Value = serde_json::from_str(&json).unwrap();
@@ -392,6 +397,7 @@ fn the_json_reports_the_cone_entry_before_an_orbit_entry() {
     assert_eq!(v["cc_after_cone"].as_u64(), v["proved"]["CC"].as_u64(), "{json}");
     assert_eq!(v["cc_after_cone"].as_u64(), Some(3), "{json}");
     // Without orbit sets the run stops at the cone: no cone entry gone past.
+    let body = ["simulate", "--n", "4", "--kappa", "1/6", "--gamma", "1/100", "--exact", "--impacts", "100"];
     let cone = root().join("certificates/valid/doc-example-square.ron");
     let (json, code) =
         chatter(&[&body[..], &["--seed", "2", "--json", "--certificate", cone.to_str().unwrap()]].concat());
