@@ -1,8 +1,8 @@
 //! A producer of time-to-rest certificates (issue 24 §1; docs/time-to-rest.md §5, Theorem 5.1;
 //! the file format docs/certificate-format.md §16) for a regular polygon (n = 3, 4, 6) at a
-//! point: the virtual-time graph and covectors searched in `f64` ([`graph`], [`covector`],
-//! [`tie`]), made exact ([`exactify`]), the scales and the bound computed exactly ([`scale`],
-//! [`bound`]), and the file's text accepted by the kernel on both backends before anything is
+//! point: the virtual-time graph and covectors searched in `f64` (`graph`, `covector`,
+//! `tie`), made exact (`exactify`), the scales and the bound computed exactly (`scale`,
+//! `bound`), and the file's text accepted by the kernel on both backends before anything is
 //! written or reported. Untrusted: only the kernel's acceptance is a proof.
 
 mod bound;
