@@ -67,13 +67,13 @@ def test_simulate_batch_and_exact_and_given_start():
     assert sum(b["decided_by"].values()) == 30 and b["mean_impacts"] > 0
     e = chatter.simulate(4, F(1, 6), F(1, 100), exact=True, impacts=50)
     assert e["arithmetic"] == "exact"
-    # The square plate at gamma = 1/100 has a cone certificate: every all-down drop enters its
-    # cone at the first impact (no ICC, no PCC, no finite time by itself), then goes on into the
-    # set X of an orbit certificate made for its pattern, which proves CC with a time bound
-    # (docs/time-to-rest.md §1, §4).
+    # The square plate at gamma = 1/100 has a cone certificate and a time-to-rest certificate
+    # made on the fly (docs/time-to-rest.md §1, §5): every all-down drop is proved CC at its first
+    # impact, with a bound on its time to rest.
     assert e["outcome"] == "CC" and e["proved"] and e["evidence"]["outcome"] == "CC"
-    assert e["entered"]["kind"] == "orbit"
-    assert e["entered"]["impact"] > 1 and e["entered"]["finite_time"] is True
+    assert e["entered"]["kind"] == "time-to-rest"
+    assert e["entered"]["impact"] == 1 and e["entered"]["finite_time"] is True
+    assert float(e["entered"]["time_to_rest_bound"]) > e["total_time"]
     b = chatter.simulate(4, F(1, 6), F(1, 100), exact=True, impacts=50, runs=3)
     assert b["proved"]["no-ICC-no-PCC"] + b["proved"]["CC"] == 3 and b["evidence"]["CC"] == 3
     g = chatter.simulate(4, F(1, 6), F(1, 100), position=("1/2", "1/2", 1), velocity=(-1, -1, -1), exact=True)
