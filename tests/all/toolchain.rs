@@ -127,8 +127,9 @@ fn the_fuzz_crate_locks_the_workspace_versions() {
     assert_eq!(profile("fuzz/Cargo.toml"), profile("Cargo.toml"));
 }
 
-/// The library is no test harness (`[lib] test = false` in Cargo.toml, so that CI does not compile
-/// it a second time): a unit test written inside src/ would never run, so there must be none.
+/// No library (the tool's, the kernel's, the oracle's) is a test harness (`[lib] test = false`, so that CI
+/// does not compile it a second time): a unit test written inside src/ would never run, so there
+/// must be none.
 #[test]
 fn the_library_has_no_unit_tests_that_would_not_run() {
     fn walk(dir: &std::path::Path, found: &mut Vec<String>) {
@@ -144,15 +145,22 @@ fn the_library_has_no_unit_tests_that_would_not_run() {
             }
         }
     }
-    let manifest = std::fs::read_to_string(root().join("Cargo.toml")).unwrap();
-    let lib = &manifest[manifest.find("[lib]").unwrap()..];
-    assert!(lib.lines().take_while(|l| !l.starts_with("[[")).any(|l| l.trim() == "test = false"));
-    let mut found = Vec::new();
-    walk(&root().join("src"), &mut found);
-    assert!(
-        found.is_empty(),
-        "unit tests in src/ that `cargo test` would not run (move them to tests/all/): {found:?}"
-    );
+    for (manifest, src) in
+        [("Cargo.toml", "src"), ("kernel/Cargo.toml", "kernel/src"), ("oracle/Cargo.toml", "oracle/src")]
+    {
+        let manifest = std::fs::read_to_string(root().join(manifest)).unwrap();
+        let lib = &manifest[manifest.find("[lib]").unwrap()..];
+        assert!(
+            lib.lines().skip(1).take_while(|l| !l.starts_with('[')).any(|l| l.trim() == "test = false"),
+            "{src}"
+        );
+        let mut found = Vec::new();
+        walk(&root().join(src), &mut found);
+        assert!(
+            found.is_empty(),
+            "unit tests in {src}/ that `cargo test` would not run (move them to its tests/all/): {found:?}"
+        );
+    }
 }
 
 /// The units (package, target with mode and profile, features) of a cargo command's release build, from cargo's

@@ -91,26 +91,3 @@ pub fn state<F: Field>(y: &[Over<F>; DIMS], cs: &(Iv<F>, Iv<F>)) -> ([Over<F>; 3
     let q = [h.minus(&y[3]), h.plus(&y[2].scaled_by(s)).minus(&y[3].scaled_by(c)), h.clone()];
     (q, p)
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use malachite::rational::Rational as Q;
-    use num_rational::BigRational;
-
-    fn roots<F: Field>() {
-        for (n, d) in [(3, 4), (2, 1), (1, 1), (0, 1), (1, 3), (10_000, 7)] {
-            let x = F::from_ratio(n, d);
-            let e = sqrt_enclosure(&Iv::exact(&x));
-            assert!(e.lo.times(&e.lo) <= x && x <= e.hi.times(&e.hi), "{n}/{d}");
-            // Tight: 64-bit mantissas, so a width below 2^-50 for roots below 64.
-            assert!(e.hi.minus(&e.lo) <= F::from_ratio(1, 1 << 50), "{n}/{d}");
-        }
-    }
-
-    #[test]
-    fn square_roots_are_enclosed_tightly_on_both_backends() {
-        roots::<Q>();
-        roots::<BigRational>();
-    }
-}

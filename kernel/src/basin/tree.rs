@@ -61,23 +61,3 @@ pub fn partition<'a>(paths: impl IntoIterator<Item = &'a str>, dims: usize) -> R
     }
     if nodes.contains(&Node::Open) { Err(TreeError::Uncovered) } else { Ok(()) }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_bisection_tree_is_a_partition_and_gaps_overlaps_and_mixed_axes_are_not() {
-        assert_eq!(partition([""], 5), Ok(()));
-        assert_eq!(partition(["0", "1"], 5), Ok(()));
-        assert_eq!(partition(["02", "03", "1"], 5), Ok(()));
-        assert_eq!(partition(["0", "2"], 5), Err(TreeError::Axis(1)));
-        assert_eq!(partition(["0"], 5), Err(TreeError::Uncovered));
-        assert_eq!(partition(["0", "1", "0"], 5), Err(TreeError::Overlap(2)));
-        assert_eq!(partition(["0", "01"], 5), Err(TreeError::Overlap(1)));
-        assert_eq!(partition(["01", "0"], 5), Err(TreeError::Overlap(1)));
-        assert_eq!(partition(["a"], 5), Err(TreeError::Digit(0, 0)));
-        assert_eq!(partition(["9", "8"], 5), Ok(()));
-        assert_eq!(partition(["9", "8"], 4), Err(TreeError::Digit(0, 0)));
-    }
-}

@@ -7,7 +7,8 @@
 //!   0..n-1 and every later step in 1..n-1 (`basin-out-of-range`);
 //! - B2: the embedded orbit certificate (optional: without one, only `Icc` and `Undecided`
 //!   leaves without cuts, else `basin-out-of-range`) names the same n, κ and γ
-//!   (`basin-out-of-range`) and is accepted by rules O1-O2 (its own rejection otherwise);
+//!   (`basin-out-of-range`) and is accepted by rules O1-O2 (its own rejection otherwise; its
+//!   rule O2, the slow one, is checked after B3);
 //! - B3: the leaves' paths are the leaves of one bisection tree of the box (`not-a-partition`);
 //! - B4: on every leaf with a verdict, by exact interval arithmetic with outward rounding over
 //!   the whole leaf (mean-value form, no subdivision): every contact strictly up at the start, the
@@ -139,12 +140,13 @@ pub struct BasinReport {
 /// Checks a basin certificate exactly over the field `F`: rules B1-B4.
 pub fn check<F: Field>(cert: &BasinCertificate, limits: ParseLimits) -> Result<BasinReport, Rejection> {
     let (maps, orbit, lo, hi) = read::<F>(cert, limits)?;
+    // B3 before B2's rule O2: a partition is checked in microseconds, O2 in seconds.
+    partition(cert.leaves.iter().map(|l| l.path.as_str()), DIMS)
+        .map_err(|e| fail(Code::NotAPartition, "leaves", Failure::Tree(e)))?;
     let orbit_boxes = match &orbit {
         Some(o) => cover(o, limits)?,
         None => 0,
     };
-    partition(cert.leaves.iter().map(|l| l.path.as_str()), DIMS)
-        .map_err(|e| fail(Code::NotAPartition, "leaves", Failure::Tree(e)))?;
     let ctx = Context::new(maps, orbit);
     let (mut shares, mut counts, mut worst) = ([F::zero(), F::zero(), F::zero()], [0usize; 3], None::<F>);
     for (i, leaf) in cert.leaves.iter().enumerate() {

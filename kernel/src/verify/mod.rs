@@ -78,10 +78,14 @@ const fn backend<F: Field>(name: &'static str) -> Backend {
     }
 }
 
+// The backends are statics, not constants: a constant holding `check::<F>` is copied into every
+// crate that names it, which then compiles the whole generic kernel again, twice (about 25 s per
+// binary at full optimisation: CI, issue 23 §4). A static is compiled here, once.
+
 /// malachite, the main backend.
-pub const MALACHITE: Backend = backend::<Rational>("malachite");
+pub static MALACHITE: Backend = backend::<Rational>("malachite");
 /// num-bigint/num-rational, the independent second backend.
-pub const NUM: Backend = backend::<BigRational>("num-rational");
+pub static NUM: Backend = backend::<BigRational>("num-rational");
 
 /// The kernel's verdict, possibly over several backends (on a certificate, `T` = [`Accepted`]).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -125,7 +129,7 @@ pub fn agree<T: PartialEq + std::fmt::Debug>(
 }
 
 /// Both backends (malachite and num-rational).
-pub const BOTH: [Backend; 2] = [MALACHITE, NUM];
+pub static BOTH: [Backend; 2] = [backend::<Rational>("malachite"), backend::<BigRational>("num-rational")];
 
 /// Runs the kernel on a cone certificate on each backend and compares the verdicts.
 pub fn verify_on(cert: &Certificate, limits: ParseLimits, backends: &[Backend]) -> Verdict {

@@ -410,3 +410,22 @@ proptest! {
         prop_assert_eq!(to_canonical(&q), to_canonical(&m));
     }
 }
+
+/// `verify::agree`, which `verify` on both backends applies to their runs (the corpus tests run
+/// each backend alone and compare, tests/all/corpus.rs): identical verdicts are that verdict,
+/// different ones a disagreement naming both, a time-limit wins, and no run is no verdict.
+#[test]
+fn agree_combines_the_runs_of_the_backends() {
+    use chatter_kernel::reject::Rejection;
+    use chatter_kernel::verify::{Verdict, agree};
+    let limit = || Rejection::time_limit("checking");
+    let over = || Rejection::limit("max-generators", 9, 8, chatter_kernel::reject::Counted::Generators);
+    assert_eq!(agree([("a", Ok::<u8, Rejection>(1)), ("b", Ok(1))]), Verdict::Accepted(1));
+    assert_eq!(agree([("a", Err::<u8, _>(over())), ("b", Err(over()))]), Verdict::Rejected(over()));
+    let Verdict::Disagree(d) = agree([("a", Ok(1)), ("b", Ok(2))]) else { panic!("agreed") };
+    assert_eq!(d, "a says Ok(1), b says Ok(2)");
+    let Verdict::Disagree(d) = agree([("a", Ok(1)), ("b", Err(over()))]) else { panic!("agreed") };
+    assert!(d.starts_with("a says Ok(1), b says Err("), "{d}");
+    assert_eq!(agree([("a", Ok(1)), ("b", Err(limit()))]), Verdict::Rejected(limit()));
+    assert!(matches!(agree(Vec::<(&str, Result<u8, Rejection>)>::new()), Verdict::Disagree(_)));
+}

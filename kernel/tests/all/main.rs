@@ -19,4 +19,5 @@ mod proof_poly;
 mod rest;
 mod size;
 mod syntax;
+mod units;
 mod worst;

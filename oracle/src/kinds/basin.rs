@@ -256,12 +256,13 @@ pub struct Found {
     pub time: Option<Num>,
 }
 
-/// Rule O2 at the orbit certificate's sample points, B3, then B4 at three drops of every leaf.
+/// Rule B3, then O2 at the orbit certificate's sample points, then B4 at three drops of every
+/// leaf (the kernel's order: B3 before the slow rule O2).
 pub fn check(f: &BasinFile, b: &Basin) -> Checked<Found> {
+    partition(&paths(f))?;
     if let Some(o) = &b.orbit {
         orbit::check(o)?;
     }
-    partition(&paths(f))?;
     leaves(f, b)
 }
 

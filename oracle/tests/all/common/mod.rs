@@ -1,12 +1,15 @@
 //! Shared helpers of the differential tests: the kernel's verdict as plain data, through its
 //! top-level text API only (`chatter_kernel::verify::{verify_text, verify_refutation_text,
-//! Verdict, MALACHITE, NUM}`, with the tool's `chatter::verify::format_of`), and for JSON and gzip'd files through the tool's
-//! `chatter::verify::verify_file`.
+//! Verdict, MALACHITE}`, with the tool's `chatter::verify::format_of`), and for JSON and gzip'd files through the tool's
+//! `chatter::verify::verify_file`. The kernel runs on malachite alone: the differential is kernel
+//! against oracle; the kernel's two backends are compared with each other on every corpus file by
+//! tests/all/corpus.rs and on random input by tests/all/fuzz_smoke.rs (num-rational is several
+//! times slower, and the corpus is read many times: CI, issue 23 §4).
 #![allow(dead_code)]
 
 use chatter::verify::format::format_of;
 use chatter_kernel::verify::{
-    MALACHITE, NUM, Verdict, verify_basin_text_in, verify_refutation_text, verify_rest_text_in, verify_text,
+    MALACHITE, Verdict, verify_basin_text_in, verify_refutation_text, verify_rest_text_in, verify_text,
 };
 use chatter_oracle::compare::{Agreement, Finding, KernelView, differential};
 use chatter_oracle::read::Encoding;
@@ -32,7 +35,7 @@ pub fn kernel_ron(text: &str) -> KernelView {
         return kernel_rest(text);
     }
     if format_of(text).as_deref() == Some("chatter-refutation") {
-        return match verify_refutation_text(text, Default::default(), &[MALACHITE, NUM]) {
+        return match verify_refutation_text(text, Default::default(), &[MALACHITE]) {
             Verdict::Accepted(a) => KernelView {
                 accepted: true,
                 report: Report {
@@ -49,7 +52,7 @@ pub fn kernel_ron(text: &str) -> KernelView {
             Verdict::Disagree(d) => KernelView { disagree: Some(d), ..KernelView::default() },
         };
     }
-    match verify_text(text, Default::default(), &[MALACHITE, NUM]) {
+    match verify_text(text, Default::default(), &[MALACHITE]) {
         Verdict::Accepted(a) => KernelView {
             accepted: true,
             report: Report {
@@ -81,7 +84,7 @@ pub fn kernel_ron(text: &str) -> KernelView {
 /// The kernel (both backends) on a basin certificate in RON: its shares, leaves and bound.
 fn kernel_basin(text: &str) -> KernelView {
     use chatter_kernel::syntax::Encoding as KernelEncoding;
-    match verify_basin_text_in(text, KernelEncoding::Ron, Default::default(), &[MALACHITE, NUM]) {
+    match verify_basin_text_in(text, KernelEncoding::Ron, Default::default(), &[MALACHITE]) {
         Verdict::Accepted(a) => KernelView {
             accepted: true,
             report: Report {
@@ -107,7 +110,7 @@ fn kernel_rest(text: &str) -> KernelView {
 
 /// The kernel (both backends) on a time-to-rest certificate in either encoding.
 pub fn kernel_rest_in(text: &str, encoding: chatter_kernel::syntax::Encoding) -> KernelView {
-    match verify_rest_text_in(text, encoding, Default::default(), &[MALACHITE, NUM]) {
+    match verify_rest_text_in(text, encoding, Default::default(), &[MALACHITE]) {
         Verdict::Accepted(a) => KernelView {
             accepted: true,
             report: Report {
@@ -129,7 +132,7 @@ pub fn kernel_rest_in(text: &str, encoding: chatter_kernel::syntax::Encoding) ->
 /// The kernel on a file through the tool's file reader (JSON, gzip, refutations).
 pub fn kernel_file(path: &Path) -> KernelView {
     use chatter::verify::{Options, Status, verify_file};
-    let v = verify_file(path, &Options::new(vec![MALACHITE, NUM]));
+    let v = verify_file(path, &Options::new(vec![MALACHITE]));
     if v.is_internal() {
         return KernelView { disagree: v.reason, ..KernelView::default() };
     }
