@@ -120,10 +120,11 @@ fn the_fuzz_crate_locks_the_workspace_versions() {
             .lines()
             .skip(1)
             .take_while(|l| !l.starts_with('['))
-            .filter(|l| !l.trim().is_empty())
+            .filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
             .map(str::to_string)
             .collect::<Vec<_>>()
     };
+    // (The per-package overrides of dev-dependencies, which the fuzz crate does not build, may differ.)
     assert_eq!(profile("fuzz/Cargo.toml"), profile("Cargo.toml"));
 }
 
