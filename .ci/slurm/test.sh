@@ -23,7 +23,7 @@ set -euo pipefail
 repo=$(cd "$(dirname "$0")/../.." && pwd)
 doc=$repo/docs/cluster.md
 bin=$repo/target/release/chatter
-STEPS=12                 # cells per axis of the test grids: 144 points
+STEPS=8                  # cells per axis of the test grids: 64 points
 TIMEOUT=${TIMEOUT:-300}  # seconds to wait for the jobs of one folder
 t0=$SECONDS
 

@@ -7,14 +7,11 @@ use crate::plot::basin::{BasinFigure, axis_index};
 use crate::plot::cone::ConeFigure;
 use crate::plot::cover::{CoverFigure, read_boxes, title as cover_title};
 use crate::plot::map::{MapFigure, Panel, body_name};
-use crate::plot::{Format, save};
+use crate::plot::{CURVE_LINES, Format, save};
 use crate::sweep::grid::Variable;
 use crate::sweep::{self, curves};
 use clap::{Args, Subcommand};
 use std::path::{Path, PathBuf};
-
-/// Columns (and rows) along which the exact curves are computed.
-pub const CURVE_LINES: u32 = 200;
 
 /// Raw arguments of `chatter plot`.
 #[derive(Args, Debug)]
@@ -158,6 +155,12 @@ pub struct MapPlotArgs {
     /// Output file: .svg or .png.
     #[arg(short = 'o', long = "out", value_name = "FILE")]
     pub out: PathBuf,
+    /// Columns and rows of the map along which the exact curves are computed (each crossing
+    /// exact; the drawn curve joins them): fewer draw faster and coarser (`chatter reproduce
+    /// --quick` draws with 48).
+    #[arg(long = "curve-lines", value_name = "N", default_value_t = CURVE_LINES,
+        value_parser = clap::value_parser!(u32).range(2..=2000))]
+    pub curve_lines: u32,
 }
 
 #[derive(Args, Debug)]
@@ -172,7 +175,7 @@ pub struct ConePlotArgs {
 }
 
 /// The map figure of a folder.
-pub fn map_figure(dir: &Path, panel: Panel) -> Result<MapFigure, String> {
+pub fn map_figure(dir: &Path, panel: Panel, lines: u32) -> Result<MapFigure, String> {
     let (grid, computed, rows) = sweep::load(dir)?;
     if panel == Panel::Simulations && computed.simulate == 0 {
         return Err(format!(
@@ -181,13 +184,13 @@ pub fn map_figure(dir: &Path, panel: Panel) -> Result<MapFigure, String> {
         ));
     }
     let curves = match &grid.family {
-        Some(f) => crate::sweep::family::curves(f, &grid.x, &grid.gamma, CURVE_LINES),
+        Some(f) => crate::sweep::family::curves(f, &grid.x, &grid.gamma, lines),
         None => curves::curves(
             grid.n,
             grid.variable,
             (&grid.x.lo, &grid.x.hi),
             (&grid.gamma.lo, &grid.gamma.hi),
-            CURVE_LINES,
+            lines,
         ),
     };
     let what = match (panel, &grid.family) {
@@ -210,11 +213,11 @@ fn run_inner(a: PlotArgs) -> Result<String, String> {
             Format::of(&m.out).map(|_| String::new())
         }
         PlotWhat::Map(m) => {
-            save(&map_figure(&m.dir, Panel::Cones)?, &m.out)?;
+            save(&map_figure(&m.dir, Panel::Cones, m.curve_lines)?, &m.out)?;
             Ok(format!("wrote {}", m.out.display()))
         }
         PlotWhat::Simulations(m) => {
-            save(&map_figure(&m.dir, Panel::Simulations)?, &m.out)?;
+            save(&map_figure(&m.dir, Panel::Simulations, m.curve_lines)?, &m.out)?;
             Ok(format!("wrote {}", m.out.display()))
         }
         PlotWhat::Cover(c) => {
@@ -225,7 +228,7 @@ fn run_inner(a: PlotArgs) -> Result<String, String> {
         PlotWhat::Basin(_) => Err("plot basin is run by run()".into()),
         PlotWhat::BasinMap(m) => {
             Format::of(&m.out)?;
-            save(&crate::plot::basin_map::read(&m.dir)?, &m.out)?;
+            save(&crate::plot::basin_map::read(&m.dir, m.curve_lines)?, &m.out)?;
             Ok(format!("wrote {}", m.out.display()))
         }
         PlotWhat::Cone(c) => {

@@ -16,9 +16,9 @@ exact certificates, n = 5 with exact criteria in Q(cos 2pi/5)) and their simulat
 their cones, and the square-case proof; then DIR/report.md and DIR/report.html, which set each result \
 beside the paper's claim with \"agrees\" or \"differs\", the evidence and the command that shows it.\n\n\
 Figures are SVG and PNG (PNG needs the DejaVu Sans font: Debian fonts-dejavu-core, or CHATTER_FONT).\n\
---quick: 24 x 24 maps (16 x 16 for n = 5) with 6 drops per point, about 90 s on 2 cores, of which \
-the maps' simulations (exact runs with their proofs) take over 80 s; without --quick: 100 x 100 maps \
-(80 x 80 for n = 5) with 20 drops, 16 to 23 times the points and 3.3 times the drops, so an hour or \
+--quick: 16 x 16 maps (12 x 12 for n = 5) with 6 drops per point, about 40 s on 2 cores, most of it \
+the maps' simulations (exact runs with their proofs); without --quick: 100 x 100 maps \
+(80 x 80 for n = 5) with 20 drops, 39 to 44 times the points and 3.3 times the drops, so an hour or \
 more on 2 cores (estimated from --quick's steps, not measured; each step's time is at the end of \
 report.md).\n\n\
 Exit status 0 when the report was written (whatever the verdicts), 2 on bad input or unwritable output, \

@@ -36,8 +36,9 @@ pub struct BasinMapFigure {
     pub drops: String,
 }
 
-/// Reads DIR/summary.json as `chatter basin-map` writes it.
-pub fn read(dir: &Path) -> Result<BasinMapFigure, String> {
+/// Reads DIR/summary.json as `chatter basin-map` writes it; its exact curve is computed along
+/// `lines` columns.
+pub fn read(dir: &Path, lines: u32) -> Result<BasinMapFigure, String> {
     let path = dir.join("summary.json");
     let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
     let s: serde_json::Value = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
@@ -72,19 +73,10 @@ pub fn read(dir: &Path) -> Result<BasinMapFigure, String> {
         corner("hi").unwrap_or_default(),
         s["depth"]
     );
-    let curves = crate::sweep::curves::curves(
-        n,
-        variable,
-        (&x.lo, &x.hi),
-        (&gamma.lo, &gamma.hi),
-        crate::plot::basin_map::CURVE_LINES,
-    );
+    let curves = crate::sweep::curves::curves(n, variable, (&x.lo, &x.hi), (&gamma.lo, &gamma.hi), lines);
     let title = format!("n = {n} ({}): certified share of the box of drops, per point", body_name(n));
     Ok(BasinMapFigure { n, variable, x, gamma, cells, curves, title, drops })
 }
-
-/// Columns along which the exact curve is computed.
-pub const CURVE_LINES: u32 = 200;
 
 impl BasinMapFigure {
     fn legend_entries(&self, curve: Option<Entry>) -> Vec<Entry> {

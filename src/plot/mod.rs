@@ -32,6 +32,10 @@ pub const FONT_PATHS: [&str; 4] = [
 /// DejaVu Sans).
 pub const FONT: &str = "DejaVu Sans, sans-serif";
 
+/// Columns (and rows) of a map along which `chatter plot` computes the exact curves by default
+/// (`--curve-lines`).
+pub const CURVE_LINES: u32 = 200;
+
 /// PNG pixels per SVG unit (print resolution).
 pub const PNG_SCALE: f32 = 2.0;
 

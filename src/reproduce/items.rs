@@ -470,9 +470,15 @@ fn compute_map(ctx: &Context, n: u64) -> Result<(MapRun, [FigureRef; 2]), String
     );
     let f2 = figure(ctx, &format!("simulations-n{n}"), &fig, &caption)?;
     let command = format!(
-        "chatter map --n {n} --rho 0:1:{steps} --gamma 0:1:{steps}{} --simulate {} --out map{n} && chatter plot map map{n} -o map{n}.png && chatter plot simulations map{n} -o simulations{n}.png",
+        "chatter map --n {n} --rho 0:1:{steps} --gamma 0:1:{steps}{} --simulate {} --out map{n} && chatter plot map map{n}{lines} -o map{n}.png && chatter plot simulations map{n}{lines} -o simulations{n}.png",
         if n == 5 { "" } else { " --certify" },
-        ctx.plan.drops
+        ctx.plan.drops,
+        // The figures' exact curves as drawn here (plot's default is CURVE_LINES).
+        lines = if ctx.plan.curve_lines == crate::plot::CURVE_LINES {
+            String::new()
+        } else {
+            format!(" --curve-lines {}", ctx.plan.curve_lines)
+        },
     );
     Ok((MapRun { n, steps, summary, dir, command }, [f1, f2]))
 }

@@ -96,7 +96,7 @@ pub struct Plan {
 impl Plan {
     pub fn new(quick: bool) -> Plan {
         if quick {
-            Plan { quick, grid: 24, grid5: 16, drops: 6, curve_lines: 48, point_drops: 40, cross_check: 10 }
+            Plan { quick, grid: 16, grid5: 12, drops: 6, curve_lines: 48, point_drops: 40, cross_check: 10 }
         } else {
             Plan {
                 quick,

@@ -242,13 +242,29 @@ fn basin_map_on_a_2x2_grid_writes_the_kernels_shares_of_each_point_and_its_figur
     }
     let png = d.path().join("bmap.png");
     let p = std::process::Command::new(bin())
-        .args(["plot", "basin-map", dir.to_str().unwrap(), "-o", png.to_str().unwrap()])
+        .args([
+            "plot",
+            "basin-map",
+            dir.to_str().unwrap(),
+            "--curve-lines",
+            "48",
+            "-o",
+            png.to_str().unwrap(),
+        ])
         .output()
         .unwrap();
     assert_eq!(p.status.code(), Some(0), "{}", String::from_utf8_lossy(&p.stderr));
     let svg = d.path().join("bmap.svg");
     std::process::Command::new(bin())
-        .args(["plot", "basin-map", dir.to_str().unwrap(), "-o", svg.to_str().unwrap()])
+        .args([
+            "plot",
+            "basin-map",
+            dir.to_str().unwrap(),
+            "--curve-lines",
+            "48",
+            "-o",
+            svg.to_str().unwrap(),
+        ])
         .output()
         .unwrap();
     let text = std::fs::read_to_string(&svg).unwrap();

@@ -67,6 +67,16 @@ fn map_panels_and_simulation_maps_in_both_formats() {
         .parse()
         .unwrap();
     assert!(legend_x > 840, "legend at x = {legend_x}, inside the data");
+    // --curve-lines: the exact curves computed along fewer lines are drawn with fewer points.
+    ok(&chatter(&["plot", "map", "m", "--curve-lines", "24", "-o", "coarse.svg"], p));
+    let coarse = std::fs::read_to_string(p.join("coarse.svg")).unwrap();
+    let points = |svg: &str| svg.matches(',').count();
+    assert!(coarse.contains("exact: CC criterion boundary") && points(&coarse) < points(&svg));
+    for bad in ["1", "0", "2001", "x"] {
+        let o = chatter(&["plot", "map", "m", "--curve-lines", bad, "-o", "bad.svg"], p);
+        assert_eq!(o.status.code(), Some(2), "--curve-lines {bad}");
+        assert!(String::from_utf8_lossy(&o.stderr).contains("--curve-lines"), "--curve-lines {bad}");
+    }
     ok(&chatter(&["plot", "map", "m", "-o", "map.png"], p));
     assert_eq!(png_size(&p.join("map.png")), (2500, 1640), "PNG at twice the SVG size");
     ok(&chatter(&["plot", "simulations", "m", "-o", "sim.svg"], p));

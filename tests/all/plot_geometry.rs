@@ -403,7 +403,7 @@ fn the_main_jobs_simulation_maps_hide_no_piece_of_an_exact_or_proved_curve_under
         let svg = std::fs::read_to_string(&path).unwrap();
         let (boxes, _) = boxes_and_lines(&svg, &[]);
         assert!(boxes.len() >= 3, "n = {n}: {} level labels", boxes.len());
-        // Issue 26 §1: on the 24 x 24 maps some labels found no free place on their lines and
+        // Issue 26 §1: on the quick maps (24 x 24 then) some labels found no free place on their lines and
         // were put where a red curve crossed them; now they stand beside the line or are left out.
         let c = covered(&svg, &[CC, PCC]);
         assert!(c.is_empty(), "n = {n}: label boxes (x, y, w, h) meet red or blue curves: {c:?}");

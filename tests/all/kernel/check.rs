@@ -334,7 +334,7 @@ fn build(case: &Case) -> Certificate {
 
 #[test]
 fn kernel_agrees_with_brute_force_on_random_cones() {
-    let cases = 160;
+    let cases = 96;
     let mut runner = TestRunner::new(Config { cases, failure_persistence: None, ..Config::default() });
     let (accepted, rejected) = (AtomicUsize::new(0), AtomicUsize::new(0));
     let codes: Mutex<BTreeMap<&'static str, usize>> = Mutex::new(BTreeMap::new());

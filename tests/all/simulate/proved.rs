@@ -77,19 +77,19 @@ fn the_seven_pentagon_points_are_never_proved_cc() {
         let sets = chatter::prove::cone(&model, chatter::prove::Effort::Survey);
         assert!(sets.sets().is_empty(), "kappa {kappa}, gamma {gamma}: the CC criterion fails, no cone");
         // The exact runs that matter are those of the seeds the paper's protocol calls CC (f64,
-        // 200 impacts): those it got wrong; two other seeds besides. (20 exact runs per point
-        // made this the slowest test of CI, issue 23 §4.)
+        // 200 impacts): those it got wrong; one other seed besides. (Each exact run takes about
+        // 1 s: 20 per point made this the slowest test of CI, issue 23 §4.)
         let float =
             |seed| simulate(&model, &Initial::RandomDrop { seed }, Arithmetic::Float, &Options::new(200));
         let (said_cc, other): (Vec<u64>, Vec<u64>) = (0..20).partition(|&s| float(s).outcome == Outcome::Cc);
-        wrong_by_protocol += said_cc.len().min(3);
-        for seed in said_cc.iter().take(3).chain(other.iter().take(2)).copied() {
+        wrong_by_protocol += said_cc.len().min(2);
+        for seed in said_cc.iter().take(2).chain(other.iter().take(1)).copied() {
             let run = exact(&model, seed, 200, &sets);
             assert_ne!(run.outcome, Outcome::Cc, "kappa {kappa}, gamma {gamma}, seed {seed}");
             assert!(run.proved || run.outcome == Outcome::Undecided);
         }
     }
-    assert!(wrong_by_protocol >= 6, "the protocol's CC seeds are what this test is about");
+    assert!(wrong_by_protocol >= 10, "the protocol's CC seeds are what this test is about");
 }
 
 #[test]
