@@ -172,9 +172,12 @@ fn the_heptagons_return_map_matches_an_independent_computation() {
 }
 
 #[test]
-fn orbit_certificates_are_read_for_every_n_from_3_to_64() {
+fn orbit_certificates_are_read_for_n_from_3_to_32_and_refused_beyond_64() {
     let x = ["1", "2", "-1"];
-    for n in [3, 5, 7, 8, 12, 64] {
+    // Not n = 64: the oracle's plain arithmetic in Q(cos 2π/64) (degree 16) takes 12 s on this
+    // file, against 0.4 s for n = 32 (CI time, issue 23 §4); the kernel's orbit_field test reads
+    // n = 64.
+    for n in [3, 5, 7, 8, 12, 32] {
         let text = orbit_text(n, "1/10", "1/5", &[1], x);
         let value = parse(&text, Encoding::Ron).unwrap();
         assert!(rules(&read(&value).unwrap(), &Limits::default()).is_ok(), "n = {n}");
