@@ -38,8 +38,11 @@ def chatter_bin():
 
 
 def chatter_verdicts(paths):
-    """`chatter verify --json` on all paths at once: {path: file report}."""
-    out = subprocess.run([str(chatter_bin()), "verify", "--json", *map(str, paths)],
+    """`chatter verify --json` on all paths at once: {path: file report}. One backend: the
+    verdicts are compared with the plain checker's here, the backends with each other by the
+    Rust tests (CI time, issue 23 §4)."""
+    out = subprocess.run([str(chatter_bin()), "verify", "--backend", "malachite", "--json",
+                          *map(str, paths)],
                          capture_output=True, text=True, timeout=600)
     report = json.loads(out.stdout)
     return {str(Path(f["path"])): f for f in report["files"]}
