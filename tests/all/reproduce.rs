@@ -9,6 +9,24 @@ fn chatter(args: &[&str], dir: &Path) -> Output {
     Command::new(bin()).args(args).current_dir(dir).output().unwrap()
 }
 
+/// Every file under `dir` (relative path and bytes), sorted.
+fn files_of(dir: &Path) -> Vec<(std::path::PathBuf, Vec<u8>)> {
+    let mut files = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap_or_else(|e| panic!("{}: {e}", d.display())) {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+            } else {
+                files.push((p.strip_prefix(dir).unwrap().to_path_buf(), std::fs::read(&p).unwrap()));
+            }
+        }
+    }
+    files.sort();
+    files
+}
+
 /// The commands a report cites ("Shown by:" lines of report.md).
 fn cited(md: &str) -> Vec<String> {
     md.lines()
@@ -149,6 +167,13 @@ fn every_cited_command_runs_from_the_folder_the_report_names() {
                 assert!(!text.contains("cube"), "`{step}` prints the whole catalogue: {text}");
             }
         }
+    }
+    // The cited map commands reproduce the report's maps byte for byte (the maps' files: the
+    // points, the summary, the certificates).
+    for n in [3, 4, 5] {
+        let (cited, report) = (out.join(format!("map{n}")), out.join(format!("maps/n{n}")));
+        assert!(report.join("points.csv").exists() && report.join("summary.json").exists());
+        assert_eq!(files_of(&cited), files_of(&report), "n = {n}: `chatter map` as cited vs maps/n{n}");
     }
     // README and the report cite this command for the n = 3 band: it shows the cycle and the
     // contraction per impact (classify shows neither).
