@@ -18,9 +18,9 @@ beside the paper's claim with \"agrees\" or \"differs\", the evidence and the co
 Figures are SVG and PNG (PNG needs the DejaVu Sans font: Debian fonts-dejavu-core, or CHATTER_FONT).\n\
 --quick: 16 x 16 maps (12 x 12 for n = 5) with 6 drops per point, about 40 s on 2 cores, most of it \
 the maps' simulations (exact runs with their proofs); without --quick: 100 x 100 maps \
-(80 x 80 for n = 5) with 20 drops, 39 to 44 times the points and 3.3 times the drops, so an hour or \
-more on 2 cores (estimated from --quick's steps, not measured; each step's time is at the end of \
-report.md).\n\n\
+(80 x 80 for n = 5) with 20 drops, 39 to 44 times the points and 3.3 times the drops: at --quick's \
+35 to 80 ms per point on 2 cores, about half an hour, more if the extra drops need more orbit \
+certificates (an estimate, not measured; each step's time is at the end of report.md).\n\n\
 Exit status 0 when the report was written (whatever the verdicts), 2 on bad input or unwritable output, \
 3 on an internal error."
 )]
