@@ -86,6 +86,18 @@ fn a_graph_that_does_not_close_fails_with_what_was_searched() {
     assert!(e.to_string().contains("graph"), "{e}");
 }
 
+/// Regression (2026-11-27): a scale of 10^6 or more made the float search report "none for node
+/// 0" although node 0 had a covector; at the triangle (κ 1/10, γ 1/20) the search now passes and
+/// the exact scales name what fails: a self-loop whose exact product exceeds 1 by under 10^-5.
+#[test]
+fn a_large_scale_is_not_a_failed_search_and_the_exact_cycle_is_named() {
+    let e = produce(3, &q("1/10"), &q("1/20"), &Config::default(), &BOTH).err().expect("no triangle graph");
+    let m = e.to_string();
+    assert!(!m.contains("found none") && m.contains("the exact check failed: no scales exist"), "{m}");
+    let about: f64 = m.split("(about ").nth(1).and_then(|t| t.split(')').next()).unwrap().parse().unwrap();
+    assert!(about > 1.0 && about < 1.0 + 1e-5, "{m}");
+}
+
 /// `certify --time-to-rest FILE --json` writes a file that `verify` accepts, reports its B as
 /// `time_to_rest_bound`, and validates against the committed schema; where no graph is found the
 /// exit status is 1, no file is written and the reason is given.

@@ -8,6 +8,8 @@
 use super::cyclotomic::cos_minimal_polynomial;
 use super::enclosure::cos_bounds;
 use super::rational::{Rat, ratio};
+use num_bigint::BigInt;
+use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 use std::sync::{Arc, Mutex};
@@ -19,6 +21,8 @@ pub struct Field {
     pub n: u32,
     /// Ψ_n, monic, increasing powers (degree d); for Q, x - c_1 is not needed and this is [0, 1].
     psi: Vec<Rat>,
+    /// Ψ_n times the least common denominator D of its coefficients (integers; the last is D).
+    psi_integers: Vec<BigInt>,
     /// Enclosures of c computed so far, at increasing precision.
     enclosures: Mutex<Vec<(Rat, Rat)>>,
 }
@@ -35,14 +39,19 @@ pub struct Num {
 impl Field {
     /// Q as a field of degree 1.
     pub fn rationals() -> Arc<Field> {
-        Arc::new(Field { n: 0, psi: vec![Rat::zero(), Rat::one()], enclosures: Mutex::new(vec![]) })
+        Field::with(0, vec![Rat::zero(), Rat::one()])
     }
 
     /// Q(cos 2π/n): Q itself where cos 2π/n is rational (n ≤ 4 or n = 6), with the field's n kept.
     pub fn cos(n: u32) -> Arc<Field> {
         let psi =
             if matches!(n, 1..=4 | 6) { vec![Rat::zero(), Rat::one()] } else { cos_minimal_polynomial(n) };
-        Arc::new(Field { n, psi, enclosures: Mutex::new(vec![]) })
+        Field::with(n, psi)
+    }
+
+    fn with(n: u32, psi: Vec<Rat>) -> Arc<Field> {
+        let psi_integers = over_one_denominator(&psi).0;
+        Arc::new(Field { n, psi, psi_integers, enclosures: Mutex::new(vec![]) })
     }
 
     /// The degree d over Q.
@@ -247,18 +256,52 @@ impl std::ops::Sub for &Num {
 
 impl std::ops::Mul for &Num {
     type Output = Num;
+    /// The product of the polynomials in integers over one denominator, reduced modulo Ψ_n in
+    /// integers too, and each coefficient normalised once at the end (a rational product and
+    /// sum per term would reduce every intermediate fraction: most of the oracle's time).
     fn mul(self, o: &Num) -> Num {
         if self.coef.len() == 1 {
             return Num { field: self.field.clone(), coef: vec![&self.coef[0] * &o.coef[0]] };
         }
-        let mut p = vec![Rat::zero(); self.coef.len() + o.coef.len() - 1];
-        for (i, a) in self.coef.iter().enumerate().filter(|(_, a)| !a.is_zero()) {
-            for (j, b) in o.coef.iter().enumerate() {
-                p[i + j] += a * b;
+        let ((a, da), (b, db)) = (over_one_denominator(&self.coef), over_one_denominator(&o.coef));
+        let mut p = vec![BigInt::zero(); a.len() + b.len() - 1];
+        for (i, x) in a.iter().enumerate().filter(|(_, x)| !x.is_zero()) {
+            for (j, y) in b.iter().enumerate() {
+                p[i + j] += x * y;
             }
         }
-        Num::from_poly(&self.field, p)
+        let (p, scale) = reduce_integers(&self.field, p);
+        let den = da * db * scale;
+        Num { field: self.field.clone(), coef: p.into_iter().map(|x| Rat::new(x, den.clone())).collect() }
     }
+}
+
+/// Integer numerators over the least common denominator of `coef`.
+fn over_one_denominator(coef: &[Rat]) -> (Vec<BigInt>, BigInt) {
+    let den = coef.iter().fold(BigInt::one(), |l, x| l.lcm(x.denom()));
+    (coef.iter().map(|x| x.numer() * (&den / x.denom())).collect(), den)
+}
+
+/// An integer polynomial P reduced modulo Ψ_n = Ψ/D (Ψ in integers, D its leading coefficient):
+/// returns Q and D^k with P ≡ Q / D^k, deg Q < d. Each step multiplies by D and subtracts the
+/// top coefficient times Ψ, so every number stays an integer.
+fn reduce_integers(field: &Field, mut p: Vec<BigInt>) -> (Vec<BigInt>, BigInt) {
+    let (d, psi) = (field.degree(), &field.psi_integers);
+    let lead = &psi[d];
+    let mut scale = BigInt::one();
+    while p.len() > d {
+        let top = p.pop().expect("longer than d");
+        let k = p.len() - d;
+        for x in p.iter_mut() {
+            *x *= lead;
+        }
+        for (i, m) in psi[..d].iter().enumerate() {
+            p[k + i] -= &top * m;
+        }
+        scale *= lead;
+    }
+    p.resize(d, BigInt::zero());
+    (p, scale)
 }
 
 impl std::ops::Div for &Num {

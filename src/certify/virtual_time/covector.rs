@@ -164,7 +164,7 @@ fn required(maps: &Maps, g: &Graph, t: &Ties, st: &State, k: usize, cand: &V3) -
 }
 
 /// The representatives' covectors (indexed by node; only representatives are meaningful), or
-/// the first component for which none keeps (G1), (G2) and its own edges contracting.
+/// the first component for which none keeps (G1) and (G2).
 pub fn search(maps: &Maps, g: &Graph, t: &Ties, rounds: usize, grid: usize) -> Result<Vec<V3>, String> {
     let reps = t.reps();
     let kicks = (0..g.nodes.len())
@@ -188,11 +188,13 @@ pub fn search(maps: &Maps, g: &Graph, t: &Ties, rounds: usize, grid: usize) -> R
             break;
         }
     }
-    match reps.iter().find(|&&k| {
-        required(maps, g, t, &st, k, &st.b[k]).partial_cmp(&1e6) != Some(std::cmp::Ordering::Less)
-    }) {
+    // Only a component that no covector keeps admissible stops the search here. A scale of 10^6
+    // or more is no failure (the search's penalty for an edge inside a component that does not
+    // contract is of that size too), and such an edge, like a cycle whose product exceeds 1, is
+    // named with its exact product by the exact scales ([`super::scale`]).
+    match reps.iter().find(|&&k| required(maps, g, t, &st, k, &st.b[k]).is_infinite()) {
         Some(k) => Err(format!(
-            "the float covector search found none for node {k}'s component of {} tied nodes ((G1), (G2) with margins and its own edges contracting)",
+            "the float covector search found none for node {k}'s component of {} tied nodes that keeps (G1) and (G2) with margins",
             t.members(*k).len()
         )),
         None => Ok(st.b),
