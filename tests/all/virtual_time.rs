@@ -98,6 +98,22 @@ fn a_large_scale_is_not_a_failed_search_and_the_exact_cycle_is_named() {
     assert!(about > 1.0 && about < 1.0 + 1e-5, "{m}");
 }
 
+/// At the square (κ 1/40, γ 1/100) the graph with the pad 10^-3 fails on a self-loop and the one
+/// with 10^-4 is accepted on both backends: the producer tries the pads in turn.
+#[test]
+fn a_smaller_pad_is_tried_when_the_first_graph_fails() {
+    let (kappa, gamma) = (q("1/40"), q("1/100"));
+    let first = Config { pads: vec![1e-3], ..Config::default() };
+    let e = produce(4, &kappa, &gamma, &first, &BOTH).err().expect("the pad 10^-3 fails here");
+    assert!(e.to_string().contains("no scales exist"), "{e}");
+    let p = produce(4, &kappa, &gamma, &Config::default(), &BOTH).unwrap_or_else(|e| panic!("{e}"));
+    match verify_rest_text_in(&p.text, Encoding::Ron, ParseLimits::default(), &BOTH) {
+        Verdict::Accepted(a) => assert_eq!(a.bound, p.bound.to_string()),
+        other => panic!("{other:?}"),
+    }
+    assert!(p.bound < q("3"), "{}", p.bound);
+}
+
 /// `certify --time-to-rest FILE --json` writes a file that `verify` accepts, reports its B as
 /// `time_to_rest_bound`, and validates against the committed schema; where no graph is found the
 /// exit status is 1, no file is written and the reason is given.

@@ -57,12 +57,12 @@ fn smallest_containing(nodes: &[Vec<P2>], img: &[P2]) -> Option<usize> {
         .min_by(|&a, &b| area(&nodes[a]).total_cmp(&area(&nodes[b])))
 }
 
-/// Builds the graph breadth first from node 0 = I_0(D) (padded), at most `cfg.max_nodes` nodes.
-pub fn build(body: &FloatPolygon, cfg: &Config) -> Graph {
+/// Builds the graph breadth first from node 0 = I_0(D) (padded by `pad`), at most `cfg.max_nodes`
+/// nodes.
+pub fn build(body: &FloatPolygon, cfg: &Config, pad: f64) -> Graph {
     let i0 = body.impact(0);
     let first: Vec<P2> = body.all_down_generators().iter().map(|g| project(&(i0 * g))).collect();
-    let mut g =
-        Graph { nodes: vec![enlarge(&hull(&first, 1e-15), 0.0, cfg.pad)], edges: vec![], closed: false };
+    let mut g = Graph { nodes: vec![enlarge(&hull(&first, 1e-15), 0.0, pad)], edges: vec![], closed: false };
     let mut todo = VecDeque::from([0]);
     while let Some(r) = todo.pop_front() {
         for j in 1..body.n() {
@@ -75,7 +75,7 @@ pub fn build(body: &FloatPolygon, cfg: &Config) -> Graph {
                 Some(s) => s,
                 None if g.nodes.len() >= cfg.max_nodes => return g,
                 None => {
-                    g.nodes.push(enlarge(&hull(&img, 1e-15), cfg.enlarge, cfg.pad));
+                    g.nodes.push(enlarge(&hull(&img, 1e-15), cfg.enlarge, pad));
                     todo.push_back(g.nodes.len() - 1);
                     g.nodes.len() - 1
                 }

@@ -27,8 +27,10 @@ pub struct Config {
     pub max_nodes: usize,
     /// A new node is its image's hull enlarged by this share about its centroid.
     pub enlarge: f64,
-    /// Half-side of the square added at every vertex of a node (room for rounding).
-    pub pad: f64,
+    /// Half-sides of the square added at every vertex of a node (room for rounding to multiples of
+    /// 2^-24), tried in turn until the kernel accepts: a smaller pad keeps a node closer to the
+    /// images it holds, which a self-loop may need, and changes the whole graph.
+    pub pads: Vec<f64>,
     /// Rounds of the covector search over the tied components.
     pub rounds: usize,
     /// Grid of the covector search: grid × grid/2 directions.
@@ -37,7 +39,7 @@ pub struct Config {
 
 impl Default for Config {
     fn default() -> Self {
-        Config { max_nodes: 200, enlarge: 0.3, pad: 1e-3, rounds: 12, grid: 40 }
+        Config { max_nodes: 200, enlarge: 0.3, pads: vec![1e-3, 1e-4, 1e-5], rounds: 12, grid: 40 }
     }
 }
 
@@ -100,7 +102,26 @@ pub fn produce(
         return Err(failed("time-to-rest certificates need 0 < gamma < 1".into()));
     }
     let fbody = FloatPolygon::new(n, kappa.to_f64(), gamma.to_f64()).map_err(|e| failed(format!("{e:?}")))?;
-    let g = graph::build(&fbody, cfg);
+    let mut why = Vec::new();
+    for &pad in &cfg.pads {
+        match attempt((&body, &fbody), (kappa, gamma), cfg, pad, backends) {
+            Err(NotProduced::Failed(m)) => why.push(format!("pad {pad:e}: {m}")),
+            done => return done,
+        }
+    }
+    Err(failed(why.join("; ")))
+}
+
+/// One graph, with nodes padded by `pad`, searched, made exact and checked.
+fn attempt(
+    (body, fbody): (&Polygon<Q>, &FloatPolygon),
+    (kappa, gamma): (&Q, &Q),
+    cfg: &Config,
+    pad: f64,
+    backends: &[Backend],
+) -> Result<Produced, NotProduced> {
+    let failed = |s: String| NotProduced::Failed(s);
+    let g = graph::build(fbody, cfg, pad);
     let size = format!("{} nodes, {} edges", g.nodes.len(), g.edges.len());
     if !g.closed {
         return Err(failed(format!(
@@ -110,17 +131,17 @@ pub fn produce(
     }
     let exact =
         |e: String| failed(format!("the float graph closed ({size}) but the exact check failed: {e}"));
-    let maps = covector::Maps::new(&fbody);
+    let maps = covector::Maps::new(fbody);
     let ties = tie::ties(fbody.n(), g.nodes.len(), &g.edges);
     let reps = covector::search(&maps, &g, &ties, cfg.rounds, cfg.grid)
         .map_err(|e| failed(format!("the float graph closed ({size}) but {e}")))?;
-    let nodes = exactify::nodes(&body, &g, &ties, &reps).map_err(exact)?;
-    let edges = exactify::edges(&body, &g, &nodes).map_err(exact)?;
-    exactify::initial_inside(&body, &nodes).map_err(exact)?;
-    let cons = scale::constraints(&body, &nodes, &edges).map_err(exact)?;
+    let nodes = exactify::nodes(body, &g, &ties, &reps).map_err(exact)?;
+    let edges = exactify::edges(body, &g, &nodes).map_err(exact)?;
+    exactify::initial_inside(body, &nodes).map_err(exact)?;
+    let cons = scale::constraints(body, &nodes, &edges).map_err(exact)?;
     let c = scale::scales(nodes.len(), &cons).map_err(exact)?;
-    let b = bound::bound(&body, &nodes[0], &c[0]).map_err(exact)?;
-    let cert = certificate(n, (kappa, gamma), claim(&body), &b, (&nodes, &edges, &c));
+    let b = bound::bound(body, &nodes[0], &c[0]).map_err(exact)?;
+    let cert = certificate(body.n() as u64, (kappa, gamma), claim(body), &b, (&nodes, &edges, &c));
     accepted(cert, backends, edges.len())
 }
 
