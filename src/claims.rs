@@ -46,19 +46,19 @@ time: a drop reaching a simultaneous impact leaves the model) keeps v <= 0 for e
 accumulate at a finite time T <= B h/|v| (B = time_to_rest_bound, rule T1; h, v: the centre's height and velocity \
 just before the first impact; docs/time-to-rest.md §2)";
 
-/// What a time-to-rest certificate (a virtual-time graph, rules G1-G5) with the claim `name` proves
+/// What a time-to-rest certificate (a virtual-time graph, rules G1-G5, F) with the claim `name` proves
 /// (docs/time-to-rest.md Theorem 5.1).
 pub fn proves_virtual_time(name: &str) -> &'static str {
     if name == "CompleteChatterFromAllDown" {
         "every drop with all contacts moving down (impacts one contact at a time: a drop reaching a \
 simultaneous impact leaves the model) keeps v < 0 for ever and ends in complete chatter: its impacts \
 never stop, PCC is excluded (the paper's Lemma on PCC), and they accumulate at a finite time \
-T <= B h/|v| (B = time_to_rest_bound, rules G1-G5; h: the centre's height at the first impact, v: \
+T <= B h/|v| (B = time_to_rest_bound, rules G1-G5, F; h: the centre's height at the first impact, v: \
 its velocity just before it; docs/time-to-rest.md Theorem 5.1)"
     } else {
         "every drop with all contacts moving down (impacts one contact at a time: a drop reaching a \
 simultaneous impact leaves the model) keeps v < 0 for ever, its impacts never stop and they \
-accumulate at a finite time T <= B h/|v| (B = time_to_rest_bound, rules G1-G5; h: the centre's \
+accumulate at a finite time T <= B h/|v| (B = time_to_rest_bound, rules G1-G5, F; h: the centre's \
 height at the first impact, v: its velocity just before it; docs/time-to-rest.md Theorem 5.1); \
 PCC not excluded"
     }

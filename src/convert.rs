@@ -106,11 +106,15 @@ pub fn rest_to_json(c: &TimeToRest) -> String {
         .map(|n| {
             let cone: Vec<String> = n.cone.iter().map(|g| arr(&g.0)).collect();
             let next: Vec<String> = n.next.iter().map(|(j, s)| format!("[{j}, {s}]")).collect();
+            // Version 1 has a scale c_r, version 2 a numerator a_r (§16).
+            let own = match n.scale.is_empty() {
+                true => format!("\"numerator\": {}", arr(&n.numerator.0)),
+                false => format!("\"scale\": {}", quoted(&n.scale)),
+            };
             format!(
-                "{{\"cone\": [{}], \"weight\": {}, \"scale\": {}, \"next\": [{}]}}",
+                "{{\"cone\": [{}], \"weight\": {}, {own}, \"next\": [{}]}}",
                 cone.join(", "),
                 arr(&n.weight.0),
-                quoted(&n.scale),
                 next.join(", ")
             )
         })

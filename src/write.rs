@@ -215,11 +215,15 @@ pub fn write_rest(c: &chatter_kernel::rest::TimeToRest) -> String {
     for node in &c.nodes {
         let cone: Vec<String> = node.cone.iter().map(|g| ron_tuple(&g.0)).collect();
         let next: Vec<String> = node.next.iter().map(|(j, s)| format!("({j}, {s})")).collect();
+        // Version 1 has a scale c_r, version 2 a numerator a_r (docs/certificate-format.md §16).
+        let own = match node.scale.is_empty() {
+            true => format!("numerator: {}", ron_tuple(&node.numerator.0)),
+            false => format!("scale: {}", quoted(&node.scale)),
+        };
         out.push_str(&format!(
-            "        (\n            cone: [{}],\n            weight: {},\n            scale: {},\n            next: [{}],\n        ),\n",
+            "        (\n            cone: [{}],\n            weight: {},\n            {own},\n            next: [{}],\n        ),\n",
             cone.join(", "),
             ron_tuple(&node.weight.0),
-            quoted(&node.scale),
             next.join(", ")
         ));
     }

@@ -4,7 +4,7 @@
 //! list element dropped, duplicated, swapped or interpolated, an identifier or integer changed
 //! (claim, n, version, pattern steps, indices), two fields' values swapped, a parameter widened
 //! to an interval, a number or integer inside a field named in [`FIELDS`] edited, such as a
-//! time-to-rest certificate's weight, scale, bound, generator or successor), then written back as
+//! time-to-rest certificate's weight, scale, numerator, bound, generator or successor), then written back as
 //! RON. Missing bytes read as 0. Sizes stay bounded.
 
 use crate::arith::Rat;
@@ -138,7 +138,7 @@ pub enum Edit {
 
 /// Field names an [`Edit::Field`] aims at: the parts of a time-to-rest certificate's nodes
 /// (docs/certificate-format.md §16), the bound, and a cone.
-pub const FIELDS: [&str; 5] = ["weight", "scale", "bound", "cone", "next"];
+pub const FIELDS: [&str; 6] = ["weight", "scale", "bound", "cone", "next", "numerator"];
 
 /// Positive factors of [`Edit::Scale`].
 pub const FACTORS: [(i64, i64); 8] =

@@ -85,7 +85,7 @@ chatter (CC: infinitely many impacts in finite time). Cone certificates prove th
 separates and its impacts never stop (v <= 0 for ever, PCC excluded where claimed; in the model, \
 impacts happen one contact at a time: simultaneous impacts are outside it); that the impacts \
 accumulate at a finite time is proved only by orbit certificates, by the rod's bound (rule T1) and \
-by time-to-rest certificates (rules G1-G5, which `chatter verify` checks; docs/time-to-rest.md).\n\n\
+by time-to-rest certificates (rules G1-G5, F, which `chatter verify` checks; docs/time-to-rest.md).\n\n\
 A floating-point finder proposes a polyhedral cone of velocities, an exactifier turns it into \
 rationals, and a small trusted kernel re-checks it with exact arithmetic on two independent bignum \
 libraries before a RON certificate is written.\n\n\

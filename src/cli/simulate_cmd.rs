@@ -392,7 +392,7 @@ fn sets_lines(sets: &[report::SetReport], notes: &[String]) -> Vec<String> {
             let proves = match s.kind {
                 "cone" => "entering K proves no ICC and no PCC, not the finite accumulation time",
                 "time-to-rest" => {
-                    "a drop all-down at its first impact is proved CC, T <= B h/|v| from there (rules G1-G5)"
+                    "a drop all-down at its first impact is proved CC, T <= B h/|v| from there (rules G1-G5, F)"
                 }
                 _ => "entering X proves CC, the impacts accumulating at a finite time",
             };

@@ -11,7 +11,7 @@
 //!   report's `entered.finite_time` is false;
 //! - an orbit certificate proves CC from any post-impact state in its set X (claim
 //!   `CompleteChatterFromSet`, n, κ, γ equal);
-//! - a time-to-rest certificate (claim `CompleteChatterFromAllDown`, rules G1-G5, n, κ, γ equal)
+//! - a time-to-rest certificate (claim `CompleteChatterFromAllDown`, rules G1-G5, F, n, κ, γ equal)
 //!   proves CC for every drop that is all-down at its first impact, with T <= B h/|v| from there
 //!   (docs/time-to-rest.md Theorem 5.1); it has no set to enter: the run tests the drop.
 //!

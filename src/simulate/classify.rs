@@ -328,7 +328,7 @@ impl Decision {
                         by("the first impact", t),
                     ),
                     (SetKind::Rest, t) => (
-                        "the drop is all-down; by its rules G1-G5 (a virtual time),",
+                        "the drop is all-down; by its rules G1-G5, F (a virtual time),",
                         "complete chatter for every all-down drop (docs/time-to-rest.md Theorem 5.1)",
                         t.as_ref().map_or(String::new(), |t| by("the first impact", t)),
                     ),

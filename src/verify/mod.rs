@@ -206,7 +206,7 @@ impl FileVerdict {
         }
         if let (Some(nodes), Some(b)) = (self.rest_nodes, &self.time_to_rest_bound) {
             return format!(
-                "{}: OK ({}, n = {}: every all-down drop's impacts accumulate within T <= {b} h/|v|; a virtual time on {nodes} nodes, rules G1-G5)",
+                "{}: OK ({}, n = {}: every all-down drop's impacts accumulate within T <= {b} h/|v|; a virtual time on {nodes} nodes, rules G1-G5, F)",
                 self.path,
                 self.claim.unwrap_or("?"),
                 self.n.unwrap_or(0)

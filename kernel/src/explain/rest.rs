@@ -22,9 +22,18 @@ pub(super) fn words(f: &Failure, locus: &Locus) -> String {
         }
         Failure::Height(first, value) => {
             let m = if *first { "m_{0,1}" } else { "m_{n-1,0}" };
-            format!("b·{m} = {value} (rule G2 needs >= 0)")
+            format!("a·{m} = {value} (b·{m} in version 1; rule G2 needs >= 0)")
         }
         Failure::Scale(c) => format!("the scale c = {c} (rule G2 needs >= 1)"),
+        Failure::Flight(index, a, b) => format!(
+            "a·g = {} > b·g = {} at generator {index}: the virtual time falls slower than time in flight (rule F)",
+            abbreviate(a),
+            abbreviate(b)
+        ),
+        Failure::Version(field, true) => {
+            format!("`{field}` is not a field of this version (docs/certificate-format.md §16)")
+        }
+        Failure::Version(field, false) => format!("`{field}` is missing (docs/certificate-format.md §16)"),
         Failure::Successor(step, Some(s)) => format!("step {step} names node {s}, which does not exist"),
         Failure::Successor(0, None) => "the graph has no node".into(),
         Failure::Successor(step, None) => {
@@ -34,11 +43,11 @@ pub(super) fn words(f: &Failure, locus: &Locus) -> String {
             let q = if *left { "m_{j-1,j}" } else { "m_{j,j+1}" };
             let (l, r) = (abbreviate(lhs), abbreviate(rhs));
             format!(
-                "the virtual time grows at q = {q}: c_s (b_s·R_j q)(-b_r·p) = {l} > c_r (b_r·q)(-b_s·S_j p) = {r} (rule G3)"
+                "the virtual time grows at q = {q}: (a_s·R_j q)(-b_r·p) = {l} > (a_r·q)(-b_s·S_j p) = {r} (rule G3; a = c b in version 1)"
             )
         }
         Failure::Bound(generator, lhs, rhs) => format!(
-            "B is too small at generator {generator} of D: B (-b_0·I_0 g) = {} < c_0 (b_0·m) = {} (rule G5)",
+            "B is too small at generator {generator} of D: B (-b_0·I_0 g) = {} < a_0·m = {} (rule G5; a = c b in version 1)",
             abbreviate(lhs),
             abbreviate(rhs)
         ),

@@ -75,7 +75,7 @@ macro_rules! codes {
             VirtualTimeNotPositive = "virtual-time-not-positive",
             /// A step that a time-to-rest node allows has no successor node (rule G3).
             MissingSuccessor = "missing-successor",
-            /// The virtual time grows at an impact (rule G3).
+            /// The virtual time grows at an impact (rule G3) or falls slower than time in a flight (F).
             VirtualTimeIncreases = "virtual-time-increases",
             /// The bound B of a time-to-rest certificate is too small (rule G5).
             BoundTooSmall = "bound-too-small",

@@ -7,13 +7,19 @@
 //!   (`too-large`), a body at a point (`parameter-out-of-range`) with 0 < γ < 1;
 //! - G1: every generator of K_r has v < 0 (`generator-not-below`), K_r has an interior
 //!   (`degenerate-cone`), and -b_r·g > 0 (`virtual-time-not-positive`);
-//! - G2: b_r·m_{0,1} >= 0, b_r·m_{n-1,0} >= 0 and c_r >= 1 (`virtual-time-not-positive`);
+//! - the numerator a_r: version 1 gives c_r and a_r = c_r b_r, version 2 gives a_r (the other
+//!   field absent: `unknown-field`, `missing-field`); version 2 reads b_r and a_r as written,
+//!   version 1 b_r up to a positive factor (which changes nothing there);
+//! - G2: a_r·m_{0,1} >= 0, a_r·m_{n-1,0} >= 0 (version 1: b_r·m, and c_r >= 1)
+//!   (`virtual-time-not-positive`);
+//! - F (version 2; implied by c_r >= 1 in version 1): a_r·g <= b_r·g for every generator g of
+//!   K_r, so the virtual time falls at least as fast as time in flight (`virtual-time-increases`);
 //! - G3: for j = 1..n-1 with K_r ∩ C_j not {0}, a successor s in `next` (`missing-successor`);
 //!   on each vertex p of K_r ∩ C_j, S_j p is 0 or lies in K_s with v < 0 (`image-outside`,
 //!   `image-not-below`), and for q in {m_{j-1,j}, m_{j,j+1}}:
-//!   c_s (b_s·R_j q)(-b_r·p) <= c_r (b_r·q)(-b_s·S_j p) (`virtual-time-increases`);
+//!   (a_s·R_j q)(-b_r·p) <= (a_r·q)(-b_s·S_j p) (`virtual-time-increases`);
 //! - G4: I_0(-m_{k,k+1}) ∈ K_0 for every k (`initial-outside`);
-//! - G5: B (-b_0·I_0(-m_{k,k+1})) >= c_0 (b_0·m) for every k and m in {m_{0,1}, m_{n-1,0}}
+//! - G5: B (-b_0·I_0(-m_{k,k+1})) >= a_0·m for every k and m in {m_{0,1}, m_{n-1,0}}
 //!   (`bound-too-small`);
 //! - R4 (`CompleteChatterFromAllDown`): PCC excluded (`pcc-not-excluded`), as for cone certificates.
 
@@ -24,7 +30,7 @@ use crate::exact::{Field, ParseLimits, Ring};
 use crate::model::linalg::{Vec3, dot, mat_vec, neg};
 use crate::model::polygon::Polygon;
 use crate::reject::{Code, Counted, Detail, KindDetail, KindLocus, Locus, Rejection};
-use crate::syntax::cone::{Body, Claim, Param};
+use crate::syntax::cone::{Body, Claim, Generator, Param};
 use crate::syntax::numbers::{at_most, in_time, number, total};
 use crate::syntax::rest::{Node, TimeToRest};
 use crate::syntax::{Kind, expect};
@@ -51,15 +57,19 @@ pub enum Failure {
     NotAtPoint,
     /// G1: -b_r·g <= 0 at generator `.0` of K_r; `.1` its value at the generator scaled to v = -1.
     Denominator(usize, String),
-    /// G2: b_r·m < 0 at m_{0,1} (`.0` true) or m_{n-1,0}; `.1` its value.
+    /// G2: a_r·m < 0 (version 1: b_r·m) at m_{0,1} (`.0` true) or m_{n-1,0}; `.1` its value.
     Height(bool, String),
     /// G2: c_r < 1.
     Scale(String),
+    /// F: a_r·g > b_r·g at generator `.0` of K_r; both sides.
+    Flight(usize, String, String),
+    /// A node has the field `.0` of the other version (`.1`: it is present).
+    Version(&'static str, bool),
     /// G3: no successor for step `.0`, or one (`.1`) naming no node; step 0: no node at all.
     Successor(u64, Option<usize>),
     /// G3: the inequality fails at q = m_{j-1,j} (`.0` true) or m_{j,j+1}; both sides.
     Increases(bool, String, String),
-    /// G5 fails at generator `.0` of D: B (-b_0·I_0 g) and c_0 (b_0·m).
+    /// G5 fails at generator `.0` of D: B (-b_0·I_0 g) and a_0·m.
     Bound(usize, String, String),
 }
 
@@ -72,8 +82,9 @@ pub fn check<F: Field>(cert: &TimeToRest, limits: ParseLimits) -> Result<Rested,
     at_most("max-generators", cert.nodes.len(), limits.max_generators, Counted::Generators)?;
     total(cert.numbers(), limits)?;
     let body = body::<F>(cert, limits)?;
-    let graph: Vec<Read<F>> =
-        cert.nodes.iter().enumerate().map(|(r, n)| read(&body, r, n, limits)).collect::<Result<_, _>>()?;
+    let graph: Vec<Read<F>> = (cert.nodes.iter().enumerate())
+        .map(|(r, n)| read(&body, (r, cert.version), n, limits))
+        .collect::<Result<_, _>>()?;
     for r in 0..graph.len() {
         transitions(&body, &graph, r, limits)?;
     }
@@ -98,18 +109,18 @@ fn body<F: Field>(cert: &TimeToRest, limits: ParseLimits) -> Result<Polygon<F>, 
     Ok(body)
 }
 
-/// A node read: K_r (R1's checks), b_r, c_r and the successors.
+/// A node read: K_r (R1's checks), b_r, a_r and the successors.
 struct Read<'a, F: Field> {
     cone: Cone<F::Int>,
     weight: Vec3<F>,
-    scale: F,
+    numerator: Vec3<F>,
     next: &'a [(u64, usize)],
 }
 
-/// Reads node r and checks G1 and G2 on it.
+/// Reads node r of a file of the given version and checks G1, G2 and F on it.
 fn read<'a, F: Field>(
     body: &Polygon<F>,
-    r: usize,
+    (r, version): (usize, u64),
     node: &'a Node,
     limits: ParseLimits,
 ) -> Result<Read<'a, F>, Rejection> {
@@ -117,40 +128,79 @@ fn read<'a, F: Field>(
     let gens =
         generators::read::<F>(&node.cone, &["u0", "u1", "v"], |i| format!("nodes[{r}].cone[{i}]"), limits)?;
     let cone = cone_rules::cone::<F>(&gens).map_err(|e| Rejection { locus: locus(r, None, None), ..e })?;
-    let w = generators::read::<F>(
-        std::slice::from_ref(&node.weight),
-        &["b0", "b1", "b2"],
-        |_| format!("nodes[{r}].weight"),
-        limits,
-    )?;
-    let weight: Vec3<F> = std::array::from_fn(|i| F::from_int(&w.vectors[0][i]));
-    let scale: F = number(&format!("nodes[{r}].scale"), &node.scale, limits)?;
+    let (own, other) = if version == 1 { ("scale", "numerator") } else { ("numerator", "scale") };
+    let path = |name: &str| format!("nodes[{r}].{name}");
+    let (own_absent, other_present) = if version == 1 {
+        (node.scale.is_empty(), !node.numerator.0.is_empty())
+    } else {
+        (node.numerator.0.is_empty(), !node.scale.is_empty())
+    };
+    if other_present {
+        let detail = KindDetail::Rest(Failure::Version(other, true));
+        return Err(Rejection::at(Code::UnknownField, path(other), detail));
+    }
+    if own_absent {
+        let detail = KindDetail::Rest(Failure::Version(own, false));
+        return Err(Rejection::at(Code::MissingField, path(own), detail));
+    }
+    let weight = if version == 1 {
+        let w = generators::read::<F>(
+            std::slice::from_ref(&node.weight),
+            &["b0", "b1", "b2"],
+            |_| path("weight"),
+            limits,
+        )?;
+        std::array::from_fn(|i| F::from_int(&w.vectors[0][i]))
+    } else {
+        triple(&node.weight, &["b0", "b1", "b2"], &path("weight"), limits)?
+    };
+    let scale: Option<F> =
+        if version == 1 { Some(number(&path("scale"), &node.scale, limits)?) } else { None };
+    let numerator = match &scale {
+        Some(c) => weight.clone().map(|b| b.times(c)),
+        None => triple(&node.numerator, &["a0", "a1", "a2"], &path("numerator"), limits)?,
+    };
+    let at = Some((r, None, None));
     for (index, g) in gens.vectors.iter().enumerate() {
-        let value =
-            dot(&weight, &[g[0].clone(), g[1].clone(), g[2].clone()].map(|x| F::from_int(&x))).negated();
+        let g: Vec3<F> = std::array::from_fn(|i| F::from_int(&g[i]));
+        let value = dot(&weight, &g).negated();
         if !value.is_positive() {
-            let at_v = value.over(&F::from_int(&g[2]).negated()).unwrap_or(value);
-            return Err(fail(
-                Code::VirtualTimeNotPositive,
-                Some((r, None, None)),
-                Failure::Denominator(index, text(&at_v)),
-            ));
+            let at_v = value.over(&g[2].negated()).unwrap_or(value);
+            return Err(fail(Code::VirtualTimeNotPositive, at, Failure::Denominator(index, text(&at_v))));
         }
     }
+    let height = if scale.is_some() { &weight } else { &numerator };
     for (first, m) in [(true, rest(body, 0)), (false, rest(body, -1))] {
-        let value = dot(&weight, &m);
+        let value = dot(height, &m);
         if value.is_negative() {
-            return Err(fail(
-                Code::VirtualTimeNotPositive,
-                Some((r, None, None)),
-                Failure::Height(first, text(&value)),
-            ));
+            return Err(fail(Code::VirtualTimeNotPositive, at, Failure::Height(first, text(&value))));
         }
     }
-    if scale < F::one() {
-        return Err(fail(Code::VirtualTimeNotPositive, Some((r, None, None)), Failure::Scale(text(&scale))));
+    if let Some(c) = scale.filter(|c| c < &F::one()) {
+        return Err(fail(Code::VirtualTimeNotPositive, at, Failure::Scale(text(&c))));
     }
-    Ok(Read { cone, weight, scale, next: &node.next })
+    for (index, g) in gens.vectors.iter().enumerate() {
+        let g: Vec3<F> = std::array::from_fn(|i| F::from_int(&g[i]));
+        let (a, b) = (dot(&numerator, &g), dot(&weight, &g));
+        if a > b {
+            return Err(fail(Code::VirtualTimeIncreases, at, Failure::Flight(index, text(&a), text(&b))));
+        }
+    }
+    Ok(Read { cone, weight, numerator, next: &node.next })
+}
+
+/// Three canonical rationals, read exactly (`wrong-arity` unless there are three).
+fn triple<F: Field>(
+    g: &Generator,
+    names: &'static [&'static str],
+    path: &str,
+    limits: ParseLimits,
+) -> Result<Vec3<F>, Rejection> {
+    if g.0.len() != 3 {
+        return Err(Rejection::at(Code::WrongArity, path, Detail::Arity(names, g.0.len())));
+    }
+    let x = |i: usize| number::<F>(&format!("{path}.{}", names[i]), &g.0[i], limits);
+    Ok([x(0)?, x(1)?, x(2)?])
 }
 
 /// G3 on node r: for each step j with K_r ∩ C_j not {0}, containment in K_s and the virtual time.
@@ -195,9 +245,8 @@ fn decreases<F: Field>(
     let (relabel, sp) = (body.relabel(j as i64), mat_vec(&body.step(j as i64), p));
     let j = j as i64;
     for (left, q) in [(true, rest(body, j - 1)), (false, rest(body, j))] {
-        let lhs =
-            to.scale.times(&dot(&to.weight, &mat_vec(&relabel, &q))).times(&dot(&from.weight, p).negated());
-        let rhs = from.scale.times(&dot(&from.weight, &q)).times(&dot(&to.weight, &sp).negated());
+        let lhs = dot(&to.numerator, &mat_vec(&relabel, &q)).times(&dot(&from.weight, p).negated());
+        let rhs = dot(&from.numerator, &q).times(&dot(&to.weight, &sp).negated());
         if lhs > rhs {
             let failure = Failure::Increases(left, text(&lhs), text(&rhs));
             return Err(fail(Code::VirtualTimeIncreases, Some((r, Some(j as u64), Some(i))), failure));
@@ -206,10 +255,10 @@ fn decreases<F: Field>(
     Ok(())
 }
 
-/// G5: B (-b_0·I_0 g) >= c_0 (b_0·m) for every generator g of D and both m.
+/// G5: B (-b_0·I_0 g) >= a_0·m for every generator g of D and both m.
 fn bound_holds<F: Field>(body: &Polygon<F>, entry: &Read<F>, bound: &F) -> Result<(), Rejection> {
     let i0 = body.impact(0);
-    let heights = [rest(body, 0), rest(body, -1)].map(|m| entry.scale.times(&dot(&entry.weight, &m)));
+    let heights = [rest(body, 0), rest(body, -1)].map(|m| dot(&entry.numerator, &m));
     for (generator, g) in body.all_down_generators().iter().enumerate() {
         let lhs = bound.times(&dot(&entry.weight, &mat_vec(&i0, g)).negated());
         if let Some(rhs) = heights.iter().find(|h| lhs < **h) {

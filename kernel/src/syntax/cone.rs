@@ -118,7 +118,7 @@ pub enum Claim {
 }
 
 /// One generator of the cone: its coordinates as canonical rational text.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Generator(pub Vec<String>);
 
 impl<'de> Deserialize<'de> for Generator {

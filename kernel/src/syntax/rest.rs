@@ -1,6 +1,7 @@
 //! The schema of time-to-rest certificates (docs/certificate-format.md §16): a regular polygon at
 //! a point, a claim about all-down drops, a bound B and a virtual-time graph (docs/time-to-rest.md
-//! §5). Format `"chatter-time-to-rest"`, version 1. The numbers stay text here.
+//! §5). Format `"chatter-time-to-rest"`, versions 1 (a scale c_r per node) and 2 (a numerator
+//! a_r per node). The numbers stay text here.
 
 use super::cone::{Body, Claim, Coordinates, Generator};
 use super::{Kind, Schema};
@@ -8,8 +9,8 @@ use serde::Deserialize;
 
 /// Value of the `format` field.
 pub const FORMAT: &str = "chatter-time-to-rest";
-/// The version this build reads.
-pub const VERSION: u64 = 1;
+/// The newest version this build reads (and the tool writes); version 1 is read too.
+pub const VERSION: u64 = 2;
 
 /// A time-to-rest certificate.
 #[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
@@ -17,7 +18,7 @@ pub const VERSION: u64 = 1;
 pub struct TimeToRest {
     /// Always [`FORMAT`].
     pub format: String,
-    /// Always [`VERSION`].
+    /// 1 or 2 ([`VERSION`]).
     pub version: u64,
     /// The falling body, at a point.
     pub body: Body,
@@ -34,7 +35,8 @@ pub struct TimeToRest {
     pub producer: String,
 }
 
-/// A node of the graph: the cone K_r, the covector b_r, the scale c_r and the successors.
+/// A node of the graph: the cone K_r, the covector b_r, the scale c_r (version 1) or the
+/// numerator a_r (version 2), and the successors.
 #[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Node {
@@ -42,8 +44,12 @@ pub struct Node {
     pub cone: Vec<Generator>,
     /// b_r, applied to configurations (h0, h1, hc) and velocities (u0, u1, v).
     pub weight: Generator,
-    /// c_r >= 1.
+    /// Version 1: c_r >= 1, and a_r = c_r b_r (`""` when absent).
+    #[serde(default)]
     pub scale: String,
+    /// Version 2: a_r, applied to configurations (empty when absent).
+    #[serde(default)]
+    pub numerator: Generator,
     /// (j, s(r, j)): the node of the velocity after an impact j places on.
     pub next: Vec<(u64, usize)>,
 }
@@ -57,7 +63,8 @@ impl TimeToRest {
     pub fn numbers(&self) -> impl Iterator<Item = &str> {
         let Body::RegularPolygon { kappa, gamma, .. } = &self.body;
         let nodes = self.nodes.iter().flat_map(|n| {
-            let gens = n.cone.iter().chain([&n.weight]).flat_map(|g| g.0.iter().map(String::as_str));
+            let gens =
+                n.cone.iter().chain([&n.weight, &n.numerator]).flat_map(|g| g.0.iter().map(String::as_str));
             gens.chain([n.scale.as_str()])
         });
         kappa.texts().into_iter().chain(gamma.texts()).chain([self.bound.as_str()]).chain(nodes)

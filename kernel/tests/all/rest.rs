@@ -48,10 +48,41 @@ fn every_rule_of_time_to_rest_certificates_has_a_corpus_file_rejected_with_its_c
         ("rest-virtual-time-increases.ron", "virtual-time-increases"),
         ("rest-initial-outside.ron", "initial-outside"),
         ("rest-bound-too-small.ron", "bound-too-small"),
+        ("rest-v2-flight.ron", "virtual-time-increases"),
+        ("rest-v2-numerator-height.ron", "virtual-time-not-positive"),
+        ("rest-v2-scale-field.ron", "unknown-field"),
+        ("rest-v2-missing-numerator.ron", "missing-field"),
     ];
     for (file, code) in rows {
         assert_eq!(code_of(&corpus(&format!("invalid/{file}"))), code, "{file}");
     }
+}
+
+/// Version 2 (numerators a_r): the tool's files for the square plate and the triangle are accepted
+/// on both backends; the square's B is under a ninth of version 1's for the same body.
+#[test]
+fn the_version_2_graphs_are_accepted_on_both_backends() {
+    for (file, n, nodes) in [
+        ("valid/rest-v2-n4-kappa1_6-gamma1_100.ron", 4, 10),
+        ("valid/rest-v2-n3-kappa1_10-gamma1_20.ron", 3, 9),
+    ] {
+        let Verdict::Accepted(a) =
+            verify_rest_text_in(&corpus(file), Encoding::Ron, ParseLimits::default(), &BOTH)
+        else {
+            panic!("{file} is rejected")
+        };
+        assert_eq!((a.claim, a.n, a.nodes), (Claim::CompleteChatterFromAllDown, n, nodes), "{file}");
+    }
+    let b = |file: &str| -> f64 {
+        let text = corpus(file);
+        let line = text.lines().find(|l| l.trim_start().starts_with("bound:")).unwrap();
+        let (p, q) = line.split('"').nth(1).unwrap().split_once('/').unwrap();
+        p.parse::<f64>().unwrap() / q.parse::<f64>().unwrap()
+    };
+    assert!(b("valid/rest-v2-n4-kappa1_6-gamma1_100.ron") * 8.0 < b(SQUARE));
+    // A version-1 node read as version 2 lacks its numerator and has a scale.
+    let as_v2 = corpus(SQUARE).replace("version: 1", "version: 2");
+    assert_eq!(code_of(&as_v2), "unknown-field");
 }
 
 #[test]

@@ -17,16 +17,19 @@ use crate::regular::virtual_time::{Node, bound_rules, graph_rules, node_rules};
 use crate::verdict::{Checked, Fail, Report};
 use std::sync::Arc;
 
-/// A node as read: its cone's generators, its covector b_r, its scale c_r and its successors.
+/// A node as read: its cone's generators, its covector b_r, its scale c_r (version 1) or its
+/// numerator a_r (version 2), and its successors.
 struct NodeText<'a> {
     cone: Vec<Vec<&'a str>>,
     weight: Vec<&'a str>,
-    scale: &'a str,
+    scale: Option<&'a str>,
+    numerator: Option<Vec<&'a str>>,
     next: Vec<(u64, u64)>,
 }
 
 /// A time-to-rest certificate as read.
 pub struct RestFile<'a> {
+    version: u64,
     n: u64,
     kappa: Vec<&'a str>,
     gamma: Vec<&'a str>,
@@ -44,13 +47,14 @@ fn successor(v: &Value) -> Checked<(u64, u64)> {
 }
 
 fn node(v: &Value) -> Checked<NodeText<'_>> {
-    let mut t = NodeText { cone: vec![], weight: vec![], scale: "", next: vec![] };
-    let fields = [("cone", true), ("weight", true), ("scale", true), ("next", true)];
+    let mut t = NodeText { cone: vec![], weight: vec![], scale: None, numerator: None, next: vec![] };
+    let fields = [("cone", true), ("weight", true), ("scale", false), ("numerator", false), ("next", true)];
     walk(v, &fields, |name, value| {
         match name {
             "cone" => t.cone = list(value)?.iter().map(strings).collect::<Checked<_>>()?,
             "weight" => t.weight = strings(value)?,
-            "scale" => t.scale = string(value)?,
+            "scale" => t.scale = Some(string(value)?),
+            "numerator" => t.numerator = Some(strings(value)?),
             _ => t.next = list(value)?.iter().map(successor).collect::<Checked<_>>()?,
         }
         Ok(())
@@ -61,6 +65,7 @@ fn node(v: &Value) -> Checked<NodeText<'_>> {
 /// The schema of §16 ("Fields").
 pub fn read(v: &Value) -> Checked<RestFile<'_>> {
     let mut f = RestFile {
+        version: 0,
         n: 0,
         kappa: vec![],
         gamma: vec![],
@@ -82,7 +87,7 @@ pub fn read(v: &Value) -> Checked<RestFile<'_>> {
     walk(v, &fields, |name, value| {
         match name {
             "format" | "producer" => drop(string(value)?),
-            "version" => drop(integer(value)?),
+            "version" => f.version = integer(value)?,
             "body" => regular_polygon(value, |k, v| {
                 match k {
                     "n" => f.n = integer(v)?,
@@ -117,7 +122,10 @@ fn size(f: &RestFile, limits: &Limits) -> Checked<()> {
     if many {
         return Err(Fail::new("too-large", "more nodes or generators than max-generators"));
     }
-    let numbers = f.nodes.iter().flat_map(|n| n.cone.iter().flatten().chain(&n.weight).chain([&n.scale]));
+    let numbers = f.nodes.iter().flat_map(|n| {
+        let a = n.numerator.iter().flatten();
+        n.cone.iter().flatten().chain(&n.weight).chain(a).chain(n.scale.as_ref())
+    });
     let chars: usize = f.kappa.iter().chain(&f.gamma).chain([&f.bound]).chain(numbers).map(|s| s.len()).sum();
     if chars > limits.max_total_digits {
         return Err(Fail::new("too-large", "more characters of numbers than max-total-digits"));
@@ -155,14 +163,34 @@ fn triple(path: &str, texts: &[&str], field: &Arc<Field>, limits: &Limits) -> Ch
     Ok([x(0)?, x(1)?, x(2)?])
 }
 
-/// Node r's numbers (cone, weight, scale).
-fn node_numbers(r: usize, t: &NodeText, field: &Arc<Field>, limits: &Limits) -> Checked<Node> {
+/// Node r's numbers (cone, weight, and the scale in version 1 or the numerator in version 2; the
+/// field of the other version is `unknown-field`, its own absent `missing-field`).
+fn node_numbers(r: usize, t: &NodeText, version: u64, field: &Arc<Field>, limits: &Limits) -> Checked<Node> {
     let cone = (t.cone.iter().enumerate())
         .map(|(i, g)| triple(&format!("nodes[{r}].cone[{i}]"), g, field, limits))
         .collect::<Checked<_>>()?;
+    match (version, t.scale.is_some(), t.numerator.is_some()) {
+        (1, _, true) | (2, true, _) => {
+            return Err(Fail::new("unknown-field", format!("node {r} has the field of the other version")));
+        }
+        (1, false, _) | (2, _, false) => {
+            return Err(Fail::new("missing-field", format!("node {r} lacks its version's field")));
+        }
+        _ => {}
+    }
     let weight = triple(&format!("nodes[{r}].weight"), &t.weight, field, limits)?;
-    let scale = Num::rational(field, rational(&format!("nodes[{r}].scale"), t.scale, limits)?);
-    Ok(Node { cone, weight, scale, next: t.next.clone() })
+    let scale = t.scale.map(|c| rational(&format!("nodes[{r}].scale"), c, limits)).transpose()?;
+    let scale = scale.map(|c| Num::rational(field, c));
+    let numerator = match &scale {
+        Some(c) => weight.clone().map(|b| &b * c),
+        None => triple(
+            &format!("nodes[{r}].numerator"),
+            t.numerator.as_deref().unwrap_or_default(),
+            field,
+            limits,
+        )?,
+    };
+    Ok(Node { cone, weight, numerator, scale, next: t.next.clone() })
 }
 
 /// A time-to-rest certificate after the file's rules and G1-G2: the body, the graph's nodes and
@@ -185,7 +213,7 @@ pub fn prepare(f: &RestFile, limits: &Limits) -> Checked<Graph> {
     let body = body(f, limits)?;
     let (mut nodes, mut polygons) = (vec![], vec![]);
     for (r, t) in f.nodes.iter().enumerate() {
-        let node = node_numbers(r, t, &body.kappa.field, limits)?;
+        let node = node_numbers(r, t, f.version, &body.kappa.field, limits)?;
         polygons.push(node_rules(&body, r, &node)?);
         nodes.push(node);
     }

@@ -31,7 +31,7 @@ pub enum Reader {
     Refutation,
     /// Basin certificates, version 1 (§15).
     Basin,
-    /// Time-to-rest certificates, version 1 (§16).
+    /// Time-to-rest certificates, versions 1 and 2 (§16).
     Rest,
 }
 
@@ -74,7 +74,7 @@ pub fn header(v: &Value) -> Checked<Reader> {
         (CERTIFICATE, 4) | (FAMILY, 1) => Reader::Family,
         (CERTIFICATE, 5) | (ORBIT, 1) => Reader::Orbit,
         (BASIN, 1) => Reader::Basin,
-        (REST, 1) => Reader::Rest,
+        (REST, 1..=2) => Reader::Rest,
         _ => return Err(Fail::new("unsupported-version", format!("version {version}"))),
     };
     let expected_name = match reader {

@@ -1,7 +1,8 @@
 //! The virtual-time graph of a time-to-rest certificate (docs/time-to-rest.md §5, Theorem 5.1;
 //! rules G1-G5 and R4 of docs/certificate-format.md §16): each node's cone K_r on the plane
 //! v = -1 (the oracle's hull), the pieces K_r ∩ C_j by its brute-force half-plane intersection,
-//! the virtual time Φ_r(q, p) = c_r (b_r·q)/(-b_r·p) compared through its cross-multiplied form.
+//! the virtual time Φ_r(q, p) = (a_r·q)/(-b_r·p) (a_r = c_r b_r in version 1) compared through its
+//! cross-multiplied form.
 
 use super::model::{Polygon, V3};
 use super::pcc::pcc_quadratic;
@@ -12,15 +13,17 @@ use crate::cone3::dot;
 use crate::plane::{HalfPlane, clip_vertices, lift};
 use crate::verdict::{Checked, Fail};
 
-/// A node r of the graph: K_r's generators, the covector b_r, the scale c_r and the pairs (j, s)
-/// of `next`.
+/// A node r of the graph: K_r's generators, the covector b_r, the numerator a_r (c_r b_r in
+/// version 1, with its scale c_r) and the pairs (j, s) of `next`.
 pub struct Node {
     /// Generators of K_r, (u0, u1, v).
     pub cone: Vec<V3>,
-    /// b_r, applied to configurations (h0, h1, hc) and velocities (u0, u1, v) alike.
+    /// b_r, applied to velocities (u0, u1, v).
     pub weight: V3,
-    /// c_r.
-    pub scale: Num,
+    /// a_r, applied to configurations (h0, h1, hc).
+    pub numerator: V3,
+    /// c_r (version 1 only).
+    pub scale: Option<Num>,
     /// (j, s): after step j the velocity is assigned to node s.
     pub next: Vec<(u64, u64)>,
 }
@@ -41,8 +44,9 @@ fn after_impact(b: &Polygon) -> [V3; 2] {
     [b.rest_point(0, 1), b.rest_point(b.n as i64 - 1, 0)]
 }
 
-/// G1 and G2 on node r: v < 0 at every generator and an interior (its polygon), -b_r·g > 0 at
-/// every generator g, b_r·m_{0,1} ≥ 0, b_r·m_{n-1,0} ≥ 0 and c_r ≥ 1. The kernel checks the
+/// G1, G2 and F on node r: v < 0 at every generator and an interior (its polygon), -b_r·g > 0 at
+/// every generator g, a_r·m_{0,1} ≥ 0, a_r·m_{n-1,0} ≥ 0 (in version 1 b_r·m and c_r ≥ 1), and
+/// a_r·g ≤ b_r·g at every generator (F: Φ falls at least as fast as time in flight). The kernel checks the
 /// rules node after node, reading each node's numbers just before (the mutation tests show it; the
 /// documents leave the order open).
 pub fn node_rules(b: &Polygon, r: usize, node: &Node) -> Checked<Polygon2> {
@@ -53,9 +57,17 @@ pub fn node_rules(b: &Polygon, r: usize, node: &Node) -> Checked<Polygon2> {
             format!("node {r}: -b·g <= 0 at generator {i} (G1)"),
         ));
     }
-    let heights = after_impact(b).iter().all(|m| !dot(&node.weight, m).is_negative());
-    if !heights || (&node.scale - &Num::int(&b.kappa.field, 1)).is_negative() {
-        return Err(Fail::new("virtual-time-not-positive", format!("node {r}: b·m < 0 or c < 1 (G2)")));
+    let height = if node.scale.is_some() { &node.weight } else { &node.numerator };
+    let heights = after_impact(b).iter().all(|m| !dot(height, m).is_negative());
+    let one = Num::int(&b.kappa.field, 1);
+    if !heights || node.scale.as_ref().is_some_and(|c| (c - &one).is_negative()) {
+        return Err(Fail::new("virtual-time-not-positive", format!("node {r}: a·m < 0 or c < 1 (G2)")));
+    }
+    if let Some(i) = node.cone.iter().position(|g| dot(&node.numerator, g) > dot(&node.weight, g)) {
+        return Err(Fail::new(
+            "virtual-time-increases",
+            format!("node {r}: a·g > b·g at generator {i}: Φ falls slower than time in flight (F)"),
+        ));
     }
     Ok(k)
 }
@@ -69,11 +81,11 @@ fn successor(node: &Node, r: usize, j: i64, count: usize) -> Checked<usize> {
 }
 
 /// G3's inequality at a vertex p of K_r ∩ C_j and q ∈ {m_{j-1,j}, m_{j,j+1}}:
-/// c_s (b_s·R_j q)(-b_r·p) ≤ c_r (b_r·q)(-b_s·S_j p).
+/// (a_s·R_j q)(-b_r·p) ≤ (a_r·q)(-b_s·S_j p).
 fn decreases(b: &Polygon, j: i64, (r, s): (&Node, &Node), p: &V3, image: &V3) -> bool {
     [b.rest_point(j - 1, j), b.rest_point(j, j + 1)].iter().all(|q| {
-        let lhs = &(&s.scale * &dot(&s.weight, &renamed(b, j, q))) * &minus(&dot(&r.weight, p));
-        let rhs = &(&r.scale * &dot(&r.weight, q)) * &minus(&dot(&s.weight, image));
+        let lhs = &dot(&s.numerator, &renamed(b, j, q)) * &minus(&dot(&r.weight, p));
+        let rhs = &dot(&r.numerator, q) * &minus(&dot(&s.weight, image));
         lhs <= rhs
     })
 }
@@ -116,12 +128,12 @@ fn g3(b: &Polygon, nodes: &[Node], ks: &[Polygon2]) -> Checked<()> {
     Ok(())
 }
 
-/// G5: B (-b_0·I_0(-m_{k,k+1})) ≥ c_0 (b_0·m) for every k and m ∈ {m_{0,1}, m_{n-1,0}}.
+/// G5: B (-b_0·I_0(-m_{k,k+1})) ≥ a_0·m for every k and m ∈ {m_{0,1}, m_{n-1,0}}.
 fn g5(b: &Polygon, node: &Node, bound: &Num) -> Checked<()> {
     for (k, g) in b.all_down().iter().enumerate() {
         let speed = minus(&dot(&node.weight, &b.impact(0, g)));
         for m in after_impact(b) {
-            if bound * &speed < &node.scale * &dot(&node.weight, &m) {
+            if bound * &speed < dot(&node.numerator, &m) {
                 return Err(Fail::new(
                     "bound-too-small",
                     format!("node 0: B too small at generator {k} of D (G5)"),

@@ -33,7 +33,11 @@ const BASES: [&str; 19] = [
 
 /// The time-to-rest certificates whose weights, scales, bound, generators and successors
 /// [`rest_parts_mutated_alike`] edits.
-const REST: [&str; 2] = ["valid/rest-n4-kappa1_6-gamma1_100.ron", "valid/rest-n4-kappa1_6-gamma1_50.ron"];
+const REST: [&str; 3] = [
+    "valid/rest-n4-kappa1_6-gamma1_100.ron",
+    "valid/rest-n4-kappa1_6-gamma1_50.ron",
+    "valid/rest-v2-n4-kappa1_6-gamma1_100.ron",
+];
 
 /// splitmix64, for deterministic inputs.
 fn next(state: &mut u64) -> u64 {
@@ -94,7 +98,8 @@ fn unedited_bases_round_trip_through_the_writer_with_their_verdicts() {
 }
 
 /// Targeted edits of the parts of a time-to-rest certificate (docs/certificate-format.md §16): a
-/// weight, a scale, the bound, a generator or a successor, each edited alone (scaled, shifted,
+/// weight, a scale (version 1) or a numerator (version 2), the bound, a generator or a successor,
+/// each edited alone (scaled, shifted,
 /// negated, an integer changed), judged alike by the kernel and the oracle; both verdicts occur,
 /// and the rejections cover rules G1 to G5.
 #[test]
@@ -113,7 +118,7 @@ fn rest_parts_mutated_alike() {
         let r = next(&mut state);
         let edit =
             Edit::Field { name: (case % FIELDS.len()) as u8, at: (r >> 8) as u8, how: (r >> 16) as u8 };
-        let text = mutated(&bases[(r % 2) as usize], &[edit]);
+        let text = mutated(&bases[(r % bases.len() as u64) as usize], &[edit]);
         let (kernel, _, cmp) = differential_ron(&text);
         *codes.entry(kernel.code.clone().unwrap_or_else(|| "accepted".into())).or_default() += 1;
         match cmp {

@@ -280,9 +280,9 @@ fn rest_graph(file: &str) -> (Graph, Rat) {
     (prepare(&f, &Limits::default()).expect("the file's rules"), bound(&f, &Limits::default()).expect("B"))
 }
 
-/// Φ_r(q, p) = c_r (b_r·q)/(-b_r·p), docs/time-to-rest.md §5.
+/// Φ_r(q, p) = (a_r·q)/(-b_r·p) (a_r = c_r b_r in version 1), docs/time-to-rest.md §5.
 fn virtual_time(node: &Node, q: &V3, p: &V3) -> Num {
-    &(&node.scale * &dot(&node.weight, q)) / &dot(&node.weight, p).neg()
+    &dot(&node.numerator, q) / &dot(&node.weight, p).neg()
 }
 
 /// The next impact of a flight from (q, p) in the frame of the last impact: its contact j and the
@@ -355,7 +355,12 @@ fn follow_drop(
 #[test]
 fn exact_drops_follow_the_virtual_time_of_the_corpus_graphs() {
     let lambdas: [&[i64]; 4] = [&[1, 2, 3, 4], &[5, 1, 1, 2], &[1, 3, 1, 7], &[2, 1, 4, 1]];
-    for file in ["rest-n4-kappa1_6-gamma1_100.ron", "rest-n4-kappa1_6-gamma1_50.ron"] {
+    for file in [
+        "rest-n4-kappa1_6-gamma1_100.ron",
+        "rest-n4-kappa1_6-gamma1_50.ron",
+        "rest-v2-n4-kappa1_6-gamma1_100.ron",
+        "rest-v2-n3-kappa1_10-gamma1_20.ron",
+    ] {
         let g = rest_graph(file);
         let (mut worst, mut impacts) = (Rat::zero(), vec![]);
         for (i, lambda) in lambdas.iter().enumerate() {
@@ -380,8 +385,11 @@ fn json_twins_of_rest_certificates_get_the_verdict_of_their_ron() {
     use chatter_kernel::syntax::Encoding as KernelEncoding;
     let files = [
         "valid/rest-n4-kappa1_6-gamma1_50.ron",
+        "valid/rest-v2-n3-kappa1_10-gamma1_20.ron",
         "invalid/rest-image-outside.ron",
         "invalid/rest-bound-too-small.ron",
+        "invalid/rest-v2-flight.ron",
+        "invalid/rest-v2-scale-field.ron",
     ];
     for file in files {
         let ron = std::fs::read_to_string(crate::common::root().join("certificates").join(file)).unwrap();

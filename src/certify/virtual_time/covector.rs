@@ -191,12 +191,33 @@ pub fn search(maps: &Maps, g: &Graph, t: &Ties, rounds: usize, grid: usize) -> R
     // Only a component that no covector keeps admissible stops the search here. A scale of 10^6
     // or more is no failure (the search's penalty for an edge inside a component that does not
     // contract is of that size too), and such an edge, like a cycle whose product exceeds 1, is
-    // named with its exact product by the exact scales ([`super::scale`]).
-    match reps.iter().find(|&&k| required(maps, g, t, &st, k, &st.b[k]).is_infinite()) {
-        Some(k) => Err(format!(
-            "the float covector search found none for node {k}'s component of {} tied nodes that keeps (G1) and (G2) with margins",
-            t.members(*k).len()
-        )),
-        None => Ok(st.b),
+    // named with its exact product by the exact scales ([`super::scale`]). A component where no
+    // covector keeps (G2) takes the one with the widest margin in (G1): the numerators a_r carry
+    // (G2) in version 2 of the file ([`super::numerator`]).
+    for &k in &reps {
+        if required(maps, g, t, &st, k, &st.b[k]).is_infinite() {
+            st.b[k] = widest(maps, g, t, &st, k, grid).ok_or_else(|| {
+                format!(
+                    "the float covector search found none for node {k}'s component of {} tied nodes that keeps (G1) with margins",
+                    t.members(k).len()
+                )
+            })?;
+        }
     }
+    Ok(st.b)
+}
+
+/// The balanced direction of the grid whose least −b_r·g/|g| over the component of `k` is the
+/// largest, if that is above 10^-6 ((G1) alone).
+fn widest(maps: &Maps, g: &Graph, t: &Ties, st: &State, k: usize, grid: usize) -> Option<V3> {
+    let margin = |b: &V3| {
+        let b = balance(&st.kicks[k], b);
+        let least = |r: usize| {
+            let br = maps.transport(&t.path[r], b);
+            g.nodes[r].iter().map(|p| -br.dot(&lift(p)) / lift(p).norm()).fold(f64::INFINITY, f64::min)
+        };
+        t.members(k).into_iter().map(least).fold(f64::INFINITY, f64::min)
+    };
+    let b = sphere(grid).max_by(|a, b| margin(a).total_cmp(&margin(b)))?;
+    (margin(&b) > 1e-6).then(|| balance(&st.kicks[k], &b))
 }

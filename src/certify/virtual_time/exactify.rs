@@ -57,7 +57,8 @@ fn rounded(b: &Vector3<f64>) -> Result<Vec3<Q>, String> {
     Ok([rat(b.x / m)?, rat(b.y / m)?, rat(b.z / m)?])
 }
 
-/// The exact nodes, with (G1) and (G2) checked (c_r comes later, [`super::scale`]).
+/// The exact nodes, with (G1) checked ((G2) is on the numerators, [`super::numerator`], or on
+/// b_r where a_r = c_r b_r, [`super::scale`]).
 pub fn nodes(body: &Polygon<Q>, g: &Graph, t: &Ties, reps: &[Vector3<f64>]) -> Result<Vec<Node>, String> {
     let mut balanced = vec![[Q::int(0), Q::int(0), Q::int(0)]; g.nodes.len()];
     for k in t.reps() {
@@ -69,10 +70,6 @@ pub fn nodes(body: &Polygon<Q>, g: &Graph, t: &Ties, reps: &[Vector3<f64>]) -> R
         let cone = cone(node, r)?;
         if let Some(i) = cone.vertices.iter().position(|v| !dot(&weight, v).is_negative()) {
             return Err(format!("(G1) fails exactly at node {r}, generator {i}: -b_r·g <= 0"));
-        }
-        let ms = [rest(body, 0), rest(body, -1)];
-        if ms.iter().any(|m| dot(&weight, m).is_negative()) {
-            return Err(format!("(G2) fails exactly at node {r}: b_r·m < 0"));
         }
         out.push(Node { cone, weight });
     }

@@ -5,10 +5,12 @@
 //! `bound`), and the file's text accepted by the kernel on both backends before anything is
 //! written or reported. Untrusted: only the kernel's acceptance is a proof.
 
+mod alternate;
 mod bound;
 mod covector;
 mod exactify;
 mod graph;
+mod numerator;
 mod scale;
 mod tie;
 
@@ -35,11 +37,21 @@ pub struct Config {
     pub rounds: usize,
     /// Grid of the covector search: grid × grid/2 directions.
     pub grid: usize,
+    /// Choose the numerators a_r by the linear program that minimises B (`numerator.rs`) before
+    /// the least scales (a_r = c_r b_r, `scale.rs`); without it, the scales only.
+    pub linear_program: bool,
 }
 
 impl Default for Config {
     fn default() -> Self {
-        Config { max_nodes: 200, enlarge: 0.3, pads: vec![1e-3, 1e-4, 1e-5], rounds: 12, grid: 40 }
+        Config {
+            max_nodes: 200,
+            enlarge: 0.3,
+            pads: vec![1e-3, 1e-4, 1e-5],
+            rounds: 12,
+            grid: 40,
+            linear_program: true,
+        }
     }
 }
 
@@ -73,7 +85,8 @@ impl std::fmt::Display for NotProduced {
 }
 
 /// The `producer` field of the files written.
-pub const PRODUCER: &str = "chatter certify --time-to-rest (untrusted f64 graph and covectors, exact scales)";
+pub const PRODUCER: &str =
+    "chatter certify --time-to-rest (untrusted f64 graph, covectors and linear program, exact checks)";
 
 /// The claim the kernel can accept: `CompleteChatterFromAllDown` where R4 excludes PCC, else
 /// `CcOrPccFromAllDown` (docs/certificate-format.md §16).
@@ -138,11 +151,64 @@ fn attempt(
     let nodes = exactify::nodes(body, &g, &ties, &reps).map_err(exact)?;
     let edges = exactify::edges(body, &g, &nodes).map_err(exact)?;
     exactify::initial_inside(body, &nodes).map_err(exact)?;
-    let cons = scale::constraints(body, &nodes, &edges).map_err(exact)?;
-    let c = scale::scales(nodes.len(), &cons).map_err(exact)?;
-    let b = bound::bound(body, &nodes[0], &c[0]).map_err(exact)?;
-    let cert = certificate(body.n() as u64, (kappa, gamma), claim(body), &b, (&nodes, &edges, &c));
+    let (nodes, edges, a, b) = match numerators(body, (&nodes, &edges), &ties, cfg.linear_program) {
+        Ok((a, b)) => (nodes, edges, a, b),
+        Err(e) if cfg.linear_program => {
+            jointly(body, (&g, &ties, &maps), (&nodes, &edges)).map_err(|j| exact(format!("{e}; {j}")))?
+        }
+        Err(e) => return Err(exact(e)),
+    };
+    let cert = certificate(body.n() as u64, (kappa, gamma), claim(body), &b, (&nodes, &edges, &a));
     accepted(cert, backends, edges.len())
+}
+
+/// Exact nodes and edges, numerators and B.
+type Finished = (Vec<exactify::Node>, Vec<exactify::Edge>, Vec<[Q; 3]>, Q);
+
+/// Where the numerators' program fails for the search's covectors: covectors and numerators by
+/// alternating linear programs ([`alternate`]), then made exact and checked as before.
+fn jointly(
+    body: &Polygon<Q>,
+    (g, ties, maps): (&graph::Graph, &tie::Ties, &covector::Maps),
+    (nodes, edges): (&[exactify::Node], &[exactify::Edge]),
+) -> Result<Finished, String> {
+    let kicks = (0..nodes.len())
+        .map(|k| match ties.rep[k] == k {
+            true => maps.tied_kicks(g, ties, k).iter().map(|v| [v.x, v.y, v.z]).collect(),
+            false => Vec::new(),
+        })
+        .collect();
+    let data = alternate::Data::new(body, (nodes, edges), ties, kicks)?;
+    let start = nodes.iter().map(|x| x.weight.clone().map(|w| w.to_f64())).collect();
+    let better = alternate::improve(&data, start)
+        .ok_or("alternating the covectors' and the numerators' linear programs (at most 30 rounds) found no covectors whose numerators keep (G3)")?;
+    let reps: Vec<nalgebra::Vector3<f64>> =
+        better.iter().map(|v| nalgebra::Vector3::new(v[0], v[1], v[2])).collect();
+    let nodes = exactify::nodes(body, g, ties, &reps)?;
+    let edges = exactify::edges(body, g, &nodes)?;
+    let x = numerator::numerators(body, &nodes, &edges, ties)
+        .map_err(|e| format!("after alternating, the numerators' linear program: {e}"))?;
+    Ok((nodes, edges, x.a, x.bound))
+}
+
+/// The numerators a_r and B: the least B of the linear program ([`numerator`]), else
+/// a_r = c_r b_r with the least scales ([`scale`]); an error says why both failed.
+fn numerators(
+    body: &Polygon<Q>,
+    (nodes, edges): (&[exactify::Node], &[exactify::Edge]),
+    ties: &tie::Ties,
+    linear_program: bool,
+) -> Result<(Vec<[Q; 3]>, Q), String> {
+    let lp = match linear_program.then(|| numerator::numerators(body, nodes, edges, ties)) {
+        Some(Ok(x)) => return Ok((x.a, x.bound)),
+        Some(Err(e)) => format!("; the numerators' linear program: {e}"),
+        None => String::new(),
+    };
+    let also = |e: String| format!("{e}{lp}");
+    let cons = scale::constraints(body, nodes, edges).map_err(also)?;
+    let c = scale::scales(nodes.len(), &cons).map_err(also)?;
+    let b = bound::bound(body, &nodes[0], &c[0]).map_err(also)?;
+    Ok((nodes.iter().zip(&c).map(|(x, c)| x.weight.clone().map(|w| &w * c)).collect(), b))
 }
 
 /// The certificate's fields.
@@ -151,13 +217,14 @@ fn certificate(
     (kappa, gamma): (&Q, &Q),
     claim: Claim,
     bound: &Q,
-    (nodes, edges, c): (&[exactify::Node], &[exactify::Edge], &[Q]),
+    (nodes, edges, a): (&[exactify::Node], &[exactify::Edge], &[[Q; 3]]),
 ) -> TimeToRest {
     let text = |v: &[Q; 3]| Generator(v.iter().map(ToString::to_string).collect());
     let node = |(r, x): (usize, &exactify::Node)| Node {
         cone: x.cone.vertices.iter().map(text).collect(),
         weight: text(&x.weight),
-        scale: c[r].to_string(),
+        scale: String::new(),
+        numerator: text(&a[r]),
         next: edges.iter().filter(|e| e.from == r).map(|e| (e.step as u64, e.to)).collect(),
     };
     TimeToRest {

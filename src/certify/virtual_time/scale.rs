@@ -21,6 +21,11 @@ pub struct Constraint {
 
 /// The conditions of (G3) on the scales, the largest factor per ordered pair (x, y).
 pub fn constraints(body: &Polygon<Q>, nodes: &[Node], edges: &[Edge]) -> Result<Vec<Constraint>, String> {
+    for (r, node) in nodes.iter().enumerate() {
+        if [rest(body, 0), rest(body, -1)].iter().any(|m| dot(&node.weight, m).is_negative()) {
+            return Err(format!("(G2) fails exactly at node {r} with a_r = c_r b_r: b_r·m < 0"));
+        }
+    }
     let mut by_pair: BTreeMap<(usize, usize), Constraint> = BTreeMap::new();
     for e in edges {
         for (i, p) in e.piece.iter().enumerate().filter(|(_, p)| !is_zero(p)) {

@@ -14,6 +14,20 @@ fn polygon(n: u64, kappa: &str, gamma: &str) -> Model {
     Model::new(Shape::Polygon(n), q(kappa), q(gamma)).expect("valid test body")
 }
 
+/// The cone certificate of `model` made as `chatter::prove::cone` makes it, without the
+/// time-to-rest certificate that function also tries.
+fn cone_only(model: &Model) -> Certified {
+    use chatter::certify::{ClaimChoice, Request, certify};
+    let Shape::Polygon(n) = model.shape() else { panic!("a regular polygon") };
+    let (kappa, gamma) = (model.kappa.clone(), model.gamma.clone());
+    let mut req = Request::new(n, kappa, gamma);
+    req.claim = ClaimChoice::Exactly(chatter_kernel::certificate::Claim::CompleteChatterFromAllDown);
+    let cert = certify(&req).result.expect("a cone certificate");
+    let mut sets = Certified::empty();
+    sets.add_cone(model, &cert, "cone certificate").expect("it serves");
+    sets
+}
+
 fn exact(model: &Model, seed: u64, budget: usize, sets: &Certified) -> chatter::simulate::Run {
     simulate_with(model, &Initial::RandomDrop { seed }, Arithmetic::Exact, &Options::new(budget), Some(sets))
 }
@@ -32,9 +46,9 @@ const PENTAGON: [(&str, &str); 7] = [
 
 #[test]
 fn an_all_down_drop_at_a_certified_point_enters_the_cone_at_its_first_impact() {
-    // The square at (1/20, 1/10): a cone certificate, and no time-to-rest certificate from the
-    // producer (docs/time-to-rest.md §5), which would decide the drop first (tests/all/time_to_rest.rs).
-    for (n, kappa, gamma) in [(3, "1/8", "1/10"), (4, "1/20", "1/10"), (6, "1/50", "1/5")] {
+    // Points with a cone certificate and no time-to-rest certificate from the producer
+    // (docs/time-to-rest.md §5), which would decide the drop first (tests/all/time_to_rest.rs).
+    for (n, kappa, gamma) in [(3, "3/20", "3/50"), (4, "1/20", "7/50"), (6, "1/50", "1/5")] {
         let model = polygon(n, kappa, gamma);
         let sets = chatter::prove::cone(&model, chatter::prove::Effort::Full);
         assert_eq!(sets.sets().len(), 1, "n = {n}: a cone certificate is made: {:?}", sets.notes);
@@ -190,18 +204,18 @@ fn chatter(args: &[&str]) -> (String, i32) {
 
 #[test]
 fn the_command_says_proof_or_evidence_in_text_and_json() {
-    // At the triangle plate the made cone proves no ICC, no PCC at impact 1 (the first fact);
-    // the run goes on and enters the set X of an orbit certificate made for its cycle (issue 24).
+    // At the triangle plate the time-to-rest certificate made on the fly proves CC at impact 1,
+    // with the bound (issue 24).
     let (text, code) = chatter(&["simulate", "--n", "3", "--kappa", "1/8", "--gamma", "1/10", "--exact"]);
     assert_eq!(code, 0, "{text}");
     assert!(text.contains("outcome: CC (proved)"), "{text}");
-    assert!(text.contains("first proved: after impact 1 the velocity lies in the cone K"), "{text}");
     assert!(
-        text.contains("kernel-checked orbit certificate") && text.contains("accumulate by t <="),
+        text.contains("kernel-checked time-to-rest certificate") && text.contains("accumulate by t <="),
         "{text}"
     );
-    // At κ = 3/20, γ = 1/20 no orbit certificate is made for the drop's cycle: the cone's proof.
-    let (text, code) = chatter(&["simulate", "--n", "3", "--kappa", "3/20", "--gamma", "1/20", "--exact"]);
+    // At κ = 3/20, γ = 3/50 neither a time-to-rest certificate nor an orbit certificate for the
+    // drop's cycle is made: the cone's proof.
+    let (text, code) = chatter(&["simulate", "--n", "3", "--kappa", "3/20", "--gamma", "3/50", "--exact"]);
     assert_eq!(code, 0, "{text}");
     assert!(
         text.contains("outcome: no ICC, no PCC (proved; CC not proved: finite accumulation time not derived"),
@@ -300,9 +314,11 @@ fn orbit_entries_bound_the_time_to_rest_and_simulations_respect_the_bound() {
 /// that the `f64` accumulation time of the same drop respects.
 #[test]
 fn a_triangle_plate_drop_first_proved_by_a_cone_ends_proved_cc_with_a_respected_bound() {
-    use chatter::prove::{Effort, cone, prove_one};
+    use chatter::prove::{Effort, prove_one};
     let model = polygon(3, "1/8", "1/10");
-    let sets = cone(&model, Effort::Full);
+    // The cone alone: since 2026-11-27 a time-to-rest certificate is made here too, and decides
+    // every all-down drop at its first impact (tests/all/virtual_time.rs).
+    let sets = cone_only(&model);
     for seed in [0, 3] {
         let initial = Initial::RandomDrop { seed };
         let (first, _) = prove_one(&model, &initial, &Options::new(200), sets.clone(), None);
@@ -360,7 +376,7 @@ fn square_plate_drops_proved_by_the_cone_are_proved_cc_by_orbits_made_for_them()
     use chatter::prove::{Effort, cone, prove_many};
     // A square point with a cone certificate and no time-to-rest certificate made on the fly
     // (at the square plate one is made, and decides the drops at their first impact).
-    let model = polygon(4, "1/20", "1/10");
+    let model = polygon(4, "1/20", "7/50");
     let proved =
         prove_many(&model, 0, 6, &Options::new(100), cone(&model, Effort::Full), Some(Effort::Full), &|| {});
     for b in &proved.briefs {
@@ -377,7 +393,7 @@ fn square_plate_drops_proved_by_the_cone_are_proved_cc_by_orbits_made_for_them()
 #[test]
 fn the_json_reports_the_cone_entry_before_an_orbit_entry() {
     // A square point where the cone is entered first and no time-to-rest certificate is made.
-    let body = ["simulate", "--n", "4", "--kappa", "1/20", "--gamma", "1/10", "--exact", "--impacts", "100"];
+    let body = ["simulate", "--n", "4", "--kappa", "1/20", "--gamma", "7/50", "--exact", "--impacts", "100"];
     let (json, code) = chatter(&[&body[..], &["--seed", "2", "--json"]].concat());
     assert_eq!(code, 0, "{json}");
     let v: serde_json::Value = serde_json::from_str(&json).unwrap();
