@@ -1,8 +1,8 @@
 //! Time to rest (issue 24, docs/time-to-rest.md): for the paper's bodies, the proved bound on the
 //! time at which a drop's impacts accumulate beside the accumulation time that an `f64` run of the
 //! same drop estimates (evidence). The rod's bound is its theorem's (§2, rule T1: t_1 + B h/|v|),
-//! the plates' and the hexagon's come from orbit certificates entered after the cone (§1, §4:
-//! t_k + B h/|v|).
+//! the plates' and the hexagon's from time-to-rest certificates made on the fly (§5: t_1 + B h/|v|)
+//! or orbit certificates entered after the cone (§1, §4: t_k + B h/|v|).
 
 use super::items::Context;
 use super::{Item, Report, Table, Verdict};
@@ -187,7 +187,7 @@ pub fn time_to_rest(ctx: &Context, r: &mut Report) -> Result<(), String> {
     r.items.push(Item {
         title: "Time to rest: complete chatter in finite time, with a proved bound".into(),
         paper: "Complete chatter is infinitely many impacts in finite time (the mechanical problem); the paper derives v ≤ 0 for ever from its cones, not the finite time (docs/time-to-rest.md §1).".into(),
-        ours: "proved: every drop counted in the table's fourth column accumulates its impacts by its bound t_k + B h/|v| (the rod by its theorem, docs/time-to-rest.md §2; the others by an orbit certificate's set entered after the cone, §1); the f64 accumulation times are evidence, and no bound lies below its drop's time beyond rounding".into(),
+        ours: "proved: every drop counted in the table's fourth column accumulates its impacts by its bound t_k + B h/|v| (the rod by its theorem, docs/time-to-rest.md §2; the others by a time-to-rest certificate from the first impact, §5, or an orbit certificate's set entered after the cone, §1); the f64 accumulation times are evidence, and no bound lies below its drop's time beyond rounding".into(),
         verdict: Verdict::of(all),
         evidence,
         commands: vec![
