@@ -127,6 +127,18 @@ fn lowering_a_raised_scale_breaks_g3() {
     }
 }
 
+/// Regression (2026-11-27): a configuration without pads tried nothing and failed with an empty
+/// message; it now says so.
+#[test]
+fn an_empty_list_of_pads_fails_with_a_message() {
+    let cfg = Config { pads: Vec::new(), ..Config::default() };
+    match produce(4, &q("1/6"), &q("1/100"), &cfg, &BOTH) {
+        Err(NotProduced::Failed(m)) => assert!(m.contains("no pad to try"), "{m}"),
+        Err(e) => panic!("{e}"),
+        Ok(_) => panic!("a certificate without a graph"),
+    }
+}
+
 /// A graph that cannot close within the node cap is reported, with no certificate.
 #[test]
 fn a_graph_that_does_not_close_fails_with_what_was_searched() {

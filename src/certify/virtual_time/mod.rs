@@ -105,7 +105,7 @@ pub fn produce(
     cfg: &Config,
     backends: &[Backend],
 ) -> Result<Produced, NotProduced> {
-    let failed = |s: String| NotProduced::Failed(s);
+    let failed = NotProduced::Failed;
     let body = Polygon::new(n, kappa.clone(), gamma.clone()).map_err(|e| {
         failed(format!(
             "no exact model of n = {n} at this point ({e:?}): time-to-rest certificates take n = 3, 4, 6"
@@ -122,6 +122,9 @@ pub fn produce(
             done => return done,
         }
     }
+    if why.is_empty() {
+        return Err(failed("no pad to try: the configuration's list of pads is empty".into()));
+    }
     Err(failed(why.join("; ")))
 }
 
@@ -133,7 +136,7 @@ fn attempt(
     pad: f64,
     backends: &[Backend],
 ) -> Result<Produced, NotProduced> {
-    let failed = |s: String| NotProduced::Failed(s);
+    let failed = NotProduced::Failed;
     let g = graph::build(fbody, cfg, pad);
     let size = format!("{} nodes, {} edges", g.nodes.len(), g.edges.len());
     if !g.closed {
