@@ -8,7 +8,7 @@
 //! ([`super::exactify`], [`super::numerator`]), and the kernel checks the file.
 
 use super::exactify::{Edge, Node, rest};
-use super::tie::{self, Ties};
+use super::tie::Ties;
 use crate::exact::{Q, QExt};
 use chatter_kernel::model::Polygon;
 use chatter_kernel::model::linalg::{Vec3, is_zero, mat_vec};
@@ -73,13 +73,7 @@ impl Data {
         t: &Ties,
         kicks: Vec<Vec<V>>,
     ) -> Result<Self, String> {
-        let unit = |i: usize| -> Vec3<Q> { std::array::from_fn(|c| Q::int(i64::from(c == i))) };
-        let mut tr = Vec::with_capacity(nodes.len());
-        for r in 0..nodes.len() {
-            let cols: Vec<Vec3<Q>> =
-                (0..3).map(|i| tie::transported(body, &t.path[r], unit(i))).collect::<Result<_, _>>()?;
-            tr.push(std::array::from_fn(|row| std::array::from_fn(|col| cols[col][row].to_f64())));
-        }
+        let tr = super::numerator::transports(body, t)?;
         let mut pairs = Vec::new();
         for e in edges {
             let (j, rel, step) = (e.step as i64, body.relabel(e.step as i64), body.step(e.step as i64));

@@ -30,7 +30,7 @@ pub struct Numerators {
 }
 
 /// a_r = T_r a_rep: T_r in `f64` as the images of the unit covectors (columns).
-fn transports(body: &Polygon<Q>, t: &Ties) -> Result<Vec<[[f64; 3]; 3]>, String> {
+pub(super) fn transports(body: &Polygon<Q>, t: &Ties) -> Result<Vec<[[f64; 3]; 3]>, String> {
     let unit = |i: usize| -> Vec3<Q> { std::array::from_fn(|c| Q::int(i64::from(c == i))) };
     (0..t.rep.len())
         .map(|r| {
