@@ -93,11 +93,13 @@ pub struct CertifyArgs {
     /// cones with covectors b_r and numerators a_r, version 2 of the file) and write it here if
     /// the kernel accepts it on both backends; it bounds the time until every all-down drop's
     /// impacts accumulate by B h/|v| (`time_to_rest_bound`). Regular polygons n = 3, 4, 6 at a
-    /// point only. Three graphs are tried in turn (nodes padded by 10^-3, 10^-4, 10^-5); each
-    /// search stops at 200 nodes and 12 rounds of the covector search (40 x 20 directions each);
+    /// point only. Three graphs are tried in turn (nodes padded by 10^-3, 10^-4, 10^-5), then
+    /// nine that merge an image no node holds into the node it enlarges least (area factors
+    /// from 1.05 to 2.5; pad 10^-3); each search stops at 200 nodes and 12 rounds of the covector
+    /// search (40 x 20 directions each);
     /// the numerators minimise B by a linear program (checked exactly), else they are the exact
     /// least scales times the covectors (N + 1 passes, N nodes); the exit status is 1 when no
-    /// such certificate is made (the output says what was searched with each pad), even if the
+    /// such certificate is made (the output says what was searched with each graph), even if the
     /// cone certificate is.
     #[arg(long, value_name = "FILE")]
     pub time_to_rest: Option<PathBuf>,

@@ -243,10 +243,11 @@ fn issue24_a_cone_entry_is_proved_no_icc_no_pcc_and_not_cc() {
     // The reviewer's drop: it enters a kernel-checked cone at its first impact, which proves
     // v <= 0 for ever and no PCC, not that the impacts accumulate at a finite time (CC). The
     // reviewer's point (κ 3/20, γ 1/20) has had a time-to-rest certificate since 2026-11-27, which
-    // proves CC there; γ 3/50 has none.
+    // proves CC there, and (3/20, 3/50) since the merged graphs of the same day; (9/64, 1/8) has
+    // none, and its drops settle into no cycle an orbit certificate is made for.
     use chatter::simulate::{Decision, Initial, Model, Options, SetKind, Shape, simulate_with};
     let d = tempfile::tempdir().unwrap();
-    let args = ["simulate", "--n", "3", "--kappa", "3/20", "--gamma", "3/50", "--exact"];
+    let args = ["simulate", "--n", "3", "--kappa", "9/64", "--gamma", "1/8", "--exact"];
     let (text, code) = chatter_in(d.path(), &args);
     assert_eq!(code, 0, "{text}");
     assert!(
@@ -269,7 +270,7 @@ fn issue24_a_cone_entry_is_proved_no_icc_no_pcc_and_not_cc() {
     );
     assert!(v["entered"]["time_to_rest_bound"].is_null(), "a cone bounds no time: {json}");
     // The library says the same.
-    let model = Model::new(Shape::Polygon(3), q("3/20"), q("3/50")).unwrap();
+    let model = Model::new(Shape::Polygon(3), q("9/64"), q("1/8")).unwrap();
     let sets = chatter::prove::made(&model);
     let initial = Initial::RandomDrop { seed: 0 };
     let run = simulate_with(
@@ -329,9 +330,10 @@ fn issue24_an_orbit_entry_is_proved_cc_with_a_finite_time() {
 
 #[test]
 fn issue24_map_columns_count_cone_entries_apart_from_cc() {
-    // One point (kappa = 3/20, gamma = 3/50) with a CompleteChatterFromAllDown certificate and no
+    // One point (kappa = 9/64, gamma = 1/8) with a CompleteChatterFromAllDown certificate and no
     // time-to-rest certificate: its three drops enter the cone at their first impact, so they are
-    // proved no-ICC-no-PCC, not CC.
+    // proved no-ICC-no-PCC, not CC. (Until the merged graphs of 2026-11-27 the point was
+    // (3/20, 3/50), which now has a time-to-rest certificate.)
     use chatter::sweep::table::{HEADER, parse_csv};
     let d = tempfile::tempdir().unwrap();
     let args = [
@@ -339,9 +341,9 @@ fn issue24_map_columns_count_cone_entries_apart_from_cc() {
         "--n",
         "3",
         "--kappa",
-        "0.1:0.2:1",
+        "0.125:0.15625:1",
         "--gamma",
-        "0.02:0.1:1",
+        "0.1:0.15:1",
         "--certify",
         "--simulate",
         "3",

@@ -21,9 +21,10 @@ fn square_plate() -> Produced {
     produce(4, &q("1/6"), &q("1/100"), &Config::default(), &BOTH).unwrap_or_else(|e| panic!("{e}"))
 }
 
-/// The producer without the linear program: a_r = c_r b_r with the least scales.
+/// The producer without the linear program: a_r = c_r b_r with the least scales (and no merged
+/// graphs, so that a failure of the plain graphs stays a failure).
 fn scales_only() -> Config {
-    Config { linear_program: false, ..Config::default() }
+    Config { linear_program: false, merges: Vec::new(), ..Config::default() }
 }
 
 /// At the square plate the producer's file is accepted on both backends with the claim that
@@ -142,7 +143,7 @@ fn an_empty_list_of_pads_fails_with_a_message() {
 /// A graph that cannot close within the node cap is reported, with no certificate.
 #[test]
 fn a_graph_that_does_not_close_fails_with_what_was_searched() {
-    let cfg = Config { max_nodes: 2, ..Config::default() };
+    let cfg = Config { max_nodes: 2, merges: Vec::new(), ..Config::default() };
     match produce(4, &q("1/6"), &q("1/100"), &cfg, &BOTH) {
         Err(NotProduced::Failed(m)) => {
             assert!(m.contains("did not close") && m.contains("cap 2 nodes"), "{m}")
@@ -171,6 +172,34 @@ fn a_large_scale_is_not_a_failed_search_and_the_exact_cycle_is_named() {
     let p = produce(3, &q("1/10"), &q("1/20"), &Config::default(), &BOTH).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(p.cert.version, 2);
     assert!(p.bound > q("10") && p.bound < q("40"), "{}", p.bound);
+}
+
+/// At the triangle (κ 1/20, γ 2/25) no plain graph gives a certificate (each pad's graph closes,
+/// with 14 to 19 nodes, but no numerators keep (G3) on it, even after alternating), and a graph
+/// that merges images into nodes does (11 nodes): the producer tries the merges after the pads,
+/// the file is accepted on both backends, and along 300 all-down drops (the test's own `f64`
+/// physics) the virtual time falls at every impact and by at least each flight, and B bounds
+/// T|v|/h over the first 300 impacts.
+#[test]
+fn a_merged_graph_is_tried_where_no_plain_graph_gives_a_bound() {
+    let (kappa, gamma) = (q("1/20"), q("2/25"));
+    let plain = Config { merges: Vec::new(), ..Config::default() };
+    let e = produce(3, &kappa, &gamma, &plain, &BOTH).err().expect("no plain graph gives a bound here");
+    assert!(e.to_string().contains("the float graph closed") && !e.to_string().contains("merging"), "{e}");
+    let p = produce(3, &kappa, &gamma, &Config::default(), &BOTH).unwrap_or_else(|e| panic!("{e}"));
+    match verify_rest_text_in(&p.text, Encoding::Ron, ParseLimits::default(), &BOTH) {
+        Verdict::Accepted(a) => assert_eq!((a.bound, a.nodes), (p.bound.to_string(), p.cert.nodes.len())),
+        other => panic!("{other:?}"),
+    }
+    let plate = Plate { n: 3, kappa: 1.0 / 20.0, gamma: 0.08 };
+    let bound = num(&p.cert.bound);
+    let (mut seed, mut drops) = (0x2545_f491_4f6c_dd1d_u64, 0);
+    while drops < 300 {
+        let (q, v) = random_drop(&mut seed);
+        let Some(ratio) = follow(&plate, &p.cert, q, v) else { continue };
+        assert!(ratio <= bound * (1.0 + 1e-9), "T |v|/h = {ratio} > B = {bound}");
+        drops += 1;
+    }
 }
 
 /// At the square (κ 1/40, γ 1/100), with the scales only, the graph with the pad 10^-3 fails on a

@@ -1,6 +1,7 @@
 //! The virtual-time graph's nodes and successors in `f64` (docs/time-to-rest.md §5, "a graph
 //! built from the images of I_0(D)"): node 0 is the hull of I_0(D); each image S_j(K_r ∩ C_j)
-//! goes to the smallest node that contains it, or becomes a new node, enlarged. Untrusted.
+//! goes to the smallest node that contains it, or becomes a new node, enlarged, or (in a merged
+//! graph) enlarges the node it grows least, which is then searched again. Untrusted.
 
 use super::Config;
 use crate::finder::geometry::{P2, clip, hull, lift, outside_distance, project};
@@ -58,31 +59,66 @@ fn smallest_containing(nodes: &[Vec<P2>], img: &[P2]) -> Option<usize> {
 }
 
 /// Builds the graph breadth first from node 0 = I_0(D) (padded by `pad`), at most `cfg.max_nodes`
-/// nodes.
-pub fn build(body: &FloatPolygon, cfg: &Config, pad: f64) -> Graph {
+/// nodes (and, merging, at most 20 times as many node searches). With `merge` = Some(t), an image
+/// that no node contains is first merged into the node whose hull with the image's enlarged hull
+/// has the least area, if that area is at most t times the larger of the two (the node is then
+/// searched again); else it becomes a new node.
+pub fn build(body: &FloatPolygon, cfg: &Config, pad: f64, merge: Option<f64>) -> Graph {
     let i0 = body.impact(0);
     let first: Vec<P2> = body.all_down_generators().iter().map(|g| project(&(i0 * g))).collect();
     let mut g = Graph { nodes: vec![enlarge(&hull(&first, 1e-15), 0.0, pad)], edges: vec![], closed: false };
     let mut todo = VecDeque::from([0]);
-    while let Some(r) = todo.pop_front() {
+    for _ in 0..20 * cfg.max_nodes {
+        let Some(r) = todo.pop_front() else {
+            g.closed = true;
+            return g;
+        };
+        g.edges.retain(|e| e.from != r);
         for j in 1..body.n() {
             let piece = piece(body, &g.nodes[r], j);
             if piece.len() < 3 {
                 continue;
             }
             let Some(img) = image(body, j, &piece) else { return g };
-            let to = match smallest_containing(&g.nodes, &img) {
-                Some(s) => s,
-                None if g.nodes.len() >= cfg.max_nodes => return g,
-                None => {
-                    g.nodes.push(enlarge(&hull(&img, 1e-15), cfg.enlarge, pad));
-                    todo.push_back(g.nodes.len() - 1);
-                    g.nodes.len() - 1
-                }
-            };
+            let Some(to) = place(&mut g, &mut todo, &img, (cfg, pad, merge)) else { return g };
             g.edges.push(Edge { from: r, step: j, to, piece });
         }
     }
-    g.closed = true;
     g
+}
+
+/// The node an image goes to: the smallest that contains it, else (merging) the node it is merged
+/// into, else a new node; `None` at the node cap.
+fn place(
+    g: &mut Graph,
+    todo: &mut VecDeque<usize>,
+    img: &[P2],
+    (cfg, pad, merge): (&Config, f64, Option<f64>),
+) -> Option<usize> {
+    if let Some(s) = smallest_containing(&g.nodes, img) {
+        return Some(s);
+    }
+    let new = enlarge(&hull(img, 1e-15), cfg.enlarge, pad);
+    if let Some((s, m)) = merge.and_then(|t| merged(&g.nodes, &new, t)) {
+        g.nodes[s] = m;
+        if !todo.contains(&s) {
+            todo.push_back(s);
+        }
+        return Some(s);
+    }
+    if g.nodes.len() >= cfg.max_nodes {
+        return None;
+    }
+    g.nodes.push(new);
+    todo.push_back(g.nodes.len() - 1);
+    Some(g.nodes.len() - 1)
+}
+
+/// The node whose hull with `new` has the least area, and that hull, if its area is at most `t`
+/// times the larger of the node's and `new`'s.
+fn merged(nodes: &[Vec<P2>], new: &[P2], t: f64) -> Option<(usize, Vec<P2>)> {
+    let joined = |k: &[P2]| hull(&[k, new].concat(), 1e-15);
+    let (s, m) =
+        nodes.iter().map(|k| joined(k)).enumerate().min_by(|a, b| area(&a.1).total_cmp(&area(&b.1)))?;
+    (area(&m) <= t * area(&nodes[s]).max(area(new))).then_some((s, m))
 }

@@ -33,6 +33,10 @@ pub struct Config {
     /// 2^-24), tried in turn until the kernel accepts: a smaller pad keeps a node closer to the
     /// images it holds, which a self-loop may need, and changes the whole graph.
     pub pads: Vec<f64>,
+    /// Where no pad gives a certificate: graphs that merge an image no node contains into the
+    /// node whose hull with it grows least, when that hull's area is at most this factor times
+    /// the larger of the two (`graph::build`), tried in turn with the first pad.
+    pub merges: Vec<f64>,
     /// Rounds of the covector search over the tied components.
     pub rounds: usize,
     /// Grid of the covector search: grid × grid/2 directions.
@@ -48,6 +52,7 @@ impl Default for Config {
             max_nodes: 200,
             enlarge: 0.3,
             pads: vec![1e-3, 1e-4, 1e-5],
+            merges: vec![1.3, 1.2, 1.5, 1.1, 1.05, 1.4, 1.7, 2.0, 2.5],
             rounds: 12,
             grid: 40,
             linear_program: true,
@@ -115,29 +120,34 @@ pub fn produce(
         return Err(failed("time-to-rest certificates need 0 < gamma < 1".into()));
     }
     let fbody = FloatPolygon::new(n, kappa.to_f64(), gamma.to_f64()).map_err(|e| failed(format!("{e:?}")))?;
+    let Some(&first) = cfg.pads.first() else {
+        return Err(failed("no pad to try: the configuration's list of pads is empty".into()));
+    };
+    let plain = cfg.pads.iter().map(|&pad| (pad, None));
     let mut why = Vec::new();
-    for &pad in &cfg.pads {
-        match attempt((&body, &fbody), (kappa, gamma), cfg, pad, backends) {
-            Err(NotProduced::Failed(m)) => why.push(format!("pad {pad:e}: {m}")),
+    for (pad, merge) in plain.chain(cfg.merges.iter().map(|&t| (first, Some(t)))) {
+        match attempt((&body, &fbody), (kappa, gamma), cfg, (pad, merge), backends) {
+            Err(NotProduced::Failed(m)) => why.push(match merge {
+                None => format!("pad {pad:e}: {m}"),
+                Some(t) => format!("pad {pad:e}, merging within area factor {t}: {m}"),
+            }),
             done => return done,
         }
-    }
-    if why.is_empty() {
-        return Err(failed("no pad to try: the configuration's list of pads is empty".into()));
     }
     Err(failed(why.join("; ")))
 }
 
-/// One graph, with nodes padded by `pad`, searched, made exact and checked.
+/// One graph, with nodes padded by `pad` (and images merged into nodes within `merge`),
+/// searched, made exact and checked.
 fn attempt(
     (body, fbody): (&Polygon<Q>, &FloatPolygon),
     (kappa, gamma): (&Q, &Q),
     cfg: &Config,
-    pad: f64,
+    (pad, merge): (f64, Option<f64>),
     backends: &[Backend],
 ) -> Result<Produced, NotProduced> {
     let failed = NotProduced::Failed;
-    let g = graph::build(fbody, cfg, pad);
+    let g = graph::build(fbody, cfg, pad, merge);
     let size = format!("{} nodes, {} edges", g.nodes.len(), g.edges.len());
     if !g.closed {
         return Err(failed(format!(

@@ -48,7 +48,7 @@ const PENTAGON: [(&str, &str); 7] = [
 fn an_all_down_drop_at_a_certified_point_enters_the_cone_at_its_first_impact() {
     // Points with a cone certificate and no time-to-rest certificate from the producer
     // (docs/time-to-rest.md §5), which would decide the drop first (tests/all/time_to_rest.rs).
-    for (n, kappa, gamma) in [(3, "3/20", "3/50"), (4, "1/20", "7/50"), (6, "1/50", "1/5")] {
+    for (n, kappa, gamma) in [(3, "9/64", "1/8"), (4, "1/20", "6/25"), (6, "1/50", "1/5")] {
         let model = polygon(n, kappa, gamma);
         let sets = chatter::prove::cone(&model, chatter::prove::Effort::Full);
         assert_eq!(sets.sets().len(), 1, "n = {n}: a cone certificate is made: {:?}", sets.notes);
@@ -213,9 +213,9 @@ fn the_command_says_proof_or_evidence_in_text_and_json() {
         text.contains("kernel-checked time-to-rest certificate") && text.contains("accumulate by t <="),
         "{text}"
     );
-    // At κ = 3/20, γ = 3/50 neither a time-to-rest certificate nor an orbit certificate for the
+    // At κ = 9/64, γ = 1/8 neither a time-to-rest certificate nor an orbit certificate for the
     // drop's cycle is made: the cone's proof.
-    let (text, code) = chatter(&["simulate", "--n", "3", "--kappa", "3/20", "--gamma", "3/50", "--exact"]);
+    let (text, code) = chatter(&["simulate", "--n", "3", "--kappa", "9/64", "--gamma", "1/8", "--exact"]);
     assert_eq!(code, 0, "{text}");
     assert!(
         text.contains("outcome: no ICC, no PCC (proved; CC not proved: finite accumulation time not derived"),
@@ -376,7 +376,7 @@ fn square_plate_drops_proved_by_the_cone_are_proved_cc_by_orbits_made_for_them()
     use chatter::prove::{Effort, cone, prove_many};
     // A square point with a cone certificate and no time-to-rest certificate made on the fly
     // (at the square plate one is made, and decides the drops at their first impact).
-    let model = polygon(4, "1/20", "7/50");
+    let model = polygon(4, "1/20", "6/25");
     let proved =
         prove_many(&model, 0, 6, &Options::new(100), cone(&model, Effort::Full), Some(Effort::Full), &|| {});
     for b in &proved.briefs {
@@ -393,7 +393,7 @@ fn square_plate_drops_proved_by_the_cone_are_proved_cc_by_orbits_made_for_them()
 #[test]
 fn the_json_reports_the_cone_entry_before_an_orbit_entry() {
     // A square point where the cone is entered first and no time-to-rest certificate is made.
-    let body = ["simulate", "--n", "4", "--kappa", "1/20", "--gamma", "7/50", "--exact", "--impacts", "100"];
+    let body = ["simulate", "--n", "4", "--kappa", "1/20", "--gamma", "6/25", "--exact", "--impacts", "100"];
     let (json, code) = chatter(&[&body[..], &["--seed", "2", "--json"]].concat());
     assert_eq!(code, 0, "{json}");
     let v: serde_json::Value = serde_json::from_str(&json).unwrap();
