@@ -208,6 +208,9 @@ pub fn basin_to_json(c: &BasinCertificate) -> String {
     let orbit = c.orbit.as_ref().map_or(String::new(), |o| {
         format!("    \"orbit\": {},\n", orbit_to_json(o).trim_end().replace('\n', "\n    "))
     });
+    let rest = c.rest.as_ref().map_or(String::new(), |r| {
+        format!("    \"rest\": {},\n", rest_to_json(r).trim_end().replace('\n', "\n    "))
+    });
     let leaves: Vec<String> = c
         .leaves
         .iter()
@@ -221,13 +224,16 @@ pub fn basin_to_json(c: &BasinCertificate) -> String {
                         ints(cuts)
                     )
                 }
+                LeafVerdict::Rest { first, steps, node } => {
+                    format!("{{\"Rest\": {{\"first\": {first}, \"steps\": [{}], \"node\": {node}}}}}", ints(steps))
+                }
                 LeafVerdict::Undecided => "\"Undecided\"".into(),
             };
             format!("{{\"path\": {}, \"verdict\": {verdict}}}", quoted(&l.path))
         })
         .collect();
     format!(
-        "{{\n    \"format\": {},\n    \"version\": {},\n    \"body\": {{\"RegularPolygon\": {{\"n\": {n}, \"kappa\": {}, \"gamma\": {}}}}},\n    \"drops\": {{\"lo\": [{}], \"hi\": [{}]}},\n{orbit}    \"leaves\": {},\n    \"producer\": {}\n}}\n",
+        "{{\n    \"format\": {},\n    \"version\": {},\n    \"body\": {{\"RegularPolygon\": {{\"n\": {n}, \"kappa\": {}, \"gamma\": {}}}}},\n    \"drops\": {{\"lo\": [{}], \"hi\": [{}]}},\n{orbit}{rest}    \"leaves\": {},\n    \"producer\": {}\n}}\n",
         quoted(&c.format),
         c.version,
         quoted(kappa),

@@ -17,6 +17,8 @@ pub struct Plan {
     pub cc: bool,
     /// Impact counts after which the kernel re-encloses the state in X's parameters.
     pub cuts: Vec<u64>,
+    /// With `cc`: it ends in the cone of this node of the time-to-rest certificate, not in X.
+    pub rest: Option<usize>,
 }
 
 /// The body and the set X in `f64`.
@@ -35,6 +37,11 @@ pub struct Walker {
     pub cut_every: usize,
     /// ... but only where the walk's state is within this many δ of x* in X's parameters.
     pub cut_within: f64,
+    /// The cones of the time-to-rest certificate's nodes: their facets' unit inner normals.
+    pub cones: Vec<Vec<[f64; 3]>>,
+    /// A prefix ends in a node's cone once the velocity's direction is at least this far inside
+    /// every facet (cosine of the angle to the facet's plane).
+    pub cone_margin: f64,
 }
 
 fn f(x: &Rational) -> f64 {
@@ -66,7 +73,35 @@ impl Walker {
             entry: 0.5,
             cut_every: 0,
             cut_within: f64::INFINITY,
+            cones: Vec::new(),
+            cone_margin: 1e-3,
         }
+    }
+
+    /// The nodes' cones from their exact facets (docs/basin-certificates.md §4, `Rest`).
+    pub fn with_cones(mut self, facets: &[Vec<[Rational; 3]>]) -> Self {
+        let unit = |g: &[Rational; 3]| {
+            let v = g.each_ref().map(f);
+            let norm = dot(&v, &v).sqrt();
+            v.map(|x| x / norm)
+        };
+        self.cones = facets.iter().map(|fs| fs.iter().map(unit).collect()).collect();
+        self
+    }
+
+    /// How far inside node r's cone the velocity p is: the least cosine over its facets (v < 0).
+    fn margin(&self, r: usize, p: &[f64; 3]) -> f64 {
+        let norm = dot(p, p).sqrt();
+        if p[2] >= 0.0 || norm == 0.0 {
+            return f64::NEG_INFINITY;
+        }
+        self.cones[r].iter().map(|fc| dot(fc, p) / norm).fold(f64::INFINITY, f64::min)
+    }
+
+    /// The node whose cone holds p deepest, if by at least [`Walker::cone_margin`].
+    fn in_cone(&self, p: &[f64; 3]) -> Option<usize> {
+        let best = (0..self.cones.len()).map(|r| (r, self.margin(r, p))).max_by(|a, b| a.1.total_cmp(&b.1));
+        best.filter(|&(_, m)| m >= self.cone_margin).map(|(r, _)| r)
     }
 
     /// (q, p) in our coordinates of the drop y = (ω_x, ω_y, φ_x, φ_y, h), v = -1.
@@ -133,7 +168,10 @@ impl Walker {
             let y = self.in_x(&q, &p);
             near.push(y.is_some_and(|y| y.iter().all(|v| v.abs() <= self.cut_within)));
             if p[2] > 0.0 {
-                return Some(Plan { first, steps, cc: false, cuts: Vec::new() });
+                return Some(Plan { first, steps, cc: false, cuts: Vec::new(), rest: None });
+            }
+            if let Some(r) = self.in_cone(&p) {
+                return Some(Plan { first, steps, cc: true, cuts: Vec::new(), rest: Some(r) });
             }
             if let Some(y) = self.in_x(&q, &p)
                 && y.iter().all(|v| v.abs() <= self.entry)
@@ -146,14 +184,15 @@ impl Walker {
                         .map(|c| c as u64)
                         .collect(),
                 };
-                return Some(Plan { first, steps, cc: true, cuts });
+                return Some(Plan { first, steps, cc: true, cuts, rest: None });
             }
         }
         None
     }
 
     /// Whether the drop y follows `plan` (each impact the first to land) and ends where it says;
-    /// the end: X's parameters over δ (CC) or (v, 0, 0) (ICC).
+    /// the end: X's parameters over δ (CC), the direction of the velocity in the node's cone
+    /// (CC by `rest`) or (v, 0, 0) (ICC).
     pub fn follow(&self, y: &[f64; 5], plan: &Plan) -> Option<[f64; 3]> {
         let (mut q, mut p) = self.start(y);
         for s in 0..=plan.steps.len() {
@@ -165,6 +204,9 @@ impl Walker {
         }
         if !plan.cc {
             return (p[2] > 0.0).then_some([p[2], 0.0, 0.0]);
+        }
+        if let Some(r) = plan.rest {
+            return (self.margin(r, &p) >= 0.0).then_some([p[0] / -p[2], p[1] / -p[2], 0.0]);
         }
         self.in_x(&q, &p).filter(|y| y.iter().all(|v| v.abs() <= 1.0))
     }

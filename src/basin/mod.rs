@@ -14,7 +14,8 @@ use crate::orbit::{Found, Request, certify_orbit};
 use chatter_kernel::basin::drop::DIMS;
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::orbit::Orbit;
-use chatter_kernel::rules::basin::{Context, Prefix, leaf_box, read};
+use chatter_kernel::rules::basin::{Context, End, Prefix, leaf_box, read};
+use chatter_kernel::rules::rest::forms;
 use chatter_kernel::syntax::basin::{BasinCertificate, DropBox, FORMAT, Leaf, LeafVerdict, VERSION};
 use chatter_kernel::syntax::orbit::OrbitBody;
 use chatter_kernel::verify::Backend;
@@ -36,6 +37,9 @@ pub struct BasinRequest {
     pub max_prefix: usize,
     /// A CC prefix ends where the centre's state is within this share of δ (X's parameters).
     pub entry: f64,
+    /// The time-to-rest certificate's search (`None`: not tried); with one, a prefix may end in
+    /// the cone of one of its nodes (`Rest` leaves: CC with a bound on the time to rest).
+    pub rest: Option<crate::certify::virtual_time::Config>,
 }
 
 impl BasinRequest {
@@ -53,8 +57,10 @@ impl BasinRequest {
 pub struct Produced {
     /// The certificate (its leaves checked by the kernel on malachite while produced).
     pub certificate: BasinCertificate,
-    /// The orbit certificate's search (or why none was found: then only ICC leaves).
+    /// The orbit certificate's search (or why none was found).
     pub orbit: Result<Found, String>,
+    /// The time-to-rest certificate's search: its nodes and B, or why none (`None`: not tried).
+    pub rest: Option<Result<(usize, Q), String>>,
     /// Leaves: CC, ICC, undecided.
     pub leaves: [usize; 3],
     /// Shares of the box (`f64`, for progress and the summary; the kernel's are exact).
@@ -80,6 +86,7 @@ pub fn produce(
     // Without an orbit certificate only ICC leaves can be proved (far above the CC threshold).
     let found = certify_orbit(&req.orbit, backends).map_err(|e| e.to_string());
     let r = &req.orbit;
+    let rest = req.rest.as_ref().map(|cfg| time_to_rest(r, cfg, backends));
     let mut cert = BasinCertificate {
         format: FORMAT.into(),
         version: VERSION,
@@ -89,15 +96,22 @@ pub fn produce(
             hi: req.hi.iter().map(|x| x.to_string()).collect(),
         },
         orbit: found.as_ref().ok().map(|f| f.certificate.clone()),
+        rest: rest.as_ref().and_then(|r| r.as_ref().ok()).map(|m| m.cert.clone()),
         leaves: Vec::new(),
         producer: format!("chatter {} basin", env!("CARGO_PKG_VERSION")),
     };
     let (maps, orbit, lo, hi): (_, Option<Orbit<Rational>>, _, _) =
         read(&cert, ParseLimits::default()).map_err(|r| format!("the kernel refuses the request: {r}"))?;
-    let mut walker = Walker::new(&maps, orbit.as_ref(), req.max_prefix);
+    let forms = match &cert.rest {
+        Some(r) => Some(forms::<Rational>(r, ParseLimits::default()).map_err(|e| format!("the kernel refuses the time-to-rest certificate: {e}"))?.1),
+        None => None,
+    };
+    let facets: Vec<Vec<[Rational; 3]>> = forms.iter().flatten().map(|n| n.facets.clone()).collect();
+    let mut walker = Walker::new(&maps, orbit.as_ref(), req.max_prefix).with_cones(&facets);
     walker.cut_every = found.as_ref().map_or(0, |f| base_period(&f.pattern));
     walker.entry = req.entry;
-    let p = Producer { ctx: Context::new(maps, orbit), walker, lo, hi, depth: req.depth, progress };
+    let ctx = Context::new(maps, orbit).with_rest(forms);
+    let p = Producer { ctx, walker, lo, hi, depth: req.depth, progress };
     let done = std::sync::atomic::AtomicU64::new(0);
     let unit = [0.0; DIMS].map(|_: f64| [0.0, 1.0]);
     cert.leaves = p.decide(String::new(), unit, &done);
@@ -105,14 +119,29 @@ pub fn produce(
     let mut shares = [0.0; 3];
     for l in &cert.leaves {
         let k = match l.verdict {
-            LeafVerdict::Cc { .. } => 0,
+            LeafVerdict::Cc { .. } | LeafVerdict::Rest { .. } => 0,
             LeafVerdict::Icc { .. } => 1,
             LeafVerdict::Undecided => 2,
         };
         leaves[k] += 1;
         shares[k] += 0.5f64.powi(l.path.len() as i32);
     }
-    Ok(Produced { certificate: cert, orbit: found, leaves, shares })
+    let rest = rest.map(|r| r.map(|m| (m.nodes, m.bound)));
+    Ok(Produced { certificate: cert, orbit: found, rest, leaves, shares })
+}
+
+/// A time-to-rest certificate for the body whose claim excludes PCC (what `Rest` leaves need).
+fn time_to_rest(
+    r: &Request,
+    cfg: &crate::certify::virtual_time::Config,
+    backends: &[Backend],
+) -> Result<crate::certify::virtual_time::Produced, String> {
+    use chatter_kernel::syntax::cone::Claim;
+    let made = crate::certify::virtual_time::produce(r.n, &r.kappa, &r.gamma, cfg, backends).map_err(|e| e.to_string())?;
+    if made.cert.claim != Claim::CompleteChatterFromAllDown {
+        return Err("PCC is not excluded at this point (rule R4), so the graph does not prove CC".into());
+    }
+    Ok(made)
 }
 
 /// A sub-box in the unit coordinates of the box: [lo, hi] per coordinate.
@@ -144,7 +173,11 @@ impl Producer<'_> {
         if path.len() >= self.depth || (plan.is_none() && path.len() >= self.depth / 2) {
             return self.leaf(path, LeafVerdict::Undecided, done);
         }
-        let axis = self.axis(&b, &probes);
+        let followed = probes.iter().all(|p| p.iter().all(Option::is_some));
+        let axis = match plan.as_ref().filter(|_| followed).and_then(|plan| self.corner_axis(&b, plan)) {
+            Some(k) => k,
+            None => self.axis(&b, &probes),
+        };
         let halves = [0, 1].map(|side| {
             let mut c = b;
             let m = (b[axis][0] + b[axis][1]) / 2.0;
@@ -193,10 +226,33 @@ impl Producer<'_> {
         (0..DIMS).max_by(|&i, &j| score(i).total_cmp(&score(j)).then(j.cmp(&i))).unwrap_or(0)
     }
 
+    /// Where the quarter points follow the plan but the kernel did not show it: the coordinate
+    /// that separates the box's corners that follow the plan from those that do not (most
+    /// such edges of the box, the widest on ties), if some corner does not.
+    fn corner_axis(&self, b: &Unit, plan: &Plan) -> Option<usize> {
+        let follows: Vec<bool> = (0..1usize << DIMS)
+            .map(|c| {
+                let u: [f64; DIMS] = std::array::from_fn(|k| b[k][(c >> k) & 1]);
+                self.walker.follow(&self.drop_at(&u), plan).is_some()
+            })
+            .collect();
+        if follows.iter().all(|&f| f) {
+            return None;
+        }
+        let edges = |k: usize| (0..follows.len()).filter(|&c| c >> k & 1 == 0 && follows[c] != follows[c | 1 << k]).count();
+        let score = |k: usize| (edges(k), b[k][1] - b[k][0]);
+        (0..DIMS).filter(|&k| edges(k) > 0).max_by(|&i, &j| score(i).partial_cmp(&score(j)).unwrap_or(std::cmp::Ordering::Equal).then(j.cmp(&i)))
+    }
+
     /// Rule B4 of the kernel (malachite) on the sub-box `path` with `plan`.
     fn kernel_accepts(&self, path: &str, plan: &Plan) -> bool {
         let (lo, hi) = leaf_box(&self.lo, &self.hi, path);
-        let prefix = Prefix { first: plan.first, steps: &plan.steps, cuts: &plan.cuts, cc: plan.cc };
+        let end = match (plan.rest, plan.cc) {
+            (Some(r), _) => End::Rest(r),
+            (None, true) => End::Cc,
+            (None, false) => End::Icc,
+        };
+        let prefix = Prefix { first: plan.first, steps: &plan.steps, cuts: &plan.cuts, end };
         self.ctx.leaf(&lo, &hi, &prefix).is_ok()
     }
 }
@@ -212,6 +268,9 @@ fn base_period(pattern: &[usize]) -> usize {
 
 fn verdict(plan: &Plan) -> LeafVerdict {
     let (first, steps, cuts) = (plan.first as u64, plan.steps.clone(), plan.cuts.clone());
+    if let Some(node) = plan.rest {
+        return LeafVerdict::Rest { first, steps, node: node as u64 };
+    }
     if plan.cc { LeafVerdict::Cc { first, steps, cuts } } else { LeafVerdict::Icc { first, steps, cuts } }
 }
 
@@ -233,6 +292,10 @@ pub fn write_basin(c: &BasinCertificate) -> String {
         let orbit: Vec<String> = orbit.trim_end().lines().map(|l| format!("    {l}")).collect();
         out.push_str(&format!("    orbit: Some({}),\n", orbit.join("\n").trim_start()));
     }
+    if let Some(r) = &c.rest {
+        let rest: Vec<String> = crate::write::write_rest(r).trim_end().lines().map(|l| format!("    {l}")).collect();
+        out.push_str(&format!("    rest: Some({}),\n", rest.join("\n").trim_start()));
+    }
     out.push_str("    leaves: [\n");
     for l in &c.leaves {
         let v = match &l.verdict {
@@ -241,6 +304,9 @@ pub fn write_basin(c: &BasinCertificate) -> String {
             }
             LeafVerdict::Icc { first, steps, cuts } => {
                 format!("Icc(first: {first}, steps: [{}], cuts: [{}])", join(steps), join(cuts))
+            }
+            LeafVerdict::Rest { first, steps, node } => {
+                format!("Rest(first: {first}, steps: [{}], node: {node})", join(steps))
             }
             LeafVerdict::Undecided => "Undecided".into(),
         };

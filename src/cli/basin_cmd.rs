@@ -18,7 +18,9 @@ use std::time::Instant;
 The box of drops is in the paper's coordinates before the first impact: velocity\n\
 (omega_x, omega_y, -1), position (phi_x, phi_y, h); the default is the paper's random drops\n\
 (omega, phi in [0, 1/10]^2, h in [1, 11/10]). CC is counted only for drops proved to enter the\n\
-set X of an orbit certificate (docs/basin-certificates.md).\n\n\
+set X of an orbit certificate, or the cone of a node of a time-to-rest certificate (then with a\n\
+bound on the time to rest; tried unless --no-rest), both made first and embedded in the file\n\
+(docs/basin-certificates.md).\n\n\
 Example:\n  chatter basin --n 3 --kappa 1/8 --gamma 3/20 --depth 20 -o basin.ron")]
 pub struct BasinArgs {
     #[command(flatten)]
@@ -42,6 +44,10 @@ pub struct BasinArgs {
     /// Write the certificate here.
     #[arg(short = 'o', long)]
     pub output: Option<PathBuf>,
+    /// Do not try a time-to-rest certificate (below the CC threshold it proves the drops that
+    /// enter its graph CC, usually at their first impact).
+    #[arg(long)]
+    pub no_rest: bool,
     /// Skip the final check of the whole file on both backends (the leaves are checked on
     /// malachite while produced).
     #[arg(long)]
@@ -97,7 +103,8 @@ fn validate(a: &BasinArgs) -> Result<BasinRequest, String> {
     if !(a.entry > 0.0 && a.entry <= 1.0) {
         return Err(format!("--entry: {} is not in (0, 1]", a.entry));
     }
-    Ok(BasinRequest { orbit, lo, hi, depth: a.depth, max_prefix: a.max_prefix, entry: a.entry })
+    let rest = (!a.no_rest).then(crate::certify::virtual_time::Config::default);
+    Ok(BasinRequest { orbit, lo, hi, depth: a.depth, max_prefix: a.max_prefix, entry: a.entry, rest })
 }
 
 pub fn run(a: BasinArgs, env: &Env) -> Outcome {
@@ -132,10 +139,15 @@ pub fn run(a: BasinArgs, env: &Env) -> Outcome {
     let [scc, sicc, sund] = produced.shares;
     let orbit = match &produced.orbit {
         Ok(f) => format!("orbit pattern {:?}, delta {:e}", f.pattern, f.delta),
-        Err(e) => format!("no orbit certificate ({e}): CC not provable"),
+        Err(e) => format!("no orbit certificate ({e})"),
+    };
+    let rest = match &produced.rest {
+        None => "no time-to-rest certificate tried".to_string(),
+        Some(Ok((nodes, b))) => format!("time-to-rest certificate of {nodes} nodes, B = {:.4}", crate::exact::QExt::to_f64(b)),
+        Some(Err(e)) => format!("no time-to-rest certificate ({e})"),
     };
     let head = format!(
-        "n={} kappa={} gamma={}: {} leaves (CC {cc}, ICC {icc}, undecided {und}); shares CC {scc:.4}, ICC {sicc:.4}, undecided {sund:.4}; {orbit}; produced in {made:.1} s",
+        "n={} kappa={} gamma={}: {} leaves (CC {cc}, ICC {icc}, undecided {und}); shares CC {scc:.4}, ICC {sicc:.4}, undecided {sund:.4}; {orbit}; {rest}; produced in {made:.1} s",
         req.orbit.n,
         req.orbit.kappa,
         req.orbit.gamma,

@@ -66,6 +66,9 @@ pub struct BasinMapArgs {
     /// The orbit certificates' deepest subdivision of X.
     #[arg(long, default_value_t = 2)]
     pub orbit_depth: u64,
+    /// Do not try a time-to-rest certificate at each point (survey effort: at most 40 nodes).
+    #[arg(long)]
+    pub no_rest: bool,
     /// Output folder.
     #[arg(long, short = 'o', value_name = "DIR", default_value = "basin-map")]
     pub out: PathBuf,
@@ -97,7 +100,8 @@ fn validate(a: &BasinMapArgs) -> Result<MapRequest, String> {
         drops: 200,
         max_depth: a.orbit_depth.min(4),
     };
-    let basin = BasinRequest { orbit, lo, hi, depth: a.depth, max_prefix: a.max_prefix, entry: 0.25 };
+    let rest = (!a.no_rest).then(crate::prove::survey_rest_config);
+    let basin = BasinRequest { orbit, lo, hi, depth: a.depth, max_prefix: a.max_prefix, entry: 0.25, rest };
     Ok(MapRequest { grid, basin })
 }
 

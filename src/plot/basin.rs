@@ -113,7 +113,7 @@ impl BasinFigure {
                 continue;
             }
             let kind = match leaf.verdict {
-                LeafVerdict::Cc { .. } => Kind::Cc,
+                LeafVerdict::Cc { .. } | LeafVerdict::Rest { .. } => Kind::Cc,
                 LeafVerdict::Icc { .. } => Kind::Icc,
                 LeafVerdict::Undecided => Kind::Undecided,
             };

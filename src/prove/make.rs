@@ -64,16 +64,21 @@ const SURVEY_REST_NODES: usize = 40;
 /// made the n = 3 map 39% slower.
 const SURVEY_REST_PAD: f64 = 1e-3;
 
+/// The time-to-rest search of surveys (maps, basin maps): a cap of [`SURVEY_REST_NODES`] nodes
+/// and the pad [`SURVEY_REST_PAD`] only.
+pub fn survey_rest_config() -> crate::certify::virtual_time::Config {
+    let mut cfg = crate::certify::virtual_time::Config::default();
+    (cfg.max_nodes, cfg.pads) = (SURVEY_REST_NODES, vec![SURVEY_REST_PAD]);
+    cfg
+}
+
 /// Tries a time-to-rest certificate (docs/time-to-rest.md §5; producer
 /// `crate::certify::virtual_time`, kernel on both backends) and adds it to `sets`: with it an
 /// all-down drop is proved CC at its first impact, with a bound on its time to rest. A failure
 /// is a note, never a verdict.
 pub fn add_rest_for(sets: &mut Certified, model: &Model, n: u64, effort: Effort) {
     use crate::certify::virtual_time::{Config, produce};
-    let mut cfg = Config::default();
-    if effort == Effort::Survey {
-        (cfg.max_nodes, cfg.pads) = (SURVEY_REST_NODES, vec![SURVEY_REST_PAD]);
-    }
+    let cfg = if effort == Effort::Survey { survey_rest_config() } else { Config::default() };
     let backends = [chatter_kernel::verify::MALACHITE, chatter_kernel::verify::NUM];
     match produce(n, &model.kappa, &model.gamma, &cfg, &backends) {
         Ok(made) => {

@@ -22,6 +22,16 @@ pub(super) fn words(f: &Failure, locus: &Locus) -> String {
         Failure::Step { step, n } => format!("step {step} is not in 1..{}", n.saturating_sub(1)),
         Failure::Tree(e) => tree(e),
         Failure::Cuts => "the cuts must be strictly increasing impact counts within the prefix".into(),
+        Failure::NoRest => "a Rest leaf needs a time-to-rest certificate (field `rest`)".into(),
+        Failure::RestBody => {
+            "the time-to-rest certificate names another body (n, kappa or gamma, at a point)".into()
+        }
+        Failure::RestClaim(c) => {
+            format!("the time-to-rest certificate's claim is {c:?}; Rest leaves need CompleteChatterFromAllDown")
+        }
+        Failure::Node { node, nodes } => {
+            format!("node {node} is not a node of the time-to-rest certificate ({nodes} nodes)")
+        }
         Failure::Leaf { quantity, wrong } => leaf(*quantity, *wrong, locus),
     }
 }
@@ -72,6 +82,12 @@ fn describe(q: LeafQuantity) -> String {
             _ => format!("{other:?}"),
         },
         LeafQuantity::Separates => "after the prefix, v > 0".into(),
+        LeafQuantity::InCone { node, facet } => {
+            format!("after the prefix, the velocity is inside facet {facet} of node {node}'s cone")
+        }
+        LeafQuantity::RestTime { node } => {
+            format!("after the prefix, -b.p > 0 for node {node}'s weight b (the virtual time)")
+        }
         LeafQuantity::Cut { impacts, quantity } => {
             format!("at the cut after {impacts} impacts, {}", describe(LeafQuantity::Entry(quantity)))
         }

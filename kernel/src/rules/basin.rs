@@ -5,19 +5,26 @@
 //!   (five coordinates, lo < hi, h's lower end > 0), at most [`MAX_LEAVES`] leaves, paths of at
 //!   most [`MAX_PATH`] digits, prefixes of at most [`MAX_PREFIX`] impacts, the first contact in
 //!   0..n-1 and every later step in 1..n-1 (`basin-out-of-range`);
-//! - B2: the embedded orbit certificate (optional: without one, only `Icc` and `Undecided`
-//!   leaves without cuts, else `basin-out-of-range`) names the same n, κ and γ
+//! - B2: the embedded orbit certificate (optional: without one, only `Icc`, `Rest` and
+//!   `Undecided` leaves without cuts, else `basin-out-of-range`) names the same n, κ and γ
 //!   (`basin-out-of-range`) and is accepted by rules O1-O2 (its own rejection otherwise; its
-//!   rule O2, the slow one, is checked after B3);
+//!   rule O2, the slow one, is checked after B3); the embedded time-to-rest certificate
+//!   (optional: without one, no `Rest` leaf, and each `Rest` leaf names one of its nodes, else
+//!   `basin-out-of-range`) names the same n, κ and γ at a point and the claim
+//!   `CompleteChatterFromAllDown` (`basin-out-of-range`), and is accepted by its own rules
+//!   (G1-G5, F, R4; its own codes, after B3 and O2);
 //! - B3: the leaves' paths are the leaves of one bisection tree of the box (`not-a-partition`);
 //! - B4: on every leaf with a verdict, by exact interval arithmetic with outward rounding over
 //!   the whole leaf (mean-value form, no subdivision): every contact strictly up at the start, the
 //!   prefix forced at every impact (condition 1 of the orbit certificates, the same quantities),
-//!   and at its end either the normalised state in X (`Cc`: hc > 0, -v > 0, |y_i| <= δ) or
-//!   v > 0 (`Icc`); a quantity not shown rejects the certificate (`leaf-not-shown`).
+//!   and at its end either the normalised state in X (`Cc`: hc > 0, -v > 0, |y_i| <= δ), or
+//!   the velocity in the cone of a node r of the graph (`Rest`: hc > 0, -v > 0, -b_r·p > 0 and
+//!   every facet of K_r >= 0), or v > 0 (`Icc`); a quantity not shown rejects the certificate
+//!   (`leaf-not-shown`).
 //!
 //! The report: the shares of the box (exact, 2^-depth per leaf) proved CC, proved v > 0, and
-//! undecided, and the largest bound on the time to rest over the CC leaves.
+//! undecided (`Cc` and `Rest` leaves are CC), and the largest bound on the time to rest over the
+//! CC leaves.
 
 use crate::basin::drop::{DIMS, Over, cos_sin, seeds, state};
 use crate::basin::tree::{TreeError, partition};
@@ -29,6 +36,8 @@ use crate::orbit::map::Maps;
 use crate::orbit::map::{Quantity, Stop, step};
 use crate::reject::{Code, Counted, Detail, KindDetail, KindLocus, Locus, Rejection};
 use crate::rules::orbit::{Orbit, cover, read_orbit_values};
+use crate::rules::rest::{NodeForms, forms};
+use crate::syntax::cone::{Body, Claim, Param};
 use crate::syntax::basin::{BasinCertificate, LeafVerdict};
 use crate::syntax::numbers::{at_most, in_time, number, total};
 use crate::syntax::orbit::OrbitBody;
@@ -70,6 +79,19 @@ pub enum Failure {
     },
     /// The cuts are not strictly increasing impact counts in 1..=the prefix's length.
     Cuts,
+    /// A `Rest` leaf without a time-to-rest certificate.
+    NoRest,
+    /// The time-to-rest certificate's body is not the basin's at a point.
+    RestBody,
+    /// The time-to-rest certificate's claim does not exclude PCC.
+    RestClaim(Claim),
+    /// A `Rest` leaf names a node the graph does not have.
+    Node {
+        /// The node named.
+        node: u64,
+        /// The graph's nodes.
+        nodes: usize,
+    },
     /// The paths are not a partition.
     Tree(TreeError),
     /// A quantity of rule B4 not shown on the leaf (`wrong`: its sign is wrong at the centre).
@@ -105,11 +127,23 @@ pub enum LeafQuantity {
     },
     /// v > 0 after the prefix.
     Separates,
+    /// After the prefix, facet `facet` of node `node`'s cone K_r is >= 0 at the velocity.
+    InCone {
+        /// The node r.
+        node: usize,
+        /// The facet (the edge from its generator `facet` to the next, counter-clockwise).
+        facet: usize,
+    },
+    /// After the prefix, -b_r·p > 0 (the virtual time's denominator).
+    RestTime {
+        /// The node r.
+        node: usize,
+    },
 }
 
 impl LeafQuantity {
     fn strict(self) -> bool {
-        !matches!(self, LeafQuantity::Entry(Quantity::Inside { .. }))
+        !matches!(self, LeafQuantity::Entry(Quantity::Inside { .. }) | LeafQuantity::InCone { .. })
     }
 }
 
@@ -122,7 +156,7 @@ fn fail(code: Code, path: &str, f: Failure) -> Rejection {
 pub struct BasinReport {
     /// n.
     pub n: u64,
-    /// The share of drops proved to enter X: complete chatter.
+    /// The share of drops proved to enter X or a cone of the graph: complete chatter.
     pub cc_share: String,
     /// The share of drops proved to reach v > 0: they never come to rest (ICC).
     pub icc_share: String,
@@ -131,7 +165,8 @@ pub struct BasinReport {
     /// Leaves: CC, ICC, undecided.
     pub leaves: [usize; 3],
     /// The largest bound, over the CC leaves, on the time to rest divided by the drop's h/|v|
-    /// (prefix time + B hc/|v| at entry, B the orbit certificate's `time_to_rest_bound`).
+    /// (prefix time + B hc/|v| at entry into X, B the orbit certificate's `time_to_rest_bound`;
+    /// prefix time + Φ_r(q, p) at entry into K_r).
     pub time_to_rest_bound: Option<String>,
     /// The sub-boxes of X on which the orbit certificate's conditions were shown.
     pub orbit_boxes: usize,
@@ -147,18 +182,20 @@ pub fn check<F: Field>(cert: &BasinCertificate, limits: ParseLimits) -> Result<B
         Some(o) => cover(o, limits)?,
         None => 0,
     };
-    let ctx = Context::new(maps, orbit);
+    let rest = match &cert.rest {
+        Some(r) => Some(forms::<F>(r, limits)?.1),
+        None => None,
+    };
+    let ctx = Context::new(maps, orbit).with_rest(rest);
     let (mut shares, mut counts, mut worst) = ([F::zero(), F::zero(), F::zero()], [0usize; 3], None::<F>);
     for (i, leaf) in cert.leaves.iter().enumerate() {
         in_time(limits, "checking the leaves of a basin certificate")?;
         let kind = match &leaf.verdict {
-            LeafVerdict::Cc { .. } => 0,
+            LeafVerdict::Cc { .. } | LeafVerdict::Rest { .. } => 0,
             LeafVerdict::Icc { .. } => 1,
             LeafVerdict::Undecided => 2,
         };
-        if let LeafVerdict::Cc { first, steps, cuts } | LeafVerdict::Icc { first, steps, cuts } =
-            &leaf.verdict
-        {
+        if let Some(prefix) = Prefix::of(&leaf.verdict) {
             let (l, h) = leaf_box(&lo, &hi, &leaf.path);
             let at = |f: Failure| {
                 Rejection::new(
@@ -167,7 +204,6 @@ pub fn check<F: Field>(cert: &BasinCertificate, limits: ParseLimits) -> Result<B
                     Detail::Kind(KindDetail::Basin(f)),
                 )
             };
-            let prefix = Prefix { first: *first as usize, steps, cuts, cc: kind == 0 };
             let time = ctx.leaf(&l, &h, &prefix).map_err(at)?;
             if let Some(t) = time {
                 worst = Some(match worst {
@@ -228,6 +264,12 @@ pub fn read<F: Field>(
         }
         None => None,
     };
+    if let Some(r) = &cert.rest {
+        same_body::<F>(&r.body, (*n, &k, &g), limits)?;
+        if r.claim != Claim::CompleteChatterFromAllDown {
+            return Err(fail(Code::BasinOutOfRange, "rest.claim", Failure::RestClaim(r.claim)));
+        }
+    }
     let corner = |path: &str, v: &[String]| -> Result<[F; DIMS], Rejection> {
         if v.len() != DIMS {
             return Err(fail(Code::BasinOutOfRange, path, Failure::Coordinates(v.len())));
@@ -249,12 +291,14 @@ pub fn read<F: Field>(
     at_most("max-basin-leaves", cert.leaves.len(), MAX_LEAVES, Counted::Leaves)?;
     for (i, leaf) in cert.leaves.iter().enumerate() {
         at_most("max-basin-depth", leaf.path.len(), MAX_PATH, Counted::Depth)?;
-        if let LeafVerdict::Cc { first, steps, cuts } | LeafVerdict::Icc { first, steps, cuts } =
-            &leaf.verdict
-        {
+        if let Some(Prefix { first, steps, cuts, end }) = Prefix::of(&leaf.verdict) {
+            let (first, cuts) = (first as u64, cuts);
             at_most("max-basin-prefix", steps.len() + 1, MAX_PREFIX, Counted::Prefix)?;
-            prefix(i, *first, steps, *n)?;
-            let cc = matches!(leaf.verdict, LeafVerdict::Cc { .. });
+            prefix(i, first, steps, *n)?;
+            if let End::Rest(node) = end {
+                rest_node(i, node, cert.rest.as_ref().map(|r| r.nodes.len()))?;
+            }
+            let cc = end == End::Cc;
             if orbit.is_none() && (cc || !cuts.is_empty()) {
                 return Err(fail(Code::BasinOutOfRange, &format!("leaves[{i}]"), Failure::NoOrbit));
             }
@@ -265,6 +309,28 @@ pub fn read<F: Field>(
         }
     }
     Ok((maps, orbit, lo, hi))
+}
+
+/// B2: the time-to-rest certificate's body is the basin's, at a point.
+fn same_body<F: Field>(body: &Body, (n, k, g): (u64, &F, &F), limits: ParseLimits) -> Result<(), Rejection> {
+    let Body::RegularPolygon { n: rn, kappa: Param::Point(rk), gamma: Param::Point(rg) } = body else {
+        return Err(fail(Code::BasinOutOfRange, "rest.body", Failure::RestBody));
+    };
+    let (rk, rg): (F, F) = (number("rest.body.kappa", rk, limits)?, number("rest.body.gamma", rg, limits)?);
+    if *rn != n || rk != *k || rg != *g {
+        return Err(fail(Code::BasinOutOfRange, "rest.body", Failure::RestBody));
+    }
+    Ok(())
+}
+
+/// B1: a `Rest` leaf needs a time-to-rest certificate with the node it names.
+fn rest_node(i: usize, node: usize, nodes: Option<usize>) -> Result<(), Rejection> {
+    let nodes = nodes.ok_or_else(|| fail(Code::BasinOutOfRange, &format!("leaves[{i}]"), Failure::NoRest))?;
+    if node >= nodes {
+        let f = Failure::Node { node: node as u64, nodes };
+        return Err(fail(Code::BasinOutOfRange, &format!("leaves[{i}].node"), f));
+    }
+    Ok(())
 }
 
 /// The first contact in 0..n-1 and every later step in 1..n-1.
@@ -303,6 +369,8 @@ pub struct Context<F> {
     pub maps: Maps<Iv<F>>,
     /// The orbit certificate's checked content, if the file has one.
     pub orbit: Option<Orbit<F>>,
+    /// The forms of the time-to-rest certificate's nodes, if the file has one (checked by its rules).
+    pub rest: Option<Vec<NodeForms<F>>>,
     cs: (Iv<F>, Iv<F>),
     b: F,
 }
@@ -312,11 +380,16 @@ impl<F: Field> Context<F> {
     pub fn new(maps: Maps<Iv<F>>, orbit: Option<Orbit<F>>) -> Self {
         let b = orbit.as_ref().and_then(|o| o.period.over(&F::one().minus(&o.rho))).unwrap_or_else(F::zero);
         let cs = cos_sin(&maps);
-        Context { maps, orbit, cs, b }
+        Context { maps, orbit, rest: None, cs, b }
     }
 
-    /// Rule B4 on the leaf [lo, hi]: `Ok(Some(bound))` for a CC leaf (the time to rest over
-    /// h/|v|, upper end), `Ok(None)` for an ICC leaf (`cc` false).
+    /// The same context with the nodes of an accepted time-to-rest certificate (for `Rest` leaves).
+    pub fn with_rest(self, rest: Option<Vec<NodeForms<F>>>) -> Self {
+        Context { rest, ..self }
+    }
+
+    /// Rule B4 on the leaf [lo, hi]: `Ok(Some(bound))` for a CC leaf (`Cc` or `Rest`; the time
+    /// to rest over h/|v|, upper end), `Ok(None)` for an ICC leaf.
     pub fn leaf(&self, lo: &[F; DIMS], hi: &[F; DIMS], prefix: &Prefix<'_>) -> Result<Option<F>, Failure> {
         examine(self, lo, hi, prefix)
     }
@@ -355,7 +428,7 @@ fn examine<F: Field>(
     let ends: Vec<usize> = plan.cuts.iter().map(|&c| c as usize).chain(std::iter::once(list.len())).collect();
     let (q, p, t) = follow(maps, &list, 0, ends[0], q, p)?;
     if plan.cuts.is_empty() {
-        return finish(ctx, &q, &p, &t, plan.cc)?.map(|total| per_h(&total)).transpose();
+        return finish(ctx, &q, &p, &t, plan.end)?.map(|total| per_h(&total)).transpose();
     }
     let orbit = ctx.orbit.as_ref().ok_or(Failure::NoOrbit)?;
     let (mut ybox, ratio) = normalise(orbit, &q, &p, Cut::At(ends[0]))?;
@@ -364,7 +437,7 @@ fn examine<F: Field>(
         let (q0, p0) = section_seeds(orbit, &ybox);
         let (q, p, t) = follow(maps, &list, ends[w], ends[w + 1], q0, p0)?;
         if w + 1 == plan.cuts.len() {
-            return Ok(finish(ctx, &q, &p, &t, plan.cc)?
+            return Ok(finish(ctx, &q, &p, &t, plan.end)?
                 .map(|total| round_up(&acc.plus(&scale.times(&total.b.v.hi)))));
         }
         let (next, ratio) = normalise(orbit, &q, &p, Cut::At(ends[w + 1]))?;
@@ -377,17 +450,41 @@ fn examine<F: Field>(
 }
 
 /// A leaf's prefix as given: the impacts, the cuts (impact counts after which the state is
-/// re-enclosed in X's parameters), and whether it ends in X.
+/// re-enclosed in X's parameters), and where it ends.
 #[derive(Clone, Copy, Debug)]
 pub struct Prefix<'a> {
     /// The contact that lands first.
     pub first: usize,
     /// The later steps.
     pub steps: &'a [u64],
-    /// The cuts, strictly increasing, in 1..=1 + steps.len().
+    /// The cuts, strictly increasing, in 1..=1 + steps.len() (none for `Rest`).
     pub cuts: &'a [u64],
-    /// `Cc` (true) or `Icc`.
-    pub cc: bool,
+    /// Where the prefix ends.
+    pub end: End,
+}
+
+/// Where a leaf's prefix ends.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum End {
+    /// In the orbit certificate's X (`Cc`).
+    Cc,
+    /// With v > 0 (`Icc`).
+    Icc,
+    /// In the cone K_r of node r of the time-to-rest certificate (`Rest`).
+    Rest(usize),
+}
+
+impl<'a> Prefix<'a> {
+    /// The prefix of a leaf with a verdict (`None` for `Undecided`).
+    pub fn of(v: &'a LeafVerdict) -> Option<Self> {
+        let (first, steps, cuts, end): (u64, &[u64], &[u64], End) = match v {
+            LeafVerdict::Cc { first, steps, cuts } => (*first, steps, cuts, End::Cc),
+            LeafVerdict::Icc { first, steps, cuts } => (*first, steps, cuts, End::Icc),
+            LeafVerdict::Rest { first, steps, node } => (*first, steps, &[], End::Rest(*node as usize)),
+            LeafVerdict::Undecided => return None,
+        };
+        Some(Prefix { first: first as usize, steps, cuts, end })
+    }
 }
 
 /// Where a state is normalised: at a cut (after this many impacts) or at the end of the prefix.
@@ -493,17 +590,21 @@ fn section_seeds<F: Field>(orbit: &Orbit<F>, y: &[Iv<F>; 3]) -> ([Centred<F, 3>;
 }
 
 /// The end of the prefix: `Icc`: v > 0 (`None`); `Cc`: the state in X, and the time of the
-/// segment plus B α/β (the orbit's bound on the rest, in the segment's units).
+/// segment plus B α/β (the orbit's bound on the rest, in the segment's units); `Rest`: [`enters`].
 fn finish<F: Field, const D: usize>(
     ctx: &Context<F>,
     q: &[Centred<F, D>; 3],
     p: &[Centred<F, D>; 3],
     time: &Centred<F, D>,
-    cc: bool,
+    end: End,
 ) -> Result<Option<Centred<F, D>>, Failure> {
-    if !cc {
-        shown(LeafQuantity::Separates, &p[2])?;
-        return Ok(None);
+    match end {
+        End::Icc => {
+            shown(LeafQuantity::Separates, &p[2])?;
+            return Ok(None);
+        }
+        End::Rest(node) => return enters(ctx, node, q, p).map(|phi| Some(time.plus(&phi))),
+        End::Cc => {}
     }
     let orbit = ctx.orbit.as_ref().ok_or(Failure::NoOrbit)?;
     let (y, ratio) = normalised(orbit, q, p, Cut::End)?;
@@ -513,4 +614,25 @@ fn finish<F: Field, const D: usize>(
         shown(LeafQuantity::Entry(Quantity::Inside { coordinate: i, upper: false }), &yi.plus(&delta))?;
     }
     Ok(Some(time.plus(&ratio.scaled(&ctx.b))))
+}
+
+/// `Rest` (docs/basin-certificates.md §4; docs/time-to-rest.md Theorem 5.1 from node r): hc > 0,
+/// -v > 0, every facet of K_r >= 0 and -b_r·p > 0 at the velocity p; returns the virtual time
+/// Φ_r(q, p) = (a_r·q)/(-b_r·p), which bounds the time left to rest.
+fn enters<F: Field, const D: usize>(
+    ctx: &Context<F>,
+    node: usize,
+    q: &[Centred<F, D>; 3],
+    p: &[Centred<F, D>; 3],
+) -> Result<Centred<F, D>, Failure> {
+    let forms = ctx.rest.as_ref().and_then(|r| r.get(node)).ok_or(Failure::NoRest)?;
+    let dot = |f: &[F; 3], x: &[Centred<F, D>; 3]| x[0].scaled(&f[0]).plus(&x[1].scaled(&f[1])).plus(&x[2].scaled(&f[2]));
+    shown(LeafQuantity::Entry(Quantity::PositionScale), &q[2])?;
+    shown(LeafQuantity::Entry(Quantity::VelocityScale), &Centred::constant(&F::zero()).minus(&p[2]))?;
+    for (facet, f) in forms.facets.iter().enumerate() {
+        shown(LeafQuantity::InCone { node, facet }, &dot(f, p))?;
+    }
+    let denominator = Centred::constant(&F::zero()).minus(&dot(&forms.weight, p));
+    shown(LeafQuantity::RestTime { node }, &denominator)?;
+    dot(&forms.numerator, q).over(&denominator).ok_or(unshown(LeafQuantity::RestTime { node }))
 }

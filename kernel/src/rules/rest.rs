@@ -98,6 +98,33 @@ pub fn check<F: Field>(cert: &TimeToRest, limits: ParseLimits) -> Result<Rested,
     Ok(Rested { claim: cert.claim, n, bound: cert.bound.clone(), nodes: graph.len() })
 }
 
+/// What a basin certificate's `Rest` leaves need of node r of an accepted graph: the inner
+/// normals of K_r's facets (p ∈ K_r iff v < 0 and every `facets[i]·p >= 0`), b_r and a_r.
+#[derive(Clone, Debug)]
+pub struct NodeForms<F> {
+    /// The facets' inner normals, in (u0, u1, v).
+    pub facets: Vec<Vec3<F>>,
+    /// b_r, applied to velocities.
+    pub weight: Vec3<F>,
+    /// a_r, applied to configurations (h0, h1, hc).
+    pub numerator: Vec3<F>,
+}
+
+/// Checks the certificate ([`check`]) and returns every node's forms (docs/basin-certificates.md §4).
+pub fn forms<F: Field>(cert: &TimeToRest, limits: ParseLimits) -> Result<(Rested, Vec<NodeForms<F>>), Rejection> {
+    let rested = check::<F>(cert, limits)?;
+    let body = body::<F>(cert, limits)?;
+    let lift = |v: &Vec3<F::Int>| -> Vec3<F> { std::array::from_fn(|i| F::from_int(&v[i])) };
+    let nodes = (cert.nodes.iter().enumerate())
+        .map(|(r, n)| {
+            let node = read(&body, (r, cert.version), n, limits)?;
+            let facets = node.cone.polygon.facets.iter().map(lift).collect();
+            Ok(NodeForms { facets, weight: node.weight, numerator: node.numerator })
+        })
+        .collect::<Result<_, Rejection>>()?;
+    Ok((rested, nodes))
+}
+
 /// The body at a point, with 0 < γ < 1.
 fn body<F: Field>(cert: &TimeToRest, limits: ParseLimits) -> Result<Polygon<F>, Rejection> {
     let Body::RegularPolygon { n, kappa: Param::Point(k), gamma: Param::Point(g) } = &cert.body else {

@@ -1,10 +1,12 @@
 //! The schema of basin certificates (docs/basin-certificates.md, docs/certificate-format.md
 //! §15): a regular polygon, a box of drops in the paper's coordinates, an embedded orbit
-//! certificate, and a partition of the box into leaves, each with the impact prefix that every
-//! drop in it follows and where the prefix ends (the orbit certificate's X, or v > 0), or
+//! certificate and an embedded time-to-rest certificate (both optional), and a partition of the
+//! box into leaves, each with the impact prefix that every drop in it follows and where the prefix
+//! ends (the orbit certificate's X, a cone of the time-to-rest certificate's graph, or v > 0), or
 //! undecided. Format `"chatter-basin-certificate"`, version 1. The numbers stay text.
 
 use super::orbit::{OrbitBody, OrbitCertificate};
+use super::rest::TimeToRest;
 use super::{Kind, Schema};
 use serde::Deserialize;
 
@@ -30,6 +32,10 @@ pub struct BasinCertificate {
     /// when every leaf is `Icc` or `Undecided` without cuts.
     #[serde(default)]
     pub orbit: Option<OrbitCertificate>,
+    /// The time-to-rest certificate whose graph the `Rest` leaves enter (checked by its own rules
+    /// and R4); optional, needed by `Rest` leaves.
+    #[serde(default)]
+    pub rest: Option<TimeToRest>,
     /// The leaves of a bisection of the box (docs/basin-certificates.md §3).
     pub leaves: Vec<Leaf>,
     /// Informational only, never trusted.
@@ -79,6 +85,16 @@ pub enum LeafVerdict {
         steps: Vec<u64>,
         /// Impact counts after which the state is re-enclosed in X's parameters (increasing).
         cuts: Vec<u64>,
+    },
+    /// The same impacts (no cuts), after which the velocity lies in the cone K_r of node `node`
+    /// of the time-to-rest certificate's graph: complete chatter within its virtual time.
+    Rest {
+        /// The contact (0..n-1) that lands first.
+        first: u64,
+        /// The later steps j in 1..n-1.
+        steps: Vec<u64>,
+        /// The node r of the time-to-rest certificate.
+        node: u64,
     },
     /// No verdict claimed.
     Undecided,
