@@ -1,11 +1,16 @@
 //! Basin certificates' geometry and dynamics, written from docs/basin-certificates.md: the
 //! partition of rule B3 checked top-down (the kernel rebuilds its tree path by path), and single
-//! drops followed exactly through a leaf's prefix (rule B4 at sample points; the kernel encloses
-//! whole leaves by interval arithmetic with cuts).
+//! drops followed exactly through a leaf's prefix into the orbit certificate's X, to v > 0, or
+//! into a node of the time-to-rest certificate's graph (rule B4 at sample points; the kernel
+//! encloses whole leaves by interval arithmetic with cuts).
 
 use crate::arith::{Num, Rat};
+use crate::cone3::dot;
 use crate::orbit::map::Orbit;
+use crate::plane::{inside, project};
 use crate::regular::model::{Polygon, V3};
+use crate::regular::rules::Polygon2;
+use crate::regular::virtual_time::Node;
 use crate::verdict::{Checked, Fail};
 use num_bigint::BigInt;
 use num_traits::{One, Signed};
@@ -107,18 +112,24 @@ fn not_shown(why: String) -> Fail {
 }
 
 /// What a drop does at the end of its prefix.
+#[derive(Clone, Copy)]
 pub enum End<'a> {
     /// Enters the orbit certificate's X.
     Cc(&'a Orbit),
     /// Has v > 0.
     Icc,
+    /// Enters node r of a time-to-rest certificate's virtual-time graph: hc > 0, v < 0,
+    /// -b_r·p > 0 and p in K_r (the node, and its cone on the plane v = -1).
+    Rest(&'a Node, &'a Polygon2),
 }
 
 /// Follows one drop (q, p) exactly through the impacts `list` (the first absolute, the later ones
 /// relative to the contact that landed last, §1): every contact up at the start, each impact
 /// forced (the target approaches and is up, every other contact still up when it lands), then the
 /// end. For `Cc`, the time from the drop to rest bounded by the orbit certificate's theorem,
-/// divided by h: (Σ t_s + B α/β)/h with B = T̄/(1 − ρ) (docs/basin-certificates.md §4).
+/// divided by h: (Σ t_s + B α/β)/h with B = T̄/(1 − ρ) (docs/basin-certificates.md §4); for
+/// `Rest`, by Theorem 5.1 from node r on (docs/time-to-rest.md §5):
+/// (Σ t_s + Φ_r(q, p))/h with Φ_r(q, p) = (a_r·q)/(−b_r·p).
 pub fn follow(body: &Polygon, q0: V3, p0: V3, list: &[i64], end: End) -> Checked<Option<Num>> {
     let f = &body.kappa.field;
     if let Some(k) = (0..body.n as i64).find(|&k| !body.speed(k, &q0).is_positive()) {
@@ -144,12 +155,17 @@ pub fn follow(body: &Polygon, q0: V3, p0: V3, list: &[i64], end: End) -> Checked
     let orbit = match end {
         End::Icc if p[2].is_positive() => return Ok(None),
         End::Icc => return Err(not_shown("v > 0 fails after the prefix".into())),
-        End::Cc(o) => o,
+        End::Cc(o) => Some(o),
+        End::Rest(..) => None,
     };
     let (alpha, beta) = (q[2].clone(), p[2].neg());
     if !alpha.is_positive() || !beta.is_positive() {
         return Err(not_shown("hc > 0 and v < 0 fail after the prefix".into()));
     }
+    let Some(orbit) = orbit else {
+        let End::Rest(node, cone) = end else { unreachable!("an orbit or a node") };
+        return rest_end(node, cone, &q, &p, &time, &q0[2]).map(Some);
+    };
     let x = [&q[1] / &alpha, &p[0] / &beta, &p[1] / &beta];
     for row in &orbit.a_inv {
         let y = (0..3).fold(Num::int(f, 0), |acc, k| &acc + &(&row[k] * &(&x[k] - &orbit.centre[k])));
@@ -159,6 +175,20 @@ pub fn follow(body: &Polygon, q0: V3, p0: V3, list: &[i64], end: End) -> Checked
     }
     let b = &orbit.period / &(&Num::int(f, 1) - &orbit.rho);
     Ok(Some(&(&time + &(&b * &(&alpha / &beta))) / &q0[2]))
+}
+
+/// The end of a `Rest` leaf's prefix (v < 0 and hc > 0 shown by the caller): −b_r·p > 0 and p
+/// in K_r (on the plane v = −1, every edge's value ≥ 0), then (Σ t_s + Φ_r(q, p))/h.
+fn rest_end(node: &Node, cone: &Polygon2, q: &V3, p: &V3, time: &Num, h: &Num) -> Checked<Num> {
+    let speed = dot(&node.weight, p).neg();
+    if !speed.is_positive() {
+        return Err(not_shown("-b_r·p > 0 fails after the prefix".into()));
+    }
+    if !project(p).is_some_and(|x| inside(&cone.sides, &x)) {
+        return Err(not_shown("the velocity after the prefix is not in the node's cone K_r".into()));
+    }
+    let phi = &dot(&node.numerator, q) / &speed;
+    Ok(&(time + &phi) / h)
 }
 
 /// The share 2^-d of a leaf at depth d.

@@ -182,10 +182,24 @@ pub fn compare(k: &KernelView, o: &Judgement) -> Result<Agreement, Finding> {
         (Outcome::Reject { codes, why }, false) => {
             let content = ["pattern-not-forced", "set-not-invariant", "no-contraction"];
             let both_content = content.contains(&code) && codes.iter().all(|c| content.contains(c));
-            // A basin certificate's orbit conditions (O2) come before B3 and B4: where the
-            // kernel finds O2 false or not shown and the oracle's sample points pass it, the
-            // oracle goes on to the later rules and may meet one of them first.
-            let later = ["not-a-partition", "leaf-not-shown"];
+            // A basin certificate's orbit conditions (O2) come before B3 and B4 (and the
+            // embedded time-to-rest certificate's rules): where the kernel finds O2 false or not
+            // shown and the oracle's sample points pass it, the oracle goes on to the later rules
+            // and may meet one of them first.
+            let later = [
+                "not-a-partition",
+                "leaf-not-shown",
+                "generator-not-below",
+                "degenerate-cone",
+                "virtual-time-not-positive",
+                "virtual-time-increases",
+                "missing-successor",
+                "image-not-below",
+                "image-outside",
+                "initial-outside",
+                "bound-too-small",
+                "pcc-not-excluded",
+            ];
             let basin_later = o.kind == Kind::Basin
                 && content.contains(&code)
                 && codes.iter().all(|c| content.contains(c) || later.contains(c));

@@ -1,16 +1,20 @@
 //! Basin certificates (docs/certificate-format.md §15, docs/basin-certificates.md): the schema,
-//! rules B1 and B2's comparison of bodies and rule O1 of the embedded orbit certificate, decided
-//! exactly (two-sided); rule B3, the partition, decided exactly (two-sided); the orbit
-//! certificate's conditions at its sample points and rule B4 at three exact drops of every leaf
-//! with a verdict (one-sided: a failing drop proves the certificate false, passing drops prove
-//! nothing). In the kernel's order of rules, so that the first failing rule gives its code.
+//! rules B1 and B2's comparisons of bodies (and of the time-to-rest certificate's claim) and rule
+//! O1 of the embedded orbit certificate, decided exactly (two-sided); rule B3, the partition,
+//! decided exactly (two-sided); every rule of the embedded time-to-rest certificate (§16, its own
+//! codes, two-sided); the orbit certificate's conditions at its sample points and rule B4 at three
+//! exact drops of every leaf with a verdict (one-sided: a failing drop proves the certificate
+//! false, passing drops prove nothing). In the kernel's order of rules, so that the first failing
+//! rule gives its code.
 
 use super::limits::Limits;
 use super::numbers::element;
 use super::orbit::{self, OrbitFile};
+use super::rest::{self, Graph, RestFile};
 use crate::arith::rational::rational_text;
 use crate::arith::{Field, Num, Rat};
 use crate::basin::{DIMS, End, drop_state, follow, leaf_box, leaf_points, partition, share};
+use crate::claim::Claim;
 use crate::orbit::map::Orbit;
 use crate::read::Value;
 use crate::read::header::{Reader, header};
@@ -25,10 +29,20 @@ const MAX_LEAVES: usize = 1 << 20;
 const MAX_PATH: usize = 64;
 const MAX_PREFIX: usize = 4096;
 
-/// A leaf's verdict as read: `Cc` or `Icc` with (first, steps, cuts), or `Undecided`.
+/// Where a leaf's prefix ends: in the orbit certificate's X (`Cc`), at v > 0 (`Icc`), or in
+/// node r of the time-to-rest certificate's graph (`Rest`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Ending {
+    Cc,
+    Icc,
+    Rest(u64),
+}
+
+/// A leaf's verdict as read: `Cc` or `Icc` with (first, steps, cuts), `Rest` with (first, steps,
+/// node) (no cuts), or `Undecided`.
 #[derive(Clone, Debug)]
 enum LeafText {
-    Prefix { cc: bool, first: u64, steps: Vec<u64>, cuts: Vec<u64> },
+    Prefix { ending: Ending, first: u64, steps: Vec<u64>, cuts: Vec<u64> },
     Undecided,
 }
 
@@ -40,6 +54,7 @@ pub struct BasinFile<'a> {
     lo: Vec<&'a str>,
     hi: Vec<&'a str>,
     orbit: Option<(&'a Value, OrbitFile<'a>)>,
+    rest: Option<(&'a Value, RestFile<'a>)>,
     leaves: Vec<(&'a str, LeafText)>,
 }
 
@@ -51,23 +66,33 @@ fn integers(v: &Value) -> Checked<Vec<u64>> {
     list(v)?.iter().map(integer).collect()
 }
 
-/// A leaf's verdict: `Cc(first, steps, cuts)`, `Icc(...)` or `Undecided`.
+/// A leaf's verdict: `Cc(first, steps, cuts)`, `Icc(...)`, `Rest(first, steps, node)` or
+/// `Undecided`.
 fn verdict(v: &Value) -> Checked<LeafText> {
     match variant(v)? {
         ("Undecided", None) => Ok(LeafText::Undecided),
-        (name @ ("Cc" | "Icc"), Some(fields)) => {
-            let (mut first, mut steps, mut cuts) = (0, vec![], vec![]);
-            walk(fields, &[("first", true), ("steps", true), ("cuts", true)], |f, v| {
+        (name @ ("Cc" | "Icc" | "Rest"), Some(fields)) => {
+            let (mut first, mut steps, mut cuts, mut node) = (0, vec![], vec![], 0);
+            let last = if name == "Rest" { "node" } else { "cuts" };
+            walk(fields, &[("first", true), ("steps", true), (last, true)], |f, v| {
                 match f {
                     "first" => first = integer(v)?,
                     "steps" => steps = integers(v)?,
+                    "node" => node = integer(v)?,
                     _ => cuts = integers(v)?,
                 }
                 Ok(())
             })?;
-            Ok(LeafText::Prefix { cc: name == "Cc", first, steps, cuts })
+            let ending = match name {
+                "Cc" => Ending::Cc,
+                "Icc" => Ending::Icc,
+                _ => Ending::Rest(node),
+            };
+            Ok(LeafText::Prefix { ending, first, steps, cuts })
         }
-        ("Undecided" | "Cc" | "Icc", _) => Err(Fail::new("syntax", "a leaf's verdict has the wrong form")),
+        ("Undecided" | "Cc" | "Icc" | "Rest", _) => {
+            Err(Fail::new("syntax", "a leaf's verdict has the wrong form"))
+        }
         (name, _) => Err(Fail::new("unknown-variant", format!("unknown verdict `{name}`"))),
     }
 }
@@ -87,13 +112,23 @@ fn leaf(v: &Value) -> Checked<(&str, LeafText)> {
 
 /// The schema of §15.
 pub fn read(v: &Value) -> Checked<BasinFile<'_>> {
-    let mut f = BasinFile { n: 0, kappa: "", gamma: "", lo: vec![], hi: vec![], orbit: None, leaves: vec![] };
+    let mut f = BasinFile {
+        n: 0,
+        kappa: "",
+        gamma: "",
+        lo: vec![],
+        hi: vec![],
+        orbit: None,
+        rest: None,
+        leaves: vec![],
+    };
     let fields = [
         ("format", true),
         ("version", true),
         ("body", true),
         ("drops", true),
         ("orbit", false),
+        ("rest", false),
         ("leaves", true),
         ("producer", false),
     ];
@@ -122,6 +157,22 @@ pub fn read(v: &Value) -> Checked<BasinFile<'_>> {
                     f.orbit = Some((o, orbit::read(o)?));
                 }
             }
+            "rest" => {
+                if let Some(r) = optional(value)? {
+                    // A RON struct name is part of the embedded certificate's schema (§16's
+                    // `TimeToRest`); its format and version are its own rules, after B3.
+                    if let Value::Named { name, .. } = r
+                        && !name.is_empty()
+                        && name != "TimeToRest"
+                    {
+                        return Err(Fail::new(
+                            "syntax",
+                            format!("expected struct `TimeToRest`, found `{name}`"),
+                        ));
+                    }
+                    f.rest = Some((r, rest::read(r)?));
+                }
+            }
             _ => f.leaves = list(value)?.iter().map(leaf).collect::<Checked<_>>()?,
         }
         Ok(())
@@ -137,12 +188,14 @@ fn too_large(why: &str) -> Fail {
     Fail::new("too-large", why)
 }
 
-/// The exact content of a basin certificate that passed rules B1 and O1.
+/// The exact content of a basin certificate that passed rules B1 and O1 (and the limits it was
+/// read with, for the embedded time-to-rest certificate's rules).
 pub struct Basin {
     body: Polygon,
     orbit: Option<Orbit>,
     lo: [Rat; DIMS],
     hi: [Rat; DIMS],
+    limits: Limits,
 }
 
 /// The body's numbers (B1, as rule O1 reads a body): κ > 0, 0 ≤ γ ≤ 1, 3 ≤ n ≤ 64.
@@ -179,6 +232,27 @@ fn embedded(f: &BasinFile, kappa: &Num, gamma: &Num, limits: &Limits) -> Checked
     orbit::rules(o, limits).map(Some)
 }
 
+/// Rule B2's comparisons for the time-to-rest certificate (right after the orbit certificate's):
+/// a body at a point with the same n, κ, γ (exact rationals), and the claim
+/// `CompleteChatterFromAllDown` (`basin-out-of-range` otherwise). Its own rules come after B3.
+fn same_rest(f: &BasinFile, kappa: &Num, gamma: &Num, limits: &Limits) -> Checked<()> {
+    let Some((_, r)) = &f.rest else { return Ok(()) };
+    let (rn, rk, rg) = r.body();
+    let ([rk], [rg]) = (rk, rg) else {
+        return Err(out_of_range("the time-to-rest certificate's body is not at a point"));
+    };
+    let q = Field::rationals();
+    let rk = element("rest.body.kappa", rk, &q, limits)?;
+    let rg = element("rest.body.gamma", rg, &q, limits)?;
+    if rn != f.n || rk != *kappa || rg != *gamma {
+        return Err(out_of_range("the time-to-rest certificate names another body"));
+    }
+    if r.claim() != Claim::CompleteChatterFromAllDown {
+        return Err(out_of_range("the time-to-rest certificate's claim is not CompleteChatterFromAllDown"));
+    }
+    Ok(())
+}
+
 /// A corner of the box: five canonical numbers.
 fn corner(path: &str, v: &[&str], limits: &Limits) -> Checked<[Rat; DIMS]> {
     if v.len() != DIMS {
@@ -192,17 +266,27 @@ fn corner(path: &str, v: &[&str], limits: &Limits) -> Checked<[Rat; DIMS]> {
     Ok(out)
 }
 
-/// Rule B1's fields of a leaf with a prefix: the limits, the contacts, the orbit it needs, the cuts.
-fn prefix_fields(t: &LeafText, n: u64, has_orbit: bool) -> Checked<()> {
-    let LeafText::Prefix { cc, first, steps, cuts } = t else { return Ok(()) };
+/// Rule B1's fields of a leaf with a prefix: the limits, the contacts, the orbit it needs, the
+/// time-to-rest certificate and node it needs (`rest_nodes`: the embedded certificate's number of
+/// nodes), the cuts.
+fn prefix_fields(t: &LeafText, n: u64, has_orbit: bool, rest_nodes: Option<usize>) -> Checked<()> {
+    let LeafText::Prefix { ending, first, steps, cuts } = t else { return Ok(()) };
     if steps.len() + 1 > MAX_PREFIX {
         return Err(too_large("a prefix longer than max-basin-prefix"));
     }
     if *first >= n || steps.iter().any(|&j| j == 0 || j >= n) {
         return Err(out_of_range("a contact or step out of range"));
     }
-    if !has_orbit && (*cc || !cuts.is_empty()) {
+    if !has_orbit && (*ending == Ending::Cc || !cuts.is_empty()) {
         return Err(out_of_range("a Cc leaf or cuts without an orbit certificate"));
+    }
+    if let Ending::Rest(r) = ending {
+        let Some(count) = rest_nodes else {
+            return Err(out_of_range("a Rest leaf without a time-to-rest certificate"));
+        };
+        if usize::try_from(*r).map_or(true, |r| r >= count) {
+            return Err(out_of_range(format!("a Rest leaf names node {r} of {count}")));
+        }
     }
     let len = steps.len() as u64 + 1;
     if cuts.windows(2).any(|w| w[0] >= w[1]) || cuts.iter().any(|&c| c == 0 || c > len) {
@@ -219,6 +303,7 @@ pub fn rules(f: &BasinFile, limits: &Limits) -> Checked<Basin> {
     }
     let (kappa, gamma) = body(f, limits)?;
     let orbit = embedded(f, &kappa, &gamma, limits)?;
+    same_rest(f, &kappa, &gamma, limits)?;
     let (lo, hi) = (corner("drops.lo", &f.lo, limits)?, corner("drops.hi", &f.hi, limits)?);
     if (0..DIMS).any(|i| lo[i] >= hi[i]) || lo[4] <= Rat::zero() {
         return Err(out_of_range("the box is flat, or h <= 0 in it"));
@@ -230,7 +315,7 @@ pub fn rules(f: &BasinFile, limits: &Limits) -> Checked<Basin> {
         if path.len() > MAX_PATH {
             return Err(too_large("a path longer than max-basin-depth"));
         }
-        prefix_fields(t, f.n, orbit.is_some())?;
+        prefix_fields(t, f.n, orbit.is_some(), f.rest.as_ref().map(|(_, r)| r.node_count()))?;
     }
     let body = match &orbit {
         Some(o) => o.body.clone(),
@@ -240,7 +325,7 @@ pub fn rules(f: &BasinFile, limits: &Limits) -> Checked<Basin> {
             Polygon::new(f.n as usize, to(&kappa), to(&gamma))
         }
     };
-    Ok(Basin { body, orbit, lo, hi })
+    Ok(Basin { body, orbit, lo, hi, limits: *limits })
 }
 
 /// What the oracle found for an accepted basin certificate: the shares (CC, ICC, undecided) as
@@ -256,31 +341,54 @@ pub struct Found {
     pub time: Option<Num>,
 }
 
-/// Rule B3, then O2 at the orbit certificate's sample points, then B4 at three drops of every
-/// leaf (the kernel's order: B3 before the slow rule O2).
+/// Rule B3, then O2 at the orbit certificate's sample points, then every rule of the embedded
+/// time-to-rest certificate, then B4 at three drops of every leaf (the kernel's order: B3 before
+/// the slow rule O2).
 pub fn check(f: &BasinFile, b: &Basin) -> Checked<Found> {
     partition(&paths(f))?;
     if let Some(o) = &b.orbit {
         orbit::check(o)?;
     }
-    leaves(f, b)
+    let graph = rest_rules(f, &b.limits)?;
+    leaves(f, b, graph.as_ref())
+}
+
+/// The embedded time-to-rest certificate's own rules (§16: its header, then its file's rules,
+/// G1-G5, F and R4, with its own codes): its checked graph.
+fn rest_rules(f: &BasinFile, limits: &Limits) -> Checked<Option<Graph>> {
+    let Some((value, r)) = &f.rest else { return Ok(None) };
+    // The struct's name was read with the schema (B1); the header's format and version here.
+    let owned;
+    let unnamed = match value {
+        Value::Named { fields: Some(fields), .. } => {
+            owned = Value::Object(fields.clone());
+            &owned
+        }
+        other => *other,
+    };
+    if header(unnamed)? != Reader::Rest {
+        return Err(Fail::new("wrong-format", "the embedded certificate is not a time-to-rest certificate"));
+    }
+    rest::verified(r, limits).map(|(g, _)| Some(g))
 }
 
 fn paths<'a>(f: &'a BasinFile) -> Vec<&'a [u8]> {
     f.leaves.iter().map(|(p, _)| p.as_bytes()).collect()
 }
 
-/// Rule B4 at the sample drops of every leaf with a verdict, and the shares.
-fn leaves(f: &BasinFile, b: &Basin) -> Checked<Found> {
+/// Rule B4 at the sample drops of every leaf with a verdict, and the shares (a `Rest` leaf is a
+/// CC leaf). `graph`: the embedded time-to-rest certificate's (`None` only where its rules failed,
+/// in [`every_failure`]: its `Rest` leaves are then not followed).
+fn leaves(f: &BasinFile, b: &Basin, graph: Option<&Graph>) -> Checked<Found> {
     let (mut shares, mut leaves, mut time) = ([Rat::zero(), Rat::zero(), Rat::zero()], [0; 3], None::<Num>);
     for (i, (path, t)) in f.leaves.iter().enumerate() {
         let kind = match t {
-            LeafText::Prefix { cc: true, .. } => 0,
-            LeafText::Prefix { .. } => 1,
+            LeafText::Prefix { ending: Ending::Icc, .. } => 1,
+            LeafText::Prefix { .. } => 0,
             LeafText::Undecided => 2,
         };
-        if let LeafText::Prefix { cc, first, steps, .. } = t {
-            let worst = sample_leaf(b, path.as_bytes(), *cc, *first, steps)
+        if let LeafText::Prefix { ending, first, steps, .. } = t {
+            let worst = sample_leaf(b, graph, path.as_bytes(), *ending, *first, steps)
                 .map_err(|e| Fail { codes: e.codes, why: format!("leaf {i} (path {path:?}): {}", e.why) })?;
             time = match (time, worst) {
                 (Some(t), Some(w)) if w > t => Some(w),
@@ -295,19 +403,28 @@ fn leaves(f: &BasinFile, b: &Basin) -> Checked<Found> {
 }
 
 /// Rule B4 at the leaf's sample drops: the largest time to rest over h (CC leaves).
-fn sample_leaf(b: &Basin, path: &[u8], cc: bool, first: u64, steps: &[u64]) -> Checked<Option<Num>> {
+fn sample_leaf(
+    b: &Basin,
+    graph: Option<&Graph>,
+    path: &[u8],
+    ending: Ending,
+    first: u64,
+    steps: &[u64],
+) -> Checked<Option<Num>> {
     if !path.iter().all(u8::is_ascii_digit) {
         return Ok(None); // not a leaf of the box (rule B3)
     }
+    let end = match (ending, &b.orbit, graph) {
+        (Ending::Cc, Some(o), _) => End::Cc(o),
+        (Ending::Rest(r), _, Some(g)) => End::Rest(&g.nodes[r as usize], &g.polygons[r as usize]),
+        (Ending::Rest(_), _, None) => return Ok(None), // its graph failed its own rules
+        _ => End::Icc,
+    };
     let (lo, hi) = leaf_box(&b.lo, &b.hi, path);
     let list: Vec<i64> = std::iter::once(first as i64).chain(steps.iter().map(|&j| j as i64)).collect();
     let mut worst: Option<Num> = None;
     for m in leaf_points(&lo, &hi) {
         let Some((q, p)) = drop_state(&b.body, &m, &lo, &hi) else { continue };
-        let end = match (&b.orbit, cc) {
-            (Some(o), true) => End::Cc(o),
-            _ => End::Icc,
-        };
         if let Some(t) = follow(&b.body, q, p, &list, end)? {
             worst = Some(match worst {
                 Some(w) if w >= t => w,
@@ -319,8 +436,10 @@ fn sample_leaf(b: &Basin, path: &[u8], cc: bool, first: u64, steps: &[u64]) -> C
 }
 
 /// The codes of every failing rule, each evaluated on its own where it can be (for the test that a
-/// corpus file breaks one rule only): B1 with O1 (the first failure), B3 (it needs only the
-/// paths), and where B1 holds, O2 at the orbit's sample points and B4 at the leaves' drops.
+/// corpus file breaks one rule only): B1 with O1 and B2's comparisons (the first failure), B3 (it
+/// needs only the paths), and where B1 holds, O2 at the orbit's sample points, the embedded
+/// time-to-rest certificate's rules, and B4 at the leaves' drops (`Rest` leaves whenever that
+/// certificate's nodes pass their numbers, G1 and G2, which give the cones and Φ).
 pub fn every_failure(v: &Value) -> Checked<Vec<&'static str>> {
     let f = read(v)?;
     let mut out = vec![];
@@ -334,7 +453,13 @@ pub fn every_failure(v: &Value) -> Checked<Vec<&'static str>> {
     collect(partition(&paths(&f)));
     if let Ok(b) = &rules {
         collect(b.orbit.as_ref().map_or(Ok(()), orbit::check));
-        collect(leaves(&f, b).map(|_| ()));
+        let graph = rest_rules(&f, &b.limits);
+        collect(graph.as_ref().map(|_| ()).map_err(Clone::clone));
+        let graph = match graph {
+            Ok(g) => g,
+            Err(_) => f.rest.as_ref().and_then(|(_, r)| rest::prepare(r, &b.limits).ok()),
+        };
+        collect(leaves(&f, b, graph.as_ref()).map(|_| ()));
     }
     Ok(out)
 }

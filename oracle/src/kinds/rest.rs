@@ -38,6 +38,23 @@ pub struct RestFile<'a> {
     nodes: Vec<NodeText<'a>>,
 }
 
+impl RestFile<'_> {
+    /// The body as written: n, and κ and γ (one text each for a point, two for an interval).
+    pub fn body(&self) -> (u64, &[&str], &[&str]) {
+        (self.n, &self.kappa, &self.gamma)
+    }
+
+    /// The claim as written.
+    pub fn claim(&self) -> Claim {
+        self.claim
+    }
+
+    /// The number of nodes as written.
+    pub fn node_count(&self) -> usize {
+        self.nodes.len()
+    }
+}
+
 /// A pair (j, s) of `next`: after step j, node s.
 fn successor(v: &Value) -> Checked<(u64, u64)> {
     match tuple(v)? {
@@ -225,13 +242,20 @@ pub fn bound(f: &RestFile, limits: &Limits) -> Checked<Rat> {
     rational("bound", f.bound, limits)
 }
 
-/// Every rule of a time-to-rest certificate after its schema, in §16's order; returns the report
-/// and B (canonical text).
-pub fn check(f: &RestFile, limits: &Limits) -> Checked<(Report, String)> {
+/// Every rule of a time-to-rest certificate after its schema, in §16's order; returns the checked
+/// graph and B.
+pub fn verified(f: &RestFile, limits: &Limits) -> Checked<(Graph, Rat)> {
     let g = prepare(f, limits)?;
     graph_rules(&g.body, &g.nodes, &g.polygons)?;
     let b = bound(f, limits)?;
     bound_rules(&g.body, f.claim, &Num::rational(&g.body.kappa.field, b.clone()), &g.nodes[0])?;
+    Ok((g, b))
+}
+
+/// Every rule of a time-to-rest certificate after its schema, in §16's order; returns the report
+/// and B (canonical text).
+pub fn check(f: &RestFile, limits: &Limits) -> Checked<(Report, String)> {
+    let (g, b) = verified(f, limits)?;
     let report =
         Report { claim: f.claim.name().into(), n: f.n, rest_nodes: Some(g.nodes.len()), ..Report::default() };
     Ok((report, rational_text(&b)))

@@ -5,6 +5,7 @@
 mod common;
 
 mod basin;
+mod basin_rest;
 mod boundary;
 mod corpus;
 mod family;
