@@ -225,7 +225,10 @@ pub fn basin_to_json(c: &BasinCertificate) -> String {
                     )
                 }
                 LeafVerdict::Rest { first, steps, node } => {
-                    format!("{{\"Rest\": {{\"first\": {first}, \"steps\": [{}], \"node\": {node}}}}}", ints(steps))
+                    format!(
+                        "{{\"Rest\": {{\"first\": {first}, \"steps\": [{}], \"node\": {node}}}}}",
+                        ints(steps)
+                    )
                 }
                 LeafVerdict::Undecided => "\"Undecided\"".into(),
             };

@@ -103,7 +103,11 @@ pub fn produce(
     let (maps, orbit, lo, hi): (_, Option<Orbit<Rational>>, _, _) =
         read(&cert, ParseLimits::default()).map_err(|r| format!("the kernel refuses the request: {r}"))?;
     let forms = match &cert.rest {
-        Some(r) => Some(forms::<Rational>(r, ParseLimits::default()).map_err(|e| format!("the kernel refuses the time-to-rest certificate: {e}"))?.1),
+        Some(r) => Some(
+            forms::<Rational>(r, ParseLimits::default())
+                .map_err(|e| format!("the kernel refuses the time-to-rest certificate: {e}"))?
+                .1,
+        ),
         None => None,
     };
     let facets: Vec<Vec<[Rational; 3]>> = forms.iter().flatten().map(|n| n.facets.clone()).collect();
@@ -137,7 +141,8 @@ fn time_to_rest(
     backends: &[Backend],
 ) -> Result<crate::certify::virtual_time::Produced, String> {
     use chatter_kernel::syntax::cone::Claim;
-    let made = crate::certify::virtual_time::produce(r.n, &r.kappa, &r.gamma, cfg, backends).map_err(|e| e.to_string())?;
+    let made = crate::certify::virtual_time::produce(r.n, &r.kappa, &r.gamma, cfg, backends)
+        .map_err(|e| e.to_string())?;
     if made.cert.claim != Claim::CompleteChatterFromAllDown {
         return Err("PCC is not excluded at this point (rule R4), so the graph does not prove CC".into());
     }
@@ -239,9 +244,13 @@ impl Producer<'_> {
         if follows.iter().all(|&f| f) {
             return None;
         }
-        let edges = |k: usize| (0..follows.len()).filter(|&c| c >> k & 1 == 0 && follows[c] != follows[c | 1 << k]).count();
+        let edges = |k: usize| {
+            (0..follows.len()).filter(|&c| c >> k & 1 == 0 && follows[c] != follows[c | 1 << k]).count()
+        };
         let score = |k: usize| (edges(k), b[k][1] - b[k][0]);
-        (0..DIMS).filter(|&k| edges(k) > 0).max_by(|&i, &j| score(i).partial_cmp(&score(j)).unwrap_or(std::cmp::Ordering::Equal).then(j.cmp(&i)))
+        (0..DIMS).filter(|&k| edges(k) > 0).max_by(|&i, &j| {
+            score(i).partial_cmp(&score(j)).unwrap_or(std::cmp::Ordering::Equal).then(j.cmp(&i))
+        })
     }
 
     /// Rule B4 of the kernel (malachite) on the sub-box `path` with `plan`.
@@ -293,7 +302,8 @@ pub fn write_basin(c: &BasinCertificate) -> String {
         out.push_str(&format!("    orbit: Some({}),\n", orbit.join("\n").trim_start()));
     }
     if let Some(r) = &c.rest {
-        let rest: Vec<String> = crate::write::write_rest(r).trim_end().lines().map(|l| format!("    {l}")).collect();
+        let rest: Vec<String> =
+            crate::write::write_rest(r).trim_end().lines().map(|l| format!("    {l}")).collect();
         out.push_str(&format!("    rest: Some({}),\n", rest.join("\n").trim_start()));
     }
     out.push_str("    leaves: [\n");

@@ -143,7 +143,9 @@ pub fn run(a: BasinArgs, env: &Env) -> Outcome {
     };
     let rest = match &produced.rest {
         None => "no time-to-rest certificate tried".to_string(),
-        Some(Ok((nodes, b))) => format!("time-to-rest certificate of {nodes} nodes, B = {:.4}", crate::exact::QExt::to_f64(b)),
+        Some(Ok((nodes, b))) => {
+            format!("time-to-rest certificate of {nodes} nodes, B = {:.4}", crate::exact::QExt::to_f64(b))
+        }
         Some(Err(e)) => format!("no time-to-rest certificate ({e})"),
     };
     let head = format!(

@@ -196,7 +196,7 @@ impl FileVerdict {
                 format!("; every CC drop comes to rest within T <= {t} h/|v| (time_to_rest_bound)")
             });
             return format!(
-                "{}: OK (basin, n = {}: of the box of drops, {cc} proved CC (enter the orbit certificate's X), {icc} proved v > 0 (ICC), {und} undecided; leaves {} CC, {} ICC, {} undecided{time})",
+                "{}: OK (basin, n = {}: of the box of drops, {cc} proved CC (enter an orbit certificate's X or a time-to-rest graph's cone), {icc} proved v > 0 (ICC), {und} undecided; leaves {} CC, {} ICC, {} undecided{time})",
                 self.path,
                 self.n.unwrap_or(0),
                 l[0],

@@ -254,3 +254,77 @@ fn basin_map_on_a_2x2_grid_writes_the_kernels_shares_of_each_point_and_its_figur
     let text = std::fs::read_to_string(&svg).unwrap();
     assert!(text.contains("certified share") && text.contains("undecided share"), "legend");
 }
+
+/// Below the CC threshold (the square plate, κ = 1/6, γ = 1/100) the producer embeds a
+/// time-to-rest certificate and ends prefixes in its nodes' cones (`Rest` leaves, docs/
+/// basin-certificates.md §4): the kernel accepts the file with no ICC share, and drops drawn in
+/// each `Rest` leaf have the leaf's impacts (exact runs) and, in `f64` runs of 3000 impacts
+/// (evidence), chatter with an accumulation time below the kernel's bound times h.
+#[test]
+fn rest_leaves_prove_drops_below_the_threshold_cc_within_their_time_bound() {
+    let d = tempfile::tempdir().unwrap();
+    let out = d.path().join("b.ron");
+    let o = std::process::Command::new(bin())
+        .args(["basin", "--n", "4", "--kappa", "1/6", "--gamma", "1/100"])
+        .args(["--box", "1/25,1/25,1/50,1/50,26/25:3/50,3/50,1/25,1/25,53/50"])
+        .args(["--depth", "6", "-o", out.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let said = String::from_utf8_lossy(&o.stdout).to_string();
+    assert_eq!(o.status.code(), Some(0), "{said}{}", String::from_utf8_lossy(&o.stderr));
+    assert!(said.contains("time-to-rest certificate of"), "{said}");
+    let v =
+        std::process::Command::new(bin()).args(["verify", "--json", out.to_str().unwrap()]).output().unwrap();
+    let json: serde_json::Value = serde_json::from_slice(&v.stdout).unwrap();
+    let file = &json["files"][0];
+    assert_eq!(file["icc_share"], "0", "{json}");
+    let bound: f64 = file["time_to_rest_bound"].as_str().map(crate::time_to_rest::num).unwrap();
+    let cert: BasinCertificate = read(&std::fs::read_to_string(&out).unwrap(), Encoding::Ron).unwrap();
+    assert!(cert.rest.is_some() && cert.orbit.is_some());
+    let rest: Vec<_> = cert.leaves.iter().filter(|l| matches!(l.verdict, LeafVerdict::Rest { .. })).collect();
+    let share: f64 = rest.iter().map(|l| 0.5f64.powi(l.path.len() as i32)).sum();
+    assert!(
+        !rest.is_empty()
+            && (crate::time_to_rest::num(file["cc_share"].as_str().unwrap()) - share).abs() < 1e-12
+    );
+    let model = Model::new(Shape::Polygon(4), Q::new(1, 6), Q::new(1, 100)).unwrap();
+    let num = |s: &String| chatter_kernel::exact::parse_canonical(s, Default::default()).unwrap();
+    let lo: [malachite::rational::Rational; 5] = std::array::from_fn(|k| num(&cert.drops.lo[k]));
+    let hi: [malachite::rational::Rational; 5] = std::array::from_fn(|k| num(&cert.drops.hi[k]));
+    let mut rng = SplitMix64::new(31);
+    let mut checked = 0;
+    for leaf in rest {
+        let LeafVerdict::Rest { first, steps, .. } = &leaf.verdict else { unreachable!() };
+        let mut expected = vec![*first as u8];
+        for &j in steps {
+            expected.push(((expected[expected.len() - 1] as u64 + j) % 4) as u8);
+        }
+        let (l, h) = leaf_box(&lo, &hi, &leaf.path);
+        for _ in 0..3 {
+            let y: [f64; 5] = std::array::from_fn(|k| {
+                let (a, b) = (f(&l[k]), f(&h[k]));
+                a + (b - a) * (0.25 + 0.5 * rng.open01())
+            });
+            let fs = &model.float;
+            let start =
+                Start { q: fs.from_paper(&[y[2], y[3], y[4]]), p: fs.from_paper(&[y[0], y[1], -1.0]) };
+            let exact = Start {
+                q: start.q.map(|x| Q::from_f64_exact(x).unwrap()),
+                p: start.p.map(|x| Q::from_f64_exact(x).unwrap()),
+            };
+            let run = simulate_exact(&model, &exact, &Options::new(expected.len() + 2));
+            assert_eq!(run.sequence[..expected.len()], expected[..], "leaf {}", leaf.path);
+            let float = chatter::simulate::simulate_float(fs, &start, &Options::new(3000));
+            let t = float.accumulation.unwrap_or_else(|| panic!("leaf {}: {:?}", leaf.path, float.evidence));
+            assert_eq!(float.evidence, Outcome::Cc, "leaf {}", leaf.path);
+            assert!(
+                t > 0.0 && t <= bound * y[4],
+                "leaf {}: accumulation {t} > {bound} h = {}",
+                leaf.path,
+                bound * y[4]
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked >= 6, "{checked}");
+}

@@ -27,7 +27,9 @@ pub(super) fn words(f: &Failure, locus: &Locus) -> String {
             "the time-to-rest certificate names another body (n, kappa or gamma, at a point)".into()
         }
         Failure::RestClaim(c) => {
-            format!("the time-to-rest certificate's claim is {c:?}; Rest leaves need CompleteChatterFromAllDown")
+            format!(
+                "the time-to-rest certificate's claim is {c:?}; Rest leaves need CompleteChatterFromAllDown"
+            )
         }
         Failure::Node { node, nodes } => {
             format!("node {node} is not a node of the time-to-rest certificate ({nodes} nodes)")
@@ -83,7 +85,9 @@ fn describe(q: LeafQuantity) -> String {
         },
         LeafQuantity::Separates => "after the prefix, v > 0".into(),
         LeafQuantity::InCone { node, facet } => {
-            format!("after the prefix, the velocity is inside facet {facet} of node {node}'s cone")
+            format!(
+                "after the prefix, the velocity is on the inner side of facet {facet} of node {node}'s cone"
+            )
         }
         LeafQuantity::RestTime { node } => {
             format!("after the prefix, -b.p > 0 for node {node}'s weight b (the virtual time)")

@@ -37,8 +37,8 @@ use crate::orbit::map::{Quantity, Stop, step};
 use crate::reject::{Code, Counted, Detail, KindDetail, KindLocus, Locus, Rejection};
 use crate::rules::orbit::{Orbit, cover, read_orbit_values};
 use crate::rules::rest::{NodeForms, forms};
-use crate::syntax::cone::{Body, Claim, Param};
 use crate::syntax::basin::{BasinCertificate, LeafVerdict};
+use crate::syntax::cone::{Body, Claim, Param};
 use crate::syntax::numbers::{at_most, in_time, number, total};
 use crate::syntax::orbit::OrbitBody;
 use crate::syntax::{Kind, expect};
@@ -626,7 +626,9 @@ fn enters<F: Field, const D: usize>(
     p: &[Centred<F, D>; 3],
 ) -> Result<Centred<F, D>, Failure> {
     let forms = ctx.rest.as_ref().and_then(|r| r.get(node)).ok_or(Failure::NoRest)?;
-    let dot = |f: &[F; 3], x: &[Centred<F, D>; 3]| x[0].scaled(&f[0]).plus(&x[1].scaled(&f[1])).plus(&x[2].scaled(&f[2]));
+    let dot = |f: &[F; 3], x: &[Centred<F, D>; 3]| {
+        x[0].scaled(&f[0]).plus(&x[1].scaled(&f[1])).plus(&x[2].scaled(&f[2]))
+    };
     shown(LeafQuantity::Entry(Quantity::PositionScale), &q[2])?;
     shown(LeafQuantity::Entry(Quantity::VelocityScale), &Centred::constant(&F::zero()).minus(&p[2]))?;
     for (facet, f) in forms.facets.iter().enumerate() {

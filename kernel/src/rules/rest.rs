@@ -111,7 +111,10 @@ pub struct NodeForms<F> {
 }
 
 /// Checks the certificate ([`check`]) and returns every node's forms (docs/basin-certificates.md §4).
-pub fn forms<F: Field>(cert: &TimeToRest, limits: ParseLimits) -> Result<(Rested, Vec<NodeForms<F>>), Rejection> {
+pub fn forms<F: Field>(
+    cert: &TimeToRest,
+    limits: ParseLimits,
+) -> Result<(Rested, Vec<NodeForms<F>>), Rejection> {
     let rested = check::<F>(cert, limits)?;
     let body = body::<F>(cert, limits)?;
     let lift = |v: &Vec3<F::Int>| -> Vec3<F> { std::array::from_fn(|i| F::from_int(&v[i])) };
