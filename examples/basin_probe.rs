@@ -58,7 +58,11 @@ pub fn kernel_on(
         first: plan.first,
         steps: &plan.steps,
         cuts: &plan.cuts,
-        cc: plan.cc,
+        end: if plan.cc {
+            chatter_kernel::rules::basin::End::Cc
+        } else {
+            chatter_kernel::rules::basin::End::Icc
+        },
     };
     let r = ctx.leaf(&lo, &hi, &prefix);
     println!(

@@ -67,8 +67,13 @@ pub struct BasinMapArgs {
     #[arg(long, default_value_t = 2)]
     pub orbit_depth: u64,
     /// Do not try a time-to-rest certificate at each point (survey effort: at most 40 nodes).
-    #[arg(long)]
+    #[arg(long, conflicts_with = "full_rest")]
     pub no_rest: bool,
+    /// Try each point's time-to-rest certificate with the full search of `chatter certify
+    /// --time-to-rest` (up to 200 nodes, three pads, merged graphs) instead of the survey's:
+    /// more points proved CC below the threshold, up to tens of seconds more per point.
+    #[arg(long)]
+    pub full_rest: bool,
     /// Output folder.
     #[arg(long, short = 'o', value_name = "DIR", default_value = "basin-map")]
     pub out: PathBuf,
@@ -100,7 +105,11 @@ fn validate(a: &BasinMapArgs) -> Result<MapRequest, String> {
         drops: 200,
         max_depth: a.orbit_depth.min(4),
     };
-    let rest = (!a.no_rest).then(crate::prove::survey_rest_config);
+    let rest = match (a.no_rest, a.full_rest) {
+        (true, _) => None,
+        (false, true) => Some(crate::certify::virtual_time::Config::default()),
+        (false, false) => Some(crate::prove::survey_rest_config()),
+    };
     let basin = BasinRequest { orbit, lo, hi, depth: a.depth, max_prefix: a.max_prefix, entry: 0.25, rest };
     Ok(MapRequest { grid, basin })
 }

@@ -64,8 +64,8 @@ const SURVEY_REST_NODES: usize = 40;
 /// made the n = 3 map 39% slower.
 const SURVEY_REST_PAD: f64 = 1e-3;
 
-/// The time-to-rest search of surveys (maps, basin maps): a cap of [`SURVEY_REST_NODES`] nodes
-/// and the pad [`SURVEY_REST_PAD`] only.
+/// The time-to-rest search of surveys (maps, basin maps): a cap of 40 nodes (`SURVEY_REST_NODES`)
+/// and the pad 10^-3 (`SURVEY_REST_PAD`) only.
 pub fn survey_rest_config() -> crate::certify::virtual_time::Config {
     let mut cfg = crate::certify::virtual_time::Config::default();
     (cfg.max_nodes, cfg.pads) = (SURVEY_REST_NODES, vec![SURVEY_REST_PAD]);
