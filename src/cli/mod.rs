@@ -106,8 +106,9 @@ pub enum Command {
     /// Prove complete chatter from a set of states around an attracting impact cycle (an orbit
     /// certificate, docs/orbit-certificates.md); write it.
     CertifyOrbit(orbit_cmd::OrbitArgs),
-    /// Prove which drops of a box chatter to rest (enter an orbit certificate's set) and which
-    /// reach v > 0, as exact shares of the box (docs/basin-certificates.md); write the certificate.
+    /// Prove which drops of a box chatter to rest (enter an orbit certificate's set or a node's
+    /// cone of a time-to-rest certificate) and which reach v > 0, as exact shares of the box
+    /// (docs/basin-certificates.md); write the certificate.
     Basin(basin_cmd::BasinArgs),
     /// Basin certificates over a grid of (kappa, gamma): the kernel-checked shares of a box of
     /// drops proved CC, proved ICC and undecided, per point (docs/basin-certificates.md §6).
