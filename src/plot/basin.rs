@@ -33,7 +33,10 @@ type SliceChart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, Range
 /// A leaf's verdict, as drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
+    /// `Cc`: the drops enter an orbit certificate's X.
     Cc,
+    /// `Rest`: the drops enter a node's cone of the time-to-rest certificate (CC too).
+    Rest,
     Icc,
     Undecided,
 }
@@ -113,7 +116,8 @@ impl BasinFigure {
                 continue;
             }
             let kind = match leaf.verdict {
-                LeafVerdict::Cc { .. } | LeafVerdict::Rest { .. } => Kind::Cc,
+                LeafVerdict::Cc { .. } => Kind::Cc,
+                LeafVerdict::Rest { .. } => Kind::Rest,
                 LeafVerdict::Icc { .. } => Kind::Icc,
                 LeafVerdict::Undecided => Kind::Undecided,
             };
@@ -146,6 +150,11 @@ impl BasinFigure {
                 Kind::Cc,
                 COMPLETE,
                 "proved CC: every drop enters the orbit certificate's set X (complete chatter)",
+            ),
+            (
+                Kind::Rest,
+                COMPLETE,
+                "proved CC: every drop enters a node's cone of the time-to-rest certificate (complete chatter unless a later impact is simultaneous)",
             ),
             (Kind::Icc, ICC, "proved ICC: every drop reaches v > 0 (never comes to rest)"),
             (Kind::Undecided, UNDECIDED, "undecided: no verdict is claimed"),
@@ -199,7 +208,7 @@ fn read5(
 
 fn fill(k: Kind) -> RGBColor {
     match k {
-        Kind::Cc => COMPLETE,
+        Kind::Cc | Kind::Rest => COMPLETE,
         Kind::Icc => ICC,
         Kind::Undecided => UNDECIDED,
     }

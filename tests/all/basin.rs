@@ -20,6 +20,38 @@ fn f(x: &malachite::rational::Rational) -> f64 {
     Q::from_rational(x.clone()).to_f64()
 }
 
+/// The absolute contacts of a prefix: `first`, then each step j places on from the last (mod n).
+fn contacts(first: u64, steps: &[u64], n: u64) -> Vec<u8> {
+    let mut out = vec![first as u8];
+    for &j in steps {
+        out.push(((out[out.len() - 1] as u64 + j) % n) as u8);
+    }
+    out
+}
+
+type Rat = malachite::rational::Rational;
+
+/// A drop drawn in the middle half of the leaf [l, h] (so that the `f64` change of coordinates,
+/// exact to ~1e-16, stays inside the leaf): its paper coordinates, its `f64` start and that start
+/// read exactly.
+fn drop_in(
+    model: &Model,
+    (l, h): (&[Rat; 5], &[Rat; 5]),
+    rng: &mut SplitMix64,
+) -> ([f64; 5], Start<f64>, Start<Q>) {
+    let y: [f64; 5] = std::array::from_fn(|k| {
+        let (a, b) = (f(&l[k]), f(&h[k]));
+        a + (b - a) * (0.25 + 0.5 * rng.open01())
+    });
+    let fs = &model.float;
+    let start = Start { q: fs.from_paper(&[y[2], y[3], y[4]]), p: fs.from_paper(&[y[0], y[1], -1.0]) };
+    let exact = Start {
+        q: start.q.map(|x| Q::from_f64_exact(x).unwrap()),
+        p: start.p.map(|x| Q::from_f64_exact(x).unwrap()),
+    };
+    (y, start, exact)
+}
+
 #[test]
 fn exact_simulations_of_drops_inside_decided_leaves_follow_their_certified_impacts() {
     let cert = corpus();
@@ -37,25 +69,9 @@ fn exact_simulations_of_drops_inside_decided_leaves_follow_their_certified_impac
         };
         let cc = matches!(leaf.verdict, LeafVerdict::Cc { .. });
         let (l, h) = leaf_box(&lo, &hi, &leaf.path);
-        let mut expected = vec![*first as u8];
-        for &j in steps {
-            let last = expected[expected.len() - 1] as u64;
-            expected.push(((last + j) % n) as u8);
-        }
+        let expected = contacts(*first, steps, *n);
         for _ in 0..2 {
-            // A point of the middle half of the leaf (so that the f64 change of coordinates, exact
-            // to ~1e-16, stays inside the leaf).
-            let y: [f64; 5] = std::array::from_fn(|k| {
-                let (a, b) = (f(&l[k]), f(&h[k]));
-                a + (b - a) * (0.25 + 0.5 * rng.open01())
-            });
-            let fs = &model.float;
-            let start =
-                Start { q: fs.from_paper(&[y[2], y[3], y[4]]), p: fs.from_paper(&[y[0], y[1], -1.0]) };
-            let exact = Start {
-                q: start.q.map(|x| Q::from_f64_exact(x).unwrap()),
-                p: start.p.map(|x| Q::from_f64_exact(x).unwrap()),
-            };
+            let (_, _, exact) = drop_in(&model, (&l, &h), &mut rng);
             let run = simulate_exact(&model, &exact, &Options::new(expected.len() + 4));
             assert!(run.sequence.len() >= expected.len() || !cc, "{}: {:?}", leaf.path, run.outcome);
             let m = expected.len().min(run.sequence.len());
@@ -295,23 +311,11 @@ fn rest_leaves_prove_drops_below_the_threshold_cc_within_their_time_bound() {
     let mut checked = 0;
     for leaf in rest {
         let LeafVerdict::Rest { first, steps, .. } = &leaf.verdict else { unreachable!() };
-        let mut expected = vec![*first as u8];
-        for &j in steps {
-            expected.push(((expected[expected.len() - 1] as u64 + j) % 4) as u8);
-        }
+        let expected = contacts(*first, steps, 4);
         let (l, h) = leaf_box(&lo, &hi, &leaf.path);
         for _ in 0..3 {
-            let y: [f64; 5] = std::array::from_fn(|k| {
-                let (a, b) = (f(&l[k]), f(&h[k]));
-                a + (b - a) * (0.25 + 0.5 * rng.open01())
-            });
+            let (y, start, exact) = drop_in(&model, (&l, &h), &mut rng);
             let fs = &model.float;
-            let start =
-                Start { q: fs.from_paper(&[y[2], y[3], y[4]]), p: fs.from_paper(&[y[0], y[1], -1.0]) };
-            let exact = Start {
-                q: start.q.map(|x| Q::from_f64_exact(x).unwrap()),
-                p: start.p.map(|x| Q::from_f64_exact(x).unwrap()),
-            };
             let run = simulate_exact(&model, &exact, &Options::new(expected.len() + 2));
             assert_eq!(run.sequence[..expected.len()], expected[..], "leaf {}", leaf.path);
             let float = chatter::simulate::simulate_float(fs, &start, &Options::new(3000));
@@ -327,4 +331,27 @@ fn rest_leaves_prove_drops_below_the_threshold_cc_within_their_time_bound() {
         }
     }
     assert!(checked >= 6, "{checked}");
+}
+
+/// Regression (2026-11-27): a slice through a `Rest` leaf was drawn and labelled as a leaf that
+/// enters the orbit certificate's X; it is drawn as its own kind, in the proved-CC colour.
+#[test]
+fn plot_basin_draws_rest_leaves_as_their_own_kind_in_the_cc_colour() {
+    use chatter::plot::basin::Kind;
+    let d = tempfile::tempdir().unwrap();
+    let png = d.path().join("rest.png");
+    let fig = slice("certificates/valid/basin-rest-n4-kappa1_6-gamma1_100.ron", "phi_x,phi_y", &[], &png);
+    assert!(!fig.rects.is_empty() && fig.rects.iter().all(|r| r.kind == Kind::Rest), "{:?}", fig.rects);
+    let cc = slice(
+        "certificates/valid/basin-n3-kappa1_8-gamma3_20.ron",
+        "omega_x,omega_y",
+        &[],
+        &d.path().join("cc.png"),
+    );
+    let (x, y) = (fig.rects[0].x, fig.rects[0].y);
+    let at = colour_at(&png, &fig, (x[0] + x[1]) / 2.0, (y[0] + y[1]) / 2.0);
+    let r = cc.rects.iter().find(|r| r.kind == Kind::Cc).unwrap();
+    let cc_colour =
+        colour_at(&d.path().join("cc.png"), &cc, (r.x[0] + r.x[1]) / 2.0, (r.y[0] + r.y[1]) / 2.0);
+    assert_eq!(at, cc_colour);
 }
