@@ -16,12 +16,24 @@ pub struct Maps<'a> {
     pub body: &'a FloatPolygon,
     /// R_j^{-1}, j = 0..n-1 (index 0 unused): b_s = (R_j^{-1})^T b_r.
     inverse: Vec<Matrix3<f64>>,
+    /// S_j and R_j, j = 0..n-1 (the search evaluates [`ratio`] millions of times).
+    step: Vec<(Matrix3<f64>, Matrix3<f64>)>,
+    /// m_{k,k+1}, k = 0..n-1.
+    rest: Vec<V3>,
 }
 
 impl<'a> Maps<'a> {
     pub fn new(body: &'a FloatPolygon) -> Self {
         let inv = |j: usize| body.relabel(j as i64).try_inverse().unwrap_or_else(Matrix3::zeros);
-        Maps { body, inverse: (0..body.n()).map(inv).collect() }
+        let step = |j: usize| (body.step(j as i64), body.relabel(j as i64));
+        let rest = |k: usize| body.rest_point(k as i64, k as i64 + 1).unwrap_or_else(V3::zeros);
+        let n = body.n();
+        Maps {
+            body,
+            inverse: (0..n).map(inv).collect(),
+            step: (0..n).map(step).collect(),
+            rest: (0..n).map(rest).collect(),
+        }
     }
 
     /// b transported along the steps of a tie path (docs/time-to-rest.md §5).
@@ -45,14 +57,16 @@ impl<'a> Maps<'a> {
     }
 
     fn m(&self, k: i64) -> V3 {
-        self.body.rest_point(k, k + 1).unwrap_or_else(V3::zeros)
+        self.rest[k.rem_euclid(self.rest.len() as i64) as usize]
     }
 }
 
 /// The largest ratio Φ_s(after)/Φ_r(before) over the piece's vertices and q ∈ {m_{j−1,j},
 /// m_{j,j+1}} (the float form of (G3)); infinite where a denominator is not positive.
 pub fn ratio(maps: &Maps, br: &V3, bs: &V3, j: usize, piece: &[P2]) -> f64 {
-    let (s, rel) = (maps.body.step(j as i64), maps.body.relabel(j as i64));
+    let (s, rel) = &maps.step[j % maps.step.len()];
+    // b_s·R_j q and b_r·q do not depend on the vertex.
+    let terms = [maps.m(j as i64 - 1), maps.m(j as i64)].map(|q| (bs.dot(&(rel * q)), br.dot(&q)));
     let mut worst: f64 = 0.0;
     for p in piece.iter().map(lift) {
         let sp = s * p;
@@ -60,8 +74,8 @@ pub fn ratio(maps: &Maps, br: &V3, bs: &V3, j: usize, piece: &[P2]) -> f64 {
         if dr <= 0.0 || ds <= 0.0 {
             return f64::INFINITY;
         }
-        for q in [maps.m(j as i64 - 1), maps.m(j as i64)] {
-            let (after, before) = (bs.dot(&(rel * q)) / ds, br.dot(&q) / dr);
+        for (a, b) in terms {
+            let (after, before) = (a / ds, b / dr);
             if after <= 1e-15 && before <= 1e-15 {
                 continue;
             }
