@@ -236,13 +236,14 @@ fn covector_step(d: &Data, a: &[V], (scale, bound): (f64, f64)) -> Option<(Vec<V
 }
 
 /// Covectors (one per representative, indexed by node) whose numerators' program is feasible
-/// with room, by alternation from `b`; `None` when t stops falling above 0.
-pub fn improve(d: &Data, b: Vec<V>) -> Option<Vec<V>> {
+/// with room, by alternation from `b`; `None` when t stops falling above 0 (with `pace`, also
+/// when it falls too slowly to pass 0 in the rounds left: [`hopeless`]).
+pub fn improve(d: &Data, b: Vec<V>, pace: bool) -> Option<Vec<V>> {
     let (mut b, mut last, mut scale_a) = (b, f64::INFINITY, None);
     // The covectors keep their size and their components within 4 times the largest at the start
     // (the exact rounding is relative to the largest component: (G1) must keep its margin).
     let scale_b = (size(d, &b), 4.0 * b.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs())));
-    for _ in 0..ROUNDS {
+    for round in 1..=ROUNDS {
         let (a, t) = numerator_step(d, &b, scale_a)?;
         scale_a = scale_a.or(Some(size(d, &a)));
         if t < T_FLOOR / 2.0 {
@@ -252,10 +253,15 @@ pub fn improve(d: &Data, b: Vec<V>) -> Option<Vec<V>> {
         if t2 < T_FLOOR / 2.0 {
             return Some(nb);
         }
-        if t2 > last * (1.0 - 1e-6) && t2 > 0.0 {
+        if t2 > 0.0 && (t2 > last * (1.0 - 1e-6) || pace && hopeless(last, t2, ROUNDS - round)) {
             return None;
         }
         (b, last) = (nb, t2.min(t));
     }
     None
+}
+
+/// At the pace of the last round (from `last` to `t`), t would not pass 0 in the rounds left.
+fn hopeless(last: f64, t: f64, left: usize) -> bool {
+    t > (last - t) * left as f64
 }
