@@ -44,7 +44,7 @@ pub struct Config {
     /// Choose the numerators a_r by the linear program that minimises B (`numerator.rs`) before
     /// the least scales (a_r = c_r b_r, `scale.rs`); without it, the scales only.
     pub linear_program: bool,
-    /// Stop alternating the linear programs ([`alternate::improve`]) as soon as t, at the pace of
+    /// Stop alternating the linear programs (`alternate::improve`) as soon as t, at the pace of
     /// the last round, could not pass 0 in the rounds left (the maps' survey; the full search
     /// runs every round while t falls: on the hard points of the bench grid the pace rule lost
     /// one certificate of 86, 2026-11-27).
