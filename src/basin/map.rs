@@ -10,6 +10,8 @@ use crate::sweep::grid::{Grid, Point, Variable};
 use chatter_kernel::basin::drop::DIMS;
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::verify::{Backend, Verdict, verify_basin};
+use schemars::JsonSchema;
+use serde::Serialize;
 use std::path::Path;
 
 /// What the share is a share of (printed by `--help`, kept in summary.json).
@@ -109,36 +111,82 @@ fn csv_row(s: &PointShares) -> String {
     )
 }
 
-/// The summary (schema `chatter.basin-map/1`): the request, what the shares are shares of, and
-/// every point's exact shares.
-pub fn summary(req: &MapRequest, points: &[PointShares]) -> serde_json::Value {
+/// The box of drops of every point, canonical "p/q" per coordinate (ω_x, ω_y, φ_x, φ_y, h).
+#[derive(Clone, Debug, Serialize, JsonSchema)]
+pub struct BoxOfDrops {
+    pub lo: Vec<String>,
+    pub hi: Vec<String>,
+}
+
+/// One point's exact shares, as the kernel reported them on both backends.
+#[derive(Clone, Debug, Serialize, JsonSchema)]
+pub struct PointSummary {
+    /// The point's index in the grid (and in certificates/point-INDEX.ron).
+    pub index: usize,
+    /// Canonical "p/q".
+    pub kappa: String,
+    /// Canonical "p/q".
+    pub gamma: String,
+    /// Proved CC, canonical "p/q" (of the box's volume; the three shares sum to 1).
+    pub cc_share: String,
+    /// Proved ICC (v > 0), canonical "p/q".
+    pub icc_share: String,
+    /// No verdict claimed, canonical "p/q".
+    pub undecided_share: String,
+}
+
+/// summary.json of `chatter basin-map` (schema `chatter.basin-map/1`, docs/basin-certificates.md
+/// §6): the request, what the shares are shares of, and every point's exact shares.
+#[derive(Clone, Debug, Serialize, JsonSchema)]
+pub struct BasinMapSummary {
+    /// `chatter.basin-map/1`.
+    pub schema: &'static str,
+    pub n: u64,
+    /// The grid's first coordinate: `rho` or `kappa`.
+    pub variable: &'static str,
+    /// The first coordinate's range `a:b:STEPS`, as given.
+    pub x: String,
+    /// γ's range `c:d:STEPS`, as given.
+    pub gamma: String,
+    #[serde(rename = "box")]
+    pub drops: BoxOfDrops,
+    /// Halvings of the box at most.
+    pub depth: usize,
+    /// Impacts of a leaf's prefix at most.
+    pub max_prefix: usize,
+    /// What the shares are shares of.
+    pub share_of: &'static str,
+    pub points: Vec<PointSummary>,
+}
+
+impl crate::json::Report for BasinMapSummary {
+    const SCHEMA: &'static str = "chatter.basin-map/1";
+}
+
+/// The summary of a map's points.
+pub fn summary(req: &MapRequest, points: &[PointShares]) -> BasinMapSummary {
     let b = &req.basin;
     let text = |v: &[Q; DIMS]| v.iter().map(Q::to_string).collect::<Vec<_>>();
-    let rows: Vec<serde_json::Value> = points
-        .iter()
-        .map(|s| {
-            serde_json::json!({
-                "index": s.point.index,
-                "kappa": s.point.kappa.to_string(),
-                "gamma": s.point.gamma.to_string(),
-                "cc_share": s.cc_share,
-                "icc_share": s.icc_share,
-                "undecided_share": s.undecided_share,
-            })
-        })
-        .collect();
-    serde_json::json!({
-        "schema": "chatter.basin-map/1",
-        "n": req.grid.n,
-        "variable": if req.grid.variable == Variable::Rho { "rho" } else { "kappa" },
-        "x": req.grid.x.text(),
-        "gamma": req.grid.gamma.text(),
-        "box": { "lo": text(&b.lo), "hi": text(&b.hi) },
-        "depth": b.depth,
-        "max_prefix": b.max_prefix,
-        "share_of": SHARE_OF,
-        "points": rows,
-    })
+    let row = |s: &PointShares| PointSummary {
+        index: s.point.index,
+        kappa: s.point.kappa.to_string(),
+        gamma: s.point.gamma.to_string(),
+        cc_share: s.cc_share.clone(),
+        icc_share: s.icc_share.clone(),
+        undecided_share: s.undecided_share.clone(),
+    };
+    BasinMapSummary {
+        schema: <BasinMapSummary as crate::json::Report>::SCHEMA,
+        n: req.grid.n,
+        variable: if req.grid.variable == Variable::Rho { "rho" } else { "kappa" },
+        x: req.grid.x.text(),
+        gamma: req.grid.gamma.text(),
+        drops: BoxOfDrops { lo: text(&b.lo), hi: text(&b.hi) },
+        depth: b.depth,
+        max_prefix: b.max_prefix,
+        share_of: SHARE_OF,
+        points: points.iter().map(row).collect(),
+    }
 }
 
 /// Writes DIR/points.csv, DIR/summary.json and DIR/certificates/point-INDEX.ron.

@@ -44,6 +44,7 @@ pub fn schemas() -> Vec<(&'static str, serde_json::Value)> {
         (R::SCHEMA, schema_of::<R>())
     }
     vec![
+        one::<crate::basin::map::BasinMapSummary>(),
         one::<bodies::BodiesReport>(),
         one::<certify::CertifyReport>(),
         one::<prove::CheckProofReport>(),

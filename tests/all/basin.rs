@@ -227,6 +227,8 @@ fn basin_map_on_a_2x2_grid_writes_the_kernels_shares_of_each_point_and_its_figur
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     assert!(summary["share_of"].as_str().unwrap().contains("box of drops"));
+    // The summary is a typed report: it validates against its committed schema (docs/schema/).
+    assert_eq!(crate::schema::validate(&summary), "chatter.basin-map/1");
     for (i, row) in rows.iter().enumerate() {
         // The CSV's shares are the kernel's on the kept certificate, and sum to 1.
         let cert = dir.join(format!("certificates/point-{i}.ron"));
