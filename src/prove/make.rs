@@ -71,6 +71,7 @@ const SURVEY_REST_PAD: f64 = 1e-3;
 pub fn survey_rest_config() -> crate::certify::virtual_time::Config {
     let mut cfg = crate::certify::virtual_time::Config::default();
     (cfg.max_nodes, cfg.pads, cfg.pace) = (SURVEY_REST_NODES, vec![SURVEY_REST_PAD], true);
+    cfg.smallest_first = true;
     cfg
 }
 

@@ -219,6 +219,34 @@ fn a_smaller_pad_is_tried_when_the_first_graph_fails() {
     assert!(p.bound < q("3"), "{}", p.bound);
 }
 
+/// The maps' survey (`survey_rest_config`) builds every graph first and tries the closed ones
+/// with the fewest nodes first: at the triangle (κ 1/1024, γ 11/32) the list order's first
+/// certificate is the merge 1.5's graph of 16 nodes, after a larger closed graph failed; the
+/// survey's is a graph of 4 nodes, accepted on both backends. Where nothing is found (γ 23/32),
+/// the reasons are listed in the configuration's order whatever the order tried.
+#[test]
+fn the_survey_tries_the_smallest_closed_graph_first_and_lists_failures_in_order() {
+    let survey = chatter::prove::survey_rest_config();
+    assert!(survey.smallest_first);
+    let (kappa, gamma) = (q("1/1024"), q("11/32"));
+    let listed = Config { smallest_first: false, ..survey.clone() };
+    let by_list = produce(3, &kappa, &gamma, &listed, &BOTH).unwrap_or_else(|e| panic!("{e}"));
+    let smallest = produce(3, &kappa, &gamma, &survey, &BOTH).unwrap_or_else(|e| panic!("{e}"));
+    assert!(smallest.nodes < by_list.nodes, "{} nodes vs {} in list order", smallest.nodes, by_list.nodes);
+    match verify_rest_text_in(&smallest.text, Encoding::Ron, ParseLimits::default(), &BOTH) {
+        Verdict::Accepted(a) => assert_eq!(a.nodes, smallest.nodes),
+        other => panic!("{other:?}"),
+    }
+    let e = produce(3, &kappa, &q("23/32"), &survey, &BOTH).err().expect("no bound at γ 23/32").to_string();
+    let factors: Vec<f64> = e
+        .split("merging within area factor ")
+        .skip(1)
+        .map(|t| t.split(':').next().unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(factors, survey.merges, "{e}");
+    assert!(e.starts_with("pad 1e-3: "), "{e}");
+}
+
 /// `certify --time-to-rest FILE --json` writes a file that `verify` accepts, reports its B as
 /// `time_to_rest_bound`, and validates against the committed schema; where no graph is found the
 /// exit status is 1, no file is written and the reason is given.
