@@ -127,7 +127,9 @@ pub struct PointSummary {
     pub kappa: String,
     /// Canonical "p/q".
     pub gamma: String,
-    /// Proved CC, canonical "p/q" (of the box's volume; the three shares sum to 1).
+    /// Proved CC, canonical "p/q" (of the box's volume; the three shares sum to 1): the drops
+    /// enter an orbit certificate's X, or a node's cone of a time-to-rest certificate, after
+    /// which a drop reaching a simultaneous impact leaves the model.
     pub cc_share: String,
     /// Proved ICC (v > 0), canonical "p/q".
     pub icc_share: String,

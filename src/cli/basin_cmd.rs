@@ -143,9 +143,10 @@ pub fn run(a: BasinArgs, env: &Env) -> Outcome {
     };
     let rest = match &produced.rest {
         None => "no time-to-rest certificate tried".to_string(),
-        Some(Ok((nodes, b))) => {
-            format!("time-to-rest certificate of {nodes} nodes, B = {:.4}", crate::exact::QExt::to_f64(b))
-        }
+        Some(Ok((nodes, b))) => format!(
+            "time-to-rest certificate of {nodes} nodes, B = {:.4} (a drop of a CC leaf that enters its cone and reaches a later simultaneous impact leaves the model)",
+            crate::exact::QExt::to_f64(b)
+        ),
         Some(Err(e)) => format!("no time-to-rest certificate ({e})"),
     };
     let head = format!(

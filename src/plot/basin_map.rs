@@ -91,6 +91,10 @@ impl BasinMapFigure {
             .map(|(_, c, t)| Entry::new(Sample::Fill(c), t))
             .collect();
         e.extend(curve);
+        if self.cells.iter().any(|c| c.shares[0] > 0.0) {
+            let cc = "proved CC: the drops enter an orbit certificate's X, or a node's cone of a time-to-rest certificate (after which a drop reaching a simultaneous impact leaves the model)";
+            e.push(Entry::new(Sample::Note, cc));
+        }
         e.push(Entry::new(
             Sample::Note,
             "a cell stands for its point's whole box of drops: the coloured heights are the shares of the box's volume, checked by the kernel on both backends",

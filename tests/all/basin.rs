@@ -271,6 +271,28 @@ fn basin_map_on_a_2x2_grid_writes_the_kernels_shares_of_each_point_and_its_figur
     let svg = d.path().join("bmap.svg");
     let text = std::fs::read_to_string(&svg).unwrap();
     assert!(text.contains("certified share") && text.contains("undecided share"), "legend");
+    // Regression (2026-11-27): "proved CC" carries the time-to-rest cone's assumption in the legend.
+    // (The legend wraps its lines: the words of the text elements, joined.)
+    let words: Vec<&str> =
+        text.split('<').filter_map(|t| t.split_once('>')).flat_map(|(_, w)| w.split_whitespace()).collect();
+    assert!(words.join(" ").contains("a drop reaching a simultaneous impact leaves the model"), "legend");
+}
+
+/// Regression (2026-11-27): `verify` called every drop of a `Rest` leaf "proved CC" without the
+/// assumption of docs/time-to-rest.md Theorem 5.1 (no simultaneous impact after the cone is
+/// entered; docs/basin-certificates.md §4); its line and `basin-map --help` now state it.
+#[test]
+fn a_basin_verdict_states_the_assumption_of_its_time_to_rest_cones() {
+    let file = root().join("certificates/valid/basin-rest-n4-kappa1_6-gamma1_100.ron");
+    let o = std::process::Command::new(bin()).arg("verify").arg(&file).output().unwrap();
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{said}");
+    let assumption =
+        "time-to-rest graph's cone, after which a drop reaching a simultaneous impact leaves the model";
+    assert!(said.contains("proved CC") && said.contains(assumption), "{said}");
+    let help = std::process::Command::new(bin()).args(["basin-map", "--help"]).output().unwrap();
+    let help = String::from_utf8_lossy(&help.stdout).split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(help.contains("after which a drop reaching a simultaneous impact leaves the model"), "{help}");
 }
 
 /// Below the CC threshold (the square plate, κ = 1/6, γ = 1/100) the producer embeds a
