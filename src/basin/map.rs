@@ -128,8 +128,8 @@ pub struct PointSummary {
     /// Canonical "p/q".
     pub gamma: String,
     /// Proved CC, canonical "p/q" (of the box's volume; the three shares sum to 1): the drops
-    /// enter an orbit certificate's X, or a node's cone of a time-to-rest certificate, after
-    /// which a drop reaching a simultaneous impact leaves the model.
+    /// enter an orbit certificate's X, or a node's cone of a time-to-rest certificate (those that
+    /// reach a simultaneous impact later, where the model stops, have volume zero).
     pub cc_share: String,
     /// Proved ICC (v > 0), canonical "p/q".
     pub icc_share: String,

@@ -144,7 +144,7 @@ pub fn run(a: BasinArgs, env: &Env) -> Outcome {
     let rest = match &produced.rest {
         None => "no time-to-rest certificate tried".to_string(),
         Some(Ok((nodes, b))) => format!(
-            "time-to-rest certificate of {nodes} nodes, B = {:.4} (a drop of a CC leaf that enters its cone and reaches a later simultaneous impact leaves the model)",
+            "time-to-rest certificate of {nodes} nodes, B = {:.4} (the drops of a CC leaf that enter its cone and reach a simultaneous impact later, where the model stops, have volume zero)",
             crate::exact::QExt::to_f64(b)
         ),
         Some(Err(e)) => format!("no time-to-rest certificate ({e})"),

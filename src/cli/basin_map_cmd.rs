@@ -25,7 +25,8 @@ pub const TINY_BOX: &str =
     after_help = "At every point of the grid: a basin certificate (as `chatter basin`) over the box of \
 drops, checked by the kernel on both backends, and its exact shares cc_share (drops proved to end in \
 complete chatter: they enter an orbit certificate's set X, or a node's cone of a time-to-rest \
-certificate, after which a drop reaching a simultaneous impact leaves the model), icc_share (proved to reach v > 0) and \
+certificate, where those that reach a simultaneous impact later, at which the model stops, have \
+volume zero: docs/basin-certificates.md Lemma 4.1), icc_share (proved to reach v > 0) and \
 undecided_share (no verdict). Each share is a share of the volume of the box of drops (velocity \
 (omega_x, omega_y, -1), position (phi_x, phi_y, h) before the first impact), not of the grid cell; \
 with the paper's box it is the probability that the paper's random drop lies in the set. The \

@@ -103,8 +103,8 @@ pub struct FileVerdict {
     pub refutation: Option<RefutationReport>,
     /// For an accepted basin certificate: the share of its box of drops proved to end in complete
     /// chatter (entering the orbit certificate's X, or a node's cone of the time-to-rest
-    /// certificate, after which a drop reaching a simultaneous impact leaves the model), exact
-    /// "p/q" (docs/basin-certificates.md §4).
+    /// certificate, where the drops that reach a simultaneous impact later, at which the model
+    /// stops, have volume zero), exact "p/q" (docs/basin-certificates.md §4, Lemma 4.1).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cc_share: Option<String>,
     /// For a basin certificate: the share proved to reach v > 0 (ICC, the paper's Lemma on v).
@@ -198,7 +198,7 @@ impl FileVerdict {
                 format!("; every CC drop comes to rest within T <= {t} h/|v| (time_to_rest_bound)")
             });
             return format!(
-                "{}: OK (basin, n = {}: of the box of drops, {cc} proved CC (they enter an orbit certificate's X, or a time-to-rest graph's cone, after which a drop reaching a simultaneous impact leaves the model), {icc} proved v > 0 (ICC), {und} undecided; leaves {} CC, {} ICC, {} undecided{time})",
+                "{}: OK (basin, n = {}: of the box of drops, {cc} proved CC (they enter an orbit certificate's X or a time-to-rest graph's cone; those of a cone that reach a simultaneous impact later, where the model stops, have volume zero), {icc} proved v > 0 (ICC), {und} undecided; leaves {} CC, {} ICC, {} undecided{time})",
                 self.path,
                 self.n.unwrap_or(0),
                 l[0],

@@ -271,35 +271,41 @@ fn basin_map_on_a_2x2_grid_writes_the_kernels_shares_of_each_point_and_its_figur
     let svg = d.path().join("bmap.svg");
     let text = std::fs::read_to_string(&svg).unwrap();
     assert!(text.contains("certified share") && text.contains("undecided share"), "legend");
-    // Regression (2026-11-27): "proved CC" carries the time-to-rest cone's assumption in the legend.
-    // (The legend wraps its lines: the words of the text elements, joined.)
+    // Regression (2026-11-27): "proved CC" says what becomes of the time-to-rest cones' drops that
+    // reach a simultaneous impact (the legend wraps its lines: the text elements' words, joined).
     let words: Vec<&str> =
         text.split('<').filter_map(|t| t.split_once('>')).flat_map(|(_, w)| w.split_whitespace()).collect();
-    assert!(words.join(" ").contains("a drop reaching a simultaneous impact leaves the model"), "legend");
+    assert!(
+        words
+            .join(" ")
+            .contains("reach a simultaneous impact later, where the model stops, have volume zero")
+    );
 }
 
-/// Regression (2026-11-27): `verify` called every drop of a `Rest` leaf "proved CC" without the
-/// assumption of docs/time-to-rest.md Theorem 5.1 (no simultaneous impact after the cone is
-/// entered; docs/basin-certificates.md §4); its line and `basin-map --help` now state it.
+/// Regression (2026-11-27): `verify` called every drop of a `Rest` leaf "proved CC", though
+/// docs/time-to-rest.md Theorem 5.1 excludes the drops that meet a simultaneous impact after the
+/// cone is entered; its line and `basin-map --help` now say that those have volume zero
+/// (docs/basin-certificates.md Lemma 4.1).
 #[test]
-fn a_basin_verdict_states_the_assumption_of_its_time_to_rest_cones() {
+fn a_basin_verdict_says_what_becomes_of_the_time_to_rest_cones_simultaneous_impacts() {
     let file = root().join("certificates/valid/basin-rest-n4-kappa1_6-gamma1_100.ron");
     let o = std::process::Command::new(bin()).arg("verify").arg(&file).output().unwrap();
     let said = String::from_utf8_lossy(&o.stdout);
     assert_eq!(o.status.code(), Some(0), "{said}");
     let assumption =
-        "time-to-rest graph's cone, after which a drop reaching a simultaneous impact leaves the model";
+        "those of a cone that reach a simultaneous impact later, where the model stops, have volume zero";
     assert!(said.contains("proved CC") && said.contains(assumption), "{said}");
     let help = std::process::Command::new(bin()).args(["basin-map", "--help"]).output().unwrap();
     let help = String::from_utf8_lossy(&help.stdout).split_whitespace().collect::<Vec<_>>().join(" ");
-    assert!(help.contains("after which a drop reaching a simultaneous impact leaves the model"), "{help}");
+    assert!(help.contains("at which the model stops, have volume zero"), "{help}");
 }
 
 /// Below the CC threshold (the square plate, κ = 1/6, γ = 1/100) the producer embeds a
 /// time-to-rest certificate and ends prefixes in its nodes' cones (`Rest` leaves, docs/
 /// basin-certificates.md §4): the kernel accepts the file with no ICC share, and drops drawn in
-/// each `Rest` leaf have the leaf's impacts (exact runs) and, in `f64` runs of 3000 impacts
-/// (evidence), chatter with an accumulation time below the kernel's bound times h.
+/// each `Rest` leaf have the leaf's impacts and meet no simultaneous impact in 60 more (exact
+/// runs; Lemma 4.1) and, in `f64` runs of 3000 impacts (evidence), chatter with an accumulation
+/// time below the kernel's bound times h.
 #[test]
 fn rest_leaves_prove_drops_below_the_threshold_cc_within_their_time_bound() {
     let d = tempfile::tempdir().unwrap();
@@ -340,8 +346,15 @@ fn rest_leaves_prove_drops_below_the_threshold_cc_within_their_time_bound() {
         for _ in 0..3 {
             let (y, start, exact) = drop_in(&model, (&l, &h), &mut rng);
             let fs = &model.float;
-            let run = simulate_exact(&model, &exact, &Options::new(expected.len() + 2));
+            // 60 impacts past the prefix, exactly: no simultaneous impact is met (Lemma 4.1 of
+            // docs/basin-certificates.md: such drops have volume zero).
+            let run = simulate_exact(&model, &exact, &Options::new(expected.len() + 60));
             assert_eq!(run.sequence[..expected.len()], expected[..], "leaf {}", leaf.path);
+            assert!(
+                run.outcome != Outcome::Simultaneous && run.impacts > expected.len(),
+                "leaf {}",
+                leaf.path
+            );
             let float = chatter::simulate::simulate_float(fs, &start, &Options::new(3000));
             let t = float.accumulation.unwrap_or_else(|| panic!("leaf {}: {:?}", leaf.path, float.evidence));
             assert_eq!(float.evidence, Outcome::Cc, "leaf {}", leaf.path);
