@@ -1,8 +1,9 @@
 //! Conveniences of the public API that no rule calls: the names of claims, conversions, an
-//! accessor, a shorthand for limits, and the serialization of codes for the tool's reports. No verdict depends
-//! on them, and no file read to trust one reaches this module (`kernel/tests/all/size.rs`), so it is
-//! outside every kind's lines to read (docs/kernel-soundness.md §4). It holds no `Deserialize`
-//! impl: how a file is read is decided in `syntax/` only.
+//! accessor, the default limits and a shorthand for them, and the serialization of codes for the
+//! tool's reports. No verdict depends on them, and no file read to trust one reaches this module
+//! (`kernel/tests/all/size.rs`), so it is outside every kind's lines to read
+//! (docs/kernel-soundness.md §4). It holds no `Deserialize` impl: how a file is read is decided in
+//! `syntax/` only.
 
 use crate::exact::OrderedField;
 use crate::exact::ParseLimits;
@@ -54,6 +55,19 @@ impl<F> Polygon<F> {
     /// kappa = rho^2 / R^2.
     pub fn kappa(&self) -> &F {
         &self.kappa
+    }
+}
+
+/// The default limits of docs/certificate-format.md §2 ("Limits"). A limit can only reject a
+/// file, never make one pass, so no verdict's soundness depends on these values.
+impl Default for ParseLimits {
+    fn default() -> Self {
+        ParseLimits {
+            max_digits: 10_000,
+            max_total_digits: 2_000_000,
+            max_generators: 100_000,
+            deadline: None,
+        }
     }
 }
 

@@ -195,6 +195,20 @@ fn validate(a: MapArgs, env_var: impl Fn(&str) -> Option<String>) -> Result<Vali
     Ok(Validated { request: Request { grid, tasks, shard }, out: a.out, jobs })
 }
 
+/// The request of a `chatter map` command as written (`chatter map --n 3 ...`), read and
+/// validated as `chatter map` reads it: `reproduce` makes its maps from the commands it cites, so
+/// that each is the map its command makes.
+pub fn request_of(command: &str) -> Result<Request, String> {
+    let words = command.split_whitespace();
+    match <super::Cli as clap::Parser>::try_parse_from(words)
+        .map_err(|e| format!("`{command}`: {e}"))?
+        .command
+    {
+        super::Command::Map(a) if a.merge.is_none() => validate(a, |_| None).map(|v| v.request),
+        _ => Err(format!("`{command}` is not a `chatter map` command")),
+    }
+}
+
 /// Runs `f` on a pool of `jobs` threads (or the global pool).
 pub fn with_jobs<T: Send>(jobs: Option<usize>, f: impl FnOnce() -> T + Send) -> Result<T, String> {
     match jobs {

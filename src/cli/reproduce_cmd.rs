@@ -41,7 +41,7 @@ pub fn run(a: ReproduceArgs) -> cli::Outcome {
             eprintln!("[{:6.1} s] {name}", start.elapsed().as_secs_f64());
         }
     };
-    let report = match reproduce::run(&a.out, Plan::new(a.quick), &step) {
+    let report = match reproduce::run(&a.out, Plan::new(a.quick), super::map_cmd::request_of, &step) {
         Ok(r) => r,
         Err(e) => return cli::Outcome::Usage(e),
     };

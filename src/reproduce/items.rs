@@ -14,11 +14,10 @@ use crate::plot::{Figure, png_bytes, svg_string};
 use crate::simulate::{Arithmetic, Initial, Model, Options, counts, pattern, simulate, simulate_many};
 use crate::spectral::criteria::{cc_criterion, goyal_threshold, pcc_criterion, rod_cc_profile};
 use crate::spectral::eigen::Dominant;
+use crate::sweep;
 use crate::sweep::curves::{self, row};
-use crate::sweep::grid::{Axis, Grid, Shard, Variable};
-use crate::sweep::point::Tasks;
+use crate::sweep::grid::Variable;
 use crate::sweep::summary::Summary;
-use crate::sweep::{self, Request as SweepRequest};
 use crate::write::{write, write_orbit};
 use chatter_kernel::certificate::{Claim, OrbitSet};
 use chatter_kernel::exact::ParseLimits;
@@ -30,6 +29,7 @@ use std::path::PathBuf;
 pub struct Context {
     pub out: PathBuf,
     pub plan: Plan,
+    pub read_map: super::MapReader,
 }
 
 fn q(n: i64, d: i64) -> Q {
@@ -433,15 +433,14 @@ struct MapRun {
 /// Computes one of the paper's maps (n = 3, 4, 5) into maps/nN, with both figures.
 fn compute_map(ctx: &Context, n: u64) -> Result<(MapRun, [FigureRef; 2]), String> {
     let steps = if n == 5 { ctx.plan.grid5 } else { ctx.plan.grid };
-    let axis = Axis { lo: Q::int(0), hi: Q::int(1), steps };
-    let grid = Grid { n, variable: Variable::Rho, x: axis.clone(), gamma: axis, family: None };
-    let tasks = Tasks {
-        certify: n != 5,
-        refute: false,
-        simulate: Some(ctx.plan.drops),
-        proof_budget: crate::sweep::point::PROOF_BUDGET,
-    };
-    let req = SweepRequest { grid: grid.clone(), tasks, shard: Shard::ALL };
+    // The map is the one its cited command makes: the command is read as `chatter map` reads it.
+    let map = format!(
+        "chatter map --n {n} --rho 0:1:{steps} --gamma 0:1:{steps}{} --simulate {} --out map{n}",
+        if n == 5 { "" } else { " --certify" },
+        ctx.plan.drops,
+    );
+    let req = (ctx.read_map)(&map)?;
+    let grid = req.grid.clone();
     let done = sweep::run(&req, &|| {});
     if let Some(d) = done.iter().find(|d| d.internal.is_some()) {
         let why = d.internal.as_deref().unwrap_or_default();
@@ -470,9 +469,7 @@ fn compute_map(ctx: &Context, n: u64) -> Result<(MapRun, [FigureRef; 2]), String
     );
     let f2 = figure(ctx, &format!("simulations-n{n}"), &fig, &caption)?;
     let command = format!(
-        "chatter map --n {n} --rho 0:1:{steps} --gamma 0:1:{steps}{} --simulate {} --out map{n} && chatter plot map map{n}{lines} -o map{n}.png && chatter plot simulations map{n}{lines} -o simulations{n}.png",
-        if n == 5 { "" } else { " --certify" },
-        ctx.plan.drops,
+        "{map} && chatter plot map map{n}{lines} -o map{n}.png && chatter plot simulations map{n}{lines} -o simulations{n}.png",
         // The figures' exact curves as drawn here (plot's default is CURVE_LINES).
         lines = if ctx.plan.curve_lines == crate::plot::CURVE_LINES {
             String::new()

@@ -111,8 +111,13 @@ impl Plan {
     }
 }
 
-/// Runs every step into `out`; `step` is told the name of each step as it starts.
-pub fn run(out: &Path, plan: Plan, step: &dyn Fn(&str)) -> Result<Report, String> {
+/// How a `chatter map` command line is read, as the command line reads it
+/// (`cli::map_cmd::request_of`): each map of the report is made from the command it cites.
+pub type MapReader = fn(&str) -> Result<crate::sweep::Request, String>;
+
+/// Runs every step into `out`, the maps as `read_map` reads their commands; `step` is told the
+/// name of each step as it starts.
+pub fn run(out: &Path, plan: Plan, read_map: MapReader, step: &dyn Fn(&str)) -> Result<Report, String> {
     for d in ["figures", "certificates", "maps", "proofs"] {
         let p = out.join(d);
         std::fs::create_dir_all(&p).map_err(|e| format!("cannot create {}: {e}", p.display()))?;
@@ -129,7 +134,7 @@ pub fn run(out: &Path, plan: Plan, step: &dyn Fn(&str)) -> Result<Report, String
             report = r;
             result
         };
-    let ctx = items::Context { out: out.to_path_buf(), plan };
+    let ctx = items::Context { out: out.to_path_buf(), plan, read_map };
     timed("bodies", &mut |r| items::bodies(&ctx, r))?;
     timed("rod", &mut |r| items::rod(&ctx, r))?;
     timed("triangle plate", &mut |r| items::triangle(&ctx, r))?;

@@ -124,6 +124,30 @@ fn reproduce_quick_writes_a_report_that_a_browser_renders() {
     assert!(std::fs::metadata(&shot).unwrap().len() > 50_000, "a blank page?");
 }
 
+/// The folder of a cited `chatter map` command (`words`) run as shard `k` of `of`: its rows are
+/// the report's map's rows of that shard, and its certificates are the report's, byte for byte.
+/// The folder is then replaced by a copy of the report's map, which the cited plot commands draw.
+fn shard_is_the_reports_map(out: &Path, words: &[&str], k: usize, of: usize) {
+    let after = |flag: &str| words.iter().position(|w| *w == flag).map(|i| words[i + 1]).unwrap();
+    let (dir, report) = (out.join(after("--out")), out.join(format!("maps/n{}", after("--n"))));
+    let lines = |d: &Path| std::fs::read_to_string(d.join("points.csv")).unwrap();
+    let (shard, whole) = (lines(&dir), lines(&report));
+    let whole: Vec<&str> = whole.lines().collect();
+    let expected: Vec<&str> = whole[1..].iter().skip(k).step_by(of).copied().collect();
+    let rows: Vec<&str> = shard.lines().skip(1).collect();
+    assert_eq!(shard.lines().next(), Some(whole[0]), "{}: the header", dir.display());
+    assert!(!rows.is_empty());
+    assert_eq!(rows, expected, "`{}` as shard {k}/{of} vs {}", words.join(" "), report.display());
+    for (rel, bytes) in files_of(&dir) {
+        if !matches!(rel.to_str(), Some("points.csv" | "shard.json")) {
+            let theirs = std::fs::read(report.join(&rel)).unwrap_or_default();
+            assert!(bytes == theirs, "{}: not the report's file", dir.join(&rel).display());
+        }
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+    copy_dir(&report, &dir);
+}
+
 #[test]
 fn every_cited_command_runs_from_the_folder_the_report_names() {
     let run = reproduce_quick();
@@ -155,25 +179,29 @@ fn every_cited_command_runs_from_the_folder_the_report_names() {
             }
             let words: Vec<&str> = step.split_whitespace().collect();
             assert_eq!(words[0], "chatter", "{c}");
-            let o = chatter(&words[1..], &out);
+            // A map command runs on one shard of its grid (every eighth point): reproduce makes
+            // the whole map from the command as written (`map_cmd::request_of`), and the shard's
+            // rows and files must be the report map's.
+            let map = words[1] == "map";
+            let args = if map { [&words[1..], &["--shard", "3/8"]].concat() } else { words[1..].to_vec() };
+            let o = chatter(&args, &out);
             assert_eq!(
                 o.status.code(),
                 Some(0),
                 "`{step}` from out/: {}",
                 String::from_utf8_lossy(&o.stderr)
             );
+            if map {
+                shard_is_the_reports_map(&out, &words, 3, 8);
+            }
             if step.starts_with("chatter bodies --plate 3") {
                 let text = String::from_utf8_lossy(&o.stdout);
                 assert!(!text.contains("cube"), "`{step}` prints the whole catalogue: {text}");
             }
         }
     }
-    // The cited map commands reproduce the report's maps byte for byte (the maps' files: the
-    // points, the summary, the certificates).
     for n in [3, 4, 5] {
-        let (cited, report) = (out.join(format!("map{n}")), out.join(format!("maps/n{n}")));
-        assert!(report.join("points.csv").exists() && report.join("summary.json").exists());
-        assert_eq!(files_of(&cited), files_of(&report), "n = {n}: `chatter map` as cited vs maps/n{n}");
+        assert!(out.join(format!("map{n}/summary.json")).exists(), "the map n = {n} is not cited");
     }
     // README and the report cite this command for the n = 3 band: it shows the cycle and the
     // contraction per impact (classify shows neither).

@@ -21,17 +21,6 @@ pub struct ParseLimits {
     pub deadline: Option<std::time::Instant>,
 }
 
-impl Default for ParseLimits {
-    fn default() -> Self {
-        ParseLimits {
-            max_digits: 10_000,
-            max_total_digits: 2_000_000,
-            max_generators: 100_000,
-            deadline: None,
-        }
-    }
-}
-
 impl ParseLimits {
     /// Whether the deadline has passed.
     pub fn expired(&self) -> bool {

@@ -4,8 +4,8 @@ use super::{abbreviate, quote, tuple};
 use crate::model::pcc::PccExclusion;
 use crate::reject::{Boundary, Counted, Detail, ImageFailure, Internal, Locus, Needs, TimeToRestFailure};
 #[cfg(feature = "kinds")]
-#[allow(unused_imports)] // which of the two a kind needs depends on the features
-use crate::reject::{KindDetail, KindLocus};
+#[allow(unused_imports)] // which of them a kind needs depends on the features
+use crate::reject::{KindCounted, KindDetail, KindInternal, KindLocus};
 use crate::syntax::strict::Offence;
 
 /// The words of a detail of the syntax layer or of a cone or family certificate.
@@ -170,15 +170,27 @@ fn limit_words(count: usize, limit: usize, what: Counted, locus: &Locus) -> Stri
     };
     let text = match what {
         Counted::Generators => format!("{count} generators, more than the limit {name} = {limit}"),
-        Counted::ConeGenerators(i) => {
+        Counted::Characters => format!("{count} characters of numbers, more than the limit {name} = {limit}"),
+        #[cfg(feature = "kinds")]
+        Counted::Kind(KindCounted::ConeGenerators(i)) => {
             format!("cone {i} has {count} generators, more than the limit {name} = {limit}")
         }
-        Counted::Points => format!("{count} points, more than the limit {name} = {limit}"),
-        Counted::Characters => format!("{count} characters of numbers, more than the limit {name} = {limit}"),
-        Counted::Depth => format!("subdivision {count} is deeper than the limit {name} = {limit}"),
-        Counted::Boxes => format!("more than the limit {name} = {limit} sub-boxes examined"),
-        Counted::Leaves => format!("{count} leaves, more than the limit {name} = {limit}"),
-        Counted::Prefix => format!("a prefix of {count} impacts, more than the limit {name} = {limit}"),
+        #[cfg(feature = "kinds")]
+        Counted::Kind(KindCounted::Points) => format!("{count} points, more than the limit {name} = {limit}"),
+        #[cfg(feature = "kinds")]
+        Counted::Kind(KindCounted::Depth) => {
+            format!("subdivision {count} is deeper than the limit {name} = {limit}")
+        }
+        #[cfg(feature = "kinds")]
+        Counted::Kind(KindCounted::Boxes) => {
+            format!("more than the limit {name} = {limit} sub-boxes examined")
+        }
+        #[cfg(feature = "kinds")]
+        Counted::Kind(KindCounted::Leaves) => format!("{count} leaves, more than the limit {name} = {limit}"),
+        #[cfg(feature = "kinds")]
+        Counted::Kind(KindCounted::Prefix) => {
+            format!("a prefix of {count} impacts, more than the limit {name} = {limit}")
+        }
     };
     format!("{text}: no verdict on the content")
 }
@@ -299,21 +311,26 @@ fn pcc_box(
 
 fn internal(i: &Internal) -> String {
     match i {
-        Internal::CornersDiffer(Some(j)) => {
+        Internal::NotARoot(v) => format!("model error: det(I - S_(n-1) S_1) = {} is not 0", abbreviate(v)),
+        Internal::NoEdge => "model error: a point with v < 0 outside K violates no edge of K".into(),
+        #[cfg(feature = "kinds")]
+        Internal::Kind(KindInternal::CornersDiffer(Some(j))) => {
             format!("model error: C_{j} differs between the corners of the box")
         }
-        Internal::CornersDiffer(None) => "model error: C_1 differs between the corners of the box".into(),
-        Internal::NotARoot { value: Some(v), pair: Some((k, k1)) } => {
+        #[cfg(feature = "kinds")]
+        Internal::Kind(KindInternal::CornersDiffer(None)) => {
+            "model error: C_1 differs between the corners of the box".into()
+        }
+        #[cfg(feature = "kinds")]
+        Internal::Kind(KindInternal::NotARootAtPair(v, (k, k1))) => {
             format!("model error: det(I - I_{k} I_{k1}) = {} is not 0", abbreviate(v))
         }
-        Internal::NotARoot { value: Some(v), pair: None } => {
-            format!("model error: det(I - S_(n-1) S_1) = {} is not 0", abbreviate(v))
-        }
-        Internal::NotARoot { value: None, .. } => {
+        #[cfg(feature = "kinds")]
+        Internal::Kind(KindInternal::NotARootOnBox) => {
             "model error: t = 1 is not a root of det(tI - S_(n-1) S_1)".into()
         }
-        Internal::NoCone(i, j) => format!("model error: no cone C_({i},{j})"),
-        Internal::NoEdge => "model error: a point with v < 0 outside K violates no edge of K".into(),
+        #[cfg(feature = "kinds")]
+        Internal::Kind(KindInternal::NoCone(i, j)) => format!("model error: no cone C_({i},{j})"),
     }
 }
 

@@ -3,7 +3,7 @@
 //! and [`Detail`](super::Detail), written as the other loci. A reviewer of point certificates
 //! does not read this file.
 
-use super::{Detail, Locus};
+use super::{Counted, Detail, Internal, Locus};
 use serde::Serialize;
 
 #[cfg(any(feature = "family", feature = "rest"))]
@@ -236,5 +236,50 @@ impl From<KindLocus> for Locus {
 impl From<KindDetail> for Detail {
     fn from(d: KindDetail) -> Self {
         Detail::Kind(d)
+    }
+}
+
+/// What a limit of a kind of file beyond point certificates counted (part of
+/// [`Counted`](super::Counted)).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum KindCounted {
+    /// The generators of cone `i` of a family.
+    ConeGenerators(usize),
+    /// The points of a refutation.
+    Points,
+    /// The subdivision depth of an orbit certificate.
+    Depth,
+    /// The sub-boxes an orbit certificate made the kernel examine.
+    Boxes,
+    /// The leaves of a basin certificate.
+    Leaves,
+    /// The impacts of a basin certificate's prefix.
+    Prefix,
+}
+
+impl From<KindCounted> for Counted {
+    fn from(c: KindCounted) -> Self {
+        Counted::Kind(c)
+    }
+}
+
+/// A contradiction of the model of a kind of file beyond point certificates with itself (part of
+/// [`Internal`](super::Internal); never expected: a bug in chatter).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum KindInternal {
+    /// The cone C_j (the rod's C_1 when `j` is `None`) differs between corners of a box.
+    CornersDiffer(Option<usize>),
+    /// On a box, t = 1 is not a root of the PCC characteristic polynomial (as a polynomial).
+    NotARootOnBox,
+    /// The value at t = 1 of a general body's PCC polynomial (rule K4), canonical text, which is
+    /// not 0, and the adjacent pair (k, k + 1).
+    NotARootAtPair(String, (usize, usize)),
+    /// No cone C_(i, j) for i != j.
+    NoCone(usize, usize),
+}
+
+impl From<KindInternal> for Detail {
+    fn from(i: KindInternal) -> Self {
+        Detail::Internal(Internal::Kind(i))
     }
 }

@@ -14,7 +14,7 @@ use serde::Serialize;
 #[macro_use]
 mod kinds;
 #[cfg(feature = "kinds")]
-pub use kinds::{KindDetail, KindLocus};
+pub use kinds::{KindCounted, KindDetail, KindInternal, KindLocus};
 
 /// Declares [`Code`] with its stable kebab-case names.
 macro_rules! declare_codes {
@@ -206,20 +206,11 @@ impl Rejection {
 pub enum Counted {
     /// The generators of the cone.
     Generators,
-    /// The generators of cone `i` of a family.
-    ConeGenerators(usize),
-    /// The points of a refutation.
-    Points,
     /// The characters of all numbers of the file.
     Characters,
-    /// The subdivision depth of an orbit certificate.
-    Depth,
-    /// The sub-boxes an orbit certificate made the kernel examine.
-    Boxes,
-    /// The leaves of a basin certificate.
-    Leaves,
-    /// The impacts of a basin certificate's prefix.
-    Prefix,
+    /// What a limit of another kind of file than point certificates counted.
+    #[cfg(feature = "kinds")]
+    Kind(KindCounted),
 }
 
 /// What a version or a format needs that the file or this build does not have.
@@ -324,17 +315,11 @@ pub struct ImageFailure {
 /// A contradiction of the model with itself (never expected: a bug in chatter).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Internal {
-    /// The cone C_j (the rod's C_1 when `j` is `None`) differs between corners of a box.
-    CornersDiffer(Option<usize>),
-    /// t = 1 is not a root of the PCC characteristic polynomial: its value there (`pair` for K4).
-    NotARoot {
-        /// The value at t = 1, canonical text (`None` on a box, as a polynomial).
-        value: Option<String>,
-        /// The adjacent pair (k, k + 1) of a general body.
-        pair: Option<(usize, usize)>,
-    },
-    /// No cone C_(i, j) for i != j.
-    NoCone(usize, usize),
+    /// t = 1 is not a root of det(tI - S_{n-1} S_1) (rule R4): its value there, canonical text.
+    NotARoot(String),
     /// A point with v < 0 outside the convex polygon K violates no edge.
     NoEdge,
+    /// A contradiction in the model of another kind of file than point certificates.
+    #[cfg(feature = "kinds")]
+    Kind(KindInternal),
 }

@@ -34,7 +34,7 @@ use crate::orbit::constants::enclosed_maps;
 use crate::orbit::interval::{Centred, Iv, round_up};
 use crate::orbit::map::Maps;
 use crate::orbit::map::{Quantity, Stop, step};
-use crate::reject::{Code, Counted, Detail, KindDetail, KindLocus, Locus, Rejection};
+use crate::reject::{Code, Detail, KindCounted, KindDetail, KindLocus, Locus, Rejection};
 use crate::rules::orbit::{Orbit, cover, read_orbit_values};
 use crate::rules::rest::{NodeForms, forms};
 use crate::syntax::basin::{BasinCertificate, LeafVerdict};
@@ -288,12 +288,12 @@ pub fn read<F: Field>(
     if !lo[4].is_positive() {
         return Err(fail(Code::BasinOutOfRange, "drops.lo[4]", Failure::Flat(4)));
     }
-    at_most("max-basin-leaves", cert.leaves.len(), MAX_LEAVES, Counted::Leaves)?;
+    at_most("max-basin-leaves", cert.leaves.len(), MAX_LEAVES, KindCounted::Leaves.into())?;
     for (i, leaf) in cert.leaves.iter().enumerate() {
-        at_most("max-basin-depth", leaf.path.len(), MAX_PATH, Counted::Depth)?;
+        at_most("max-basin-depth", leaf.path.len(), MAX_PATH, KindCounted::Depth.into())?;
         if let Some(Prefix { first, steps, cuts, end }) = Prefix::of(&leaf.verdict) {
             let (first, cuts) = (first as u64, cuts);
-            at_most("max-basin-prefix", steps.len() + 1, MAX_PREFIX, Counted::Prefix)?;
+            at_most("max-basin-prefix", steps.len() + 1, MAX_PREFIX, KindCounted::Prefix.into())?;
             prefix(i, first, steps, *n)?;
             if let End::Rest(node) = end {
                 rest_node(i, node, cert.rest.as_ref().map(|r| r.nodes.len()))?;

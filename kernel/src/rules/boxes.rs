@@ -13,14 +13,14 @@
 //!   [`MAX_PCC_BOXES`] sub-boxes each (`pcc-not-excluded` at the sub-box that fails).
 
 use super::body::{body_error, gamma_range};
-use super::outcome::{Accepted, Corner};
+use super::outcome::Accepted;
 use super::{cone, generators, rod};
 use crate::bivariate::{NotNegative, Rect, negative_on};
 use crate::exact::{Field, ParseLimits, to_canonical};
 use crate::model::pcc_polynomials::pcc_polynomials;
 use crate::model::polygon::Polygon;
 use crate::model::rod::Rod;
-use crate::reject::{Code, Detail, Internal, KindDetail, KindLocus, Locus, Needs, Rejection};
+use crate::reject::{Code, Detail, KindDetail, KindInternal, KindLocus, Locus, Needs, Rejection};
 use crate::syntax::cone::{Body, Certificate, Claim, Param};
 use crate::syntax::numbers::{in_time, number};
 
@@ -76,6 +76,28 @@ fn bounds<F: Field>(name: &str, p: &Param, limits: ParseLimits) -> Result<[F; 2]
     }
 }
 
+/// A corner of a box of parameters (docs/certificate-format.md §9): 0 to 3 for (kappa, gamma) at
+/// (lo, lo), (hi, lo), (lo, hi), (hi, hi), with its values as canonical text.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Corner {
+    /// The corner's number.
+    pub index: usize,
+    /// (kappa, gamma) there.
+    pub at: [String; 2],
+}
+
+/// A rejection of rule R2 or R3 at the body of a corner (the point kernel's, which names no
+/// corner): the corner's number in the locus, its (kappa, gamma) in the failure.
+fn at_corner(mut e: Rejection, c: &Corner) -> Rejection {
+    if let Locus::Piece { corner, .. } | Locus::AllDown { corner, .. } = &mut e.locus {
+        *corner = Some(c.index);
+    }
+    if let Detail::Image(failure) = e.detail.as_mut() {
+        failure.corner = Some(c.at.clone());
+    }
+    e
+}
+
 /// The distinct corners (kappa index, gamma index) in the order (lo, lo), (hi, lo), (lo, hi),
 /// (hi, hi), with their numbers and values.
 fn corners<F: Field>(rect: &Rect<F>) -> Vec<(usize, usize, Corner)> {
@@ -125,19 +147,15 @@ fn rod_box<F: Field>(
     let k = rod::interval::<F>(&gens)?;
     in_time(limits, "building K")?;
     if rods.iter().any(|r| r.next_contact_cone() != rods[0].next_contact_cone()) {
-        return Err(Rejection::new(
-            Code::Internal,
-            Locus::Nowhere,
-            Detail::Internal(Internal::CornersDiffer(None)),
-        ));
+        return Err(Rejection::new(Code::Internal, Locus::Nowhere, KindInternal::CornersDiffer(None)));
     }
     let piece = rod::piece(&rods[0], &k);
     for (r, c) in rods.iter().zip(corners) {
-        rod::invariance(r, &k, &piece, Some(&c.2))?;
+        rod::invariance(r, &k, &piece).map_err(|e| at_corner(e, &c.2))?;
     }
     if cert.claim >= Claim::CcOrPccFromAllDown {
         for (r, c) in rods.iter().zip(corners) {
-            rod::all_down(r, &k, Some(&c.2))?;
+            rod::all_down(r, &k).map_err(|e| at_corner(e, &c.2))?;
         }
     }
     Ok(rod::accepted(&rods.iter().collect::<Vec<_>>(), &k, &gens, cert.claim, &piece))
@@ -158,17 +176,17 @@ fn polygon_box<F: Field>(
     in_time(limits, "building K")?;
     for j in 1..polygons[0].n() as i64 {
         if polygons.iter().any(|b| b.next_contact_cone(j) != polygons[0].next_contact_cone(j)) {
-            let detail = Detail::Internal(Internal::CornersDiffer(Some(j as usize)));
+            let detail = KindInternal::CornersDiffer(Some(j as usize));
             return Err(Rejection::new(Code::Internal, Locus::Nowhere, detail));
         }
     }
     let pieces = cone::pieces(&polygons[0], &k);
     for (b, c) in polygons.iter().zip(corners) {
-        cone::invariance(b, &pieces, &k, Some(&c.2), limits)?;
+        cone::invariance(b, &pieces, &k, limits).map_err(|e| at_corner(e, &c.2))?;
     }
     if cert.claim >= Claim::CcOrPccFromAllDown {
         for (b, c) in polygons.iter().zip(corners) {
-            cone::all_down(b, &k, Some(&c.2))?;
+            cone::all_down(b, &k).map_err(|e| at_corner(e, &c.2))?;
         }
     }
     let mut accepted = cone::accepted(&polygons.iter().collect::<Vec<_>>(), &k, &gens, cert.claim, &pieces);
@@ -180,13 +198,8 @@ fn polygon_box<F: Field>(
 
 /// R4 on the box: both polynomials negative on it; the number of sub-boxes examined.
 fn pcc_on_box<F: Field>(body: &Polygon<F>, rect: &Rect<F>) -> Result<usize, Rejection> {
-    let polys = pcc_polynomials(body).map_err(|_| {
-        Rejection::new(
-            Code::Internal,
-            Locus::Nowhere,
-            Detail::Internal(Internal::NotARoot { value: None, pair: None }),
-        )
-    })?;
+    let polys = pcc_polynomials(body)
+        .map_err(|_| Rejection::new(Code::Internal, Locus::Nowhere, KindInternal::NotARootOnBox))?;
     let mut boxes = 0;
     for (poly, which) in
         [(&polys.discriminant, PccPolynomial::Discriminant), (&polys.modulus, PccPolynomial::Modulus)]

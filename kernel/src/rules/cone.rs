@@ -20,7 +20,7 @@
 
 use super::body::{body_error, gamma_range};
 use super::generators::{self, Generators};
-use super::outcome::{Accepted, Corner};
+use super::outcome::Accepted;
 use crate::exact::{Field, ParseLimits, Ring};
 use crate::geometry::{ConvexPolygon, Scalar, clip, hull, projected};
 use crate::model::linalg::{Mat3, Vec3, is_zero, mat_vec};
@@ -86,9 +86,9 @@ pub fn check<E: Scalar>(
     let k = cone::<E>(gens)?;
     in_time(limits, "building K")?;
     let pieces = pieces(body, &k);
-    invariance(body, &pieces, &k, None, limits)?;
+    invariance(body, &pieces, &k, limits)?;
     if claim >= Claim::CcOrPccFromAllDown {
-        all_down(body, &k, None)?;
+        all_down(body, &k)?;
     }
     let mut accepted = accepted(&[body], &k, gens, claim, &pieces);
     if claim >= Claim::CompleteChatterFromAllDown {
@@ -136,16 +136,14 @@ pub fn invariance<E: Scalar>(
     body: &Polygon<E>,
     pieces: &[Vec<Vec3<E::R>>],
     k: &Cone<E::R>,
-    corner: Option<&Corner>,
     limits: ParseLimits,
 ) -> Result<(), Rejection> {
     for (j, piece) in (1..).zip(pieces) {
         let s = int_mat(&body.step(j as i64));
         for (i, p) in piece.iter().enumerate() {
             in_time(limits, "checking effective invariance (rule R2)")?;
-            let locus =
-                |outside| Locus::Piece { piece: j, vertex: i, outside, corner: corner.map(|c| c.index) };
-            let t = Target { point: p, locus: &locus, codes: R2, n: body.n(), corner };
+            let locus = |outside| Locus::Piece { piece: j, vertex: i, outside, corner: None };
+            let t = Target { point: p, locus: &locus, codes: R2, n: body.n() };
             check_image::<E>(k, &mat_vec(&s, p), &t)?;
         }
     }
@@ -153,16 +151,12 @@ pub fn invariance<E: Scalar>(
 }
 
 /// R3: I_0(D) ⊆ K, on the generators -m_{k,k+1} of D.
-pub fn all_down<E: Scalar>(
-    body: &Polygon<E>,
-    k: &Cone<E::R>,
-    corner: Option<&Corner>,
-) -> Result<(), Rejection> {
+pub fn all_down<E: Scalar>(body: &Polygon<E>, k: &Cone<E::R>) -> Result<(), Rejection> {
     let i0 = int_mat(&body.impact(0));
     for (m, g) in body.all_down_generators().iter().enumerate() {
         let g = int_vec(g);
-        let locus = |outside| Locus::AllDown { generator: m, outside, corner: corner.map(|c| c.index) };
-        let t = Target { point: &g, locus: &locus, codes: R3, n: body.n(), corner };
+        let locus = |outside| Locus::AllDown { generator: m, outside, corner: None };
+        let t = Target { point: &g, locus: &locus, codes: R3, n: body.n() };
         check_image::<E>(k, &mat_vec(&i0, &g), &t)?;
     }
     Ok(())
@@ -171,7 +165,7 @@ pub fn all_down<E: Scalar>(
 /// R4: PCC excluded by the quadratic factor of det(tI - S_{n-1} S_1); (p, q, discriminant).
 pub fn pcc<E: Scalar>(body: &Polygon<E>) -> Result<[String; 3], Rejection> {
     let quad = pcc_quadratic(body).map_err(|at_one| {
-        let detail = Detail::Internal(Internal::NotARoot { value: Some(at_one.text()), pair: None });
+        let detail = Detail::Internal(Internal::NotARoot(at_one.text()));
         Rejection::new(Code::Internal, Locus::Nowhere, detail)
     })?;
     let pqd = [&quad.p, &quad.q, &quad.discriminant].map(Scalar::text);
@@ -213,7 +207,8 @@ pub const R2: [Code; 2] = [Code::ImageOutside, Code::ImageNotBelow];
 pub const R3: [Code; 2] = [Code::InitialOutside; 2];
 
 /// Where an image is checked and how a failure is located: the point mapped, the locus from the
-/// violated boundary (`None`: the image has v >= 0), the codes (outside, v >= 0), n, the corner.
+/// violated boundary (`None`: the image has v >= 0), the codes (outside, v >= 0), n (a box's
+/// rules add the corner to a rejection: `rules/boxes.rs`).
 pub struct Target<'a, R> {
     /// The point mapped.
     pub point: &'a Vec3<R>,
@@ -223,8 +218,6 @@ pub struct Target<'a, R> {
     pub codes: [Code; 2],
     /// n of the body.
     pub n: usize,
-    /// The corner of a box.
-    pub corner: Option<&'a Corner>,
 }
 
 /// Checks that `img` is 0, or has v < 0 and lies in K (f_e . img >= 0 for every edge e).
@@ -242,7 +235,7 @@ pub fn check_image<E: Scalar>(
         image: None,
         v_zero: img[2].is_zero(),
         by: None,
-        corner: t.corner.map(|c| c.at.clone()),
+        corner: None,
     };
     if !img[2].is_negative() {
         return Err(Rejection::new(t.codes[1], (t.locus)(None), Detail::Image(Box::new(failure))));

@@ -28,7 +28,7 @@ use crate::geometry::{ConvexPolygon, clip, hull};
 use crate::model::convex::{ConvexBody, ConvexBodyError, MAX_CONTACTS};
 use crate::model::linalg::{Vec3, mat_vec};
 use crate::model::pcc::PccExclusion;
-use crate::reject::{Code, Counted, Detail, Internal, KindDetail, KindLocus, Locus, Rejection};
+use crate::reject::{Code, Detail, KindCounted, KindDetail, KindInternal, KindLocus, Locus, Rejection};
 use crate::syntax::cone::Claim;
 use crate::syntax::family::{ConvexBodyText, ConvexCertificate, TensorText};
 use crate::syntax::numbers::{at_most, in_time, number, total};
@@ -144,7 +144,7 @@ fn prelude(cert: &ConvexCertificate, limits: ParseLimits) -> Result<(), Rejectio
         return Err(Rejection::at(Code::UnsupportedBody, "body.contacts", detail));
     }
     for (i, c) in cert.cones.iter().enumerate() {
-        at_most("max-generators", c.len(), limits.max_generators, Counted::ConeGenerators(i))?;
+        at_most("max-generators", c.len(), limits.max_generators, KindCounted::ConeGenerators(i).into())?;
     }
     if cert.cones.len() > MAX_CONTACTS {
         return Err(Rejection::at(
@@ -214,14 +214,14 @@ fn transition<F: Field>(
     limits: ParseLimits,
 ) -> Result<usize, Rejection> {
     let Some(covectors) = body.next_contact_cone(i as i64, j as i64) else {
-        return Err(Rejection::new(Code::Internal, Locus::Nowhere, Detail::Internal(Internal::NoCone(i, j))));
+        return Err(Rejection::new(Code::Internal, Locus::Nowhere, KindInternal::NoCone(i, j)));
     };
     let piece = covectors.iter().fold(k.polygon.vertices.clone(), |p, l| clip(&p, &int_vec(l)));
     let map = int_mat(&body.impact(j as i64));
     for (v, p) in piece.iter().enumerate() {
         in_time(limits, "checking effective invariance (rule K2)")?;
         let locus = |outside| KindLocus::Transition { from: i, to: j, vertex: v, outside }.into();
-        let t = Target { point: p, locus: &locus, codes: R2, n: body.n(), corner: None };
+        let t = Target { point: p, locus: &locus, codes: R2, n: body.n() };
         check_image::<F>(target, &mat_vec(&map, p), &t)?;
     }
     Ok(piece.len())
@@ -233,7 +233,7 @@ fn all_down<F: Field>(body: &ConvexBody<F>, i: usize, k: &Cone<F::Int>) -> Resul
     for (m, g) in body.all_down_generators().iter().enumerate() {
         let g = int_vec(g);
         let locus = |outside| KindLocus::ConvexAllDown { cone: i, generator: m, outside }.into();
-        let t = Target { point: &g, locus: &locus, codes: R3, n: body.n(), corner: None };
+        let t = Target { point: &g, locus: &locus, codes: R3, n: body.n() };
         check_image::<F>(k, &mat_vec(&map, &g), &t)?;
     }
     Ok(())
@@ -241,9 +241,9 @@ fn all_down<F: Field>(body: &ConvexBody<F>, i: usize, k: &Cone<F::Int>) -> Resul
 
 /// K4 for the adjacent pair (k, k+1): non-real roots and constant term q < 1 (Lemma 11.5(2)).
 fn pcc<F: Field>(body: &ConvexBody<F>, k: usize) -> Result<(), Rejection> {
-    let pair = Some((k, (k + 1) % body.n()));
+    let pair = (k, (k + 1) % body.n());
     let quad = body.pair_pcc_quadratic(k as i64).map_err(|at_one| {
-        let detail = Detail::Internal(Internal::NotARoot { value: Some(to_canonical(&at_one)), pair });
+        let detail = KindInternal::NotARootAtPair(to_canonical(&at_one), pair);
         Rejection::new(Code::Internal, Locus::Nowhere, detail)
     })?;
     match quad.exclusion() {

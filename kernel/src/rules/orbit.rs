@@ -23,7 +23,7 @@ use crate::model::polygon::BodyError;
 use crate::orbit::constants::enclosed_maps;
 use crate::orbit::interval::{Centred, Iv};
 use crate::orbit::map::{Maps, Quantity, Stop, period};
-use crate::reject::{Code, Counted, Detail, KindDetail, KindLocus, Rejection};
+use crate::reject::{Code, Detail, KindCounted, KindDetail, KindLocus, Rejection};
 use crate::syntax::cone::Claim;
 use crate::syntax::numbers::{at_most, in_time, number, total};
 use crate::syntax::orbit::{OrbitBody, OrbitCertificate, OrbitSet, Triple};
@@ -153,7 +153,7 @@ pub fn read_orbit_values<F: Field>(
     let rho = bound("rho", &cert.rho, true)?;
     let lambda = bound("lambda", &cert.lambda, true)?;
     let period = bound("period", &cert.period, false)?;
-    at_most("max-orbit-depth", cert.subdivision as usize, MAX_DEPTH as usize, Counted::Depth)?;
+    at_most("max-orbit-depth", cert.subdivision as usize, MAX_DEPTH as usize, KindCounted::Depth.into())?;
     let (centre, a, delta) = set::<F>(&cert.set, limits)?;
     let a_inv = inverse(&a).ok_or_else(|| fail(Code::DegenerateSet, "set.axes", Failure::Singular))?;
     Ok(Orbit { maps, pattern, centre, a, a_inv, delta, depth: cert.subdivision, rho, lambda, period })
@@ -346,7 +346,7 @@ pub fn cover<F: Field>(orbit: &Orbit<F>, limits: ParseLimits) -> Result<usize, R
         in_time(limits, "checking the sub-boxes of an orbit certificate")?;
         examined += 1;
         if examined > MAX_BOXES {
-            return Err(Rejection::limit("max-orbit-boxes", examined, MAX_BOXES, Counted::Boxes));
+            return Err(Rejection::limit("max-orbit-boxes", examined, MAX_BOXES, KindCounted::Boxes.into()));
         }
         match examine(orbit, &b) {
             Found::Shown => shown += 1,

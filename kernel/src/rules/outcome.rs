@@ -1,5 +1,4 @@
-//! What the rules report: an accepted certificate's facts, and the corner of a box at which a
-//! rule is checked (named in a rejection).
+//! What the rules report: an accepted certificate's facts.
 
 use crate::syntax::cone::Claim;
 
@@ -39,14 +38,4 @@ impl Accepted {
     pub fn cone(claim: Claim, n: usize, generators: usize, pieces: Vec<usize>) -> Self {
         Accepted { claim, n: n as u64, generators, pieces, ..Default::default() }
     }
-}
-
-/// A corner of a box of parameters (docs/certificate-format.md §9): 0 to 3 for (kappa, gamma) at
-/// (lo, lo), (hi, lo), (lo, hi), (hi, hi), with its values as canonical text.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Corner {
-    /// The corner's number.
-    pub index: usize,
-    /// (kappa, gamma) there.
-    pub at: [String; 2],
 }

@@ -15,7 +15,7 @@
 
 use crate::exact::{Field, NumberError, OrderedField, ParseLimits, parse_canonical, to_canonical};
 use crate::model::Shape;
-use crate::reject::{Code, Counted, Detail, KindDetail, KindLocus, Rejection};
+use crate::reject::{Code, Detail, KindCounted, KindDetail, KindLocus, Rejection};
 use crate::syntax::cone::{Body, Claim, Param};
 use crate::syntax::numbers::{at_most, in_time, number};
 use crate::syntax::refutation::{Refutation, Step};
@@ -145,7 +145,7 @@ pub fn check<F: Field>(r: &Refutation, limits: ParseLimits) -> Result<Refuted, R
             KindDetail::Refutation(Failure::NotAtPoint),
         ));
     };
-    at_most("max-generators", r.points.len(), limits.max_generators, Counted::Points)?;
+    at_most("max-generators", r.points.len(), limits.max_generators, KindCounted::Points.into())?;
     let shape = Shape::new(*n, number("body.kappa", k, limits)?, number("body.gamma", g, limits)?)
         .map_err(|e| Rejection::at(Code::ParameterOutOfRange, "body", Detail::Body(e)))?;
     let m = maps(&shape, r.refutes);

@@ -88,7 +88,7 @@ pub fn check<F: Field>(cert: &TimeToRest, limits: ParseLimits) -> Result<Rested,
     for r in 0..graph.len() {
         transitions(&body, &graph, r, limits)?;
     }
-    cone_rules::all_down(&body, &graph.first().ok_or_else(no_nodes)?.cone, None)?;
+    cone_rules::all_down(&body, &graph.first().ok_or_else(no_nodes)?.cone)?;
     let bound: F = number("bound", &cert.bound, limits)?;
     bound_holds(&body, &graph[0], &bound)?;
     if cert.claim == Claim::CompleteChatterFromAllDown {
@@ -255,7 +255,7 @@ fn transitions<F: Field>(
             let at = |outside| {
                 Locus::Kind(KindLocus::RestNode { node: r, step: Some(j), vertex: Some(i), outside })
             };
-            let t = Target { point: p, locus: &at, codes: R2, n: body.n(), corner: None };
+            let t = Target { point: p, locus: &at, codes: R2, n: body.n() };
             check_image::<F>(&graph[s].cone, &mat_vec(&int_mat(&step), p), &t)?;
             let p: Vec3<F> = std::array::from_fn(|k| F::from_int(&p[k]));
             decreases(body, (&graph[r], &graph[s]), j, &p, (r, i))?;

@@ -16,7 +16,7 @@
 
 use super::body::{body_error, gamma_range};
 use super::generators::{self, Generators};
-use super::outcome::{Accepted, Corner};
+use super::outcome::Accepted;
 use crate::exact::{Field, ParseLimits, Ring, scale_to_ints};
 use crate::model::rod::{Mat2, Rod, Vec2, mat2_vec};
 use crate::reject::{Boundary, Code, Detail, ImageFailure, Locus, Rejection, TimeToRestFailure};
@@ -38,9 +38,9 @@ pub fn check_point<F: Field>(
     let k = interval::<F>(&gens)?;
     in_time(limits, "building K")?;
     let piece = piece(&rod, &k);
-    invariance(&rod, &k, &piece, None)?;
+    invariance(&rod, &k, &piece)?;
     if cert.claim >= Claim::CcOrPccFromAllDown {
-        all_down(&rod, &k, None)?;
+        all_down(&rod, &k)?;
     }
     let mut a = accepted(&[&rod], &k, &gens, cert.claim, &piece);
     if let Some(b) = &cert.time_to_rest_bound {
@@ -161,36 +161,22 @@ pub fn invariance<F: Field>(
     rod: &Rod<F>,
     k: &Interval<F::Int>,
     piece: &[Vec2<F::Int>],
-    corner: Option<&Corner>,
 ) -> Result<(), Rejection> {
     let step = int_mat(&rod.step());
     for (i, p) in piece.iter().enumerate() {
-        let index = corner.map(|c| c.index);
-        let locus = |outside| Locus::Piece { piece: 1, vertex: i, outside, corner: index };
-        check_image::<F>(
-            k,
-            p,
-            &mat2_vec(&step, p),
-            &locus,
-            [Code::ImageOutside, Code::ImageNotBelow],
-            corner,
-        )?;
+        let locus = |outside| Locus::Piece { piece: 1, vertex: i, outside, corner: None };
+        check_image::<F>(k, p, &mat2_vec(&step, p), &locus, [Code::ImageOutside, Code::ImageNotBelow])?;
     }
     Ok(())
 }
 
 /// R3 at one body: I_0 maps the generators of D into K.
-pub fn all_down<F: Field>(
-    rod: &Rod<F>,
-    k: &Interval<F::Int>,
-    corner: Option<&Corner>,
-) -> Result<(), Rejection> {
+pub fn all_down<F: Field>(rod: &Rod<F>, k: &Interval<F::Int>) -> Result<(), Rejection> {
     let i0 = int_mat(&rod.impact(0));
     for (m, g) in rod.all_down_generators().iter().enumerate() {
         let g = int_vec(g);
-        let index = corner.map(|c| c.index);
-        let locus = |outside| Locus::AllDown { generator: m, outside, corner: index };
-        check_image::<F>(k, &g, &mat2_vec(&i0, &g), &locus, [Code::InitialOutside; 2], corner)?;
+        let locus = |outside| Locus::AllDown { generator: m, outside, corner: None };
+        check_image::<F>(k, &g, &mat2_vec(&i0, &g), &locus, [Code::InitialOutside; 2])?;
     }
     Ok(())
 }
@@ -203,19 +189,12 @@ fn check_image<F: Field>(
     img: &Vec2<F::Int>,
     locus: &dyn Fn(Option<Boundary>) -> Locus,
     codes: [Code; 2],
-    corner: Option<&Corner>,
 ) -> Result<(), Rejection> {
     if img.iter().all(Ring::is_zero) || (w(img).is_positive() && k.contains(img)) {
         return Ok(());
     }
-    let mut failure = ImageFailure {
-        n: 2,
-        point: shown::<F>(point),
-        image: None,
-        v_zero: false,
-        by: None,
-        corner: corner.map(|c| c.at.clone()),
-    };
+    let mut failure =
+        ImageFailure { n: 2, point: shown::<F>(point), image: None, v_zero: false, by: None, corner: None };
     if !w(img).is_positive() {
         return Err(Rejection::new(codes[1], locus(None), Detail::Image(Box::new(failure))));
     }

@@ -5,23 +5,17 @@
 //! kind has its own format string; `("chatter-certificate", 4 | 5)` are legacy aliases of the
 //! family and orbit formats (docs/certificate-format.md §13, §14).
 
-#[cfg(feature = "basin")]
-pub mod basin;
 pub mod cone;
-#[cfg(feature = "family")]
-pub mod family;
 #[cfg(feature = "json")]
 mod json;
+#[cfg(feature = "kinds")]
+mod kinds;
 pub mod numbers;
-#[cfg(feature = "orbit")]
-pub mod orbit;
-#[cfg(feature = "proof")]
-pub mod proof;
-#[cfg(feature = "refutation")]
-pub mod refutation;
-#[cfg(feature = "rest")]
-pub mod rest;
 pub mod strict;
+
+#[cfg(feature = "kinds")]
+#[allow(unused_imports)] // empty with only the features `boxes` or `field`
+pub use kinds::*;
 
 use crate::reject::{Code, Detail, Locus, Needs, Rejection};
 use serde::Deserialize;

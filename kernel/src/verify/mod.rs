@@ -18,12 +18,12 @@ use num_rational::BigRational;
 
 #[cfg(feature = "field")]
 mod field;
-#[cfg(any(feature = "family", feature = "orbit", feature = "proof", feature = "refutation"))]
+#[cfg(feature = "files")]
 mod kinds;
 
 #[cfg(feature = "field")]
 pub use field::check_in_field;
-#[cfg(any(feature = "family", feature = "orbit", feature = "proof", feature = "refutation"))]
+#[cfg(feature = "files")]
 pub use kinds::*;
 
 #[cfg(feature = "boxes")]
@@ -64,7 +64,7 @@ pub struct Backend {
     /// Cone certificates.
     pub check: fn(&Certificate, ParseLimits) -> Result<Accepted, Rejection>,
     /// The other kinds of file ([`Kinds`]).
-    #[cfg(any(feature = "family", feature = "orbit", feature = "proof", feature = "refutation"))]
+    #[cfg(feature = "files")]
     pub kinds: Kinds,
 }
 
@@ -73,7 +73,7 @@ const fn backend<F: Field>(name: &'static str) -> Backend {
     Backend {
         name,
         check: check::<F>,
-        #[cfg(any(feature = "family", feature = "orbit", feature = "proof", feature = "refutation"))]
+        #[cfg(feature = "files")]
         kinds: Kinds::of::<F>(),
     }
 }
@@ -151,7 +151,7 @@ pub fn verify_text(text: &str, limits: ParseLimits, backends: &[Backend]) -> Ver
 pub fn verify_text_in(text: &str, encoding: Encoding, limits: ParseLimits, backends: &[Backend]) -> Verdict {
     match kind_of(text, encoding, Kind::Cone) {
         Err(r) => Verdict::Rejected(r),
-        #[cfg(any(feature = "family", feature = "orbit", feature = "proof", feature = "refutation"))]
+        #[cfg(feature = "files")]
         Ok((kind, _)) if kind != Kind::Cone => verify_text_of(kind, text, encoding, limits, backends),
         // Without those features, the header names a cone certificate or is refused.
         Ok(_) => schema(text, encoding).map_or_else(Verdict::Rejected, |c| verify_on(&c, limits, backends)),

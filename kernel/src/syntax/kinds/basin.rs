@@ -7,7 +7,7 @@
 
 use super::orbit::{OrbitBody, OrbitCertificate};
 use super::rest::TimeToRest;
-use super::{Kind, Schema};
+use crate::syntax::{Kind, Schema};
 use serde::Deserialize;
 
 /// Value of the `format` field.

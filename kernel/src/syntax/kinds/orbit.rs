@@ -3,8 +3,8 @@
 //! x* + A [-δ, δ]³ or a box) and bounds ρ, λ, T̄. Format `"chatter-orbit-certificate"`, version
 //! 1; the legacy header `("chatter-certificate", 5)` is read as an alias. The numbers stay text.
 
-use super::cone::Claim;
-use super::{Kind, Schema};
+use crate::syntax::cone::Claim;
+use crate::syntax::{Kind, Schema};
 use serde::Deserialize;
 
 /// Value of the `format` field.

@@ -1,7 +1,7 @@
 //! The schema of proofs (docs/proof-format.md §2): format `"chatter-proof"`, version 1, RON
 //! only. Expressions stay text here; the checker parses them with the proof's variables.
 
-use super::{Kind, Schema};
+use crate::syntax::{Kind, Schema};
 use serde::{Deserialize, Serialize};
 
 /// Value of the `format` field.

@@ -4,8 +4,8 @@
 //! (docs/model.md §11.5). Format `"chatter-family-certificate"`, version 1; the legacy header
 //! `("chatter-certificate", 4)` is read as an alias. The numbers stay text here.
 
-use super::cone::{Claim, Generator};
-use super::{Kind, Schema};
+use crate::syntax::cone::{Claim, Generator};
+use crate::syntax::{Kind, Schema};
 use serde::Deserialize;
 
 /// Value of the `format` field.

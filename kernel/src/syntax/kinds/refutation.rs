@@ -2,8 +2,8 @@
 //! refuted and a derivation of points. Format `"chatter-refutation"`, version 1. The numbers stay
 //! text here; the kernel computes every point itself.
 
-use super::cone::{Body, Claim, Coordinates};
-use super::{Kind, Schema};
+use crate::syntax::cone::{Body, Claim, Coordinates};
+use crate::syntax::{Kind, Schema};
 use serde::Deserialize;
 
 /// Value of the `format` field.

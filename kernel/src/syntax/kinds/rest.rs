@@ -3,8 +3,8 @@
 //! §5). Format `"chatter-time-to-rest"`, versions 1 (a scale c_r per node) and 2 (a numerator
 //! a_r per node). The numbers stay text here.
 
-use super::cone::{Body, Claim, Coordinates, Generator};
-use super::{Kind, Schema};
+use crate::syntax::cone::{Body, Claim, Coordinates, Generator};
+use crate::syntax::{Kind, Schema};
 use serde::Deserialize;
 
 /// Value of the `format` field.
