@@ -1,12 +1,14 @@
 //! Maps of basin certificates (`chatter basin-map`, docs/basin-certificates.md §6): at every
 //! point (κ, γ) of a grid, a basin certificate over one box of drops, checked by the kernel on
 //! both backends, whose exact shares (CC, ICC, undecided, of the box's volume) are the map's
-//! values. Deterministic: the files depend only on the request.
+//! values. Deterministic: the files depend only on the request, not on threads or shards (a
+//! shard evaluates the points whose index is K modulo N; the shards' rows and certificates, read
+//! back, are written as one run's).
 
 use super::{BasinRequest, produce, write_basin};
 use crate::exact::Q;
 use crate::orbit::Request;
-use crate::sweep::grid::{Grid, Point, Variable};
+use crate::sweep::grid::{Grid, Point, Shard, Variable};
 use chatter_kernel::basin::drop::DIMS;
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::verify::{Backend, Verdict, verify_basin};
@@ -71,14 +73,17 @@ pub fn point(req: &MapRequest, index: usize, backends: &[Backend]) -> Result<Poi
     })
 }
 
-/// Every point, in parallel (rayon), in the grid's order; `tick` after each.
+/// The points of `shard` ([`Shard::ALL`]: every point), in parallel (rayon), in the grid's order;
+/// `tick` after each.
 pub fn run(
     req: &MapRequest,
+    shard: Shard,
     backends: &[Backend],
     tick: &(dyn Fn() + Sync),
 ) -> Result<Vec<PointShares>, String> {
     use rayon::prelude::*;
-    (0..req.grid.len())
+    let indices: Vec<usize> = shard.indices(req.grid.len()).collect();
+    indices
         .into_par_iter()
         .map(|i| {
             let r = point(req, i, backends);
@@ -109,6 +114,28 @@ fn csv_row(s: &PointShares) -> String {
         s.leaves[2],
         pattern.join(" ")
     )
+}
+
+/// A point read back from its row of points.csv and its certificate's text (`chatter basin-map
+/// merge`): the row must be exactly the one `chatter basin-map` writes for that point of `req`'s
+/// grid.
+pub fn read_row(req: &MapRequest, line: &str, certificate: String) -> Result<PointShares, String> {
+    let bad = || format!("not a row of a basin map of this grid ({CSV_HEADER}): {line:?}");
+    let cols: Vec<&str> = line.split(',').collect();
+    let [index, _, _, _, cc, icc, undecided, l0, l1, l2, pattern] = cols[..] else { return Err(bad()) };
+    let index = index.parse::<usize>().ok().filter(|&i| i < req.grid.len()).ok_or_else(bad)?;
+    let count = |s: &str| s.parse::<usize>().map_err(|_| bad());
+    let pattern = pattern.split_whitespace().map(count).collect::<Result<_, _>>()?;
+    let p = PointShares {
+        point: req.grid.point(index),
+        cc_share: cc.into(),
+        icc_share: icc.into(),
+        undecided_share: undecided.into(),
+        leaves: [count(l0)?, count(l1)?, count(l2)?],
+        pattern,
+        certificate,
+    };
+    if csv_row(&p) == line { Ok(p) } else { Err(bad()) }
 }
 
 /// The box of drops of every point, canonical "p/q" per coordinate (ω_x, ω_y, φ_x, φ_y, h).
@@ -191,9 +218,15 @@ pub fn summary(req: &MapRequest, points: &[PointShares]) -> BasinMapSummary {
     }
 }
 
-/// Writes DIR/points.csv, DIR/summary.json and DIR/certificates/point-INDEX.ron.
-pub fn write(dir: &Path, req: &MapRequest, points: &[PointShares]) -> Result<(), String> {
-    let io = |p: &Path, e: std::io::Error| format!("cannot write {}: {e}", p.display());
+fn io(p: &Path, e: std::io::Error) -> String {
+    format!("cannot write {}: {e}", p.display())
+}
+
+/// Writes DIR/points.csv and DIR/certificates/point-INDEX.ron of the points (a whole map's or a
+/// shard's), in a folder prepared as `chatter map` prepares its own (an earlier map's files
+/// removed; a non-empty folder without points.csv refused).
+pub fn write_rows(dir: &Path, points: &[PointShares]) -> Result<(), String> {
+    crate::sweep::prepare_dir(dir)?;
     let certs = dir.join("certificates");
     std::fs::create_dir_all(&certs).map_err(|e| io(&certs, e))?;
     let mut csv = format!("{CSV_HEADER}\n");
@@ -204,7 +237,12 @@ pub fn write(dir: &Path, req: &MapRequest, points: &[PointShares]) -> Result<(),
         std::fs::write(&path, &s.certificate).map_err(|e| io(&path, e))?;
     }
     let path = dir.join("points.csv");
-    std::fs::write(&path, csv).map_err(|e| io(&path, e))?;
+    std::fs::write(&path, csv).map_err(|e| io(&path, e))
+}
+
+/// Writes a whole map: DIR/points.csv, DIR/summary.json and DIR/certificates/point-INDEX.ron.
+pub fn write(dir: &Path, req: &MapRequest, points: &[PointShares]) -> Result<(), String> {
+    write_rows(dir, points)?;
     let path = dir.join("summary.json");
     let json = serde_json::to_string_pretty(&summary(req, points)).map_err(|e| e.to_string())?;
     std::fs::write(&path, json + "\n").map_err(|e| io(&path, e))

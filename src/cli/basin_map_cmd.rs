@@ -5,15 +5,18 @@
 //! columns, summary schema chatter.map/1, shards and merge) stay as documented in docs/map.md.
 
 use super::basin_cmd::parse_box;
-use super::map_cmd::{progress, with_jobs};
+use super::map_cmd::{MergeArgs, progress, with_jobs};
 use super::{Env, Outcome, emit};
 use crate::basin::BasinRequest;
-use crate::basin::map::{MapRequest, SHARE_OF, run as run_map, write};
+use crate::basin::map::{
+    CSV_HEADER, MapRequest, PointShares, SHARE_OF, read_row, run as run_map, write, write_rows,
+};
 use crate::exact::{Q, QExt};
 use crate::orbit::Request;
-use crate::sweep::grid::{Axis, Grid, Variable};
-use clap::Args;
-use std::path::PathBuf;
+use crate::sweep::grid::{Axis, Grid, Shard, Variable};
+use clap::{Args, Subcommand};
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
 
 /// The default box: the paper's box's centre, +-1/1000 in every coordinate.
 pub const TINY_BOX: &str =
@@ -35,10 +38,15 @@ An axis a:b:STEPS is the centres of STEPS equal cells of [a, b], as in `chatter 
 Writes DIR/points.csv, DIR/summary.json (schema chatter.basin-map/1, exact \"p/q\" shares) and \
 every certificate under DIR/certificates (check them with `chatter verify`); the files are \
 identical for identical inputs. Draw with `chatter plot basin-map DIR -o FILE`.\n\n\
+On a cluster, --shard K/N (or --shard auto in a SLURM job array) evaluates the points whose index \
+is K modulo N and writes their rows, certificates and DIR/shard.json; `chatter basin-map merge \
+DIR... -o OUT` joins the folders of all N shards into exactly the files of one run (docs/cluster.md).\n\n\
 Example:\n  chatter basin-map --n 3 --kappa 0.05:0.25:4 --gamma 0.05:0.3:4 --depth 4 --out bmap\n  \
 chatter plot basin-map bmap -o bmap.png"
 )]
 pub struct BasinMapArgs {
+    #[command(subcommand)]
+    pub merge: Option<BasinMapSub>,
     /// Number of contacts of the regular polygon: 3, 4, 5 or 6.
     #[arg(long, default_value_t = 3)]
     pub n: u64,
@@ -48,9 +56,9 @@ pub struct BasinMapArgs {
     /// Horizontal axis in rho = sqrt(kappa) instead: a:b:STEPS.
     #[arg(long, value_name = "A:B:STEPS", allow_hyphen_values = true)]
     pub rho: Option<String>,
-    /// Vertical axis, the coefficient of restitution: c:d:STEPS within [0, 1].
+    /// Vertical axis, the coefficient of restitution: c:d:STEPS within [0, 1] (required).
     #[arg(long, value_name = "C:D:STEPS", allow_hyphen_values = true)]
-    pub gamma: String,
+    pub gamma: Option<String>,
     /// The orbit certificates' pattern (e.g. 2,2,1,1); found by simulating drops at each point
     /// when omitted.
     #[arg(long, allow_hyphen_values = true)]
@@ -82,6 +90,106 @@ pub struct BasinMapArgs {
     /// Worker threads (default: all cores).
     #[arg(long, value_name = "J")]
     pub jobs: Option<usize>,
+    /// Evaluate only part K of N of the points (K = 0..N-1: those whose index is K modulo N), or
+    /// `auto` to read K and N from a SLURM job array; join the shards with `basin-map merge`.
+    #[arg(long, value_name = "K/N|auto")]
+    pub shard: Option<String>,
+}
+
+/// `chatter basin-map merge`.
+#[derive(Subcommand, Debug)]
+pub enum BasinMapSub {
+    /// Join the output folders of all shards of one basin map into the files of one run.
+    Merge(MergeArgs),
+}
+
+/// The schema of a shard's shard.json.
+const SHARD_SCHEMA: &str = "chatter.basin-map-shard/1";
+
+/// DIR/shard.json of a shard: what decides every point's certificate (canonical text, as the
+/// options of `chatter basin-map` would give it) and the shard, so that `basin-map merge` joins
+/// the shards of one map only.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+struct ShardFile {
+    schema: String,
+    settings: Settings,
+    shard: Shard,
+}
+
+/// The options of `chatter basin-map` that decide its files, in canonical text.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+struct Settings {
+    n: u64,
+    /// `kappa` or `rho`, and its axis A:B:STEPS.
+    variable: String,
+    x: String,
+    gamma: String,
+    pattern: Option<String>,
+    #[serde(rename = "box")]
+    drop_box: String,
+    depth: usize,
+    max_prefix: usize,
+    orbit_depth: u64,
+    /// The time-to-rest search at each point: `survey`, `full` or `none`.
+    rest: String,
+}
+
+impl Settings {
+    /// The settings of a validated map.
+    fn of(a: &BasinMapArgs, req: &MapRequest) -> Settings {
+        let join = |v: &[Q]| v.iter().map(Q::to_string).collect::<Vec<_>>().join(",");
+        let (b, g) = (&req.basin, &req.grid);
+        Settings {
+            n: g.n,
+            variable: if g.variable == Variable::Rho { "rho" } else { "kappa" }.into(),
+            x: g.x.text(),
+            gamma: g.gamma.text(),
+            pattern: b
+                .orbit
+                .pattern
+                .as_ref()
+                .map(|p| p.iter().map(usize::to_string).collect::<Vec<_>>().join(",")),
+            drop_box: format!("{}:{}", join(&b.lo), join(&b.hi)),
+            depth: b.depth,
+            max_prefix: b.max_prefix,
+            orbit_depth: b.orbit.max_depth,
+            rest: if a.no_rest {
+                "none"
+            } else if a.full_rest {
+                "full"
+            } else {
+                "survey"
+            }
+            .into(),
+        }
+    }
+
+    /// The map these settings describe, validated as `chatter basin-map` validates its options.
+    fn request(&self) -> Result<MapRequest, String> {
+        let axis = Some(self.x.clone());
+        let (kappa, rho) = if self.variable == "rho" { (None, axis) } else { (axis, None) };
+        if !matches!(self.rest.as_str(), "survey" | "full" | "none") {
+            return Err(format!("rest {:?} is not survey, full or none", self.rest));
+        }
+        let args = BasinMapArgs {
+            merge: None,
+            n: self.n,
+            kappa,
+            rho,
+            gamma: Some(self.gamma.clone()),
+            pattern: self.pattern.clone(),
+            drop_box: Some(self.drop_box.clone()),
+            depth: self.depth,
+            max_prefix: self.max_prefix,
+            orbit_depth: self.orbit_depth,
+            no_rest: self.rest == "none",
+            full_rest: self.rest == "full",
+            out: PathBuf::new(),
+            jobs: None,
+            shard: None,
+        };
+        validate(&args)
+    }
 }
 
 fn validate(a: &BasinMapArgs) -> Result<MapRequest, String> {
@@ -90,7 +198,8 @@ fn validate(a: &BasinMapArgs) -> Result<MapRequest, String> {
         (None, Some(k)) => (Variable::Kappa, Axis::parse(k).map_err(|e| format!("--kappa: {e}"))?),
         _ => return Err("give the horizontal axis with --kappa a:b:STEPS or --rho a:b:STEPS".into()),
     };
-    let gamma = Axis::parse(&a.gamma).map_err(|e| format!("--gamma: {e}"))?;
+    let gamma_text = a.gamma.as_deref().ok_or("--gamma c:d:STEPS is required")?;
+    let gamma = Axis::parse(gamma_text).map_err(|e| format!("--gamma: {e}"))?;
     let grid = Grid { n: a.n, variable, x, gamma, family: None };
     grid.validate()?;
     let pattern = a.pattern.as_deref().map(|p| super::orbit_cmd::parse_pattern(p, a.n)).transpose()?;
@@ -116,29 +225,63 @@ fn validate(a: &BasinMapArgs) -> Result<MapRequest, String> {
     Ok(MapRequest { grid, basin })
 }
 
+/// The shard of `--shard` (the whole grid without it).
+fn shard_of(text: Option<&str>) -> Result<Shard, String> {
+    match text {
+        None => Ok(Shard::ALL),
+        Some("auto") => {
+            Shard::from_slurm(|k| std::env::var(k).ok()).map_err(|e| format!("--shard auto: {e}"))
+        }
+        Some(s) => Shard::parse(s).map_err(|e| format!("--shard: {e}")),
+    }
+}
+
 pub fn run(a: BasinMapArgs, env: &Env) -> Outcome {
-    let req = match validate(&a) {
+    if let Some(BasinMapSub::Merge(m)) = &a.merge {
+        return match merge(m) {
+            Ok((req, points)) => match write(&m.out, &req, &points) {
+                Ok(()) => {
+                    emit(&format!(
+                        "merged {} shards: {} points -> {}",
+                        m.dirs.len(),
+                        points.len(),
+                        m.out.display()
+                    ));
+                    emit(&mean_shares(&points));
+                    Outcome::Success
+                }
+                Err(e) => Outcome::Usage(e),
+            },
+            Err(e) => Outcome::Usage(e),
+        };
+    }
+    let (req, shard) = match validate(&a).and_then(|r| Ok((r, shard_of(a.shard.as_deref())?))) {
         Ok(r) => r,
         Err(e) => return Outcome::Usage(e),
     };
-    let bar = progress(req.grid.len() as u64, "points");
+    let count = shard.indices(req.grid.len()).count();
+    let bar = progress(count as u64, "points");
     let start = std::time::Instant::now();
-    let points = match with_jobs(a.jobs, || run_map(&req, &env.backends, &|| bar.inc(1))) {
+    let points = match with_jobs(a.jobs, || run_map(&req, shard, &env.backends, &|| bar.inc(1))) {
         Ok(Ok(p)) => p,
         Ok(Err(e)) => return Outcome::Internal(e),
         Err(e) => return Outcome::Usage(e),
     };
     bar.finish_and_clear();
     let secs = start.elapsed().as_secs_f64();
-    if let Err(e) = write(&a.out, &req, &points) {
+    let written = if shard == Shard::ALL {
+        write(&a.out, &req, &points)
+    } else {
+        let file = ShardFile { schema: SHARD_SCHEMA.into(), settings: Settings::of(&a, &req), shard };
+        write_rows(&a.out, &points).and_then(|()| write_json(&a.out.join("shard.json"), &file))
+    };
+    if let Err(e) = written {
         return Outcome::Usage(e);
     }
-    let mean = |f: fn(&crate::basin::map::PointShares) -> &String| {
-        let sum = points.iter().filter_map(|p| f(p).parse::<Q>().ok()).fold(Q::int(0), |s, x| &s + &x);
-        (sum * Q::new(1, points.len().max(1) as i64)).to_f64()
-    };
+    let part =
+        if shard == Shard::ALL { String::new() } else { format!(" (shard {}/{})", shard.index, shard.count) };
     emit(&format!(
-        "basin-map n={} {}={} gamma={}: {} points in {secs:.1} s ({:.1} s/point) -> {}",
+        "basin-map n={} {}={} gamma={}: {} points{part} in {secs:.1} s ({:.1} s/point) -> {}",
         req.grid.n,
         if req.grid.variable == Variable::Rho { "rho" } else { "kappa" },
         req.grid.x.text(),
@@ -147,11 +290,83 @@ pub fn run(a: BasinMapArgs, env: &Env) -> Outcome {
         secs / points.len().max(1) as f64,
         a.out.display()
     ));
-    emit(&format!(
+    emit(&mean_shares(&points));
+    Outcome::Success
+}
+
+/// The line of the mean kernel-checked shares over the points.
+fn mean_shares(points: &[PointShares]) -> String {
+    let mean = |f: fn(&PointShares) -> &String| {
+        let sum = points.iter().filter_map(|p| f(p).parse::<Q>().ok()).fold(Q::int(0), |s, x| &s + &x);
+        (sum * Q::new(1, points.len().max(1) as i64)).to_f64()
+    };
+    format!(
         "  mean kernel-checked shares over the points: CC {:.4}, ICC {:.4}, undecided {:.4} (of {SHARE_OF})",
         mean(|p| &p.cc_share),
         mean(|p| &p.icc_share),
         mean(|p| &p.undecided_share)
-    ));
-    Outcome::Success
+    )
+}
+
+fn write_json(path: &Path, value: &impl Serialize) -> Result<(), String> {
+    let text = serde_json::to_string_pretty(value).map_err(|e| e.to_string())? + "\n";
+    std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))
+}
+
+fn read_text(path: &Path) -> Result<String, String> {
+    std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// The shards' folders read back: every shard of one map exactly once, each with exactly its
+/// points' rows and certificates; the points in the grid's order.
+fn merge(m: &MergeArgs) -> Result<(MapRequest, Vec<PointShares>), String> {
+    let mut shards = Vec::new();
+    for d in &m.dirs {
+        let path = d.join("shard.json");
+        let file: ShardFile =
+            serde_json::from_str(&read_text(&path)?).map_err(|e| format!("{}: {e}", path.display()))?;
+        if file.schema != SHARD_SCHEMA {
+            return Err(format!("{}: not the shard.json of a shard of `chatter basin-map`", path.display()));
+        }
+        shards.push((file, d));
+    }
+    let Some((first, _)) = shards.first() else { return Err("no shard folders given".into()) };
+    let (settings, count) = (first.settings.clone(), first.shard.count);
+    for (f, d) in &shards {
+        if f.settings != settings || f.shard.count != count {
+            return Err(format!(
+                "{} belongs to a different basin map (options or shard count differ)",
+                d.display()
+            ));
+        }
+    }
+    Shard::check_cover(count, shards.iter().map(|(f, d)| (f.shard, d.as_path())))?;
+    let req = settings.request()?;
+    let mut points = Vec::new();
+    for (f, d) in &shards {
+        let csv = read_text(&d.join("points.csv"))?;
+        let expected: Vec<usize> = f.shard.indices(req.grid.len()).collect();
+        let rows: Vec<&str> = csv.lines().skip(1).collect();
+        if csv.lines().next() != Some(CSV_HEADER) || rows.len() != expected.len() {
+            return Err(format!(
+                "{}: the rows are not those of shard {}/{count}",
+                d.display(),
+                f.shard.index
+            ));
+        }
+        for (line, &i) in rows.iter().zip(&expected) {
+            let cert = read_text(&d.join(format!("certificates/point-{i}.ron")))?;
+            let p = read_row(&req, line, cert).map_err(|e| format!("{}: {e}", d.display()))?;
+            if p.point.index != i {
+                return Err(format!(
+                    "{}: the rows are not those of shard {}/{count}",
+                    d.display(),
+                    f.shard.index
+                ));
+            }
+            points.push(p);
+        }
+    }
+    points.sort_by_key(|p| p.point.index);
+    Ok((req, points))
 }

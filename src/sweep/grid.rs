@@ -3,6 +3,7 @@
 
 use crate::exact::{Q, parse_user_number};
 use serde::{Deserialize, Serialize};
+use std::path::Path;
 
 /// Largest number of steps on one axis.
 pub const MAX_STEPS: u32 = 10_000;
@@ -174,6 +175,32 @@ pub struct Shard {
 impl Shard {
     /// The whole grid.
     pub const ALL: Shard = Shard { index: 0, count: 1 };
+
+    /// Checks that `shards` (each with the folder it was read from) are shards 0..N-1 of one
+    /// `count` = N, each exactly once (a shard file naming K >= N is refused, never indexed).
+    pub fn check_cover<'a>(
+        count: u32,
+        shards: impl IntoIterator<Item = (Shard, &'a Path)>,
+    ) -> Result<(), String> {
+        let mut seen = vec![false; count as usize];
+        for (s, dir) in shards {
+            if s.count != count || s.index >= count {
+                return Err(format!(
+                    "{} is not one of the {count} shards (shard {}/{})",
+                    dir.display(),
+                    s.index,
+                    s.count
+                ));
+            }
+            if std::mem::replace(&mut seen[s.index as usize], true) {
+                return Err(format!("shard {}/{count} given twice ({})", s.index, dir.display()));
+            }
+        }
+        match seen.iter().position(|s| !s) {
+            Some(k) => Err(format!("shard {k}/{count} is missing")),
+            None => Ok(()),
+        }
+    }
 
     /// Reads `K/N` (0 <= K < N).
     pub fn parse(text: &str) -> Result<Shard, String> {

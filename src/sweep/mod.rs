@@ -183,17 +183,16 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Summary, String> {
     }
     let Some((first, _, _)) = shards.first() else { return Err("no shard folders given".into()) };
     let (grid, computed, count) = (first.grid.clone(), first.computed.clone(), first.shard.count);
-    let mut seen = vec![false; count as usize];
-    for (f, rows, d) in &shards {
+    for (f, _, d) in &shards {
         if f.grid != grid || f.computed != computed || f.shard.count != count {
             return Err(format!(
                 "{} belongs to a different sweep (grid, tasks or shard count differ)",
                 d.display()
             ));
         }
-        if std::mem::replace(&mut seen[f.shard.index as usize], true) {
-            return Err(format!("shard {}/{count} given twice ({})", f.shard.index, d.display()));
-        }
+    }
+    Shard::check_cover(count, shards.iter().map(|(f, _, d)| (f.shard, d.as_path())))?;
+    for (f, rows, d) in &shards {
         let expected: Vec<usize> = f.shard.indices(grid.len()).collect();
         if rows.iter().map(|r| r.index).ne(expected.iter().copied()) {
             return Err(format!(
@@ -202,9 +201,6 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Summary, String> {
                 f.shard.index
             ));
         }
-    }
-    if let Some(k) = seen.iter().position(|s| !s) {
-        return Err(format!("shard {k}/{count} is missing"));
     }
     let mut rows: Vec<(Row, &PathBuf)> =
         shards.iter().flat_map(|(_, rows, d)| rows.iter().map(move |r| (r.clone(), *d))).collect();

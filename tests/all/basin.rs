@@ -3,7 +3,7 @@
 //! impacts the leaf states (and the ICC leaves end ICC, proved); `chatter basin` writes a file
 //! that `chatter verify` accepts with the shares it printed.
 
-use crate::common::{bin, root};
+use crate::common::{bin, files_of, root};
 use chatter::exact::{Q, QExt};
 use chatter::simulate::{Model, Options, Outcome, Shape, SplitMix64, Start, simulate_exact};
 use chatter_kernel::rules::basin::leaf_box;
@@ -212,15 +212,18 @@ fn basin_map_on_a_2x2_grid_writes_the_kernels_shares_of_each_point_and_its_figur
     let dir = d.path().join("bmap");
     // Points (kappa, gamma) = (1/8, 3/20) (the triangle's band point), (1/8, 9/20) (far above the
     // CC threshold), (3/8, 3/20) and (3/8, 9/20); the default tiny box around the paper's centre.
-    let run = |dir: &std::path::Path, jobs: &str| {
+    let map = ["basin-map", "--n", "3", "--kappa", "0:0.5:2", "--gamma", "0:0.6:2", "--depth", "2"];
+    let run = |dir: &std::path::Path, more: &[&str], env: &[(&str, &str)]| {
         let o = std::process::Command::new(bin())
-            .args(["basin-map", "--n", "3", "--kappa", "0:0.5:2", "--gamma", "0:0.6:2", "--depth", "2"])
-            .args(["--jobs", jobs, "--out", dir.to_str().unwrap()])
+            .args(map)
+            .args(more)
+            .args(["--out", dir.to_str().unwrap()])
+            .envs(env.iter().copied())
             .output()
             .unwrap();
         assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     };
-    run(&dir, "2");
+    run(&dir, &["--jobs", "2"], &[]);
     let csv = std::fs::read_to_string(dir.join("points.csv")).unwrap();
     let rows: Vec<Vec<&str>> = csv.lines().skip(1).map(|l| l.split(',').collect()).collect();
     assert_eq!(rows.len(), 4, "{csv}");
@@ -252,12 +255,47 @@ fn basin_map_on_a_2x2_grid_writes_the_kernels_shares_of_each_point_and_its_figur
         assert!(rows[i][5].parse::<Q>().unwrap() >= Q::new(1, 2), "{:?}", rows[i]);
         assert_eq!(rows[i][4], "0");
     }
-    // Deterministic: the same files on one thread.
+    // Deterministic across threads and shards: two shards on one thread each (the second as task
+    // 1 of a SLURM array 0-1), merged, are the files of the single run.
+    let shards = [d.path().join("shard0"), d.path().join("shard1")];
+    run(&shards[0], &["--jobs", "1", "--shard", "0/2"], &[]);
+    let slurm =
+        [("SLURM_ARRAY_TASK_ID", "1"), ("SLURM_ARRAY_TASK_COUNT", "2"), ("SLURM_ARRAY_TASK_MIN", "0")];
+    run(&shards[1], &["--jobs", "1", "--shard", "auto"], &slurm);
+    assert!(shards[1].join("shard.json").exists() && !shards[1].join("summary.json").exists());
+    assert_eq!(std::fs::read_to_string(shards[1].join("points.csv")).unwrap().lines().count(), 3);
     let again = d.path().join("again");
-    run(&again, "1");
-    for f in ["points.csv", "summary.json", "certificates/point-0.ron"] {
-        assert_eq!(std::fs::read(dir.join(f)).unwrap(), std::fs::read(again.join(f)).unwrap(), "{f}");
-    }
+    let merge = |dirs: &[&std::path::Path], out: &std::path::Path| {
+        std::process::Command::new(bin())
+            .args(["basin-map", "merge"])
+            .args(dirs)
+            .arg("-o")
+            .arg(out)
+            .output()
+            .unwrap()
+    };
+    let o = merge(&[&shards[1], &shards[0]], &again);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(files_of(&dir), files_of(&again), "the merged shards are not the single run's files");
+    // What merge refuses (exit 2, nothing merged): a missing shard, a shard twice, a shard of
+    // another map, a shard.json that is not one.
+    let refused = |dirs: &[&std::path::Path], says: &str| {
+        let o = merge(dirs, &d.path().join("refused"));
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(err.contains(says), "{err}");
+    };
+    refused(&[&shards[0]], "shard 1/2 is missing");
+    refused(&[&shards[0], &shards[0]], "shard 0/2 given twice");
+    let json = std::fs::read_to_string(shards[1].join("shard.json")).unwrap();
+    let other = d.path().join("other");
+    crate::common::copy_dir(&shards[1], &other);
+    std::fs::write(other.join("shard.json"), json.replace("\"depth\": 2", "\"depth\": 3")).unwrap();
+    refused(&[&shards[0], &other], "belongs to a different basin map");
+    std::fs::write(other.join("shard.json"), json.replace("\"index\": 1", "\"index\": 7")).unwrap();
+    refused(&[&shards[0], &other], "is not one of the 2 shards");
+    let bad = std::process::Command::new(bin()).args(map).args(["--shard", "2/2"]).output().unwrap();
+    assert_eq!(bad.status.code(), Some(2), "{}", String::from_utf8_lossy(&bad.stderr));
     // The figure in both formats (the exact curve along 48 lines: this test is about the cells).
     for name in ["bmap.png", "bmap.svg"] {
         let out = d.path().join(name);

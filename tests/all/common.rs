@@ -3,7 +3,7 @@
 
 use chatter::exact::Q;
 use chatter_kernel::model::Polygon as Body;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// A rational from canonical text (panics on bad input: test data only).
 pub fn q(s: &str) -> Q {
@@ -79,4 +79,22 @@ pub fn copy_dir(from: &std::path::Path, to: &std::path::Path) {
             std::fs::copy(e.path(), target).unwrap();
         }
     }
+}
+
+/// Every file under `dir` (relative path and bytes), sorted.
+pub fn files_of(dir: &Path) -> Vec<(std::path::PathBuf, Vec<u8>)> {
+    let mut files = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap_or_else(|e| panic!("{}: {e}", d.display())) {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+            } else {
+                files.push((p.strip_prefix(dir).unwrap().to_path_buf(), std::fs::read(&p).unwrap()));
+            }
+        }
+    }
+    files.sort();
+    files
 }

@@ -1,30 +1,12 @@
 //! `chatter reproduce --quick`: the report is written, cites commands that really show its
 //! evidence, and renders in a real headless browser (Debian's chromium; CI installs it).
 
-use crate::common::{bin, copy_dir, reproduce_quick};
+use crate::common::{bin, copy_dir, files_of, reproduce_quick};
 use std::path::Path;
 use std::process::{Command, Output};
 
 fn chatter(args: &[&str], dir: &Path) -> Output {
     Command::new(bin()).args(args).current_dir(dir).output().unwrap()
-}
-
-/// Every file under `dir` (relative path and bytes), sorted.
-fn files_of(dir: &Path) -> Vec<(std::path::PathBuf, Vec<u8>)> {
-    let mut files = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        for e in std::fs::read_dir(&d).unwrap_or_else(|e| panic!("{}: {e}", d.display())) {
-            let p = e.unwrap().path();
-            if p.is_dir() {
-                stack.push(p);
-            } else {
-                files.push((p.strip_prefix(dir).unwrap().to_path_buf(), std::fs::read(&p).unwrap()));
-            }
-        }
-    }
-    files.sort();
-    files
 }
 
 /// The commands a report cites ("Shown by:" lines of report.md).

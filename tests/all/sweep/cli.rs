@@ -127,6 +127,13 @@ fn output_is_byte_identical_across_jobs_shards_and_merges() {
     assert!(stderr(&o).contains("different sweep"), "{}", stderr(&o));
     let o = chatter(&["map", "merge", "part0", "part0", "part1", "--out", "bad"], p);
     assert!(stderr(&o).contains("given twice"), "{}", stderr(&o));
+    // Regression (2026-11-28): a shard.json naming shard K >= N made merge panic (index out of
+    // bounds); it is refused, naming the folder.
+    let json = std::fs::read_to_string(p.join("part1/shard.json")).unwrap();
+    std::fs::write(p.join("part1/shard.json"), json.replace("\"index\": 1", "\"index\": 7")).unwrap();
+    let o = chatter(&["map", "merge", "part0", "part1", "part2", "--out", "bad"], p);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("part1 is not one of the 3 shards") && !stderr(&o).contains("panicked"));
 }
 
 #[test]
