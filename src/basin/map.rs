@@ -116,9 +116,41 @@ fn csv_row(s: &PointShares) -> String {
     )
 }
 
+/// The shares and leaf counts (CC, ICC, undecided) and the orbit pattern that a basin
+/// certificate's text declares: 2^-depth per leaf by its verdict, as the kernel sums them. Read,
+/// not checked (that is `chatter verify`'s work): what a row of points.csv must agree with.
+fn declared(certificate: &str) -> Result<Declared, String> {
+    use chatter_kernel::syntax::basin::{BasinCertificate, LeafVerdict};
+    let cert: BasinCertificate =
+        chatter_kernel::syntax::read(certificate, chatter_kernel::syntax::Encoding::Ron)
+            .map_err(|r| format!("not a basin certificate ({r})"))?;
+    let (mut shares, mut counts) = ([Q::int(0), Q::int(0), Q::int(0)], [0usize; 3]);
+    for leaf in &cert.leaves {
+        let kind = match leaf.verdict {
+            LeafVerdict::Cc { .. } | LeafVerdict::Rest { .. } => 0,
+            LeafVerdict::Icc { .. } => 1,
+            LeafVerdict::Undecided => 2,
+        };
+        let volume = (0..leaf.path.len()).fold(Q::int(1), |v, _| v * Q::new(1, 2));
+        shares[kind] = &shares[kind] + &volume;
+        counts[kind] += 1;
+    }
+    let pattern = cert.orbit.map(|o| o.pattern.iter().map(|&j| j as usize).collect()).unwrap_or_default();
+    Ok(Declared { shares: shares.map(|s| s.to_string()), leaves: counts, pattern })
+}
+
+/// What a basin certificate declares of its point: shares (canonical text), leaf counts (CC,
+/// ICC, undecided) and the orbit pattern.
+#[derive(PartialEq, Eq)]
+struct Declared {
+    shares: [String; 3],
+    leaves: [usize; 3],
+    pattern: Vec<usize>,
+}
+
 /// A point read back from its row of points.csv and its certificate's text (`chatter basin-map
 /// merge`): the row must be exactly the one `chatter basin-map` writes for that point of `req`'s
-/// grid.
+/// grid, and its shares, leaf counts and pattern those its certificate declares.
 pub fn read_row(req: &MapRequest, line: &str, certificate: String) -> Result<PointShares, String> {
     let bad = || format!("not a row of a basin map of this grid ({CSV_HEADER}): {line:?}");
     let cols: Vec<&str> = line.split(',').collect();
@@ -135,7 +167,20 @@ pub fn read_row(req: &MapRequest, line: &str, certificate: String) -> Result<Poi
         pattern,
         certificate,
     };
-    if csv_row(&p) == line { Ok(p) } else { Err(bad()) }
+    if csv_row(&p) != line {
+        return Err(bad());
+    }
+    let row = Declared {
+        shares: [p.cc_share.clone(), p.icc_share.clone(), p.undecided_share.clone()],
+        leaves: p.leaves,
+        pattern: p.pattern.clone(),
+    };
+    if declared(&p.certificate).map_err(|e| format!("point {index}: {e}"))? != row {
+        return Err(format!(
+            "point {index}: the row's shares, leaves or pattern are not its certificate's: {line:?}"
+        ));
+    }
+    Ok(p)
 }
 
 /// The box of drops of every point, canonical "p/q" per coordinate (ω_x, ω_y, φ_x, φ_y, h).

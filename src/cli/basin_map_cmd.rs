@@ -42,7 +42,8 @@ On a cluster, --shard K/N (or --shard auto in a SLURM job array) evaluates the p
 is K modulo N and writes their rows, certificates and DIR/shard.json; `chatter basin-map merge \
 DIR... -o OUT` joins the folders of all N shards into exactly the files of one run (docs/cluster.md).\n\n\
 Example:\n  chatter basin-map --n 3 --kappa 0.05:0.25:4 --gamma 0.05:0.3:4 --depth 4 --out bmap\n  \
-chatter plot basin-map bmap -o bmap.png"
+chatter plot basin-map bmap -o bmap.png",
+    args_conflicts_with_subcommands = true
 )]
 pub struct BasinMapArgs {
     #[command(subcommand)]
@@ -171,6 +172,9 @@ impl Settings {
         if !matches!(self.rest.as_str(), "survey" | "full" | "none") {
             return Err(format!("rest {:?} is not survey, full or none", self.rest));
         }
+        if !matches!(self.variable.as_str(), "rho" | "kappa") {
+            return Err(format!("variable {:?} is not rho or kappa", self.variable));
+        }
         let args = BasinMapArgs {
             merge: None,
             n: self.n,
@@ -225,6 +229,21 @@ fn validate(a: &BasinMapArgs) -> Result<MapRequest, String> {
     Ok(MapRequest { grid, basin })
 }
 
+/// The request and the shard, and the checks that need no work: the output folder is one that
+/// may be written (`sweep::check_dir`), and a shard's options read back from its shard.json as
+/// they were given (else `merge` could not join the shards).
+fn prepare(a: &BasinMapArgs) -> Result<(MapRequest, Shard), String> {
+    let req = validate(a)?;
+    let shard = shard_of(a.shard.as_deref())?;
+    crate::sweep::check_dir(&a.out)?;
+    if shard != Shard::ALL {
+        Settings::of(a, &req)
+            .request()
+            .map_err(|e| format!("--shard: these options cannot be read back from shard.json ({e})"))?;
+    }
+    Ok((req, shard))
+}
+
 /// The shard of `--shard` (the whole grid without it).
 fn shard_of(text: Option<&str>) -> Result<Shard, String> {
     match text {
@@ -255,7 +274,7 @@ pub fn run(a: BasinMapArgs, env: &Env) -> Outcome {
             Err(e) => Outcome::Usage(e),
         };
     }
-    let (req, shard) = match validate(&a).and_then(|r| Ok((r, shard_of(a.shard.as_deref())?))) {
+    let (req, shard) = match prepare(&a) {
         Ok(r) => r,
         Err(e) => return Outcome::Usage(e),
     };

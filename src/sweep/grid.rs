@@ -118,6 +118,14 @@ impl Grid {
     /// Checks that every point is a body: kappa > 0 (a family's body at every parameter) and
     /// 0 <= gamma <= 1.
     pub fn validate(&self) -> Result<(), String> {
+        for a in [&self.x, &self.gamma] {
+            if a.steps == 0 || a.steps > MAX_STEPS || a.lo >= a.hi {
+                return Err(format!(
+                    "the axis {} is not a:b:STEPS with a < b and 1 to {MAX_STEPS} steps",
+                    a.text()
+                ));
+            }
+        }
         if let Some(f) = &self.family {
             return self.validate_family(f);
         }
@@ -177,12 +185,13 @@ impl Shard {
     pub const ALL: Shard = Shard { index: 0, count: 1 };
 
     /// Checks that `shards` (each with the folder it was read from) are shards 0..N-1 of one
-    /// `count` = N, each exactly once (a shard file naming K >= N is refused, never indexed).
+    /// `count` = N, each exactly once (a shard file naming K >= N is refused, never indexed; the
+    /// work is bounded by the number of shards given, whatever N a file names).
     pub fn check_cover<'a>(
         count: u32,
         shards: impl IntoIterator<Item = (Shard, &'a Path)>,
     ) -> Result<(), String> {
-        let mut seen = vec![false; count as usize];
+        let mut seen = std::collections::BTreeSet::new();
         for (s, dir) in shards {
             if s.count != count || s.index >= count {
                 return Err(format!(
@@ -192,11 +201,11 @@ impl Shard {
                     s.count
                 ));
             }
-            if std::mem::replace(&mut seen[s.index as usize], true) {
+            if !seen.insert(s.index) {
                 return Err(format!("shard {}/{count} given twice ({})", s.index, dir.display()));
             }
         }
-        match seen.iter().position(|s| !s) {
+        match (0..count).find(|k| !seen.contains(k)) {
             Some(k) => Err(format!("shard {k}/{count} is missing")),
             None => Ok(()),
         }

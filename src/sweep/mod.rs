@@ -105,9 +105,8 @@ fn io(path: &Path, e: std::io::Error) -> String {
     format!("{}: {e}", path.display())
 }
 
-/// Prepares `dir` for a map's files: creates it, or clears the files of an earlier map in it;
-/// refuses a non-empty folder that is not a map's.
-pub fn prepare_dir(dir: &Path) -> Result<(), String> {
+/// Refuses, before any work, a folder for a map's files that is not empty and not a map's.
+pub fn check_dir(dir: &Path) -> Result<(), String> {
     if dir.exists() {
         let mut entries = std::fs::read_dir(dir).map_err(|e| io(dir, e))?.peekable();
         if entries.peek().is_some() && !dir.join(POINTS).exists() {
@@ -116,6 +115,15 @@ pub fn prepare_dir(dir: &Path) -> Result<(), String> {
                 dir.display()
             ));
         }
+    }
+    Ok(())
+}
+
+/// Prepares `dir` for a map's files: creates it, or clears the files of an earlier map in it;
+/// refuses a non-empty folder that is not a map's ([`check_dir`]).
+pub fn prepare_dir(dir: &Path) -> Result<(), String> {
+    check_dir(dir)?;
+    if dir.exists() {
         for f in [POINTS, SUMMARY, SHARD] {
             let p = dir.join(f);
             if p.exists() {
@@ -183,6 +191,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Summary, String> {
     }
     let Some((first, _, _)) = shards.first() else { return Err("no shard folders given".into()) };
     let (grid, computed, count) = (first.grid.clone(), first.computed.clone(), first.shard.count);
+    grid.validate().map_err(|e| format!("{}: {e}", shards[0].2.join(SHARD).display()))?;
     for (f, _, d) in &shards {
         if f.grid != grid || f.computed != computed || f.shard.count != count {
             return Err(format!(

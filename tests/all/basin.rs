@@ -294,8 +294,36 @@ fn basin_map_on_a_2x2_grid_writes_the_kernels_shares_of_each_point_and_its_figur
     refused(&[&shards[0], &other], "belongs to a different basin map");
     std::fs::write(other.join("shard.json"), json.replace("\"index\": 1", "\"index\": 7")).unwrap();
     refused(&[&shards[0], &other], "is not one of the 2 shards");
-    let bad = std::process::Command::new(bin()).args(map).args(["--shard", "2/2"]).output().unwrap();
-    assert_eq!(bad.status.code(), Some(2), "{}", String::from_utf8_lossy(&bad.stderr));
+    // Rows or certificates that are not the shard's: a row edited, a certificate missing.
+    std::fs::write(other.join("shard.json"), &json).unwrap();
+    let csv = std::fs::read_to_string(other.join("points.csv")).unwrap();
+    let edited = csv.replacen(",1,", ",2,", 1);
+    assert_ne!(edited, csv);
+    std::fs::write(other.join("points.csv"), edited).unwrap();
+    refused(&[&shards[0], &other], "are not its certificate's");
+    std::fs::write(other.join("points.csv"), &csv).unwrap();
+    std::fs::remove_file(other.join("certificates/point-1.ron")).unwrap();
+    refused(&[&shards[0], &other], "point-1.ron");
+    // Refused before any work (exit 2): a shard out of range, options before `merge`, and an
+    // output folder that holds other files (they are kept).
+    let precious = d.path().join("precious");
+    std::fs::create_dir(&precious).unwrap();
+    std::fs::write(precious.join("notes.txt"), "keep").unwrap();
+    for (args, says) in [
+        (vec!["--shard", "2/2", "--out", other.to_str().unwrap()], "K must satisfy 0 <= K < N"),
+        (vec!["--out", precious.to_str().unwrap()], "is not empty and holds no points.csv"),
+    ] {
+        let o = std::process::Command::new(bin()).args(map).args(&args).output().unwrap();
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(says), "{args:?}: {err}");
+    }
+    assert_eq!(std::fs::read_to_string(precious.join("notes.txt")).unwrap(), "keep");
+    let o = std::process::Command::new(bin())
+        .args(["basin-map", "--depth", "3", "merge", shards[0].to_str().unwrap(), "-o", "x"])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2), "options before merge: {}", String::from_utf8_lossy(&o.stderr));
     // The figure in both formats (the exact curve along 48 lines: this test is about the cells).
     for name in ["bmap.png", "bmap.svg"] {
         let out = d.path().join(name);
