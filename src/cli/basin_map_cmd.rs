@@ -261,9 +261,10 @@ pub fn run(a: BasinMapArgs, env: &Env) -> Outcome {
             Ok((req, points)) => match write(&m.out, &req, &points) {
                 Ok(()) => {
                     emit(&format!(
-                        "merged {} shards: {} points -> {}",
+                        "merged {} shards: {} points -> {} (the shares as the shards' kernel runs reported them, not checked again: `chatter verify {}/certificates` re-checks)",
                         m.dirs.len(),
                         points.len(),
+                        m.out.display(),
                         m.out.display()
                     ));
                     emit(&mean_shares(&points));

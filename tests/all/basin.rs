@@ -276,6 +276,8 @@ fn basin_map_on_a_2x2_grid_writes_the_kernels_shares_of_each_point_and_its_figur
     };
     let o = merge(&[&shards[1], &shards[0]], &again);
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    // Merge runs no kernel: its line says whose shares these are and how to re-check them.
+    assert!(String::from_utf8_lossy(&o.stdout).contains("not checked again: `chatter verify"));
     assert_eq!(files_of(&dir), files_of(&again), "the merged shards are not the single run's files");
     // What merge refuses (exit 2, nothing merged): a missing shard, a shard twice, a shard of
     // another map, a shard.json that is not one.
