@@ -231,6 +231,9 @@ pub fn basin_to_json(c: &BasinCertificate) -> String {
                     )
                 }
                 LeafVerdict::Undecided => "\"Undecided\"".into(),
+                LeafVerdict::Tree { next } => {
+                    format!("{{\"Tree\": {{\"next\": {}}}}}", crate::basin::tree::write_json(next))
+                }
             };
             format!("{{\"path\": {}, \"verdict\": {verdict}}}", quoted(&l.path))
         })

@@ -15,6 +15,8 @@ use crate::verdict::{Checked, Fail};
 use num_bigint::BigInt;
 use num_traits::{One, Signed};
 
+pub mod tree;
+
 /// The five coordinates of a drop: ω_x, ω_y, φ_x, φ_y, h (docs/basin-certificates.md §1).
 pub const DIMS: usize = 5;
 
@@ -126,16 +128,10 @@ pub enum End<'a> {
 /// Follows one drop (q, p) exactly through the impacts `list` (the first absolute, the later ones
 /// relative to the contact that landed last, §1): every contact up at the start, each impact
 /// forced (the target approaches and is up, every other contact still up when it lands), then the
-/// end. For `Cc`, the time from the drop to rest bounded by the orbit certificate's theorem,
-/// divided by h: (Σ t_s + B α/β)/h with B = T̄/(1 − ρ) (docs/basin-certificates.md §4); for
-/// `Rest`, by Theorem 5.1 from node r on (docs/time-to-rest.md §5):
-/// (Σ t_s + Φ_r(q, p))/h with Φ_r(q, p) = (a_r·q)/(−b_r·p).
+/// end (`ended`).
 pub fn follow(body: &Polygon, q0: V3, p0: V3, list: &[i64], end: End) -> Checked<Option<Num>> {
-    let f = &body.kappa.field;
-    if let Some(k) = (0..body.n as i64).find(|&k| !body.speed(k, &q0).is_positive()) {
-        return Err(not_shown(format!("contact {k} is not up at the start")));
-    }
-    let (mut q, mut p, mut time) = (q0.clone(), p0, Num::int(f, 0));
+    all_up(body, &q0)?;
+    let (mut q, mut p, mut time) = (q0.clone(), p0, Num::int(&body.kappa.field, 0));
     for (s, &j) in list.iter().enumerate() {
         let (uj, hj) = (body.speed(j, &p), body.speed(j, &q));
         if !uj.is_negative() || !hj.is_positive() {
@@ -146,12 +142,35 @@ pub fn follow(body: &Polygon, q0: V3, p0: V3, list: &[i64], end: End) -> Checked
                 return Err(not_shown(format!("at impact {s}, contact {k} is not up when {j} lands")));
             }
         }
-        let t = &hj / &uj.neg();
-        let moved: V3 = std::array::from_fn(|i| &q[i] + &(&t * &p[i]));
-        q = [body.speed(j, &moved), body.speed(j + 1, &moved), moved[2].clone()];
-        p = body.step(j, &p);
-        time = &time + &t;
+        let (q1, p1, t) = land(body, &q, &p, j);
+        (q, p, time) = (q1, p1, &time + &t);
     }
+    ended(&q, &p, &time, &q0[2], end)
+}
+
+/// Rule B4 at the start of a drop: every contact strictly up.
+fn all_up(body: &Polygon, q0: &V3) -> Checked<()> {
+    match (0..body.n as i64).find(|&k| !body.speed(k, q0).is_positive()) {
+        Some(k) => Err(not_shown(format!("contact {k} is not up at the start"))),
+        None => Ok(()),
+    }
+}
+
+/// The flight t = h_j/(−u_j) from (q, p) and the impact at contact j, relabelled so that j is
+/// contact 0 (docs/model.md §3, as `orbit::map`): the state right after the impact, and t.
+fn land(body: &Polygon, q: &V3, p: &V3, j: i64) -> (V3, V3, Num) {
+    let t = &body.speed(j, q) / &body.speed(j, p).neg();
+    let moved: V3 = std::array::from_fn(|i| &q[i] + &(&t * &p[i]));
+    ([body.speed(j, &moved), body.speed(j + 1, &moved), moved[2].clone()], body.step(j, p), t)
+}
+
+/// The end of a prefix at the state (q, p) right after its last impact (`time`: the sum of its
+/// flights, h: the drop's). For `Cc`, the time from the drop to rest bounded by the orbit
+/// certificate's theorem, divided by h: (Σ t_s + B α/β)/h with B = T̄/(1 − ρ)
+/// (docs/basin-certificates.md §4); for `Rest`, by Theorem 5.1 from node r on
+/// (docs/time-to-rest.md §5): (Σ t_s + Φ_r(q, p))/h with Φ_r(q, p) = (a_r·q)/(−b_r·p).
+fn ended(q: &V3, p: &V3, time: &Num, h: &Num, end: End) -> Checked<Option<Num>> {
+    let f = &h.field;
     let orbit = match end {
         End::Icc if p[2].is_positive() => return Ok(None),
         End::Icc => return Err(not_shown("v > 0 fails after the prefix".into())),
@@ -164,7 +183,7 @@ pub fn follow(body: &Polygon, q0: V3, p0: V3, list: &[i64], end: End) -> Checked
     }
     let Some(orbit) = orbit else {
         let End::Rest(node, cone) = end else { unreachable!("an orbit or a node") };
-        return rest_end(node, cone, &q, &p, &time, &q0[2]).map(Some);
+        return rest_end(node, cone, q, p, time, h).map(Some);
     };
     let x = [&q[1] / &alpha, &p[0] / &beta, &p[1] / &beta];
     for row in &orbit.a_inv {
@@ -174,7 +193,7 @@ pub fn follow(body: &Polygon, q0: V3, p0: V3, list: &[i64], end: End) -> Checked
         }
     }
     let b = &orbit.period / &(&Num::int(f, 1) - &orbit.rho);
-    Ok(Some(&(&time + &(&b * &(&alpha / &beta))) / &q0[2]))
+    Ok(Some(&(time + &(&b * &(&alpha / &beta))) / h))
 }
 
 /// The end of a `Rest` leaf's prefix (v < 0 and hc > 0 shown by the caller): −b_r·p > 0 and p

@@ -152,13 +152,28 @@ impl Walker {
 
     /// The walk from y until v > 0 (ICC) or the state lies well inside X (CC).
     pub fn plan(&self, y: &[f64; 5]) -> Option<Plan> {
+        self.plan_after(y, &[])
+    }
+
+    /// The same walk, with its first impacts at the contacts `forced` (the first absolute, then
+    /// steps) whether or not they land first (each must approach): a branch of a tree leaf whose
+    /// drops the sample points missed (`super::tree`).
+    pub fn plan_after(&self, y: &[f64; 5], forced: &[u64]) -> Option<Plan> {
         let (mut q, mut p) = self.start(y);
         let mut first = None;
         let mut steps = Vec::new();
         let mut near = Vec::new();
-        for _ in 0..self.max_prefix {
+        for s in 0..self.max_prefix {
             // After an impact the landed contact is relabelled 0: k is the step j.
-            let k = self.next(&q, &p)?;
+            let k = match forced.get(s) {
+                Some(&k)
+                    if (k as usize) < self.contacts.len() && dot(&self.contacts[k as usize], &p) < 0.0 =>
+                {
+                    k as usize
+                }
+                Some(_) => return None,
+                None => self.next(&q, &p)?,
+            };
             match first {
                 None => first = Some(k),
                 Some(_) => steps.push(k as u64),

@@ -120,17 +120,13 @@ fn csv_row(s: &PointShares) -> String {
 /// certificate's text declares: 2^-depth per leaf by its verdict, as the kernel sums them. Read,
 /// not checked (that is `chatter verify`'s work): what a row of points.csv must agree with.
 fn declared(certificate: &str) -> Result<Declared, String> {
-    use chatter_kernel::syntax::basin::{BasinCertificate, LeafVerdict};
+    use chatter_kernel::syntax::basin::BasinCertificate;
     let cert: BasinCertificate =
         chatter_kernel::syntax::read(certificate, chatter_kernel::syntax::Encoding::Ron)
             .map_err(|r| format!("not a basin certificate ({r})"))?;
     let (mut shares, mut counts) = ([Q::int(0), Q::int(0), Q::int(0)], [0usize; 3]);
     for leaf in &cert.leaves {
-        let kind = match leaf.verdict {
-            LeafVerdict::Cc { .. } | LeafVerdict::Rest { .. } => 0,
-            LeafVerdict::Icc { .. } => 1,
-            LeafVerdict::Undecided => 2,
-        };
+        let kind = super::kind(&leaf.verdict);
         let volume = (0..leaf.path.len()).fold(Q::int(1), |v, _| v * Q::new(1, 2));
         shares[kind] = &shares[kind] + &volume;
         counts[kind] += 1;

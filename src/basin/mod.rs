@@ -8,6 +8,7 @@
 
 pub mod float;
 pub mod map;
+pub mod tree;
 
 use crate::exact::{Q, QExt};
 use crate::orbit::{Found, Request, certify_orbit};
@@ -15,8 +16,11 @@ use chatter_kernel::basin::drop::DIMS;
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::orbit::Orbit;
 use chatter_kernel::rules::basin::{Context, End, Prefix, leaf_box, read};
+use chatter_kernel::rules::branches;
 use chatter_kernel::rules::rest::forms;
-use chatter_kernel::syntax::basin::{BasinCertificate, DropBox, FORMAT, Leaf, LeafVerdict, VERSION};
+use chatter_kernel::syntax::basin::{
+    BasinCertificate, DropBox, FORMAT, Impact, Leaf, LeafVerdict, TREE_VERSION, VERSION,
+};
 use chatter_kernel::syntax::orbit::OrbitBody;
 use chatter_kernel::verify::Backend;
 use float::{Plan, Walker};
@@ -119,19 +123,28 @@ pub fn produce(
     let done = std::sync::atomic::AtomicU64::new(0);
     let unit = [0.0; DIMS].map(|_: f64| [0.0, 1.0]);
     cert.leaves = p.decide(String::new(), unit, &done);
+    if cert.leaves.iter().any(|l| matches!(l.verdict, LeafVerdict::Tree { .. })) {
+        cert.version = TREE_VERSION;
+    }
     let mut leaves = [0usize; 3];
     let mut shares = [0.0; 3];
     for l in &cert.leaves {
-        let k = match l.verdict {
-            LeafVerdict::Cc { .. } | LeafVerdict::Rest { .. } => 0,
-            LeafVerdict::Icc { .. } => 1,
-            LeafVerdict::Undecided => 2,
-        };
+        let k = kind(&l.verdict);
         leaves[k] += 1;
         shares[k] += 0.5f64.powi(l.path.len() as i32);
     }
     let rest = rest.map(|r| r.map(|m| (m.nodes, m.bound)));
     Ok(Produced { certificate: cert, orbit: found, rest, leaves, shares })
+}
+
+/// A leaf's verdict as counted: 0 CC (`Cc`, `Rest`, a tree ending in them), 1 ICC, 2 undecided.
+pub fn kind(v: &LeafVerdict) -> usize {
+    match v {
+        LeafVerdict::Cc { .. } | LeafVerdict::Rest { .. } => 0,
+        LeafVerdict::Icc { .. } => 1,
+        LeafVerdict::Undecided => 2,
+        LeafVerdict::Tree { next } => usize::from(!branches::ends_cc(next)),
+    }
 }
 
 /// A time-to-rest certificate for the body whose claim excludes PCC (what `Rest` leaves need).
@@ -174,6 +187,11 @@ impl Producer<'_> {
             && self.kernel_accepts(&path, plan)
         {
             return self.leaf(path, verdict(plan), done);
+        }
+        if plan.as_ref().is_some_and(|p| !p.cc || p.rest.is_some())
+            && let Some(next) = self.tree(&path, &b)
+        {
+            return self.leaf(path, LeafVerdict::Tree { next }, done);
         }
         if path.len() >= self.depth || (plan.is_none() && path.len() >= self.depth / 2) {
             return self.leaf(path, LeafVerdict::Undecided, done);
@@ -253,6 +271,35 @@ impl Producer<'_> {
         })
     }
 
+    /// A tree of the plans of 3^5 drops spread over the sub-box (each coordinate at 1/6, 1/2
+    /// and 5/6 of its width), if they merge ([`tree::merge`]) into a tree that branches and the
+    /// kernel's rule B4 for trees (malachite) shows it on the whole sub-box. Where the kernel
+    /// finds a contact that the tree leaves out, the centre's walk with that impact forced there
+    /// is added, [`tree::ROUNDS`] times at most.
+    fn tree(&self, path: &str, b: &Unit) -> Option<Vec<Impact>> {
+        const AT: [f64; 3] = [1.0 / 6.0, 0.5, 5.0 / 6.0];
+        let at = |u: [f64; DIMS]| self.drop_at(&u);
+        let mut plans: Vec<Plan> = (0..AT.len().pow(DIMS as u32))
+            .map(|i| {
+                self.walker.plan(&at(std::array::from_fn(|k| {
+                    let t = AT[i / AT.len().pow(k as u32) % AT.len()];
+                    b[k][0] + (b[k][1] - b[k][0]) * t
+                })))
+            })
+            .collect::<Option<_>>()?;
+        let centre = at(std::array::from_fn(|k| (b[k][0] + b[k][1]) / 2.0));
+        let (lo, hi) = leaf_box(&self.lo, &self.hi, path);
+        for _ in 0..=tree::ROUNDS {
+            let next = tree::merge(&plans)?;
+            let forced = match branches::examine(&self.ctx, &lo, &hi, &next) {
+                Ok(_) => return tree::branches(&next).then_some(next),
+                Err(failure) => tree::left_out(&failure)?,
+            };
+            plans.push(self.walker.plan_after(&centre, &forced)?);
+        }
+        None
+    }
+
     /// Rule B4 of the kernel (malachite) on the sub-box `path` with `plan`.
     fn kernel_accepts(&self, path: &str, plan: &Plan) -> bool {
         let (lo, hi) = leaf_box(&self.lo, &self.hi, path);
@@ -319,6 +366,7 @@ pub fn write_basin(c: &BasinCertificate) -> String {
                 format!("Rest(first: {first}, steps: [{}], node: {node})", join(steps))
             }
             LeafVerdict::Undecided => "Undecided".into(),
+            LeafVerdict::Tree { next } => format!("Tree(next: {})", tree::write(next)),
         };
         out.push_str(&format!("        (path: {}, verdict: {v}),\n", quoted(&l.path)));
     }

@@ -20,7 +20,10 @@ The box of drops is in the paper's coordinates before the first impact: velocity
 (omega, phi in [0, 1/10]^2, h in [1, 11/10]). CC is counted only for drops proved to enter the\n\
 set X of an orbit certificate, or the cone of a node of a time-to-rest certificate (then with a\n\
 bound on the time to rest; tried unless --no-rest), both made first and embedded in the file\n\
-(docs/basin-certificates.md).\n\n\
+(docs/basin-certificates.md). Where two contacts land in either order inside a sub-box (a surface\n\
+of simultaneous impacts crosses it), the sub-box may be proved by a tree of impact prefixes (a Tree\n\
+leaf, format version 2); its drops that meet a simultaneous impact have volume zero and are in no\n\
+share.\n\n\
 Example:\n  chatter basin --n 3 --kappa 1/8 --gamma 3/20 --depth 20 -o basin.ron")]
 pub struct BasinArgs {
     #[command(flatten)]

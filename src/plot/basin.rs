@@ -11,7 +11,7 @@ use super::{Entry, Figure, LABEL, Sample, TICKS, err, legend};
 use crate::exact::{Q, QExt};
 use chatter_kernel::basin::drop::DIMS;
 use chatter_kernel::rules::basin::{BasinReport, leaf_box};
-use chatter_kernel::syntax::basin::{BasinCertificate, LeafVerdict};
+use chatter_kernel::syntax::basin::{BasinCertificate, LeafVerdict, Then};
 use chatter_kernel::syntax::orbit::OrbitBody;
 use malachite::rational::Rational;
 use plotters::coord::Shift;
@@ -115,11 +115,16 @@ impl BasinFigure {
             if (0..DIMS).any(|k| !axes.contains(&k) && (value[k] < l[k] || value[k] > h[k])) {
                 continue;
             }
-            let kind = match leaf.verdict {
+            let kind = match &leaf.verdict {
                 LeafVerdict::Cc { .. } => Kind::Cc,
                 LeafVerdict::Rest { .. } => Kind::Rest,
                 LeafVerdict::Icc { .. } => Kind::Icc,
                 LeafVerdict::Undecided => Kind::Undecided,
+                LeafVerdict::Tree { next } => match crate::basin::tree::first_end(next) {
+                    Some(Then::Icc) => Kind::Icc,
+                    Some(Then::Rest { .. }) => Kind::Rest,
+                    _ => Kind::Cc,
+                },
             };
             let [a, b] = axes;
             rects.push(Rect { kind, x: [f(&l[a]), f(&h[a])], y: [f(&l[b]), f(&h[b])] });

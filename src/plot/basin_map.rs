@@ -92,7 +92,7 @@ impl BasinMapFigure {
             .collect();
         e.extend(curve);
         if self.cells.iter().any(|c| c.shares[0] > 0.0) {
-            let cc = "proved CC: the drops enter an orbit certificate's X, or a node's cone of a time-to-rest certificate (those that reach a simultaneous impact later, where the model stops, have volume zero)";
+            let cc = "proved CC: the drops enter an orbit certificate's X, or a node's cone of a time-to-rest certificate (the drops that meet a simultaneous impact, where the model stops, after a cone or inside a tree of prefixes, have volume zero and are in no share)";
             e.push(Entry::new(Sample::Note, cc));
         }
         e.push(Entry::new(

@@ -120,6 +120,10 @@ pub struct FileVerdict {
     /// For a basin certificate: its leaves (CC, ICC, undecided).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub basin_leaves: Option<[usize; 3]>,
+    /// For a basin certificate: how many of its leaves are trees (in the text line only).
+    #[serde(skip)]
+    #[schemars(skip)]
+    pub basin_trees: usize,
 }
 
 /// What an accepted refutation shows.
@@ -162,6 +166,7 @@ impl FileVerdict {
             undecided_share: None,
             rest_nodes: None,
             basin_leaves: None,
+            basin_trees: 0,
         }
     }
 
@@ -194,11 +199,17 @@ impl FileVerdict {
         if let (Some(cc), Some(icc), Some(und), Some(l)) =
             (&self.cc_share, &self.icc_share, &self.undecided_share, &self.basin_leaves)
         {
+            let ties = match self.basin_trees {
+                0 => String::new(),
+                t => format!(
+                    " ({t} leaves are trees: their drops that meet a simultaneous impact inside the tree, where the model stops, have volume zero and are in no share)"
+                ),
+            };
             let time = self.time_to_rest_bound.as_ref().map_or(String::new(), |t| {
                 format!("; every CC drop comes to rest within T <= {t} h/|v| (time_to_rest_bound)")
             });
             return format!(
-                "{}: OK (basin, n = {}: of the box of drops, {cc} proved CC (they enter an orbit certificate's X or a time-to-rest graph's cone; those of a cone that reach a simultaneous impact later, where the model stops, have volume zero), {icc} proved v > 0 (ICC), {und} undecided; leaves {} CC, {} ICC, {} undecided{time})",
+                "{}: OK (basin, n = {}: of the box of drops, {cc} proved CC (they enter an orbit certificate's X or a time-to-rest graph's cone; those of a cone that reach a simultaneous impact later, where the model stops, have volume zero), {icc} proved v > 0 (ICC), {und} undecided{ties}; leaves {} CC, {} ICC, {} undecided{time})",
                 self.path,
                 self.n.unwrap_or(0),
                 l[0],
@@ -332,6 +343,7 @@ pub fn basin_verdict_of(path: &Path, verdict: Verdict<chatter_kernel::basin::Bas
             (v.cc_share, v.icc_share, v.undecided_share) =
                 (Some(a.cc_share), Some(a.icc_share), Some(a.undecided_share));
             v.basin_leaves = Some(a.leaves);
+            v.basin_trees = a.trees;
             v
         }
         Verdict::Rejected(r) => verdict_of(path, Verdict::Rejected(r)),

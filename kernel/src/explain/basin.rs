@@ -35,6 +35,22 @@ pub(super) fn words(f: &Failure, locus: &Locus) -> String {
             format!("node {node} is not a node of the time-to-rest certificate ({nodes} nodes)")
         }
         Failure::Leaf { quantity, wrong } => leaf(*quantity, *wrong, locus),
+        Failure::TreeVersion => "a Tree leaf needs version 2 of the basin format".into(),
+        Failure::EmptyBranch => "a list of impacts of the Tree leaf is empty".into(),
+        Failure::RepeatedContact { contact } => {
+            format!("contact {contact} is listed twice in one list of impacts of the Tree leaf")
+        }
+        Failure::MixedEnds => {
+            "the Tree leaf ends in Icc on one path and in Cc or Rest on another: no single verdict".into()
+        }
+        Failure::InTree { impacts, failure } => {
+            let path: Vec<String> = impacts.iter().map(u64::to_string).collect();
+            let at = match path.is_empty() {
+                true => "at the root of the tree".to_string(),
+                false => format!("after the impacts {} of the tree", path.join(", ")),
+            };
+            format!("{at}: {}", words(failure, locus))
+        }
     }
 }
 
@@ -91,6 +107,9 @@ fn describe(q: LeafQuantity) -> String {
         }
         LeafQuantity::RestTime { node } => {
             format!("after the prefix, -b.p > 0 for node {node}'s weight b (the virtual time)")
+        }
+        LeafQuantity::Excluded { step, contact } => {
+            format!("at impact {step}, contact {contact} (not listed) rises or lands after a listed contact")
         }
         LeafQuantity::Cut { impacts, quantity } => {
             format!("at the cut after {impacts} impacts, {}", describe(LeafQuantity::Entry(quantity)))

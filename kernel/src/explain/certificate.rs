@@ -191,6 +191,10 @@ fn limit_words(count: usize, limit: usize, what: Counted, locus: &Locus) -> Stri
         Counted::Kind(KindCounted::Prefix) => {
             format!("a prefix of {count} impacts, more than the limit {name} = {limit}")
         }
+        #[cfg(feature = "kinds")]
+        Counted::Kind(KindCounted::Tree) => {
+            format!("a tree of at least {count} impacts, more than the limit {name} = {limit}")
+        }
     };
     format!("{text}: no verdict on the content")
 }

@@ -255,6 +255,8 @@ pub enum KindCounted {
     Leaves,
     /// The impacts of a basin certificate's prefix.
     Prefix,
+    /// The impacts of a basin certificate's `Tree` leaf.
+    Tree,
 }
 
 impl From<KindCounted> for Counted {

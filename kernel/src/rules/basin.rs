@@ -35,6 +35,7 @@ use crate::orbit::interval::{Centred, Iv, round_up};
 use crate::orbit::map::Maps;
 use crate::orbit::map::{Quantity, Stop, step};
 use crate::reject::{Code, Detail, KindCounted, KindDetail, KindLocus, Locus, Rejection};
+use crate::rules::branches::{self, Frame};
 use crate::rules::orbit::{Orbit, cover, read_orbit_values};
 use crate::rules::rest::{NodeForms, forms};
 use crate::syntax::basin::{BasinCertificate, LeafVerdict};
@@ -94,6 +95,24 @@ pub enum Failure {
     },
     /// The paths are not a partition.
     Tree(TreeError),
+    /// A `Tree` leaf in a version-1 file.
+    TreeVersion,
+    /// A `Tree` leaf's list of impacts is empty.
+    EmptyBranch,
+    /// A contact repeated in one list of a `Tree` leaf.
+    RepeatedContact {
+        /// The contact.
+        contact: u64,
+    },
+    /// A `Tree` leaf ends in `Icc` on one path and in `Cc` or `Rest` on another.
+    MixedEnds,
+    /// A failure inside a `Tree` leaf, after these impacts from its root (the root: none).
+    InTree {
+        /// The contacts of the impacts from the root (the first absolute, the others steps).
+        impacts: Vec<u64>,
+        /// The failure there.
+        failure: Box<Failure>,
+    },
     /// A quantity of rule B4 not shown on the leaf (`wrong`: its sign is wrong at the centre).
     Leaf {
         /// The quantity.
@@ -139,6 +158,14 @@ pub enum LeafQuantity {
         /// The node r.
         node: usize,
     },
+    /// In a `Tree` leaf, at step `step`: contact `contact`, not in the list, neither rises
+    /// (u > 0) nor is shown to land after a contact of the list.
+    Excluded {
+        /// The step (from 0).
+        step: usize,
+        /// The contact (absolute at step 0, else relative to the one that landed last).
+        contact: usize,
+    },
 }
 
 impl LeafQuantity {
@@ -147,7 +174,7 @@ impl LeafQuantity {
     }
 }
 
-fn fail(code: Code, path: &str, f: Failure) -> Rejection {
+pub(super) fn fail(code: Code, path: &str, f: Failure) -> Rejection {
     Rejection::at(code, path, Detail::Kind(KindDetail::Basin(f)))
 }
 
@@ -164,6 +191,9 @@ pub struct BasinReport {
     pub undecided_share: String,
     /// Leaves: CC, ICC, undecided.
     pub leaves: [usize; 3],
+    /// Of these, the `Tree` leaves (version 2; their drops that meet a simultaneous impact inside
+    /// the tree are not claimed: volume zero).
+    pub trees: usize,
     /// The largest bound, over the CC leaves, on the time to rest divided by the drop's h/|v|
     /// (prefix time + B hc/|v| at entry into X, B the orbit certificate's `time_to_rest_bound`;
     /// prefix time + Φ_r(q, p) at entry into K_r).
@@ -194,6 +224,7 @@ pub fn check<F: Field>(cert: &BasinCertificate, limits: ParseLimits) -> Result<B
             LeafVerdict::Cc { .. } | LeafVerdict::Rest { .. } => 0,
             LeafVerdict::Icc { .. } => 1,
             LeafVerdict::Undecided => 2,
+            LeafVerdict::Tree { next } => usize::from(!branches::ends_cc(next)),
         };
         if let Some(prefix) = Prefix::of(&leaf.verdict) {
             let (l, h) = leaf_box(&lo, &hi, &leaf.path);
@@ -205,12 +236,15 @@ pub fn check<F: Field>(cert: &BasinCertificate, limits: ParseLimits) -> Result<B
                 )
             };
             let time = ctx.leaf(&l, &h, &prefix).map_err(at)?;
-            if let Some(t) = time {
-                worst = Some(match worst {
-                    Some(w) if w >= t => w,
-                    _ => t,
-                });
-            }
+            record(&mut worst, time);
+        }
+        if let LeafVerdict::Tree { next } = &leaf.verdict {
+            let (l, h) = leaf_box(&lo, &hi, &leaf.path);
+            let at = |f: Failure| {
+                let detail = Detail::Kind(KindDetail::Basin(f));
+                Rejection::new(Code::LeafNotShown, leaf_locus(i, &leaf.path), detail)
+            };
+            record(&mut worst, branches::examine(&ctx, &l, &h, next).map_err(at)?);
         }
         counts[kind] += 1;
         let share = F::from_fraction(&crate::exact::Ring::one(), &pow2::<F>(leaf.path.len()));
@@ -223,9 +257,19 @@ pub fn check<F: Field>(cert: &BasinCertificate, limits: ParseLimits) -> Result<B
         icc_share: icc,
         undecided_share: und,
         leaves: counts,
+        trees: cert.leaves.iter().filter(|l| matches!(l.verdict, LeafVerdict::Tree { .. })).count(),
         time_to_rest_bound: worst.map(|w| to_canonical(&w)),
         orbit_boxes,
     })
+}
+
+/// The largest time to rest over h of the CC leaves so far.
+fn record<F: Field>(worst: &mut Option<F>, time: Option<F>) {
+    if let Some(t) = time
+        && worst.as_ref().is_none_or(|w| &t > w)
+    {
+        *worst = Some(t);
+    }
 }
 
 fn pow2<F: Field>(k: usize) -> F::Int {
@@ -289,8 +333,17 @@ pub fn read<F: Field>(
         return Err(fail(Code::BasinOutOfRange, "drops.lo[4]", Failure::Flat(4)));
     }
     at_most("max-basin-leaves", cert.leaves.len(), MAX_LEAVES, KindCounted::Leaves.into())?;
+    let frame = Frame {
+        n: *n,
+        version: cert.version,
+        orbit: orbit.is_some(),
+        nodes: cert.rest.as_ref().map(|r| r.nodes.len()),
+    };
     for (i, leaf) in cert.leaves.iter().enumerate() {
         at_most("max-basin-depth", leaf.path.len(), MAX_PATH, KindCounted::Depth.into())?;
+        if let LeafVerdict::Tree { next } = &leaf.verdict {
+            branches::structure(i, next, &frame)?;
+        }
         if let Some(Prefix { first, steps, cuts, end }) = Prefix::of(&leaf.verdict) {
             let (first, cuts) = (first as u64, cuts);
             at_most("max-basin-prefix", steps.len() + 1, MAX_PREFIX, KindCounted::Prefix.into())?;
@@ -324,7 +377,7 @@ fn same_body<F: Field>(body: &Body, (n, k, g): (u64, &F, &F), limits: ParseLimit
 }
 
 /// B1: a `Rest` leaf needs a time-to-rest certificate with the node it names.
-fn rest_node(i: usize, node: usize, nodes: Option<usize>) -> Result<(), Rejection> {
+pub(super) fn rest_node(i: usize, node: usize, nodes: Option<usize>) -> Result<(), Rejection> {
     let nodes = nodes.ok_or_else(|| fail(Code::BasinOutOfRange, &format!("leaves[{i}]"), Failure::NoRest))?;
     if node >= nodes {
         let f = Failure::Node { node: node as u64, nodes };
@@ -396,13 +449,13 @@ impl<F: Field> Context<F> {
 }
 
 /// Whether `v` is shown > 0 (>= 0 for the entry into X) over the leaf.
-fn shown<F: Field, const D: usize>(q: LeafQuantity, v: &Centred<F, D>) -> Result<(), Failure> {
+pub(super) fn shown<F: Field, const D: usize>(q: LeafQuantity, v: &Centred<F, D>) -> Result<(), Failure> {
     let ok = if q.strict() { v.b.v.lo.is_positive() } else { !v.b.v.lo.is_negative() };
     let wrong = v.c.hi.is_negative() || (q.strict() && !v.c.hi.is_positive());
     if ok { Ok(()) } else { Err(Failure::Leaf { quantity: q, wrong }) }
 }
 
-fn unshown(quantity: LeafQuantity) -> Failure {
+pub(super) fn unshown(quantity: LeafQuantity) -> Failure {
     Failure::Leaf { quantity, wrong: false }
 }
 
@@ -417,13 +470,8 @@ fn examine<F: Field>(
     let maps = &ctx.maps;
     let list: Vec<usize> =
         std::iter::once(plan.first).chain(plan.steps.iter().map(|&j| j as usize)).collect();
-    let y = seeds(lo, hi);
-    let (q, p) = state(&y, &ctx.cs);
-    for (k, f) in maps.contacts.iter().enumerate() {
-        let h = q[0].scaled_by(&f[0]).plus(&q[1].scaled_by(&f[1])).plus(&q[2].scaled_by(&f[2]));
-        shown(LeafQuantity::Start { contact: k }, &h)?;
-    }
-    let h = &y[4];
+    let (q, p, h) = start(ctx, lo, hi)?;
+    let h = &h;
     let per_h = |x: &Over<F>| x.over(h).map(|v| v.b.v.hi).ok_or(unshown(LeafQuantity::Separates));
     let ends: Vec<usize> = plan.cuts.iter().map(|&c| c as usize).chain(std::iter::once(list.len())).collect();
     let (q, p, t) = follow(maps, &list, 0, ends[0], q, p)?;
@@ -447,6 +495,22 @@ fn examine<F: Field>(
         ybox = next;
     }
     Ok(None)
+}
+
+/// A leaf's drops before the first impact: q, p and h over the leaf.
+pub(super) type Start<F> = ([Over<F>; 3], [Over<F>; 3], Over<F>);
+
+/// The drops of the leaf [lo, hi] (over its five coordinates): the state before the first
+/// impact, every contact shown strictly up, and h.
+pub(super) fn start<F: Field>(ctx: &Context<F>, lo: &[F; DIMS], hi: &[F; DIMS]) -> Result<Start<F>, Failure> {
+    let y = seeds(lo, hi);
+    let (q, p) = state(&y, &ctx.cs);
+    for (k, f) in ctx.maps.contacts.iter().enumerate() {
+        let h = q[0].scaled_by(&f[0]).plus(&q[1].scaled_by(&f[1])).plus(&q[2].scaled_by(&f[2]));
+        shown(LeafQuantity::Start { contact: k }, &h)?;
+    }
+    let [.., h] = y;
+    Ok((q, p, h))
 }
 
 /// A leaf's prefix as given: the impacts, the cuts (impact counts after which the state is
@@ -475,13 +539,13 @@ pub enum End {
 }
 
 impl<'a> Prefix<'a> {
-    /// The prefix of a leaf with a verdict (`None` for `Undecided`).
+    /// The prefix of a leaf with one (`None` for `Undecided` and `Tree`).
     pub fn of(v: &'a LeafVerdict) -> Option<Self> {
         let (first, steps, cuts, end): (u64, &[u64], &[u64], End) = match v {
             LeafVerdict::Cc { first, steps, cuts } => (*first, steps, cuts, End::Cc),
             LeafVerdict::Icc { first, steps, cuts } => (*first, steps, cuts, End::Icc),
             LeafVerdict::Rest { first, steps, node } => (*first, steps, &[], End::Rest(*node as usize)),
-            LeafVerdict::Undecided => return None,
+            LeafVerdict::Undecided | LeafVerdict::Tree { .. } => return None,
         };
         Some(Prefix { first: first as usize, steps, cuts, end })
     }
@@ -591,7 +655,7 @@ fn section_seeds<F: Field>(orbit: &Orbit<F>, y: &[Iv<F>; 3]) -> ([Centred<F, 3>;
 
 /// The end of the prefix: `Icc`: v > 0 (`None`); `Cc`: the state in X, and the time of the
 /// segment plus B α/β (the orbit's bound on the rest, in the segment's units); `Rest`: [`enters`].
-fn finish<F: Field, const D: usize>(
+pub(super) fn finish<F: Field, const D: usize>(
     ctx: &Context<F>,
     q: &[Centred<F, D>; 3],
     p: &[Centred<F, D>; 3],

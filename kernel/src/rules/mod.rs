@@ -16,6 +16,8 @@ pub mod basin;
 pub mod body;
 #[cfg(feature = "boxes")]
 pub mod boxes;
+#[cfg(feature = "basin")]
+pub mod branches;
 pub mod cone;
 #[cfg(feature = "family")]
 pub mod family;

@@ -97,3 +97,53 @@ fn a_ratio_of_one_over_a_power_of_two_per_leaf_is_what_the_shares_add() {
     assert_eq!(r.leaves, [0, 0, 2]);
     assert_eq!(r.time_to_rest_bound, None);
 }
+
+/// A linear leaf written as its one-path tree (version 2, docs/certificate-format.md §15):
+/// `Icc(first: a, steps: [b, c], cuts: [])` is `Tree(next: [(contact: a, then: Impacts(next:
+/// [(contact: b, then: Impacts(next: [(contact: c, then: Icc)]))]))])`.
+fn as_tree(verdict: &str) -> String {
+    let Some((head, rest)) = verdict.split_once("(first: ") else { return verdict.to_string() };
+    let (first, rest) = rest.split_once(", steps: [").unwrap();
+    let (steps, rest) = rest.split_once(']').unwrap();
+    let end = match head {
+        "Icc" => "Icc".to_string(),
+        "Rest" => format!("Rest(node: {})", rest.trim_start_matches(", node: ").trim_end_matches(')')),
+        other => panic!("no cuts-free tree for {other}"),
+    };
+    let contacts: Vec<&str> =
+        std::iter::once(first).chain(steps.split(',').map(str::trim).filter(|s| !s.is_empty())).collect();
+    let mut then = end;
+    for (k, c) in contacts.iter().enumerate().rev() {
+        let list = format!("[(contact: {c}, then: {then})]");
+        then = if k == 0 { format!("Tree(next: {list})") } else { format!("Impacts(next: {list})") };
+    }
+    then
+}
+
+#[test]
+fn a_one_path_tree_is_accepted_with_the_report_of_the_prefix_it_writes() {
+    for file in ["basin-icc-n3-kappa1_8-gamma1_2.ron", "basin-rest-n4-kappa1_6-gamma1_100.ron"] {
+        let text = std::fs::read_to_string(dir("valid").join(file)).unwrap();
+        let trees: String = text
+            .lines()
+            .map(|l| match l.split_once("verdict: ") {
+                Some((a, v)) if !v.starts_with("Undecided") => {
+                    format!("{a}verdict: {}),\n", as_tree(v.trim_end().trim_end_matches("),")))
+                }
+                _ => format!("{l}\n"),
+            })
+            .collect::<String>()
+            .replacen("version: 1,", "version: 2,", 1);
+        assert!(trees.contains("Tree(next: [(contact: "), "{trees}");
+        let run = |t: &str| verify_basin_text_in(t, Encoding::Ron, ParseLimits::default(), &BOTH);
+        let (Verdict::Accepted(linear), Verdict::Accepted(tree)) = (run(&text), run(&trees)) else {
+            panic!("{file}: {:?}", run(&trees));
+        };
+        assert_eq!((tree.trees, linear.trees), (linear.leaves.iter().sum::<usize>() - linear.leaves[2], 0));
+        assert_eq!(tree, chatter_kernel::basin::BasinReport { trees: tree.trees, ..linear }, "{file}");
+        // The same tree in a version-1 file is refused.
+        let v1 = trees.replacen("version: 2,", "version: 1,", 1);
+        let Verdict::Rejected(r) = run(&v1) else { panic!("{file}: version 1 accepted") };
+        assert_eq!(r.code.as_str(), "unsupported-version", "{file}");
+    }
+}

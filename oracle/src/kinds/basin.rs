@@ -4,8 +4,9 @@
 //! decided exactly (two-sided); every rule of the embedded time-to-rest certificate (§16, its own
 //! codes, two-sided); the orbit certificate's conditions at its sample points and rule B4 at three
 //! exact drops of every leaf with a verdict (one-sided: a failing drop proves the certificate
-//! false, passing drops prove nothing). In the kernel's order of rules, so that the first failing
-//! rule gives its code.
+//! false, passing drops prove nothing), for a tree leaf (version 2, `tree.rs`) at every node of the
+//! tree and along the drop's real motion. In the kernel's order of rules, so that the first
+//! failing rule gives its code.
 
 use super::limits::Limits;
 use super::numbers::element;
@@ -13,6 +14,7 @@ use super::orbit::{self, OrbitFile};
 use super::rest::{self, Graph, RestFile};
 use crate::arith::rational::rational_text;
 use crate::arith::{Field, Num, Rat};
+use crate::basin::tree::{Impact, Then, follow_tree};
 use crate::basin::{DIMS, End, drop_state, follow, leaf_box, leaf_points, partition, share};
 use crate::claim::Claim;
 use crate::orbit::map::Orbit;
@@ -22,6 +24,8 @@ use crate::read::schema::{integer, list, optional, regular_polygon, string, vari
 use crate::regular::model::Polygon;
 use crate::verdict::{Checked, Fail};
 use num_traits::Zero;
+
+mod tree;
 
 /// The most leaves (`max-basin-leaves`), the longest path (`max-basin-depth`) and the longest
 /// prefix (`max-basin-prefix`) of docs/certificate-format.md §15.
@@ -39,15 +43,17 @@ enum Ending {
 }
 
 /// A leaf's verdict as read: `Cc` or `Icc` with (first, steps, cuts), `Rest` with (first, steps,
-/// node) (no cuts), or `Undecided`.
+/// node) (no cuts), a `Tree` (its root list, version 2), or `Undecided`.
 #[derive(Clone, Debug)]
 enum LeafText {
     Prefix { ending: Ending, first: u64, steps: Vec<u64>, cuts: Vec<u64> },
+    Tree(Vec<Impact>),
     Undecided,
 }
 
 /// A basin certificate as read.
 pub struct BasinFile<'a> {
+    version: u64,
     n: u64,
     kappa: &'a str,
     gamma: &'a str,
@@ -66,11 +72,12 @@ fn integers(v: &Value) -> Checked<Vec<u64>> {
     list(v)?.iter().map(integer).collect()
 }
 
-/// A leaf's verdict: `Cc(first, steps, cuts)`, `Icc(...)`, `Rest(first, steps, node)` or
-/// `Undecided`.
+/// A leaf's verdict: `Cc(first, steps, cuts)`, `Icc(...)`, `Rest(first, steps, node)`,
+/// `Tree(next)` or `Undecided`.
 fn verdict(v: &Value) -> Checked<LeafText> {
     match variant(v)? {
         ("Undecided", None) => Ok(LeafText::Undecided),
+        ("Tree", Some(fields)) => tree::read_tree(fields).map(LeafText::Tree),
         (name @ ("Cc" | "Icc" | "Rest"), Some(fields)) => {
             let (mut first, mut steps, mut cuts, mut node) = (0, vec![], vec![], 0);
             let last = if name == "Rest" { "node" } else { "cuts" };
@@ -90,7 +97,7 @@ fn verdict(v: &Value) -> Checked<LeafText> {
             };
             Ok(LeafText::Prefix { ending, first, steps, cuts })
         }
-        ("Undecided" | "Cc" | "Icc" | "Rest", _) => {
+        ("Undecided" | "Cc" | "Icc" | "Rest" | "Tree", _) => {
             Err(Fail::new("syntax", "a leaf's verdict has the wrong form"))
         }
         (name, _) => Err(Fail::new("unknown-variant", format!("unknown verdict `{name}`"))),
@@ -113,6 +120,7 @@ fn leaf(v: &Value) -> Checked<(&str, LeafText)> {
 /// The schema of §15.
 pub fn read(v: &Value) -> Checked<BasinFile<'_>> {
     let mut f = BasinFile {
+        version: 0,
         n: 0,
         kappa: "",
         gamma: "",
@@ -135,7 +143,7 @@ pub fn read(v: &Value) -> Checked<BasinFile<'_>> {
     walk(v, &fields, |name, value| {
         match name {
             "format" | "producer" => drop(string(value)?),
-            "version" => drop(integer(value)?),
+            "version" => f.version = integer(value)?,
             "body" => regular_polygon(value, |k, v| {
                 match k {
                     "n" => f.n = integer(v)?,
@@ -311,11 +319,16 @@ pub fn rules(f: &BasinFile, limits: &Limits) -> Checked<Basin> {
     if f.leaves.len() > MAX_LEAVES {
         return Err(too_large("more leaves than max-basin-leaves"));
     }
-    for (path, t) in &f.leaves {
+    let rest_nodes = f.rest.as_ref().map(|(_, r)| r.node_count());
+    let context = tree::Context { version: f.version, n: f.n, orbit: orbit.is_some(), rest_nodes };
+    for (i, (path, t)) in f.leaves.iter().enumerate() {
         if path.len() > MAX_PATH {
             return Err(too_large("a path longer than max-basin-depth"));
         }
-        prefix_fields(t, f.n, orbit.is_some(), f.rest.as_ref().map(|(_, r)| r.node_count()))?;
+        match t {
+            LeafText::Tree(next) => tree::tree_rules(i, next, &context)?,
+            _ => prefix_fields(t, f.n, orbit.is_some(), rest_nodes)?,
+        }
     }
     let body = match &orbit {
         Some(o) => o.body.clone(),
@@ -377,55 +390,91 @@ fn paths<'a>(f: &'a BasinFile) -> Vec<&'a [u8]> {
 }
 
 /// Rule B4 at the sample drops of every leaf with a verdict, and the shares (a `Rest` leaf is a
-/// CC leaf). `graph`: the embedded time-to-rest certificate's (`None` only where its rules failed,
-/// in [`every_failure`]: its `Rest` leaves are then not followed).
+/// CC leaf; a tree is a CC leaf with `Cc`/`Rest` ends, an ICC leaf with `Icc` ends). `graph`: the
+/// embedded time-to-rest certificate's (`None` only where its rules failed, in
+/// [`every_failure`]: leaves with `Rest` ends are then not followed).
 fn leaves(f: &BasinFile, b: &Basin, graph: Option<&Graph>) -> Checked<Found> {
     let (mut shares, mut leaves, mut time) = ([Rat::zero(), Rat::zero(), Rat::zero()], [0; 3], None::<Num>);
     for (i, (path, t)) in f.leaves.iter().enumerate() {
         let kind = match t {
             LeafText::Prefix { ending: Ending::Icc, .. } => 1,
-            LeafText::Prefix { .. } => 0,
+            LeafText::Tree(next) if tree::icc(next) => 1,
+            LeafText::Prefix { .. } | LeafText::Tree(_) => 0,
             LeafText::Undecided => 2,
         };
-        if let LeafText::Prefix { ending, first, steps, .. } = t {
-            let worst = sample_leaf(b, graph, path.as_bytes(), *ending, *first, steps)
-                .map_err(|e| Fail { codes: e.codes, why: format!("leaf {i} (path {path:?}): {}", e.why) })?;
-            time = match (time, worst) {
-                (Some(t), Some(w)) if w > t => Some(w),
-                (None, w) => w,
-                (t, _) => t,
-            };
-        }
+        let worst = sample_leaf(b, graph, path.as_bytes(), t)
+            .map_err(|e| Fail { codes: e.codes, why: format!("leaf {i} (path {path:?}): {}", e.why) })?;
+        time = match (time, worst) {
+            (Some(t), Some(w)) if w > t => Some(w),
+            (None, w) => w,
+            (t, _) => t,
+        };
         shares[kind] = &shares[kind] + &share(path.len());
         leaves[kind] += 1;
     }
     Ok(Found { shares: shares.map(|s| rational_text(&s)), leaves, time })
 }
 
+/// Where a prefix or a tree's path ends, as the dynamics check it (`None`: a node of a graph that
+/// failed its own rules).
+fn end_of<'a>(ending: Ending, b: &'a Basin, graph: Option<&'a Graph>) -> Option<End<'a>> {
+    Some(match (ending, &b.orbit, graph) {
+        (Ending::Cc, Some(o), _) => End::Cc(o),
+        (Ending::Rest(r), _, Some(g)) => End::Rest(&g.nodes[r as usize], &g.polygons[r as usize]),
+        (Ending::Rest(_), _, None) => return None,
+        _ => End::Icc,
+    })
+}
+
+/// A tree's end as an [`Ending`] (`Impacts` is no end; not called with it).
+fn ending(then: &Then) -> Ending {
+    match then {
+        Then::Cc => Ending::Cc,
+        Then::Rest(r) => Ending::Rest(*r),
+        _ => Ending::Icc,
+    }
+}
+
+/// How one drop of a leaf is followed: through a prefix, or through a tree.
+enum Followed<'a> {
+    Prefix(Vec<i64>, End<'a>),
+    Tree(&'a [Impact], Box<dyn Fn(&Then) -> End<'a> + 'a>),
+}
+
+/// How the drops of a leaf are followed (`None`: no verdict, or an end in a graph that failed its
+/// own rules).
+fn followed<'a>(b: &'a Basin, graph: Option<&'a Graph>, t: &'a LeafText) -> Option<Followed<'a>> {
+    match t {
+        LeafText::Prefix { ending, first, steps, .. } => {
+            let list = std::iter::once(*first as i64).chain(steps.iter().map(|&j| j as i64)).collect();
+            Some(Followed::Prefix(list, end_of(*ending, b, graph)?))
+        }
+        LeafText::Tree(next) => {
+            if graph.is_none() && tree::has_rest(next) {
+                return None;
+            }
+            let end = move |then: &Then| end_of(ending(then), b, graph).expect("the graph is present");
+            Some(Followed::Tree(next, Box::new(end)))
+        }
+        LeafText::Undecided => None,
+    }
+}
+
 /// Rule B4 at the leaf's sample drops: the largest time to rest over h (CC leaves).
-fn sample_leaf(
-    b: &Basin,
-    graph: Option<&Graph>,
-    path: &[u8],
-    ending: Ending,
-    first: u64,
-    steps: &[u64],
-) -> Checked<Option<Num>> {
+fn sample_leaf(b: &Basin, graph: Option<&Graph>, path: &[u8], t: &LeafText) -> Checked<Option<Num>> {
     if !path.iter().all(u8::is_ascii_digit) {
         return Ok(None); // not a leaf of the box (rule B3)
     }
-    let end = match (ending, &b.orbit, graph) {
-        (Ending::Cc, Some(o), _) => End::Cc(o),
-        (Ending::Rest(r), _, Some(g)) => End::Rest(&g.nodes[r as usize], &g.polygons[r as usize]),
-        (Ending::Rest(_), _, None) => return Ok(None), // its graph failed its own rules
-        _ => End::Icc,
-    };
+    let Some(how) = followed(b, graph, t) else { return Ok(None) };
     let (lo, hi) = leaf_box(&b.lo, &b.hi, path);
-    let list: Vec<i64> = std::iter::once(first as i64).chain(steps.iter().map(|&j| j as i64)).collect();
     let mut worst: Option<Num> = None;
     for m in leaf_points(&lo, &hi) {
         let Some((q, p)) = drop_state(&b.body, &m, &lo, &hi) else { continue };
-        if let Some(t) = follow(&b.body, q, p, &list, end)? {
+        let time = match &how {
+            Followed::Prefix(list, end) => follow(&b.body, q, p, list, *end)?,
+            Followed::Tree(next, end) => follow_tree(&b.body, &q, &p, next, end.as_ref())?,
+        };
+        if let Some(t) = time {
             worst = Some(match worst {
                 Some(w) if w >= t => w,
                 _ => t,

@@ -29,7 +29,7 @@ pub enum Reader {
     Orbit,
     /// Refutations, version 1 (§10).
     Refutation,
-    /// Basin certificates, version 1 (§15).
+    /// Basin certificates, versions 1 and 2 (§15; version 2 adds tree leaves).
     Basin,
     /// Time-to-rest certificates, versions 1 and 2 (§16).
     Rest,
@@ -73,7 +73,7 @@ pub fn header(v: &Value) -> Checked<Reader> {
         (CERTIFICATE, 1..=3) => Reader::Cone(version),
         (CERTIFICATE, 4) | (FAMILY, 1) => Reader::Family,
         (CERTIFICATE, 5) | (ORBIT, 1) => Reader::Orbit,
-        (BASIN, 1) => Reader::Basin,
+        (BASIN, 1..=2) => Reader::Basin,
         (REST, 1..=2) => Reader::Rest,
         _ => return Err(Fail::new("unsupported-version", format!("version {version}"))),
     };

@@ -6,6 +6,7 @@ mod common;
 
 mod basin;
 mod basin_rest;
+mod basin_tree;
 mod boundary;
 mod corpus;
 mod family;

@@ -12,8 +12,10 @@ use serde::Deserialize;
 
 /// Value of the `format` field.
 pub const FORMAT: &str = "chatter-basin-certificate";
-/// The version.
+/// The version: 1 without `Tree` leaves, 2 with them (docs/certificate-format.md §15).
 pub const VERSION: u64 = 1;
+/// The version that may have `Tree` leaves.
+pub const TREE_VERSION: u64 = 2;
 
 /// A basin certificate.
 #[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
@@ -98,6 +100,42 @@ pub enum LeafVerdict {
     },
     /// No verdict claimed.
     Undecided,
+    /// The contacts that may land first, each with what follows its impact (version 2):
+    /// every path to an end is a prefix as above, ending as its end says.
+    Tree {
+        /// The contacts J that may land first (absolute, 0..n-1), each with what follows.
+        next: Vec<Impact>,
+    },
+}
+
+/// An impact of a `Tree` leaf: the contact that lands, then what follows.
+#[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Impact {
+    /// The contact: absolute at the root, else the step j in 1..n-1 from the one that landed last.
+    pub contact: u64,
+    /// What follows the impact.
+    pub then: Then,
+}
+
+/// What follows an impact of a `Tree` leaf.
+#[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum Then {
+    /// v > 0: ICC.
+    Icc,
+    /// The normalised state lies in X (no cuts): CC.
+    Cc,
+    /// The velocity lies in the cone of node `node` of the time-to-rest certificate: CC.
+    Rest {
+        /// The node r.
+        node: u64,
+    },
+    /// The contacts that may land next (steps in 1..n-1), each with what follows.
+    Impacts {
+        /// The next impacts.
+        next: Vec<Impact>,
+    },
 }
 
 impl Schema for BasinCertificate {
