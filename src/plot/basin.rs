@@ -61,6 +61,8 @@ pub struct BasinFigure {
     pub rects: Vec<Rect>,
     /// "φ_x = 1/20, ..." : where the other coordinates are fixed.
     pub fixed: String,
+    /// How many of the leaves meeting the slice are trees (version 2).
+    pub trees: usize,
 }
 
 fn f(x: &Rational) -> f64 {
@@ -109,7 +111,7 @@ impl BasinFigure {
             }
             fixed.push(format!("{} = {}", SYMBOLS[k], Q::from_rational(value[k].clone())));
         }
-        let mut rects = Vec::new();
+        let (mut rects, mut trees) = (Vec::new(), 0);
         for leaf in &cert.leaves {
             let (l, h) = leaf_box(&lo, &hi, &leaf.path);
             if (0..DIMS).any(|k| !axes.contains(&k) && (value[k] < l[k] || value[k] > h[k])) {
@@ -126,6 +128,7 @@ impl BasinFigure {
                     _ => Kind::Cc,
                 },
             };
+            trees += usize::from(matches!(leaf.verdict, LeafVerdict::Tree { .. }));
             let [a, b] = axes;
             rects.push(Rect { kind, x: [f(&l[a]), f(&h[a])], y: [f(&l[b]), f(&h[b])] });
         }
@@ -146,6 +149,7 @@ impl BasinFigure {
             y: [f(&lo[b]), f(&hi[b])],
             rects,
             fixed: fixed.join(", "),
+            trees,
         })
     }
 
@@ -169,6 +173,10 @@ impl BasinFigure {
             .filter(|(k, ..)| self.rects.iter().any(|r| r.kind == *k))
             .map(|(_, c, text)| Entry::new(Sample::Fill(c), text))
             .collect();
+        if self.trees > 0 {
+            let note = "tree leaves (a prefix for each order in which contacts land): their drops that meet a simultaneous impact, where the model stops, have volume zero and are not claimed";
+            e.push(Entry::new(Sample::Note, note));
+        }
         e.push(Entry::new(Sample::Note, format!("slice at {}", self.fixed)));
         e.push(Entry::new(
             Sample::Note,

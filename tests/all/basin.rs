@@ -504,6 +504,23 @@ fn plot_basin_draws_rest_leaves_as_their_own_kind_in_the_cc_colour() {
     assert_eq!(at, cc_colour);
 }
 
+/// A tree leaf is drawn in the colour of its ends: the square plate's tree (ends in a node's cone)
+/// as a `Rest` leaf, in the proved-CC colour; the triangle's at γ = 1/2 (ends v > 0) as ICC; the
+/// legend then says that the drops meeting a simultaneous impact are not claimed.
+#[test]
+fn plot_basin_draws_a_tree_leaf_as_the_kind_of_its_ends() {
+    use chatter::plot::basin::Kind;
+    let d = tempfile::tempdir().unwrap();
+    for (file, kind) in [
+        ("certificates/valid/basin-tree-rest-n4-kappa1_6-gamma1_100.ron", Kind::Rest),
+        ("certificates/valid/basin-tree-icc-n3-kappa1_8-gamma1_2.ron", Kind::Icc),
+    ] {
+        let fig = slice(file, "omega_x,omega_y", &[], &d.path().join("tree.png"));
+        assert!(!fig.rects.is_empty() && fig.rects.iter().all(|r| r.kind == kind), "{file}: {:?}", fig.rects);
+        assert_eq!(fig.trees, fig.rects.len(), "{file}: the legend's note on ties is drawn");
+    }
+}
+
 /// Tree leaves (version 2, docs/basin-certificates.md §4.2): drops spread over the leaf of the
 /// corpus's two tree certificates (contacts 0 and 3 of the square landing first in
 /// either order; the triangle at γ = 1/2 branching at its fourth impact), run exactly, begin
