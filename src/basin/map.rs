@@ -126,7 +126,7 @@ fn declared(certificate: &str) -> Result<Declared, String> {
             .map_err(|r| format!("not a basin certificate ({r})"))?;
     let (mut shares, mut counts) = ([Q::int(0), Q::int(0), Q::int(0)], [0usize; 3]);
     for leaf in &cert.leaves {
-        let kind = super::kind(&leaf.verdict);
+        let kind = chatter_kernel::rules::basin::kind(&leaf.verdict);
         let volume = (0..leaf.path.len()).fold(Q::int(1), |v, _| v * Q::new(1, 2));
         shares[kind] = &shares[kind] + &volume;
         counts[kind] += 1;

@@ -129,22 +129,12 @@ pub fn produce(
     let mut leaves = [0usize; 3];
     let mut shares = [0.0; 3];
     for l in &cert.leaves {
-        let k = kind(&l.verdict);
+        let k = chatter_kernel::rules::basin::kind(&l.verdict);
         leaves[k] += 1;
         shares[k] += 0.5f64.powi(l.path.len() as i32);
     }
     let rest = rest.map(|r| r.map(|m| (m.nodes, m.bound)));
     Ok(Produced { certificate: cert, orbit: found, rest, leaves, shares })
-}
-
-/// A leaf's verdict as counted: 0 CC (`Cc`, `Rest`, a tree ending in them), 1 ICC, 2 undecided.
-pub fn kind(v: &LeafVerdict) -> usize {
-    match v {
-        LeafVerdict::Cc { .. } | LeafVerdict::Rest { .. } => 0,
-        LeafVerdict::Icc { .. } => 1,
-        LeafVerdict::Undecided => 2,
-        LeafVerdict::Tree { next } => usize::from(!branches::ends_cc(next)),
-    }
 }
 
 /// A time-to-rest certificate for the body whose claim excludes PCC (what `Rest` leaves need).

@@ -218,34 +218,21 @@ pub fn check<F: Field>(cert: &BasinCertificate, limits: ParseLimits) -> Result<B
     };
     let ctx = Context::new(maps, orbit).with_rest(rest);
     let (mut shares, mut counts, mut worst) = ([F::zero(), F::zero(), F::zero()], [0usize; 3], None::<F>);
+    let mut trees = 0;
     for (i, leaf) in cert.leaves.iter().enumerate() {
         in_time(limits, "checking the leaves of a basin certificate")?;
-        let kind = match &leaf.verdict {
-            LeafVerdict::Cc { .. } | LeafVerdict::Rest { .. } => 0,
-            LeafVerdict::Icc { .. } => 1,
-            LeafVerdict::Undecided => 2,
-            LeafVerdict::Tree { next } => usize::from(!branches::ends_cc(next)),
+        let kind = kind(&leaf.verdict);
+        let (l, h) = leaf_box(&lo, &hi, &leaf.path);
+        let shown = match &leaf.verdict {
+            LeafVerdict::Tree { next } => Some(branches::examine(&ctx, &l, &h, next)),
+            verdict => Prefix::of(verdict).map(|prefix| ctx.leaf(&l, &h, &prefix)),
         };
-        if let Some(prefix) = Prefix::of(&leaf.verdict) {
-            let (l, h) = leaf_box(&lo, &hi, &leaf.path);
-            let at = |f: Failure| {
-                Rejection::new(
-                    Code::LeafNotShown,
-                    leaf_locus(i, &leaf.path),
-                    Detail::Kind(KindDetail::Basin(f)),
-                )
-            };
-            let time = ctx.leaf(&l, &h, &prefix).map_err(at)?;
-            record(&mut worst, time);
+        if let Some(time) = shown {
+            let detail = |f: Failure| Detail::Kind(KindDetail::Basin(f));
+            let at = |f| Rejection::new(Code::LeafNotShown, leaf_locus(i, &leaf.path), detail(f));
+            record(&mut worst, time.map_err(at)?);
         }
-        if let LeafVerdict::Tree { next } = &leaf.verdict {
-            let (l, h) = leaf_box(&lo, &hi, &leaf.path);
-            let at = |f: Failure| {
-                let detail = Detail::Kind(KindDetail::Basin(f));
-                Rejection::new(Code::LeafNotShown, leaf_locus(i, &leaf.path), detail)
-            };
-            record(&mut worst, branches::examine(&ctx, &l, &h, next).map_err(at)?);
-        }
+        trees += usize::from(matches!(leaf.verdict, LeafVerdict::Tree { .. }));
         counts[kind] += 1;
         let share = F::from_fraction(&crate::exact::Ring::one(), &pow2::<F>(leaf.path.len()));
         shares[kind] = shares[kind].plus(&share);
@@ -257,10 +244,26 @@ pub fn check<F: Field>(cert: &BasinCertificate, limits: ParseLimits) -> Result<B
         icc_share: icc,
         undecided_share: und,
         leaves: counts,
-        trees: cert.leaves.iter().filter(|l| matches!(l.verdict, LeafVerdict::Tree { .. })).count(),
+        trees,
         time_to_rest_bound: worst.map(|w| to_canonical(&w)),
         orbit_boxes,
     })
+}
+
+/// How a leaf's verdict counts: 0 CC (`Cc`, `Rest`, a tree ending in them), 1 ICC (`Icc`, a tree
+/// ending in it), 2 undecided. A tree is read by its first end, which rule B1 made every end's kind.
+pub fn kind(verdict: &LeafVerdict) -> usize {
+    match verdict {
+        LeafVerdict::Cc { .. } | LeafVerdict::Rest { .. } => 0,
+        LeafVerdict::Icc { .. } => 1,
+        LeafVerdict::Undecided => 2,
+        LeafVerdict::Tree { next } => usize::from(!branches::ends_cc(next)),
+    }
+}
+
+/// The enclosure of f·x for a covector f known by enclosures (a contact's height or velocity).
+pub(super) fn dot_iv<F: Field>(f: &[Iv<F>; 3], x: &[Over<F>; 3]) -> Over<F> {
+    x[0].scaled_by(&f[0]).plus(&x[1].scaled_by(&f[1])).plus(&x[2].scaled_by(&f[2]))
 }
 
 /// The largest time to rest over h of the CC leaves so far.
@@ -506,8 +509,7 @@ pub(super) fn start<F: Field>(ctx: &Context<F>, lo: &[F; DIMS], hi: &[F; DIMS]) 
     let y = seeds(lo, hi);
     let (q, p) = state(&y, &ctx.cs);
     for (k, f) in ctx.maps.contacts.iter().enumerate() {
-        let h = q[0].scaled_by(&f[0]).plus(&q[1].scaled_by(&f[1])).plus(&q[2].scaled_by(&f[2]));
-        shown(LeafQuantity::Start { contact: k }, &h)?;
+        shown(LeafQuantity::Start { contact: k }, &dot_iv(f, &q))?;
     }
     let [.., h] = y;
     Ok((q, p, h))

@@ -12,7 +12,9 @@
 //!   rises (u_m > 0) or lands after some j in J (h_m (-u_j) + h_j u_m > 0, J in list order); then
 //!   each child from the state after the impact at j, and each end as a prefix's end.
 
-use super::basin::{Context, End, Failure, LeafQuantity, MAX_PREFIX, fail, rest_node, shown, start, unshown};
+use super::basin::{
+    Context, End, Failure, LeafQuantity, MAX_PREFIX, dot_iv, fail, rest_node, shown, start, unshown,
+};
 use crate::basin::drop::{DIMS, Over};
 use crate::exact::Field;
 use crate::orbit::map::{Quantity, Stop, step};
@@ -144,10 +146,8 @@ impl<F: Field> Walk<'_, F> {
     ) -> Result<(), Failure> {
         let step_no = self.path.len();
         let contacts = &self.ctx.maps.contacts;
-        let dot = |f: &[crate::orbit::interval::Iv<F>; 3], x: &[Over<F>; 3]| {
-            x[0].scaled_by(&f[0]).plus(&x[1].scaled_by(&f[1])).plus(&x[2].scaled_by(&f[2]))
-        };
-        let (h, u): (Vec<Over<F>>, Vec<Over<F>>) = contacts.iter().map(|f| (dot(f, q), dot(f, p))).unzip();
+        let (h, u): (Vec<Over<F>>, Vec<Over<F>>) =
+            contacts.iter().map(|f| (dot_iv(f, q), dot_iv(f, p))).unzip();
         let zero = Over::constant(&F::zero());
         let landing: Vec<usize> = next.iter().map(|imp| imp.contact as usize).collect();
         for &j in &landing {
