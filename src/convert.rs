@@ -150,7 +150,7 @@ pub fn convex_to_json(c: &ConvexCertificate) -> String {
         c.version,
         list(&contacts).replace("\n    ]", "\n        ]"),
         tuple(&[&inertia.0, &inertia.1, &inertia.2]),
-        quoted(gamma),
+        param(gamma),
         inertia_tensor.as_ref().map_or(String::new(), |t| {
             format!(",\n        \"inertia_tensor\": {}", tuple(&[&t.0, &t.1, &t.2, &t.3, &t.4, &t.5]))
         }),
@@ -273,7 +273,10 @@ pub fn convert(text: &str, from: Encoding, target: Target) -> Result<String, Str
         }
         Kind::Family => {
             let mut c: ConvexCertificate = schema(text, from).map_err(unreadable)?;
-            (c.format, c.version) = (syntax::family::FORMAT.into(), syntax::family::VERSION);
+            if c.format != syntax::family::FORMAT {
+                // The legacy header ("chatter-certificate", 4) is version 1 of the family format.
+                (c.format, c.version) = (syntax::family::FORMAT.into(), syntax::family::VERSION);
+            }
             Ok(if json { convex_to_json(&c) } else { write_convex(&c) })
         }
         Kind::Orbit => {

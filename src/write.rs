@@ -70,7 +70,7 @@ pub fn write_convex(c: &ConvexCertificate) -> String {
     }
     out.push_str("        ],\n");
     out.push_str(&format!("        inertia: ({}, {}, {}),\n", q(&inertia.0), q(&inertia.1), q(&inertia.2)));
-    out.push_str(&format!("        gamma: {},\n", q(gamma)));
+    out.push_str(&format!("        gamma: {},\n", param(gamma)));
     if let Some(t) = inertia_tensor {
         let six = [&t.0, &t.1, &t.2, &t.3, &t.4, &t.5].map(|x| q(x)).join(", ");
         out.push_str(&format!("        inertia_tensor: Some(({six})),\n"));

@@ -27,6 +27,10 @@ pub struct KernelView {
     /// of a rod, T̄/(1 - ρ) of an orbit certificate; `Some(None)`: no bound); `None` where the
     /// caller did not read it (then it is not compared).
     pub time_to_rest_bound: Option<Option<String>>,
+    /// For an accepted family certificate: [γ_lo, γ_hi] when its γ is an interval, as the tool's
+    /// report of the kernel's verdict gives it (`chatter verify --json`, `gamma_interval`;
+    /// `Some(None)`: a single γ); `None` where the caller did not read it.
+    pub gamma_interval: Option<Option<[String; 2]>>,
 }
 
 /// A disagreement between the kernel and the oracle.
@@ -35,7 +39,8 @@ pub struct Finding {
     /// `backends-disagree`, `kernel-accepts-false` (the kernel accepts, the oracle finds a rule
     /// false), `oracle-accepts` (the kernel rejects what the oracle accepts, two-sided),
     /// `wrong-code` (both reject, the kernel's code is not one the oracle's first failing rule
-    /// can give) or `wrong-report` (both accept, with different reports).
+    /// can give), `wrong-end` (both reject a family certificate over an interval of γ with the
+    /// same code, at different ends) or `wrong-report` (both accept, with different reports).
     pub kind: &'static str,
     /// What differs.
     pub detail: String,
@@ -153,6 +158,26 @@ fn basin_bound(k: &KernelView, o: &Judgement) -> Result<(), String> {
     }
 }
 
+/// The end of an interval of γ at which the kernel rejects a family certificate (rules K2-K4:
+/// the loci `transition`, `convex-all-down` and `pcc-pair` carry it).
+fn kernel_end(k: &KernelView) -> Option<&str> {
+    let locus = k.locus.as_ref()?;
+    let kinds = ["transition", "convex-all-down", "pcc-pair"];
+    kinds.iter().any(|kind| locus["kind"] == *kind).then(|| locus["gamma"].as_str()).flatten()
+}
+
+/// Both reject a family certificate with the same code: they must name the same end of an
+/// interval of γ (or none).
+fn same_end(k: &KernelView, why: &str) -> Result<(), Finding> {
+    let (kernel, oracle) = (kernel_end(k), crate::convex::rules::end_named(why));
+    if kernel == oracle {
+        return Ok(());
+    }
+    let detail =
+        format!("the kernel fails at the end {kernel:?} ({}), the oracle at {oracle:?}: {why}", k.message);
+    Err(finding("wrong-end", detail))
+}
+
 /// Compares a kernel verdict with the oracle's judgement of the same file.
 pub fn compare(k: &KernelView, o: &Judgement) -> Result<Agreement, Finding> {
     if let Some(d) = &k.disagree {
@@ -166,6 +191,12 @@ pub fn compare(k: &KernelView, o: &Judgement) -> Result<Agreement, Finding> {
         (Outcome::Accept(report), true) => {
             same_report(&k.report, report).map_err(|d| finding("wrong-report", d))?;
             same_bound(k, o).map_err(|d| finding("wrong-report", d))?;
+            if let Some(kg) = &k.gamma_interval
+                && *kg != o.gamma_interval
+            {
+                let detail = format!("gamma_interval differs: kernel {kg:?}, oracle {:?}", o.gamma_interval);
+                return Err(finding("wrong-report", detail));
+            }
             Ok(Agreement::BothAccept)
         }
         (Outcome::Reject { codes, why }, true) => {
@@ -203,7 +234,9 @@ pub fn compare(k: &KernelView, o: &Judgement) -> Result<Agreement, Finding> {
             let basin_later = o.kind == Kind::Basin
                 && content.contains(&code)
                 && codes.iter().all(|c| content.contains(c) || later.contains(c));
-            if codes.contains(&code) || (o.sided == Sided::One && (both_content || basin_later)) {
+            if codes.contains(&code) && o.kind == Kind::Family {
+                same_end(k, why).map(|()| Agreement::BothReject)
+            } else if codes.contains(&code) || (o.sided == Sided::One && (both_content || basin_later)) {
                 Ok(Agreement::BothReject)
             } else {
                 let detail = format!("kernel {code} ({}); oracle {codes:?}: {why}", k.message);

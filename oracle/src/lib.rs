@@ -64,6 +64,7 @@ fn unread(f: verdict::Fail) -> Judgement {
         sided: Sided::Two,
         outcome: Outcome::Reject { codes: f.codes, why: f.why },
         time_to_rest_bound: None,
+        gamma_interval: None,
     }
 }
 
@@ -72,7 +73,7 @@ fn done(kind: Kind, sided: Sided, r: Checked<Report>) -> Judgement {
         Ok(report) => Outcome::Accept(Box::new(report)),
         Err(f) => Outcome::Reject { codes: f.codes, why: f.why },
     };
-    Judgement { kind, sided, outcome, time_to_rest_bound: None }
+    Judgement { kind, sided, outcome, time_to_rest_bound: None, gamma_interval: None }
 }
 
 fn judge_value(value: &Value, reader: Reader, limits: &Limits) -> Judgement {
@@ -92,7 +93,11 @@ fn judge_value(value: &Value, reader: Reader, limits: &Limits) -> Judgement {
         },
         Reader::Family => match kinds::family::read(value) {
             Err(f) => unread(f),
-            Ok(file) => done(Kind::Family, Sided::Two, kinds::family::check(&file, limits)),
+            Ok(file) => {
+                let judged = done(Kind::Family, Sided::Two, kinds::family::check(&file, limits));
+                let interval = judged.accepted().then(|| file.gamma_interval()).flatten();
+                Judgement { gamma_interval: interval, ..judged }
+            }
         },
         Reader::Basin => match kinds::basin::read(value) {
             Err(f) => unread(f),

@@ -96,13 +96,17 @@ pub struct Judgement {
     /// kernel's bound. Kept beside the [`Report`], whose
     /// fields other crates fill in literally.
     pub time_to_rest_bound: Option<String>,
+    /// [γ_lo, γ_hi] (canonical text) of an accepted family certificate whose γ is an interval
+    /// (version 2, docs/certificate-format.md §13), as the kernel's `gamma_interval`; beside the
+    /// [`Report`] for the same reason.
+    pub gamma_interval: Option<[String; 2]>,
 }
 
 impl Judgement {
     /// A two-sided rejection with one code.
     pub fn reject(kind: Kind, code: &'static str, why: impl Into<String>) -> Judgement {
         let outcome = Outcome::Reject { codes: vec![code], why: why.into() };
-        Judgement { kind, sided: Sided::Two, outcome, time_to_rest_bound: None }
+        Judgement { kind, sided: Sided::Two, outcome, time_to_rest_bound: None, gamma_interval: None }
     }
 
     /// Whether the oracle accepts.

@@ -24,7 +24,11 @@ use std::time::Instant;
 /// A certification request for a general convex body.
 #[derive(Clone)]
 pub struct ConvexRequest {
+    /// The body (at gamma, or at the lower end of an interval of gamma).
     pub body: ConvexBody<Q>,
+    /// The upper end of an interval [gamma, gamma_hi] the certificate must hold on (`None`: a
+    /// single gamma; docs/certificate-format.md §13, version 2).
+    pub gamma_hi: Option<Q>,
     pub claim: ClaimChoice,
     pub finder: FinderConfig,
     pub exactify: ExactifyConfig,
@@ -37,11 +41,25 @@ impl ConvexRequest {
     pub fn new(body: ConvexBody<Q>) -> ConvexRequest {
         ConvexRequest {
             body,
+            gamma_hi: None,
             claim: ClaimChoice::Strongest,
             finder: FinderConfig::default(),
             exactify: ExactifyConfig::default(),
             backends: [MALACHITE, NUM],
         }
+    }
+}
+
+impl ConvexRequest {
+    /// The body at each end of the request's gamma: one body, or two for an interval.
+    pub fn ends(&self) -> Result<Vec<ConvexBody<Q>>, Failure> {
+        let mut out = vec![self.body.clone()];
+        if let Some(hi) = self.gamma_hi.as_ref().filter(|hi| *hi != self.body.gamma()) {
+            let b = &self.body;
+            let body = ConvexBody::new(b.contacts().to_vec(), b.inertia().clone(), hi.clone());
+            out.push(body.map_err(|e| Failure::Internal(format!("the body at gamma = {hi}: {e}")))?);
+        }
+        Ok(out)
     }
 }
 
@@ -136,6 +154,23 @@ fn strongest(body: &ConvexBody<Q>, choice: ClaimChoice, notes: &mut Vec<String>)
     Ok(Claim::CompleteChatterFromAllDown)
 }
 
+/// [`strongest`] at every end of the request's gamma: the weakest of them (rule K4 must hold at
+/// both ends of an interval).
+fn strongest_at(
+    ends: &[ConvexBody<Q>],
+    choice: ClaimChoice,
+    notes: &mut Vec<String>,
+) -> Result<Claim, Failure> {
+    let mut claim = Claim::CompleteChatterFromAllDown;
+    for body in ends {
+        claim = claim.min(strongest(body, choice, notes)?);
+        if claim < Claim::CompleteChatterFromAllDown {
+            break;
+        }
+    }
+    Ok(claim)
+}
+
 /// The exact seeds of each K_i: I_i of the drops the claim covers (the downward translation, or
 /// the generators of D), zero images left out; `Err` if one leaves with v >= 0.
 fn seeds(body: &ConvexBody<Q>, claim: Claim) -> Result<Vec<Vec<Vec3<Q>>>, Failure> {
@@ -168,18 +203,21 @@ fn seeds(body: &ConvexBody<Q>, claim: Claim) -> Result<Vec<Vec<Vec3<Q>>>, Failur
 /// carries its generators back to `req.body`, the body of the certificate.
 fn family_attempt(
     req: &ConvexRequest,
-    body: &ConvexBody<Q>,
+    bodies: &[ConvexBody<Q>],
     adj: &Mat2<Q>,
     claim: Claim,
     t: &mut Timings,
 ) -> Attempt<ConvexCertificate> {
-    let exact_seeds = match seeds(body, claim) {
-        Ok(s) => s,
-        Err(f) => return Attempt::failed(f, None),
-    };
+    let mut exact_seeds = vec![Vec::new(); bodies[0].n()];
+    for body in bodies {
+        match seeds(body, claim) {
+            Ok(s) => exact_seeds.iter_mut().zip(s).for_each(|(all, s)| all.extend(s)),
+            Err(f) => return Attempt::failed(f, None),
+        }
+    }
     let seed = if claim == Claim::EffectivelyInvariant { Seed::Translation } else { Seed::AllDown };
     let start = Instant::now();
-    let outcome = find_family(&FloatFamily::of(body), seed, &req.finder);
+    let outcome = find_family(&FloatFamily::of_ends(bodies), seed, &req.finder);
     t.finder += start.elapsed();
     let summary = Some(outcome.summary());
     let polys = match outcome {
@@ -196,14 +234,14 @@ fn family_attempt(
     let retry = |e: &ExactifyError| {
         matches!(e, ExactifyError::NoConvergence { .. } | ExactifyError::TransitionAbove { .. })
     };
-    let ex = ladder_if(&req.exactify, retry, |c| exactify_family(body, &polys, &exact_seeds, c));
+    let ex = ladder_if(&req.exactify, retry, |c| exactify_family(bodies, &polys, &exact_seeds, c));
     t.exactify += start.elapsed();
     let cones = match ex {
         Ok(ex) => carried_back(ex.cones, adj),
         Err(e) => return Attempt::failed(Failure::Exactify(e), summary),
     };
     let producer = format!("chatter {} certify ({FAMILY})", env!("CARGO_PKG_VERSION"));
-    let cert = convex_certificate(&req.body, claim, &cones, &producer);
+    let cert = convex_certificate(&req.body, req.gamma_hi.as_ref(), claim, &cones, &producer);
     kernel_check(req, cert, FAMILY, summary, t)
 }
 
@@ -238,7 +276,8 @@ fn transported(
     claim: Claim,
     t: &mut Timings,
 ) -> Attempt<ConvexCertificate> {
-    let mut r = Request::new(pre.n as u64, pre.kappa.clone(), req.body.gamma().clone());
+    let gamma = [req.body.gamma().clone(), req.gamma_hi.clone().unwrap_or_else(|| req.body.gamma().clone())];
+    let mut r = Request::boxed(pre.n as u64, [pre.kappa.clone(), pre.kappa.clone()], gamma);
     (r.claim, r.finder, r.exactify, r.backends) =
         (ClaimChoice::Exactly(claim), req.finder, req.exactify, req.backends);
     let regular = certify(&r);
@@ -265,7 +304,7 @@ fn worth_a_fallback(f: &Failure) -> bool {
 /// route failed, the transport; `notes` says which route certified or why both failed.
 fn attempt(
     req: &ConvexRequest,
-    (body, adj): (&ConvexBody<Q>, &Mat2<Q>),
+    (body, adj): (&[ConvexBody<Q>], &Mat2<Q>),
     pre: Option<&RegularPreimage>,
     claim: Claim,
     t: &mut Timings,
@@ -291,29 +330,29 @@ pub const TRANSPORT_FAILED: &str = "transport from the regular polygon failed to
 /// Runs the pipeline for a general body: claims strongest first unless one is asked for.
 pub fn certify_convex(req: &ConvexRequest) -> ConvexReport {
     let mut notes = Vec::new();
-    let g = req.body.gamma();
-    let claims = match claims_in(req.claim, [g, g], |n| strongest(&req.body, req.claim, n), &mut notes) {
+    let failed = |f, notes| {
+        let (timings, finder, method) = (Timings::default(), None, None);
+        ConvexReport { result: Err(f), finder, timings, max_denominator_bits: 0, method, notes }
+    };
+    let ends = match req.ends() {
+        Ok(e) => e,
+        Err(f) => return failed(f, notes),
+    };
+    let range = [ends[0].gamma(), ends[ends.len() - 1].gamma()];
+    let claims = match claims_in(req.claim, range, |n| strongest_at(&ends, req.claim, n), &mut notes) {
         Ok(c) => c,
-        Err(f) => {
-            let timings = Timings::default();
-            let (finder, method) = (None, None);
-            return ConvexReport { result: Err(f), finder, timings, max_denominator_bits: 0, method, notes };
-        }
+        Err(f) => return failed(f, notes),
     };
-    let Some((body, adj)) = normalised(&req.body, &normaliser(&req.body)) else {
+    let l = normaliser(&req.body);
+    let Some(normal) = ends.iter().map(|b| normalised(b, &l)).collect::<Option<Vec<_>>>() else {
         let f = Failure::Internal("the normalising map of the search is not invertible".into());
-        return ConvexReport {
-            result: Err(f),
-            finder: None,
-            timings: Timings::default(),
-            max_denominator_bits: 0,
-            method: None,
-            notes,
-        };
+        return failed(f, notes);
     };
+    let adj = normal[0].1.clone();
+    let bodies: Vec<ConvexBody<Q>> = normal.into_iter().map(|(b, _)| b).collect();
     let pre = regular_preimage(&req.body);
     let mut extra = Vec::new();
-    let run = |c, t: &mut Timings| attempt(req, (&body, &adj), pre.as_ref(), c, t, &mut extra);
+    let run = |c, t: &mut Timings| attempt(req, (&bodies, &adj), pre.as_ref(), c, t, &mut extra);
     let (a, timings, mut notes) = try_claims(req.claim, claims, run, notes);
     notes.append(&mut extra);
     let (result, finder, method) = (a.result, a.finder, a.method);

@@ -13,12 +13,13 @@
 
 use crate::exact::{Q, Ring};
 use chatter_kernel::certificate::{
-    Body, Certificate, ConvexBodyText, ConvexCertificate, ConvexCoordinates, Generator,
+    Body, Certificate, ConvexBodyText, ConvexCertificate, ConvexCoordinates, Generator, Param,
 };
 use chatter_kernel::exact::OrderedField;
 use chatter_kernel::exact::to_canonical;
 use chatter_kernel::model::linalg::Vec3;
 use chatter_kernel::model::{ConvexBody, ConvexBodyError, Mat2, Vec2};
+use chatter_kernel::syntax::family;
 
 /// Why a regular certificate cannot be transported to a body.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -67,13 +68,21 @@ pub fn family(contacts: &[Vec2<Q>], cone: &[Vec3<Q>]) -> Vec<Vec<Vec3<Q>>> {
 }
 
 /// The generators of a regular polygon point certificate, with its n.
-fn regular_cone(cert: &Certificate) -> Result<(u64, Vec<Vec3<Q>>), TransportError> {
+/// n, the generators, and the upper end of gamma when it is an interval.
+type RegularCone = (u64, Vec<Vec3<Q>>, Option<Q>);
+
+fn regular_cone(cert: &Certificate) -> Result<RegularCone, TransportError> {
     let Body::RegularPolygon { n, kappa, gamma } = &cert.body;
-    if *n < 3 || kappa.as_point().is_none() || gamma.as_point().is_none() {
+    let hi = match gamma {
+        Param::Point(_) => Ok(None),
+        Param::Interval(_, hi) => hi.parse::<Q>().map(Some),
+    };
+    let (true, true, Ok(hi)) = (*n >= 3, kappa.as_point().is_some(), hi) else {
         return Err(TransportError::NotTransportable(
-            "only point certificates of polygons with n >= 3".into(),
+            "only certificates of polygons with n >= 3 at one kappa (a point, or an interval of gamma)"
+                .into(),
         ));
-    }
+    };
     let mut gens = Vec::with_capacity(cert.cone.len());
     for (i, g) in cert.cone.iter().enumerate() {
         let xs: Option<Vec<Q>> = g.0.iter().map(|s| s.parse::<Q>().ok()).collect();
@@ -82,25 +91,30 @@ fn regular_cone(cert: &Certificate) -> Result<(u64, Vec<Vec3<Q>>), TransportErro
             _ => return Err(TransportError::BadGenerator(i)),
         }
     }
-    Ok((*n, gens))
+    Ok((*n, gens, hi))
 }
 
 /// The family certificate of a body and a family of cones.
 pub fn convex_certificate(
     body: &ConvexBody<Q>,
+    gamma_hi: Option<&Q>,
     claim: chatter_kernel::certificate::Claim,
     cones: &[Vec<Vec3<Q>>],
     producer: &str,
 ) -> ConvexCertificate {
     let t = |x: &Q| to_canonical(x);
     let j = body.inertia();
+    let (gamma, version) = match gamma_hi.filter(|hi| *hi != body.gamma()) {
+        Some(hi) => (Param::Interval(t(body.gamma()), t(hi)), family::INTERVAL_VERSION),
+        None => (Param::Point(t(body.gamma())), family::VERSION),
+    };
     ConvexCertificate {
-        format: chatter_kernel::syntax::family::FORMAT.into(),
-        version: chatter_kernel::syntax::family::VERSION,
+        format: family::FORMAT.into(),
+        version,
         body: ConvexBodyText::ConvexPolygon {
             contacts: body.contacts().iter().map(|r| (t(&r[0]), t(&r[1]))).collect(),
             inertia: (t(&j[0][0]), t(&j[0][1]), t(&j[1][1])),
-            gamma: t(body.gamma()),
+            gamma,
             inertia_tensor: None,
         },
         coordinates: ConvexCoordinates::PaperVelocities,
@@ -115,17 +129,18 @@ pub fn convex_certificate(
 
 /// Transports a regular n-gon certificate to a body with n contacts: the family W_i'^-1 K with
 /// the body's contacts, the certificate's claim. Sound only when the body is an affine image of
-/// the certificate's regular body (docs/model.md §11.7) with the same gamma; the kernel decides
+/// the certificate's regular body (docs/model.md §11.7) with the same gamma (the body at the lower
+/// end of the certificate's interval of gamma, if it has one); the kernel decides
 /// whether the result holds for the body given.
 pub fn transport(body: &ConvexBody<Q>, cert: &Certificate) -> Result<ConvexCertificate, TransportError> {
-    let (n, cone) = regular_cone(cert)?;
+    let (n, cone, gamma_hi) = regular_cone(cert)?;
     if n as usize != body.n() {
         return Err(TransportError::ContactCount { certificate: n, body: body.n() });
     }
     let cones = family(body.contacts(), &cone);
     let producer =
         format!("chatter {} (transported from a regular n = {n} certificate)", env!("CARGO_PKG_VERSION"));
-    Ok(convex_certificate(body, cert.claim, &cones, &producer))
+    Ok(convex_certificate(body, gamma_hi.as_ref(), cert.claim, &cones, &producer))
 }
 
 /// The image of the regular n-gon body (n = 3, 4, 6; circumradius 1, J = kappa I) under the

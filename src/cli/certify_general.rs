@@ -4,11 +4,11 @@
 
 use super::certify_cmd::{CertifyArgs, ms};
 use super::convex_args::GeneralBody;
-use super::{Env, Outcome, emit, emit_report};
+use super::{Env, Outcome, emit, emit_report, range};
 use crate::bodies::inertia::Tensor;
 use crate::certify::Failure;
 use crate::certify::convex::{ConvexReport, ConvexRequest, certify_convex};
-use crate::exact::parse_user_number;
+use crate::exact::Q;
 use crate::write::write_convex;
 use chatter_kernel::exact::{ParseLimits, to_canonical};
 use chatter_kernel::syntax::family::ConvexBodyText;
@@ -27,10 +27,11 @@ struct Validated {
 }
 
 fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
-    if a.body.gamma_text().contains(':') {
-        return Err("--gamma: intervals (box certificates) are for regular polygons; give one number".into());
+    // An interval a:b asks for one certificate over every gamma in [a, b] (version 2).
+    let [gamma, hi] = range("--gamma", a.body.gamma_text())?;
+    if hi > Q::int(1) {
+        return Err(format!("--gamma: {hi} is not accepted: gamma must lie in [0, 1]"));
     }
-    let gamma = parse_user_number(a.body.gamma_text()).map_err(|e| format!("--gamma: {e}"))?;
     let Some(GeneralBody { body, description, tensor }) = a.general.parse(&gamma, a.body.gamma.is_some())?
     else {
         return Err("no general body given (--rectangle, --box, --polygon or --body)".into());
@@ -39,6 +40,7 @@ fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
         return Err("--max-vertices must be at least 3".into());
     }
     let mut req = ConvexRequest::new(body);
+    req.gamma_hi = (hi != gamma).then_some(hi);
     req.claim = a.claim.choice();
     req.finder.max_iterations = a.max_iterations;
     req.finder.max_vertices = a.max_vertices;
@@ -56,7 +58,10 @@ fn by(method: Option<&str>) -> String {
 
 fn summary(v: &Validated, r: &ConvexReport) -> String {
     let t = &r.timings;
-    let head = format!("{}, gamma={}", v.description, v.req.body.gamma());
+    let head = match &v.req.gamma_hi {
+        Some(hi) => format!("{}, every gamma in [{}, {hi}]", v.description, v.req.body.gamma()),
+        None => format!("{}, gamma={}", v.description, v.req.body.gamma()),
+    };
     let times = format!(
         "search {:.2} ms, exactifier {:.2} ms, kernel {:.2} ms ({} + {})",
         ms(t.finder),

@@ -176,7 +176,9 @@ pub struct BodyArgs {
     #[arg(long, default_value = "1/6", allow_hyphen_values = true)]
     pub kappa: String,
     /// Coefficient of restitution, in [0, 1] [default: 1/100, or the gamma of a body file given
-    /// with --body FILE; --gamma overrides the file's].
+    /// with --body FILE; --gamma overrides the file's]. certify also takes an interval a:b: one
+    /// certificate for every gamma in [a, b] (a box certificate of a regular polygon, with --kappa
+    /// a number or an interval; a family certificate of a general body).
     #[arg(long, allow_hyphen_values = true)]
     pub gamma: Option<String>,
 }

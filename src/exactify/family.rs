@@ -23,17 +23,19 @@ pub struct FamilyExactified {
 /// The integer covectors of C_ij and the integer maps I_j of a body (positive multiples).
 struct IntBody {
     cones: Vec<Vec<Vec<Vec3<Integer>>>>,
-    impacts: Vec<Mat3<Integer>>,
+    /// I_k at each value of gamma the family must serve.
+    impacts: Vec<Vec<Mat3<Integer>>>,
 }
 
 impl IntBody {
-    fn of(body: &ConvexBody<Q>) -> IntBody {
+    fn of(bodies: &[ConvexBody<Q>]) -> IntBody {
+        let body = &bodies[0];
         let n = body.n() as i64;
         let cone =
             |i, j| body.next_contact_cone(i, j).map_or_else(Vec::new, |c| c.iter().map(int_vec).collect());
         IntBody {
             cones: (0..n).map(|i| (0..n).map(|j| cone(i, j)).collect()).collect(),
-            impacts: (0..n).map(|k| int_mat(&body.impact(k))).collect(),
+            impacts: bodies.iter().map(|b| (0..n).map(|k| int_mat(&b.impact(k))).collect()).collect(),
         }
     }
 
@@ -47,8 +49,8 @@ impl IntBody {
                 for l in &self.cones[i][j] {
                     piece = clip(&piece, l).into_iter().map(primitive).collect();
                 }
-                for p in &piece {
-                    let q = primitive(mat_vec(&self.impacts[j], p));
+                for (p, maps) in piece.iter().flat_map(|p| self.impacts.iter().map(move |m| (p, m))) {
+                    let q = primitive(mat_vec(&maps[j], p));
                     if q.iter().all(|c| *c == 0u32) {
                         continue;
                     }
@@ -63,21 +65,23 @@ impl IntBody {
     }
 }
 
-/// Exactifies the float polygons `family` (one per contact) for `body`; `seeds[i]` are exact
-/// points K_i must contain (e.g. I_i of the generators of D).
+/// Exactifies the float polygons `family` (one per contact) for `bodies` (one body at each
+/// value of gamma the family must serve); `seeds[i]` are exact points K_i must contain (e.g. I_i
+/// of the generators of D).
 pub fn exactify_family(
-    body: &ConvexBody<Q>,
+    bodies: &[ConvexBody<Q>],
     family: &[Vec<P2>],
     seeds: &[Vec<Vec3<Q>>],
     cfg: &ExactifyConfig,
 ) -> Result<FamilyExactified, ExactifyError> {
+    let body = &bodies[0];
     if family.len() != body.n() || seeds.len() != body.n() {
         return Err(ExactifyError::BadInput(format!("{} polygons for {} contacts", family.len(), body.n())));
     }
     let mut offsets: Vec<Offsets> = family.iter().map(|p| Offsets::new(p, cfg)).collect::<Result<_, _>>()?;
     let seeds: Vec<Vec<Vec3<Integer>>> =
         seeds.iter().map(|s| s.iter().map(|g| primitive(int_vec(g))).collect()).collect();
-    let int_body = IntBody::of(body);
+    let int_body = IntBody::of(bodies);
     let mut worst_excess = 0.0;
     for round in 0..cfg.max_rounds {
         let polys: Vec<HPoly> = offsets.iter().map(Offsets::polygon).collect();

@@ -14,8 +14,9 @@ use nalgebra::{Matrix3, Vector3};
 /// The `f64` data of a general body that the search needs.
 #[derive(Clone, Debug)]
 pub struct FloatFamily {
-    /// I_k, k = 0..n-1.
-    impacts: Vec<Matrix3<f64>>,
+    /// I_k, k = 0..n-1, at each value of gamma the family must serve (one, or the two ends of an
+    /// interval: the images of both are taken, docs/certificate-format.md §13).
+    impacts: Vec<Vec<Matrix3<f64>>>,
     /// cones[i][j]: the four covectors of C_ij (empty for i = j).
     cones: Vec<Vec<Vec<Vector3<f64>>>>,
     /// Generators -m_{k,k+1} of the all-down cone D.
@@ -33,11 +34,18 @@ fn mat_f64(m: &Mat3<Q>) -> Matrix3<f64> {
 impl FloatFamily {
     /// The rounded maps, cones and all-down generators of `body`.
     pub fn of(body: &ConvexBody<Q>) -> FloatFamily {
+        FloatFamily::of_ends(std::slice::from_ref(body))
+    }
+
+    /// The same for one body at several values of gamma (the ends of an interval): C_ij and D do
+    /// not depend on gamma, the maps I_k do.
+    pub fn of_ends(bodies: &[ConvexBody<Q>]) -> FloatFamily {
+        let body = &bodies[0];
         let n = body.n() as i64;
         let cone =
             |i, j| body.next_contact_cone(i, j).map_or_else(Vec::new, |c| c.iter().map(vec_f64).collect());
         FloatFamily {
-            impacts: (0..n).map(|k| mat_f64(&body.impact(k))).collect(),
+            impacts: bodies.iter().map(|b| (0..n).map(|k| mat_f64(&b.impact(k))).collect()).collect(),
             cones: (0..n).map(|i| (0..n).map(|j| cone(i, j)).collect()).collect(),
             all_down: body.all_down_generators().iter().map(vec_f64).collect(),
         }
@@ -45,7 +53,7 @@ impl FloatFamily {
 
     /// Number of contacts.
     pub fn n(&self) -> usize {
-        self.impacts.len()
+        self.impacts[0].len()
     }
 
     /// The seed of each K_i on the plane v = -1: I_i of the downward translation (0, 0, -1), or
@@ -57,9 +65,11 @@ impl FloatFamily {
             Seed::Translation => &down,
             Seed::AllDown => &self.all_down,
         };
-        self.impacts
-            .iter()
-            .map(|m| starts.iter().map(|g| m * g).filter(|p| p.z < 0.0).map(|p| project(&p)).collect())
+        (0..self.n())
+            .map(|k| {
+                let at = |m: &Vec<Matrix3<f64>>| starts.iter().map(|g| m[k] * g).collect::<Vec<_>>();
+                self.impacts.iter().flat_map(at).filter(|p| p.z < 0.0).map(|p| project(&p)).collect()
+            })
             .collect()
     }
 }
@@ -103,8 +113,8 @@ pub fn family_images(f: &FloatFamily, polys: &[Vec<P2>]) -> Result<Vec<Vec<P2>>,
             for l in &f.cones[i][j] {
                 piece = clip(&piece, l);
             }
-            for p in &piece {
-                let q = f.impacts[j] * lift(p);
+            for (p, maps) in piece.iter().flat_map(|p| f.impacts.iter().map(move |m| (p, m))) {
+                let q = maps[j] * lift(p);
                 if q.z >= 0.0 {
                     return Err((i, j));
                 }

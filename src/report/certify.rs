@@ -163,7 +163,7 @@ pub fn of_convex(
         n: req.body.n() as u64,
         kappa: Interval::of(&Q::int(0), &Q::int(0)),
         kappa_field: None,
-        gamma: Interval::of(gamma, gamma),
+        gamma: Interval::of(gamma, req.gamma_hi.as_ref().unwrap_or(gamma)),
         claim: cert.map(|c| c.claim.name()),
         proves: cert.and_then(|c| crate::claims::proves(c.claim.name())),
         time_to_rest_bound: None,

@@ -87,6 +87,9 @@ pub struct FileVerdict {
     /// For a box certificate: [lo, hi] of kappa and of gamma.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub region: Option<[[String; 2]; 2]>,
+    /// For a family certificate over an interval of gamma: [lo, hi].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gamma_interval: Option<[String; 2]>,
     /// For an accepted family certificate that records a full inertia tensor (Ixx, Ixy, Ixz,
     /// Iyy, Iyz, Izz per unit mass about the centre of mass): the tensor, of which the kernel
     /// checked that the planar J is J_eff (rule K0, docs/model.md Proposition 11.0).
@@ -157,6 +160,7 @@ impl FileVerdict {
             reason: None,
             gzip: None,
             region: None,
+            gamma_interval: None,
             inertia_tensor: None,
             pcc_boxes: None,
             orbit_boxes: None,
@@ -243,7 +247,10 @@ impl FileVerdict {
             Some([k, g]) => {
                 format!(", for every kappa in [{}, {}] and gamma in [{}, {}]", k[0], k[1], g[0], g[1])
             }
-            None => String::new(),
+            None => self
+                .gamma_interval
+                .as_ref()
+                .map_or(String::new(), |g| format!(", for every gamma in [{}, {}]", g[0], g[1])),
         };
         let pcc =
             self.pcc_boxes.map_or(String::new(), |b| format!(", PCC exclusion shown on {b} Bernstein boxes"));
@@ -374,12 +381,18 @@ enum Kind {
     Proof,
 }
 
-/// The full inertia tensor an accepted family certificate records (rule K0 checked it).
-fn recorded_tensor(text: &str, encoding: Encoding) -> Option<[String; 6]> {
+/// What an accepted family certificate records beyond the kernel's report: the full inertia
+/// tensor (rule K0 checked it) and the interval of gamma its claim holds on (the kernel checked
+/// the rules at both ends, docs/kernel-soundness.md §6).
+fn recorded_family(text: &str, encoding: Encoding, v: &mut FileVerdict) {
+    use chatter_kernel::syntax::cone::Param;
     use chatter_kernel::syntax::family::{ConvexBodyText, ConvexCertificate};
-    let cert: ConvexCertificate = chatter_kernel::syntax::read(text, encoding).ok()?;
-    let ConvexBodyText::ConvexPolygon { inertia_tensor, .. } = cert.body;
-    inertia_tensor.map(|(a, b, c, d, e, f)| [a, b, c, d, e, f])
+    let Ok(cert) = chatter_kernel::syntax::read::<ConvexCertificate>(text, encoding) else { return };
+    let ConvexBodyText::ConvexPolygon { inertia_tensor, gamma, .. } = cert.body;
+    v.inertia_tensor = inertia_tensor.map(|(a, b, c, d, e, f)| [a, b, c, d, e, f]);
+    if let Param::Interval(lo, hi) = gamma {
+        v.gamma_interval = Some([lo, hi]);
+    }
 }
 
 /// Verifies certificate or refutation text on the backends; the kind of a rejected certificate
@@ -395,7 +408,7 @@ fn verify_any(
     if !matches!(&verdict, Verdict::Rejected(r) if r.code == Code::WrongFormat || r.code == Code::Syntax) {
         let mut v = verdict_of(path, verdict);
         if v.status == Status::Ok {
-            v.inertia_tensor = recorded_tensor(text, encoding);
+            recorded_family(text, encoding, &mut v);
         }
         return (v, Kind::Certificate);
     }

@@ -8,10 +8,10 @@ use crate::transport::{kappa_of, plates};
 use chatter::bodies::convex::rectangle_plate;
 use chatter::certify::convex::{ConvexRequest, certify_convex, normalised, normaliser};
 use chatter::certify::transport::regular_image;
-use chatter::certify::{Failure, Request, certify};
+use chatter::certify::{ClaimChoice, Failure, Request, certify};
 use chatter::exact::Q;
 use chatter::exact::QExt;
-use chatter_kernel::certificate::Claim;
+use chatter_kernel::certificate::{Claim, ConvexBodyText, ConvexCertificate, Encoding, Param, read_convex};
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::model::ConvexBody;
 use chatter_kernel::verify::{MALACHITE, NUM, Verdict, verify_convex_on};
@@ -162,7 +162,8 @@ fn certify_of_a_general_body_reports_json_and_negative_verdicts() {
 fn bad_general_bodies_in_certify_exit_2_naming_the_flag() {
     let d = tempfile::tempdir().unwrap();
     for (args, needle) in [
-        (vec!["--rectangle", "2,1", "--gamma", "0:1/10"], "--gamma: intervals"),
+        (vec!["--rectangle", "2,1", "--gamma", "1/10:0"], "--gamma: the interval 1/10:0 is empty"),
+        (vec!["--rectangle", "2,1", "--gamma", "1/10:3/2"], "--gamma: 3/2 is not accepted"),
         (vec!["--rectangle", "2,-1"], "--rectangle"),
         (vec!["--polygon", "0,0 4,0 0,3"], "--polygon needs --plate"),
         (vec!["--body", "no-such-body"], "--body"),
@@ -394,4 +395,92 @@ fn the_largest_gamma_limit_compares_the_failure_with_the_regular_threshold() {
     assert_eq!(v["limit"]["criterion"], "S_1 of n=3 kappa=1/8 (docs/model.md §6)", "{v}");
     assert_eq!(v["limit"]["kind"], "above-threshold", "{v}");
     assert!(v["certified"]["gamma"]["f64"].as_f64().unwrap() > 0.1456, "{v}");
+}
+
+/// The cones of a family certificate over an interval of gamma, given as a certificate for the
+/// single gamma `g` (version 1).
+fn at_gamma(cert: &ConvexCertificate, g: &Q) -> ConvexCertificate {
+    let mut c = cert.clone();
+    let ConvexBodyText::ConvexPolygon { gamma, .. } = &mut c.body;
+    *gamma = Param::Point(chatter_kernel::exact::to_canonical(g));
+    c.version = 1;
+    c
+}
+
+/// Brute force against the reduction to the two ends (docs/kernel-soundness.md §6): the cones of
+/// an accepted interval certificate are accepted, as single-gamma certificates, at 7 evenly
+/// spaced gammas of the interval, ends included, on both backends.
+fn holds_inside(cert: &ConvexCertificate, [lo, hi]: [&Q; 2]) {
+    for k in 0..=6 {
+        let g = lo.clone() + (hi.clone() - lo.clone()) * q(&k.to_string()) / q("6");
+        let v = verify_convex_on(&at_gamma(cert, &g), ParseLimits::default(), &[MALACHITE, NUM]);
+        assert!(matches!(v, Verdict::Accepted(_)), "gamma = {g}: {v:?}");
+    }
+}
+
+#[test]
+fn an_interval_of_gamma_gives_one_version_2_certificate_that_holds_inside_it() {
+    let d = tempfile::tempdir().unwrap();
+    let out = d.path().join("c.ron");
+    let args =
+        ["certify", "--rectangle", "2,1", "--gamma", "1/100:1/50", "--json", "-o", out.to_str().unwrap()];
+    let o = chatter(&args, d.path());
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["verdict"], "certified");
+    assert_eq!(
+        (&v["gamma"]["lo"]["exact"], &v["gamma"]["hi"]["exact"]),
+        (&"1/100".into(), &"1/50".into()),
+        "{v}"
+    );
+    let written = std::fs::read_to_string(&out).unwrap();
+    assert!(
+        written.contains("version: 2,") && written.contains("gamma: [\"1/100\", \"1/50\"],"),
+        "{written}"
+    );
+    let o = chatter(&["verify", "--json", out.to_str().unwrap()], d.path());
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["files"][0]["gamma_interval"], serde_json::json!(["1/100", "1/50"]), "{v}");
+    let o = chatter(&["verify", out.to_str().unwrap()], d.path());
+    assert!(text(&o.stdout).contains("for every gamma in [1/100, 1/50]"), "{}", text(&o.stdout));
+    let cert: ConvexCertificate = read_convex(&written, Encoding::Ron).unwrap();
+    holds_inside(&cert, [&q("1/100"), &q("1/50")]);
+    // The text: the interval in the summary line.
+    let o = chatter(&["certify", "--rectangle", "2,1", "--gamma", "1/100:1/50"], d.path());
+    assert!(text(&o.stdout).contains("every gamma in [1/100, 1/50] claim="), "{}", text(&o.stdout));
+}
+
+#[test]
+fn the_search_over_an_interval_serves_both_ends_where_a_point_certificate_serves_one() {
+    // The family made for gamma = 1/50 alone fails at 1/100 (its cones are tight at 1/50); the
+    // search over [1/100, 1/50] maps every piece at both ends and gives a family for both.
+    let body = rectangle_plate(&q("2"), &q("1"), q("1/100")).unwrap();
+    let mut point = ConvexRequest::new(rectangle_plate(&q("2"), &q("1"), q("1/50")).unwrap());
+    point.claim = ClaimChoice::Exactly(Claim::CompleteChatterFromAllDown);
+    let at_hi = certify_convex(&point).result.unwrap();
+    let mut widened = at_hi.clone();
+    let ConvexBodyText::ConvexPolygon { gamma, .. } = &mut widened.body;
+    *gamma = Param::Interval("1/100".into(), "1/50".into());
+    widened.version = 2;
+    let v = verify_convex_on(&widened, ParseLimits::default(), &[MALACHITE, NUM]);
+    let Verdict::Rejected(r) = v else { panic!("the point family holds at 1/100 too: {v:?}") };
+    assert_eq!(r.code.as_str(), "image-outside", "{r:?}");
+    let mut req = ConvexRequest::new(body);
+    (req.gamma_hi, req.claim) = (Some(q("1/50")), point.claim);
+    let cert = certify_convex(&req).result.unwrap();
+    assert_eq!(cert.version, 2);
+    holds_inside(&cert, [&q("1/100"), &q("1/50")]);
+}
+
+#[test]
+fn a_regular_box_certificate_transports_to_an_interval_family_of_its_affine_images() {
+    // n = 3, kappa = 1/8, gamma in [1/10, 7/50]: the regular box certificate carried to the
+    // irregular triangle plate holds on the whole interval (docs/model.md §11.7).
+    let regular = certify(&Request::boxed(3, [q("1/8"), q("1/8")], [q("1/10"), q("7/50")])).result.unwrap();
+    let (_, _, triangle) = plates(&q("1/10")).into_iter().find(|p| p.0 == "irregular triangle").unwrap();
+    let family = chatter::certify::transport::transport(&triangle, &regular).unwrap();
+    assert_eq!(family.version, 2);
+    let ConvexBodyText::ConvexPolygon { gamma, .. } = &family.body;
+    assert_eq!(gamma, &Param::Interval("1/10".into(), "7/50".into()));
+    holds_inside(&family, [&q("1/10"), &q("7/50")]);
 }

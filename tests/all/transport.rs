@@ -340,7 +340,11 @@ fn versions_one_to_three_are_unchanged() {
             assert_eq!(read_convex(&text, Encoding::Ron).unwrap_err().code, Code::WrongFormat);
         } else {
             let c = read_convex(&text, Encoding::Ron).unwrap();
-            assert_eq!((c.format.as_str(), c.version), ("chatter-family-certificate", 1), "{name}");
+            // Version 2 only where gamma is an interval (docs/certificate-format.md §13).
+            let interval =
+                matches!(&c.body, ConvexBodyText::ConvexPolygon { gamma: Param::Interval(..), .. });
+            let version = if interval { 2 } else { 1 };
+            assert_eq!((c.format.as_str(), c.version), ("chatter-family-certificate", version), "{name}");
             let r = chatter_kernel::certificate::read(&text).unwrap_err();
             assert_eq!(r.code, Code::WrongFormat, "{name}");
         }

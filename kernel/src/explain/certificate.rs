@@ -42,7 +42,7 @@ pub(super) fn words(detail: &Detail, locus: &Locus) -> String {
         Detail::Kind(KindDetail::IntervalIrrational(n)) => format!(
             "parameter intervals (box certificates) are supported only where cos(2 pi/n) is rational (n = 2, 3, 4, 6), not for n = {n}"
         ),
-        #[cfg(feature = "boxes")]
+        #[cfg(any(feature = "boxes", feature = "family"))]
         Detail::Kind(KindDetail::EmptyInterval(lo, hi)) => {
             format!("the interval [{}, {}] is empty (lo > hi)", abbreviate(lo), abbreviate(hi))
         }
@@ -147,7 +147,9 @@ fn lexical(o: Offence) -> String {
 fn needs_words(needs: Needs, found: u64) -> String {
     match needs {
         Needs::Intervals => {
-            format!("parameter intervals (box certificates) need version 2; this file says version {found}")
+            format!(
+                "parameter intervals (box certificates, family certificates over an interval of gamma) need version 2; this file says version {found}"
+            )
         }
         Needs::FieldElements => {
             format!("elements of Q(cos 2 pi/n) need version 3; this file says version {found}")
@@ -228,12 +230,14 @@ fn image(f: &ImageFailure, locus: &Locus) -> String {
             (format!("I_0 maps the all-down generator -m_({m},{}) = {p}", m1(*m)), outside)
         }
         #[cfg(feature = "family")]
-        Locus::Kind(KindLocus::Transition { from: i, to: j, vertex: v, outside }) => {
-            (format!("vertex {v} of K_{i}∩C_({i},{j}), at {p}, maps under I_{j} into K_{j}"), outside)
+        Locus::Kind(KindLocus::Transition { from: i, to: j, vertex: v, outside, gamma }) => {
+            let what = format!("vertex {v} of K_{i}∩C_({i},{j}), at {p}, maps under I_{j} into K_{j}");
+            (format!("{}{what}", at_gamma(gamma)), outside)
         }
         #[cfg(feature = "family")]
-        Locus::Kind(KindLocus::ConvexAllDown { cone: i, generator: m, outside }) => {
-            (format!("I_{i} maps the all-down generator -m_({m},{}) = {p} into K_{i}", m1(*m)), outside)
+        Locus::Kind(KindLocus::ConvexAllDown { cone: i, generator: m, outside, gamma }) => {
+            let what = format!("I_{i} maps the all-down generator -m_({m},{}) = {p} into K_{i}", m1(*m));
+            (format!("{}{what}", at_gamma(gamma)), outside)
         }
         #[cfg(feature = "rest")]
         Locus::Kind(KindLocus::RestNode { node, step: Some(j), vertex: Some(i), outside }) => {
@@ -265,6 +269,14 @@ fn image(f: &ImageFailure, locus: &Locus) -> String {
     }
 }
 
+/// "at the end gamma = 1/20 of the interval: " for a family certificate over an interval of gamma.
+#[cfg(feature = "family")]
+fn at_gamma(gamma: &Option<String>) -> String {
+    gamma
+        .as_deref()
+        .map_or(String::new(), |g| format!("at the end gamma = {} of the interval: ", abbreviate(g)))
+}
+
 fn pcc(n: usize, pqd: &[String; 3], why: PccExclusion, locus: &Locus) -> String {
     let [p, q, d] = pqd.clone().map(|x| abbreviate(&x));
     let why = match why {
@@ -277,9 +289,10 @@ fn pcc(n: usize, pqd: &[String; 3], why: PccExclusion, locus: &Locus) -> String 
     );
     match locus {
         #[cfg(feature = "family")]
-        Locus::Kind(KindLocus::PccPair { pair: k }) => {
+        Locus::Kind(KindLocus::PccPair { pair: k, gamma }) => {
             let k1 = (k + 1) % n.max(1);
-            format!("PCC of contacts {k} and {k1} is not excluded: det(tI - I_{k} I_{k1}) = {quadratic}")
+            let at = at_gamma(gamma);
+            format!("{at}PCC of contacts {k} and {k1} is not excluded: det(tI - I_{k} I_{k1}) = {quadratic}")
         }
         _ => format!("PCC is not excluded: det(tI - S_{} S_1) = {quadratic}", n.saturating_sub(1)),
     }

@@ -120,6 +120,9 @@ pub enum KindLocus {
         vertex: usize,
         /// The part of K_j's boundary the image violates (`None` when its v is >= 0).
         outside: Option<Boundary>,
+        /// With gamma an interval: the end at which the image fails, canonical text.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        gamma: Option<String>,
     },
     /// The image under I_`cone` of generator `generator` of D (rule K3).
     #[cfg(feature = "family")]
@@ -130,12 +133,18 @@ pub enum KindLocus {
         generator: usize,
         /// The part of K_i's boundary the image violates (`None` when its v is >= 0).
         outside: Option<Boundary>,
+        /// With gamma an interval: the end at which the image fails, canonical text.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        gamma: Option<String>,
     },
     /// The PCC quadratic of the adjacent pair (`pair`, `pair` + 1 mod n) (rule K4).
     #[cfg(feature = "family")]
     PccPair {
         /// k of the pair (k, k+1).
         pair: usize,
+        /// With gamma an interval: the end at which PCC is not excluded, canonical text.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        gamma: Option<String>,
     },
     /// Step `index` (from 0) of a proof or refutation, with its id.
     #[cfg(any(feature = "proof", feature = "refutation"))]
@@ -194,7 +203,7 @@ pub enum KindDetail {
     #[cfg(feature = "field")]
     IntervalIrrational(u64),
     /// An empty parameter interval [lo, hi], lo > hi (canonical text).
-    #[cfg(feature = "boxes")]
+    #[cfg(any(feature = "boxes", feature = "family"))]
     EmptyInterval(String, String),
     /// A family with the wrong number of cones (found, the body's contacts or the most contacts
     /// of a body, whether the latter).

@@ -4,11 +4,17 @@
 //!
 //! - the file: the header, a cone claim (`unknown-variant`), at most 64 contacts (`unsupported-body`) and cones (`wrong-arity`),
 //!   `max-generators` per cone and `max-total-digits` (`too-large`);
-//! - convex body: (A1) strictly convex counter-clockwise contacts, (A2) the origin strictly
-//!   inside, J symmetric positive definite, 0 <= γ <= 1 (`unsupported-body`,
-//!   `parameter-out-of-range`); range of γ: 0 < γ < 1 for the claims about drops;
-//! - K0 (with `inertia_tensor`): Izz > 0 and J = J_eff = [[Ixx, Ixy], [Ixy, Iyy]] - b bᵀ / Izz,
-//!   b = (Ixz, Iyz), exactly (`inertia-not-derived`; docs/model.md Proposition 11.0);
+//! - γ: a number, or in version 2 an interval [γ₀, γ₁] (`unsupported-version` in another version)
+//!   with canonical ends and γ₀ <= γ₁ (`parameter-out-of-range`);
+//! - at each end of γ in turn (one for a number):
+//!   - convex body: (A1) strictly convex counter-clockwise contacts, (A2) the origin strictly
+//!     inside, J symmetric positive definite, 0 <= γ <= 1 (`unsupported-body`,
+//!     `parameter-out-of-range`);
+//!   - K0 (with `inertia_tensor`, at the first end): Izz > 0 and J = J_eff = [[Ixx, Ixy], [Ixy,
+//!     Iyy]] - b bᵀ / Izz, b = (Ixz, Iyz), exactly (`inertia-not-derived`; docs/model.md
+//!     Proposition 11.0);
+//!   - range of γ: 0 < γ < 1 for the claims about drops;
+//! - then at γ₀, then at γ₁ (a failure at an end of an interval names the end in its locus):
 //! - count: one cone per contact, three coordinates per generator (`wrong-arity`);
 //! - K1: each K_i is a 3-D cone with every generator in v < 0 (`generator-not-below`,
 //!   `degenerate-cone`);
@@ -28,20 +34,98 @@ use crate::geometry::{ConvexPolygon, clip, hull};
 use crate::model::convex::{ConvexBody, ConvexBodyError, MAX_CONTACTS};
 use crate::model::linalg::{Vec3, mat_vec};
 use crate::model::pcc::PccExclusion;
-use crate::reject::{Code, Detail, KindCounted, KindDetail, KindInternal, KindLocus, Locus, Rejection};
-use crate::syntax::cone::Claim;
-use crate::syntax::family::{ConvexBodyText, ConvexCertificate, TensorText};
+use crate::reject::{
+    Code, Detail, KindCounted, KindDetail, KindInternal, KindLocus, Locus, Needs, Rejection,
+};
+use crate::syntax::cone::{Claim, Param};
+use crate::syntax::family::{ConvexBodyText, ConvexCertificate, INTERVAL_VERSION, TensorText};
 use crate::syntax::numbers::{at_most, in_time, number, total};
 use crate::syntax::{Kind, expect};
 
 /// Checks a family certificate exactly over the field `F`; the first failing check is reported.
+/// With gamma an interval [γ₀, γ₁]: the body and the range of γ at γ₀ and at γ₁, then the rules
+/// from the count to K4 at γ₀, then at γ₁ (why the two ends suffice: docs/kernel-soundness.md §6,
+/// "An interval of γ").
 pub fn check<F: Field>(cert: &ConvexCertificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
     prelude(cert, limits)?;
-    let body = body::<F>(cert, limits)?;
-    if let ConvexBodyText::ConvexPolygon { inertia_tensor: Some(t), .. } = &cert.body {
-        derived(&body, t, limits)?;
+    let ends = gammas::<F>(cert, limits)?;
+    let mut bodies = Vec::with_capacity(ends.len());
+    for (g, path) in &ends {
+        let body = body::<F>(cert, g.clone(), path, limits)?;
+        if let (true, ConvexBodyText::ConvexPolygon { inertia_tensor: Some(t), .. }) =
+            (bodies.is_empty(), &cert.body)
+        {
+            derived(&body, t, limits)?;
+        }
+        gamma_range(cert, &body, path)?;
+        bodies.push(body);
     }
-    rest(cert, body, limits)
+    let interval = matches!(gamma_of(cert), Param::Interval(..));
+    let mut reports = Vec::with_capacity(ends.len());
+    for ((g, _), body) in ends.iter().zip(bodies) {
+        let end = interval.then(|| to_canonical(g));
+        reports.push(rest(cert, body, limits).map_err(|e| at_end(e, end))?);
+    }
+    let translation = reports.iter().all(|a| a.contains_translation);
+    let mut a = reports.swap_remove(0);
+    a.contains_translation = translation;
+    Ok(a)
+}
+
+/// The range of γ: 0 < γ < 1 for the claims about drops.
+fn gamma_range<F: Field>(
+    cert: &ConvexCertificate,
+    body: &ConvexBody<F>,
+    path: &str,
+) -> Result<(), Rejection> {
+    let g = body.gamma();
+    if cert.claim > Claim::EffectivelyInvariant && (g.is_zero() || *g == F::one()) {
+        let detail = Detail::GammaForClaim(to_canonical(g), cert.claim, true);
+        return Err(Rejection::at(Code::ParameterOutOfRange, path, detail));
+    }
+    Ok(())
+}
+
+fn gamma_of(cert: &ConvexCertificate) -> &Param {
+    let ConvexBodyText::ConvexPolygon { gamma, .. } = &cert.body;
+    gamma
+}
+
+/// The distinct ends of gamma with their paths: one for a number, two for an interval
+/// [γ₀, γ₁] (version 2, γ₀ <= γ₁; one when γ₀ = γ₁).
+fn gammas<F: Field>(cert: &ConvexCertificate, limits: ParseLimits) -> Result<Vec<(F, String)>, Rejection> {
+    let (a, b) = match gamma_of(cert) {
+        Param::Point(s) => return Ok(vec![(number::<F>("body.gamma", s, limits)?, "body.gamma".into())]),
+        Param::Interval(a, b) => (a, b),
+    };
+    if cert.version != INTERVAL_VERSION {
+        let detail = Detail::Needs(Needs::Intervals, cert.version);
+        return Err(Rejection::at(Code::UnsupportedVersion, "version", detail));
+    }
+    let lo: F = number("body.gamma[0]", a, limits)?;
+    let hi: F = number("body.gamma[1]", b, limits)?;
+    if lo > hi {
+        let detail = KindDetail::EmptyInterval(to_canonical(&lo), to_canonical(&hi));
+        return Err(Rejection::at(Code::ParameterOutOfRange, "body.gamma", detail));
+    }
+    let mut ends = vec![(lo.clone(), "body.gamma[0]".to_string())];
+    if lo != hi {
+        ends.push((hi, "body.gamma[1]".into()));
+    }
+    Ok(ends)
+}
+
+/// A rejection of K2, K3 or K4 at one end of an interval of gamma: the end's value in the locus.
+fn at_end(mut e: Rejection, end: Option<String>) -> Rejection {
+    if let Locus::Kind(
+        KindLocus::Transition { gamma, .. }
+        | KindLocus::ConvexAllDown { gamma, .. }
+        | KindLocus::PccPair { gamma, .. },
+    ) = &mut e.locus
+    {
+        *gamma = end;
+    }
+    e
 }
 
 /// K0: J is J_eff of the full tensor (Proposition 11.0): Izz > 0 (with J positive definite,
@@ -85,17 +169,12 @@ pub enum TensorFailure {
     },
 }
 
-/// The rules after the body (and K0): the range of γ, K1 to K4.
+/// The rules after the body, K0 and the range of γ: the count, K1 to K4.
 fn rest<F: Field>(
     cert: &ConvexCertificate,
     body: ConvexBody<F>,
     limits: ParseLimits,
 ) -> Result<Accepted, Rejection> {
-    let g = body.gamma();
-    if cert.claim > Claim::EffectivelyInvariant && (g.is_zero() || *g == F::one()) {
-        let detail = Detail::GammaForClaim(to_canonical(g), cert.claim, true);
-        return Err(Rejection::at(Code::ParameterOutOfRange, "body.gamma", detail));
-    }
     let n = body.n();
     if cert.cones.len() != n {
         return Err(Rejection::at(
@@ -158,8 +237,13 @@ fn prelude(cert: &ConvexCertificate, limits: ParseLimits) -> Result<(), Rejectio
 
 /// The body: canonical numbers, and the assumptions of docs/model.md §11.1 checked by
 /// [`ConvexBody::new`].
-fn body<F: Field>(cert: &ConvexCertificate, limits: ParseLimits) -> Result<ConvexBody<F>, Rejection> {
-    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma, .. } = &cert.body;
+fn body<F: Field>(
+    cert: &ConvexCertificate,
+    g: F,
+    gamma_path: &str,
+    limits: ParseLimits,
+) -> Result<ConvexBody<F>, Rejection> {
+    let ConvexBodyText::ConvexPolygon { contacts, inertia, .. } = &cert.body;
     let mut points = Vec::with_capacity(contacts.len());
     for (k, (x, y)) in contacts.iter().enumerate() {
         in_time(limits, "reading the contacts")?;
@@ -170,10 +254,9 @@ fn body<F: Field>(cert: &ConvexCertificate, limits: ParseLimits) -> Result<Conve
     let jxx = number::<F>("body.inertia.Jxx", &inertia.0, limits)?;
     let jxy = number::<F>("body.inertia.Jxy", &inertia.1, limits)?;
     let jyy = number::<F>("body.inertia.Jyy", &inertia.2, limits)?;
-    let g = number::<F>("body.gamma", gamma, limits)?;
     ConvexBody::new(points, [[jxx, jxy.clone()], [jxy, jyy]], g).map_err(|e| {
         let (code, path) = match &e {
-            ConvexBodyError::GammaOutOfRange => (Code::ParameterOutOfRange, "body.gamma"),
+            ConvexBodyError::GammaOutOfRange => (Code::ParameterOutOfRange, gamma_path),
             ConvexBodyError::InertiaNotSymmetric | ConvexBodyError::InertiaNotPositiveDefinite => {
                 (Code::UnsupportedBody, "body.inertia")
             }
@@ -220,7 +303,8 @@ fn transition<F: Field>(
     let map = int_mat(&body.impact(j as i64));
     for (v, p) in piece.iter().enumerate() {
         in_time(limits, "checking effective invariance (rule K2)")?;
-        let locus = |outside| KindLocus::Transition { from: i, to: j, vertex: v, outside }.into();
+        let locus =
+            |outside| KindLocus::Transition { from: i, to: j, vertex: v, outside, gamma: None }.into();
         let t = Target { point: p, locus: &locus, codes: R2, n: body.n() };
         check_image::<F>(target, &mat_vec(&map, p), &t)?;
     }
@@ -232,7 +316,7 @@ fn all_down<F: Field>(body: &ConvexBody<F>, i: usize, k: &Cone<F::Int>) -> Resul
     let map = int_mat(&body.impact(i as i64));
     for (m, g) in body.all_down_generators().iter().enumerate() {
         let g = int_vec(g);
-        let locus = |outside| KindLocus::ConvexAllDown { cone: i, generator: m, outside }.into();
+        let locus = |outside| KindLocus::ConvexAllDown { cone: i, generator: m, outside, gamma: None }.into();
         let t = Target { point: &g, locus: &locus, codes: R3, n: body.n() };
         check_image::<F>(k, &mat_vec(&map, &g), &t)?;
     }
@@ -252,7 +336,7 @@ fn pcc<F: Field>(body: &ConvexBody<F>, k: usize) -> Result<(), Rejection> {
             let pqd = Box::new([&quad.p, &quad.q, &quad.discriminant].map(to_canonical));
             Err(Rejection::new(
                 Code::PccNotExcluded,
-                KindLocus::PccPair { pair: k },
+                KindLocus::PccPair { pair: k, gamma: None },
                 Detail::Pcc(body.n(), pqd, why),
             ))
         }

@@ -54,7 +54,7 @@ pub enum Kind {
 /// aliases.
 const HEADERS: [(&str, [u64; 2], Kind, &str, bool); 9] = [
     ("chatter-certificate", [1, 3], Kind::Cone, "", true),
-    ("chatter-family-certificate", [1, 1], Kind::Family, "family", cfg!(feature = "family")),
+    ("chatter-family-certificate", [1, 2], Kind::Family, "family", cfg!(feature = "family")),
     ("chatter-orbit-certificate", [1, 1], Kind::Orbit, "orbit", cfg!(feature = "orbit")),
     ("chatter-basin-certificate", [1, 2], Kind::Basin, "basin", cfg!(feature = "basin")),
     ("chatter-refutation", [1, 1], Kind::Refutation, "refutation", cfg!(feature = "refutation")),

@@ -113,7 +113,7 @@ fn the_loci_of_the_other_kinds_are_written_as_before() {
     let json = |l: Locus| serde_json::to_value(l).unwrap();
     let step = Locus::from(KindLocus::Step { index: 3, id: "q1".into() });
     assert_eq!(json(step), serde_json::json!({"kind": "step", "index": 3, "id": "q1"}));
-    let pair = Locus::from(KindLocus::PccPair { pair: 2 });
+    let pair = Locus::from(KindLocus::PccPair { pair: 2, gamma: None });
     assert_eq!(json(pair), serde_json::json!({"kind": "pcc-pair", "pair": 2}));
     let sub_box = Box::new([["0", "1"], ["1/2", "1"], ["0", "1/4"]].map(|r| r.map(String::from)));
     let orbit = Locus::from(KindLocus::OrbitBox { sub_box, depth: 1, step: None, contact: None });

@@ -70,8 +70,14 @@ fn a_reader_refuses_the_other_kinds() {
     let r = read::<ConvexCertificate>(&CONE.replacen("version: 1,", "version: 6,", 1), Encoding::Ron)
         .unwrap_err();
     assert_eq!((r.code, *r.detail), (Code::UnsupportedVersion, Detail::Version(6, [1, 5])));
-    let r = read::<ConvexCertificate>(&FAMILY.replacen("version: 1,", "version: 2,", 1), Encoding::Ron);
-    assert_eq!(r.unwrap_err().code, Code::UnsupportedVersion);
+    let r = read::<ConvexCertificate>(&FAMILY.replacen("version: 1,", "version: 3,", 1), Encoding::Ron);
+    assert_eq!((r.unwrap_err().code), Code::UnsupportedVersion);
+    // Version 2 (an interval of gamma allowed) reads a single gamma too, with the same verdict.
+    let two = FAMILY.replacen("version: 1,", "version: 2,", 1);
+    assert_eq!(
+        verify_text(&two, ParseLimits::default(), &BOTH),
+        verify_text(FAMILY, ParseLimits::default(), &BOTH)
+    );
 }
 
 #[cfg(feature = "json")]

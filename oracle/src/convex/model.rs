@@ -103,6 +103,36 @@ impl Body {
         std::array::from_fn(|i| &p[i] - &(&scale * &mf[i]))
     }
 
+    /// w_k = M⁻¹ f_k / ⟨f_k, f_k⟩, the direction of I_k (not a function of γ; f_k · w_k = 1).
+    fn direction(&self, k: i64) -> V3 {
+        let mf = self.inverse_mass(&self.covector(k));
+        let norm = dot(&self.covector(k), &mf);
+        mf.map(|x| &x / &norm)
+    }
+
+    /// μ² = (f_k · w_{k+1}) (f_{k+1} · w_k) of the adjacent pair (k, k+1), not a function of γ.
+    pub fn pair_coupling(&self, k: i64) -> Num {
+        let (f0, f1) = (self.covector(k), self.covector(k + 1));
+        &dot(&f0, &self.direction(k + 1)) * &dot(&f1, &self.direction(k))
+    }
+
+    /// (p, q) of the quadratic factor t² + p t + q of det(tI - I_k I_{k+1}) in closed form: with
+    /// a = 1 + γ, I_k I_{k+1} = I - a w_k f_kᵀ - a w_{k+1} f_{k+1}ᵀ + a² (f_k · w_{k+1}) w_k f_{k+1}ᵀ
+    /// has trace 3 - 2a + a² μ² and determinant (1 - a)² = γ² (each I_k fixes the plane f_k = 0
+    /// and maps w_k to -γ w_k), and (t - 1)(t² + p t + q) = t³ + (p - 1) t² + (q - p) t - q gives
+    /// p = 1 - trace = 2γ - a² μ², q = γ².
+    pub fn pair_closed_form(&self, k: i64) -> (Num, Num) {
+        let g = &self.gamma;
+        let a = &Num::int(self.field(), 1) + g;
+        let p = &(g + g) - &(&(&a * &a) * &self.pair_coupling(k));
+        (p, g * g)
+    }
+
+    /// The same body at another γ in [0, 1] (the contacts and J, already checked, are kept).
+    pub fn at_gamma(&self, gamma: Num) -> Body {
+        Body { gamma, ..self.clone() }
+    }
+
     /// m_{k,l} = (φ_x, φ_y, 1) with f_k · m = f_l · m = 0, by Cramer's rule.
     pub fn rest_point(&self, k: i64, l: i64) -> V3 {
         let (a, b) = (self.covector(k), self.covector(l));

@@ -23,7 +23,8 @@ pub const REFUTATION: &str = "chatter-refutation";
 pub enum Reader {
     /// Cone certificates of regular polygons, versions 1 to 3 (§2-§9, §12).
     Cone(u64),
-    /// General convex bodies, version 4 (§13).
+    /// General convex bodies, family versions 1 and 2 (version 2 allows an interval of γ; the
+    /// legacy header version 4 is version 1) (§13).
     Family,
     /// Orbit certificates, version 5 (§14).
     Orbit,
@@ -71,7 +72,7 @@ pub fn header(v: &Value) -> Checked<Reader> {
     let reader = match (format, version) {
         (REFUTATION, 1) => Reader::Refutation,
         (CERTIFICATE, 1..=3) => Reader::Cone(version),
-        (CERTIFICATE, 4) | (FAMILY, 1) => Reader::Family,
+        (CERTIFICATE, 4) | (FAMILY, 1..=2) => Reader::Family,
         (CERTIFICATE, 5) | (ORBIT, 1) => Reader::Orbit,
         (BASIN, 1..=2) => Reader::Basin,
         (REST, 1..=2) => Reader::Rest,

@@ -101,13 +101,13 @@ pub fn strings(v: &Value) -> Checked<Vec<&str>> {
     tuple(v)?.iter().map(string).collect()
 }
 
-/// A parameter: a number, or an interval `[lo, hi]` (§9; RON list or tuple, JSON array).
+/// A parameter: a number, or an interval `[lo, hi]` (§9, §13: a two-element RON list or JSON
+/// array; a RON tuple is `syntax`, as the kernel's strict reader has it).
 pub fn param(v: &Value) -> Checked<Vec<&str>> {
     match v {
         Value::Str(s) | Value::JsonStr(s) => Ok(vec![s]),
-        Value::List(xs) | Value::Tuple(xs) | Value::Array(xs) if xs.len() == 2 => {
-            xs.iter().map(string).collect()
-        }
+        Value::List(xs) | Value::Array(xs) if xs.len() == 2 => xs.iter().map(string).collect(),
+        Value::Tuple(_) => Err(Fail::new("syntax", "a parameter interval is a list [lo, hi], not a tuple")),
         other => {
             Err(Fail::new("syntax", format!("expected a number or an interval, found a {}", other.kind())))
         }

@@ -50,20 +50,27 @@ pub fn misses(k: &Polygon2, img: &V3) -> Option<bool> {
     }
 }
 
+/// The codes of the images that leave `k` ([`misses`]): `image-not-below`, `image-outside`, each
+/// once, in the order met.
+pub fn leaving(k: &Polygon2, images: impl Iterator<Item = V3>) -> Vec<&'static str> {
+    let mut codes = vec![];
+    for img in images {
+        match misses(k, &img) {
+            Some(true) if !codes.contains(&"image-not-below") => codes.push("image-not-below"),
+            Some(false) if !codes.contains(&"image-outside") => codes.push("image-outside"),
+            _ => {}
+        }
+    }
+    codes
+}
+
 /// Rule R2: for every j, the images of the vertices of K ∩ C_j; returns the piece sizes.
 pub fn invariance(b: &Polygon, k: &Polygon2) -> Checked<Vec<usize>> {
     let mut pieces = vec![];
     for j in 1..b.n as i64 {
         let cj: Vec<HalfPlane> = b.next_contact_facets(j).iter().map(HalfPlane::of_covector).collect();
         let piece = clip_vertices(&k.vertices, &cj);
-        let mut codes = vec![];
-        for p in &piece {
-            match misses(k, &b.step(j, &lift(p))) {
-                Some(true) if !codes.contains(&"image-not-below") => codes.push("image-not-below"),
-                Some(false) if !codes.contains(&"image-outside") => codes.push("image-outside"),
-                _ => {}
-            }
-        }
+        let codes = leaving(k, piece.iter().map(|p| b.step(j, &lift(p))));
         if !codes.is_empty() {
             return Err(Fail { codes, why: format!("an image of a vertex of K ∩ C_{j} leaves K") });
         }

@@ -7,7 +7,7 @@ use super::regular::{frame, on_plane};
 use super::{ConeFigure, Panel, Region, colour, s, window};
 use crate::exact::{Q, QExt};
 use crate::finder::geometry::{P2, clip, hull, lift};
-use chatter_kernel::certificate::{ConvexBodyText, Encoding, read_convex};
+use chatter_kernel::certificate::{ConvexBodyText, Encoding, Param, read_convex};
 use chatter_kernel::model::ConvexBody;
 use chatter_kernel::model::linalg::{Mat3, Vec3};
 use nalgebra::{Matrix3, Vector3};
@@ -30,7 +30,11 @@ fn body(b: &ConvexBodyText) -> Result<ConvexBody<Q>, String> {
     let pts = contacts.iter().map(|(x, y)| Ok([q(x)?, q(y)?])).collect::<Result<Vec<_>, String>>()?;
     let jxy = q(&inertia.1)?;
     let j = [[q(&inertia.0)?, jxy.clone()], [jxy, q(&inertia.2)?]];
-    ConvexBody::new(pts, j, q(gamma)?).map_err(|e| format!("the body is not valid: {e}"))
+    // Over an interval of gamma the images are drawn at its upper end (the title says so).
+    let g = match gamma {
+        Param::Point(g) | Param::Interval(_, g) => q(g)?,
+    };
+    ConvexBody::new(pts, j, g).map_err(|e| format!("the body is not valid: {e}"))
 }
 
 /// The polygon of a cone's generators on the plane.
@@ -103,8 +107,12 @@ pub fn figure(text: &str, encoding: Encoding) -> Result<ConeFigure, String> {
         });
     }
     let ConvexBodyText::ConvexPolygon { gamma, .. } = &cert.body;
+    let gamma = match gamma {
+        Param::Point(g) => format!("γ = {g}"),
+        Param::Interval(a, b) => format!("γ ∈ [{a}, {b}] (images at γ = {b})"),
+    };
     let title = format!(
-        "general convex body, {n} contacts, γ = {gamma}: the cones K_i on the plane v = −1 ({})",
+        "general convex body, {n} contacts, {gamma}: the cones K_i on the plane v = −1 ({})",
         cert.claim.name()
     );
     let notes = vec![

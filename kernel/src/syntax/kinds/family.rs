@@ -1,17 +1,19 @@
 //! The schema of family certificates (docs/certificate-format.md §13): a general convex body
 //! (`ConvexPolygon`: contacts in strictly convex position around the centre of mass, any
 //! horizontal inertia tensor) with a family of cones K_0, ..., K_{n-1}, one per last contact
-//! (docs/model.md §11.5). Format `"chatter-family-certificate"`, version 1; the legacy header
+//! (docs/model.md §11.5). Format `"chatter-family-certificate"`, version 1 (2 when gamma is an interval); the legacy header
 //! `("chatter-certificate", 4)` is read as an alias. The numbers stay text here.
 
-use crate::syntax::cone::{Claim, Generator};
+use crate::syntax::cone::{Claim, Generator, Param};
 use crate::syntax::{Kind, Schema};
 use serde::Deserialize;
 
 /// Value of the `format` field.
 pub const FORMAT: &str = "chatter-family-certificate";
-/// The version.
+/// The version of a certificate for one gamma.
 pub const VERSION: u64 = 1;
+/// The version that may give gamma as a closed interval (docs/certificate-format.md §13).
+pub const INTERVAL_VERSION: u64 = 2;
 
 /// A family certificate of a general convex body.
 #[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
@@ -19,7 +21,7 @@ pub const VERSION: u64 = 1;
 pub struct ConvexCertificate {
     /// [`FORMAT`] (or the legacy `"chatter-certificate"`).
     pub format: String,
-    /// [`VERSION`] (4 with the legacy format).
+    /// [`VERSION`] or [`INTERVAL_VERSION`] (4 with the legacy format).
     pub version: u64,
     /// The falling body.
     pub body: ConvexBodyText,
@@ -47,8 +49,8 @@ pub enum ConvexBodyText {
         contacts: Vec<(String, String)>,
         /// (Jxx, Jxy, Jyy).
         inertia: (String, String, String),
-        /// Newton's coefficient of restitution.
-        gamma: String,
+        /// Newton's coefficient of restitution: a number, or a closed interval (version 2).
+        gamma: Param,
         /// Optional: the full inertia tensor per unit mass about the centre of mass, in URDF's
         /// order (Ixx, Ixy, Ixz, Iyy, Iyz, Izz), of which `inertia` must be J_eff (rule K0,
         /// docs/model.md Proposition 11.0).
@@ -80,10 +82,11 @@ impl ConvexCertificate {
             inertia.0.as_str(),
             inertia.1.as_str(),
             inertia.2.as_str(),
-            gamma.as_str(),
         ]);
         let tensor =
             inertia_tensor.iter().flat_map(|t| [&t.0, &t.1, &t.2, &t.3, &t.4, &t.5].map(String::as_str));
-        body.chain(tensor).chain(self.cones.iter().flatten().flat_map(|g| g.0.iter().map(String::as_str)))
+        body.chain(gamma.texts())
+            .chain(tensor)
+            .chain(self.cones.iter().flatten().flat_map(|g| g.0.iter().map(String::as_str)))
     }
 }

@@ -7,6 +7,7 @@
 
 mod cones;
 mod impact;
+mod interval;
 mod shape;
 
 use chatter_kernel::model::linalg::Vec3;

@@ -158,6 +158,7 @@ pub fn kernel_file(path: &Path) -> KernelView {
             pcc_boxes: v.pcc_boxes,
             orbit_boxes: v.orbit_boxes,
             time_to_rest_bound: Some(v.time_to_rest_bound),
+            gamma_interval: Some(v.gamma_interval),
             ..KernelView::default()
         },
         _ => rejected(
@@ -166,6 +167,19 @@ pub fn kernel_file(path: &Path) -> KernelView {
             v.reason.unwrap_or_default(),
         ),
     }
+}
+
+/// The kernel on RON text through the tool's file reader (a temporary file): the verdict with
+/// what the tool's report adds, such as a family certificate's `gamma_interval`.
+pub fn kernel_text_as_file(text: &str) -> KernelView {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    static COUNT: AtomicUsize = AtomicUsize::new(0);
+    let name = format!("chatter-oracle-{}-{}.ron", std::process::id(), COUNT.fetch_add(1, Ordering::Relaxed));
+    let path = std::env::temp_dir().join(name);
+    std::fs::write(&path, text).expect("a temporary file");
+    let k = kernel_file(&path);
+    std::fs::remove_file(&path).expect("the temporary file");
+    k
 }
 
 /// The text of a file, gunzipped when it is gzip'd (by the tool's reader).
