@@ -138,6 +138,22 @@ fn cone_figures_label_no_tick_negative_zero() {
     assert!(zeros.iter().all(|t| !t.starts_with('-')), "negative zero among the ticks: {zeros:?}");
 }
 
+/// A family certificate over an interval of γ: the title names the interval and the end at which
+/// the images are drawn (the cones hold at every γ of it; the figure shows one end's images).
+#[test]
+fn the_cone_figure_of_an_interval_family_says_where_its_images_are_drawn() {
+    let d = tempfile::tempdir().unwrap();
+    let file =
+        crate::common::root().join("certificates/valid/convex-lander-gamma1_20-117_2000-inertia-tensor.ron");
+    ok(&chatter(&["plot", "cone", file.to_str().unwrap(), "-o", "i.svg"], d.path()));
+    let svg = std::fs::read_to_string(d.path().join("i.svg")).unwrap();
+    assert!(svg.contains("γ ∈ [1/20, 117/2000] (images at γ = 117/2000)"), "the title names the interval");
+    let point = crate::common::root().join("certificates/valid/convex-lander-gamma1_20-inertia-tensor.ron");
+    ok(&chatter(&["plot", "cone", point.to_str().unwrap(), "-o", "p.svg"], d.path()));
+    let svg = std::fs::read_to_string(d.path().join("p.svg")).unwrap();
+    assert!(svg.contains("γ = 1/20:") && !svg.contains("images at"), "a single γ is named as before");
+}
+
 #[test]
 fn issue12_refuted_points_are_marked_on_the_map() {
     let d = tempfile::tempdir().unwrap();
