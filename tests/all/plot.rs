@@ -138,8 +138,8 @@ fn cone_figures_label_no_tick_negative_zero() {
     assert!(zeros.iter().all(|t| !t.starts_with('-')), "negative zero among the ticks: {zeros:?}");
 }
 
-/// A family certificate over an interval of γ: the title names the interval and the end at which
-/// the images are drawn (the cones hold at every γ of it; the figure shows one end's images).
+/// A family certificate over an interval of γ: the title names the interval; each image region is
+/// the hull of the images at both ends (which holds every γ between), and I_i(D) is marked at both.
 #[test]
 fn the_cone_figure_of_an_interval_family_says_where_its_images_are_drawn() {
     let d = tempfile::tempdir().unwrap();
@@ -147,11 +147,39 @@ fn the_cone_figure_of_an_interval_family_says_where_its_images_are_drawn() {
         crate::common::root().join("certificates/valid/convex-lander-gamma1_20-117_2000-inertia-tensor.ron");
     ok(&chatter(&["plot", "cone", file.to_str().unwrap(), "-o", "i.svg"], d.path()));
     let svg = std::fs::read_to_string(d.path().join("i.svg")).unwrap();
-    assert!(svg.contains("γ ∈ [1/20, 117/2000] (images at γ = 117/2000)"), "the title names the interval");
+    assert!(svg.contains("every γ ∈ [1/20, 117/2000] (images and I_i(D) at both ends)"), "the title");
+
     let point = crate::common::root().join("certificates/valid/convex-lander-gamma1_20-inertia-tensor.ron");
     ok(&chatter(&["plot", "cone", point.to_str().unwrap(), "-o", "p.svg"], d.path()));
     let svg = std::fs::read_to_string(d.path().join("p.svg")).unwrap();
-    assert!(svg.contains("γ = 1/20:") && !svg.contains("images at"), "a single γ is named as before");
+    assert!(svg.contains("γ = 1/20:") && !svg.contains("both ends"), "a single γ is named as before");
+    // The figure's data: I_i(D) at both ends (3 + 3 per panel), and each image region holds the
+    // images of the pieces' vertices at every γ between the ends (affine in γ: their hull).
+    use chatter::finder::geometry::outside_distance;
+    use chatter::plot::cone::convex::figure;
+    use chatter_kernel::certificate::Encoding;
+    let f = figure(&std::fs::read_to_string(&file).unwrap(), Encoding::Ron).unwrap();
+    let one = figure(&std::fs::read_to_string(&point).unwrap(), Encoding::Ron).unwrap();
+    for (a, b) in f.panels.iter().zip(&one.panels) {
+        assert_eq!((a.seeds.len(), b.seeds.len()), (6, 3), "{}", a.title);
+    }
+    let text = std::fs::read_to_string(&file).unwrap();
+    let mid = text.replacen("[\"1/20\", \"117/2000\"]", "\"217/4000\"", 1).replacen(
+        "version: 2,",
+        "version: 1,",
+        1,
+    );
+    let mid = figure(&mid, Encoding::Ron).unwrap();
+    for (a, m) in f.panels.iter().zip(&mid.panels) {
+        for (r, s) in a.images.iter().zip(&m.images) {
+            let out = s.polygon.iter().map(|q| outside_distance(&r.polygon, q)).fold(0.0, f64::max);
+            assert!(
+                out < 1e-9,
+                "{}: an image at the interval's middle is drawn outside the region by {out}",
+                a.title
+            );
+        }
+    }
 }
 
 #[test]

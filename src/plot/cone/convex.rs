@@ -24,17 +24,19 @@ fn q(text: &str) -> Result<Q, String> {
     text.parse::<Q>().map_err(|e| format!("{text:?}: {e}"))
 }
 
-/// The exact body of the certificate.
-fn body(b: &ConvexBodyText) -> Result<ConvexBody<Q>, String> {
+/// The exact body of the certificate at each end of its γ (one for a number).
+fn bodies(b: &ConvexBodyText) -> Result<Vec<ConvexBody<Q>>, String> {
     let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma, .. } = b;
     let pts = contacts.iter().map(|(x, y)| Ok([q(x)?, q(y)?])).collect::<Result<Vec<_>, String>>()?;
     let jxy = q(&inertia.1)?;
     let j = [[q(&inertia.0)?, jxy.clone()], [jxy, q(&inertia.2)?]];
-    // Over an interval of gamma the images are drawn at its upper end (the title says so).
-    let g = match gamma {
-        Param::Point(g) | Param::Interval(_, g) => q(g)?,
+    let body = |g: &str| {
+        ConvexBody::new(pts.clone(), j.clone(), q(g)?).map_err(|e| format!("the body is not valid: {e}"))
     };
-    ConvexBody::new(pts, j, g).map_err(|e| format!("the body is not valid: {e}"))
+    match gamma {
+        Param::Point(g) => Ok(vec![body(g)?]),
+        Param::Interval(lo, hi) => Ok(vec![body(lo)?, body(hi)?]),
+    }
 }
 
 /// The polygon of a cone's generators on the plane.
@@ -59,7 +61,10 @@ fn cone(b: &ConvexBody<Q>, i: usize, k: usize) -> Vec<Vector3<f64>> {
 pub fn figure(text: &str, encoding: Encoding) -> Result<ConeFigure, String> {
     let cert =
         read_convex(text, encoding).map_err(|r| format!("not a readable certificate: {}", r.message()))?;
-    let b = body(&cert.body)?;
+    // Over an interval of γ each image is drawn as the hull of its images at both ends, which
+    // holds its images at every γ between (the maps are affine in γ, docs/kernel-soundness.md §6).
+    let ends = bodies(&cert.body)?;
+    let b = &ends[0];
     let n = b.n();
     let ks: Vec<Vec<P2>> = cert.cones.iter().map(|c| polygon(c)).collect::<Result<_, _>>()?;
     if ks.len() != n {
@@ -69,18 +74,22 @@ pub fn figure(text: &str, encoding: Encoding) -> Result<ConeFigure, String> {
     let pixels = window::pixels(n);
     let mut panels = Vec::new();
     for i in 0..n {
-        let impact = m64(&b.impact(i as i64));
+        let impacts: Vec<Matrix3<f64>> = ends.iter().map(|e| m64(&e.impact(i as i64))).collect();
         let images: Vec<Region> = (0..n)
             .filter(|&j| j != i)
             .map(|j| {
-                let piece = cone(&b, j, i).iter().fold(ks[j].clone(), |p, l| clip(&p, l));
-                let img = piece.iter().filter_map(|p| on_plane(&(impact * lift(p)))).collect::<Vec<_>>();
+                let piece = cone(b, j, i).iter().fold(ks[j].clone(), |p, l| clip(&p, l));
+                let at = |m: &Matrix3<f64>| {
+                    piece.iter().filter_map(|p| on_plane(&(m * lift(p)))).collect::<Vec<_>>()
+                };
+                let img: Vec<P2> = impacts.iter().flat_map(at).collect();
                 let legend =
                     format!("I_i(K{0} ∩ C{0}ᵢ): from K{0}, contact i hits next; must lie in K_i", s(j));
                 Region { name: String::new(), colour: colour(j), polygon: hull(&img, 0.0), legend }
             })
             .collect();
-        let seeds: Vec<P2> = down.iter().filter_map(|g| on_plane(&(impact * g))).collect();
+        let seeds: Vec<P2> =
+            impacts.iter().flat_map(|m| down.iter().filter_map(move |g| on_plane(&(m * g)))).collect();
         let all: Vec<P2> =
             ks[i].iter().chain(images.iter().flat_map(|r| &r.polygon)).chain(&seeds).copied().collect();
         let (lo, hi, stretch) = window::fit(&all, pixels);
@@ -89,7 +98,7 @@ pub fn figure(text: &str, encoding: Encoding) -> Result<ConeFigure, String> {
             .map(|k| Region {
                 name: format!("C{}{}", s(i), s(k)),
                 colour: colour(k),
-                polygon: cone(&b, i, k).iter().fold(frame((lo, hi)), |p, l| clip(&p, l)),
+                polygon: cone(b, i, k).iter().fold(frame((lo, hi)), |p, l| clip(&p, l)),
                 legend: format!("C_i{}: after an impact at i, contact {k} hits next", s(k)),
             })
             .collect();
@@ -109,7 +118,7 @@ pub fn figure(text: &str, encoding: Encoding) -> Result<ConeFigure, String> {
     let ConvexBodyText::ConvexPolygon { gamma, .. } = &cert.body;
     let gamma = match gamma {
         Param::Point(g) => format!("γ = {g}"),
-        Param::Interval(a, b) => format!("γ ∈ [{a}, {b}] (images at γ = {b})"),
+        Param::Interval(a, b) => format!("every γ ∈ [{a}, {b}] (images and I_i(D) at both ends)"),
     };
     let title = format!(
         "general convex body, {n} contacts, {gamma}: the cones K_i on the plane v = −1 ({})",
