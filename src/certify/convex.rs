@@ -128,7 +128,13 @@ fn carried_back(cones: Vec<Vec<[Q; 3]>>, adj: &Mat2<Q>) -> Vec<Vec<Vec3<Q>>> {
 
 /// The strongest claim about drops: `CompleteChatterFromAllDown` when every adjacent pair's PCC
 /// quadratic excludes PCC (rule K4, Lemma 11.5), else `CcOrPccFromAllDown` with a note.
-fn strongest(body: &ConvexBody<Q>, choice: ClaimChoice, notes: &mut Vec<String>) -> Result<Claim, Failure> {
+/// The failure's text starts with `at` (which end of an interval of gamma, or nothing).
+fn strongest(
+    body: &ConvexBody<Q>,
+    at: &str,
+    choice: ClaimChoice,
+    notes: &mut Vec<String>,
+) -> Result<Claim, Failure> {
     let n = body.n();
     for k in 0..n {
         let quad = body
@@ -138,7 +144,7 @@ fn strongest(body: &ConvexBody<Q>, choice: ClaimChoice, notes: &mut Vec<String>)
             continue;
         }
         let text = format!(
-            "contacts {k} and {}: det(tI - I_{k} I_{}) = (t - 1)(t^2 + ({}) t + ({})), discriminant {}",
+            "{at}contacts {k} and {}: det(tI - I_{k} I_{}) = (t - 1)(t^2 + ({}) t + ({})), discriminant {}",
             (k + 1) % n,
             (k + 1) % n,
             quad.p,
@@ -163,7 +169,12 @@ fn strongest_at(
 ) -> Result<Claim, Failure> {
     let mut claim = Claim::CompleteChatterFromAllDown;
     for body in ends {
-        claim = claim.min(strongest(body, choice, notes)?);
+        let at = if ends.len() > 1 {
+            format!("at the end gamma = {} of the interval: ", body.gamma())
+        } else {
+            String::new()
+        };
+        claim = claim.min(strongest(body, &at, choice, notes)?);
         if claim < Claim::CompleteChatterFromAllDown {
             break;
         }

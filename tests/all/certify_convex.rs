@@ -448,6 +448,11 @@ fn an_interval_of_gamma_gives_one_version_2_certificate_that_holds_inside_it() {
     // The text: the interval in the summary line.
     let o = chatter(&["certify", "--rectangle", "2,1", "--gamma", "1/100:1/50"], d.path());
     assert!(text(&o.stdout).contains("every gamma in [1/100, 1/50] claim="), "{}", text(&o.stdout));
+    // PCC is not excluded at the lower end 1/1000: the weaker claim, and the note names the end.
+    let o = chatter(&["certify", "--rectangle", "2,1", "--gamma", "1/1000:1/50"], d.path());
+    let out = text(&o.stdout);
+    assert!(out.contains("claim=CcOrPccFromAllDown"), "{out}");
+    assert!(out.contains("does not apply: at the end gamma = 1/1000 of the interval: contacts"), "{out}");
 }
 
 #[test]
