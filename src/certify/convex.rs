@@ -57,7 +57,8 @@ impl ConvexRequest {
         if let Some(hi) = self.gamma_hi.as_ref().filter(|hi| *hi != self.body.gamma()) {
             let b = &self.body;
             let body = ConvexBody::new(b.contacts().to_vec(), b.inertia().clone(), hi.clone());
-            out.push(body.map_err(|e| Failure::Internal(format!("the body at gamma = {hi}: {e}")))?);
+            // Only gamma differs from a valid body, so the error is gamma's range.
+            out.push(body.map_err(|e| Failure::GammaOutOfRange(format!("the body at gamma = {hi}: {e}")))?);
         }
         Ok(out)
     }

@@ -474,6 +474,10 @@ fn the_search_over_an_interval_serves_both_ends_where_a_point_certificate_serves
     (req.gamma_hi, req.claim) = (Some(q("1/50")), point.claim);
     let cert = certify_convex(&req).result.unwrap();
     assert_eq!(cert.version, 2);
+    // An upper end outside [0, 1] is gamma's range, not an internal error.
+    let mut beyond = req.clone();
+    beyond.gamma_hi = Some(q("3/2"));
+    assert!(matches!(certify_convex(&beyond).result, Err(Failure::GammaOutOfRange(_))));
     holds_inside(&cert, [&q("1/100"), &q("1/50")]);
 }
 
