@@ -115,7 +115,9 @@ pub mod refute {
 /// Time-to-rest certificates (feature `rest`): the schema and the kernel on one backend.
 #[cfg(feature = "rest")]
 pub mod rest {
-    pub use crate::rules::rest::{Rested, check};
+    pub use crate::rules::rest::{FIELD_VERSION, Rested, check};
+    #[cfg(feature = "field")]
+    pub use crate::rules::rest_field::check_in_field;
     pub use crate::syntax::rest::{FORMAT, Node, TimeToRest, VERSION};
 }
 

@@ -90,10 +90,11 @@ pub struct CertifyArgs {
     #[arg(long, default_value_t = 40)]
     pub max_vertices: usize,
     /// Also try a time-to-rest certificate (docs/time-to-rest.md §5: a virtual-time graph of
-    /// cones with covectors b_r and numerators a_r, version 2 of the file) and write it here if
-    /// the kernel accepts it on both backends; it bounds the time until every all-down drop's
-    /// impacts accumulate by B h/|v| (`time_to_rest_bound`). Regular polygons n = 3, 4, 6 at a
-    /// point only. Three graphs are tried in turn (nodes padded by 10^-3, 10^-4, 10^-5), then
+    /// cones with covectors b_r and numerators a_r, version 2 of the file; version 3 where
+    /// cos(2 pi/n) is irrational, whose covectors and numerators are elements of Q(cos 2 pi/n))
+    /// and write it here if the kernel accepts it on both backends; it bounds the time until every
+    /// all-down drop's impacts accumulate by B h/|v| (`time_to_rest_bound`). Regular polygons,
+    /// 3 <= n <= 64, at a point with rational kappa and gamma only. Three graphs are tried in turn (nodes padded by 10^-3, 10^-4, 10^-5), then
     /// nine that merge an image no node holds into the node it enlarges least (area factors
     /// from 1.05 to 2.5; pad 10^-3); each search stops at 200 nodes and 12 rounds of the covector
     /// search (40 x 20 directions each);
@@ -179,10 +180,8 @@ fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
     req.finder.max_iterations = a.max_iterations;
     req.finder.max_vertices = a.max_vertices;
     req.backends = env.backends;
-    if a.time_to_rest.is_some()
-        && !(matches!(n, 3 | 4 | 6) && req.upper.is_none() && req.kappa_field.is_none())
-    {
-        return Err("--time-to-rest: time-to-rest certificates take a regular polygon with n = 3, 4 or 6 at a point (rational kappa and gamma)".into());
+    if a.time_to_rest.is_some() && !(n >= 3 && req.upper.is_none() && req.kappa_field.is_none()) {
+        return Err("--time-to-rest: time-to-rest certificates take a regular polygon (n >= 3) at a point (rational kappa and gamma)".into());
     }
     Ok(Validated { req, output: a.output, rest: a.time_to_rest, json: a.json, timings: a.timings })
 }

@@ -29,7 +29,7 @@ fn verify_says_that_no_cone_certificate_proves_a_finite_accumulation_time() {
     let (mut seen, mut bounded) = (0, 0);
     // Time-to-rest certificates prove the finite time (rules G1-G5, docs/time-to-rest.md §5).
     let rest: Vec<&str> = out.lines().filter(|l| l.contains("rules G1-G5")).collect();
-    assert_eq!(rest.len(), 4, "{out}");
+    assert_eq!(rest.len(), 6, "{out}");
     assert!(
         rest.iter().all(|l| l.contains("accumulate within T <= ") && !l.contains(FINITE_TIME_NOT_DERIVED))
     );
@@ -381,6 +381,24 @@ pub(crate) fn num(s: &str) -> f64 {
     a.parse::<f64>().unwrap() / b.parse::<f64>().unwrap()
 }
 
+/// A canonical element of Q(c), c = cos(2π/n) ("a + b*c - d*c^2", docs/certificate-format.md §12),
+/// in `f64`; a rational as [`num`].
+pub(crate) fn element(s: &str, n: usize) -> f64 {
+    let c = (2.0 * std::f64::consts::PI / n as f64).cos();
+    let signed = s.replace(" - ", " + -");
+    signed
+        .split(" + ")
+        .map(|term| {
+            let (coef, power) = match term.split_once("*c") {
+                None if term == "c" => ("1", "1"),
+                None => (term, "0"),
+                Some((coef, rest)) => (coef, rest.strip_prefix('^').unwrap_or("1")),
+            };
+            num(coef) * c.powi(power.parse().unwrap())
+        })
+        .sum()
+}
+
 /// A drop with every contact up and moving down (velocity (u0, u1, -1), centre at height 1).
 pub(crate) fn random_drop(seed: &mut u64) -> ([f64; 3], [f64; 3]) {
     let mut uniform = || {
@@ -410,9 +428,9 @@ pub(crate) fn follow(
     // Φ_r(q, p) = (a_r·q)/(−b_r·p), a_r = c_r b_r in version 1.
     let phi = |r: usize, k: i64, q: [f64; 3], p: [f64; 3]| {
         let node = &cert.nodes[r];
-        let b = [0, 1, 2].map(|i| num(&node.weight.0[i]));
+        let b = [0, 1, 2].map(|i| element(&node.weight.0[i], plate.n));
         let a = match node.scale.is_empty() {
-            true => [0, 1, 2].map(|i| num(&node.numerator.0[i])),
+            true => [0, 1, 2].map(|i| element(&node.numerator.0[i], plate.n)),
             false => b.map(|x| x * num(&node.scale)),
         };
         dot(a, plate.frame(k, q)) / -dot(b, plate.frame(k, p))

@@ -51,6 +51,19 @@ fn the_triangle_plates_graph_is_accepted_and_bounds_simulated_drops() {
     assert!(bound < 10.0 * largest, "B = {bound} is more than 10 times the largest T|v|/h {largest}");
 }
 
+/// The pentagon (n = 5, κ 1/20, γ 1/10), where cos 2π/5 is irrational: the producer works in
+/// Q(cos 2π/5) and writes version 3 with covectors and numerators that are field elements; the
+/// file is accepted on both backends and B bounds 1000 simulated drops within the factor 10.
+#[test]
+fn the_pentagons_graph_in_its_number_field_is_accepted_and_bounds_simulated_drops() {
+    let p = produce(5, &q("1/20"), &q("1/10"), &Config::default(), &BOTH).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(p.cert.version, chatter_kernel::rest::FIELD_VERSION);
+    assert!(p.text.contains("*c"), "no field element in the file");
+    let plate = Plate { n: 5, kappa: 1.0 / 20.0, gamma: 1.0 / 10.0 };
+    let (bound, largest) = accepted_and_bounding(&p, &plate);
+    assert!(bound < 10.0 * largest, "B = {bound} is more than 10 times the largest T|v|/h {largest}");
+}
+
 /// The file accepted on both backends with the claim that excludes PCC; 1000 all-down drops
 /// followed through it (virtual time falling at every impact, T|v|/h over the first 300 impacts
 /// at most B); (B, the largest T|v|/h).
@@ -276,4 +289,26 @@ fn certify_writes_a_time_to_rest_file_that_verify_accepts() {
     assert_eq!(o.status.code(), Some(1), "{out}");
     assert!(out.contains("time to rest: NOT CERTIFIED, no bound derived"), "{out}");
     assert!(!bad.exists());
+}
+
+/// `certify --time-to-rest` takes every regular polygon: at n = 5 it writes version 3 (field
+/// elements) and `verify` accepts the file; the rod (n = 2) is refused as usage (exit 2).
+#[test]
+fn certify_writes_a_number_field_time_to_rest_file_and_refuses_the_rod() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("rest5.ron");
+    let args = ["certify", "--n", "5", "--kappa", "1/20", "--gamma", "1/10", "--time-to-rest"];
+    let o = chatter(&[&args[..], &[file.to_str().unwrap()]].concat(), &root());
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stdout));
+    let text = std::fs::read_to_string(&file).unwrap();
+    assert!(text.contains("version: 3,") && text.contains("*c"), "{text}");
+    let v = chatter(&["verify", file.to_str().unwrap()], &root());
+    let out = String::from_utf8_lossy(&v.stdout);
+    assert_eq!(v.status.code(), Some(0), "{out}");
+    assert!(out.contains("n = 5: every all-down drop's impacts accumulate within T <="), "{out}");
+    let rod = dir.path().join("rod.ron");
+    let args = ["certify", "--n", "2", "--kappa", "1/3", "--gamma", "1/20", "--time-to-rest"];
+    let o = chatter(&[&args[..], &[rod.to_str().unwrap()]].concat(), &root());
+    assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(!rod.exists());
 }

@@ -26,7 +26,7 @@ pub(super) fn words(f: &Failure, locus: &Locus) -> String {
         }
         Failure::Scale(c) => format!("the scale c = {c} (rule G2 needs >= 1)"),
         Failure::Flight(index, a, b) => format!(
-            "a·g = {} > b·g = {} at generator {index}: the virtual time falls slower than time in flight (rule F)",
+            "a·g = {} > b·g = {} at generator {index}, scaled to v = -1: the virtual time falls slower than time in flight (rule F)",
             abbreviate(a),
             abbreviate(b)
         ),
@@ -43,7 +43,7 @@ pub(super) fn words(f: &Failure, locus: &Locus) -> String {
             let q = if *left { "m_{j-1,j}" } else { "m_{j,j+1}" };
             let (l, r) = (abbreviate(lhs), abbreviate(rhs));
             format!(
-                "the virtual time grows at q = {q}: (a_s·R_j q)(-b_r·p) = {l} > (a_r·q)(-b_s·S_j p) = {r} (rule G3; a = c b in version 1)"
+                "the virtual time grows at q = {q}: (a_s·R_j q)(-b_r·p) = {l} > (a_r·q)(-b_s·S_j p) = {r}, p scaled to v = -1 (rule G3; a = c b in version 1)"
             )
         }
         Failure::Bound(generator, lhs, rhs) => format!(

@@ -17,7 +17,7 @@ use crate::exact::{Algebraic, AlgebraicInt, CosField, Field, GENERATOR, Int, MAX
 use crate::geometry::Scalar;
 use crate::model::polygon::Polygon;
 use crate::reject::{Code, Detail, KindDetail, Needs, Rejection};
-use crate::syntax::cone::{Body, Certificate, Param};
+use crate::syntax::cone::{Body, Certificate, Generator, Param};
 use crate::syntax::numbers::{in_time, number_error};
 use std::sync::Arc;
 
@@ -60,7 +60,8 @@ pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accept
     cone::check(&body, &gens, cert.claim, limits)
 }
 
-fn element<F: Field>(
+/// An element of Q(cos 2 pi/n) at `path`, canonical.
+pub fn element<F: Field>(
     field: &Arc<CosField<F>>,
     path: &str,
     s: &str,
@@ -69,29 +70,40 @@ fn element<F: Field>(
     field.parse(s, limits).map_err(|e| number_error(path.to_string(), s, e))
 }
 
-/// The generators as vectors of Z[2c] (each a positive multiple of the generator as written,
-/// [`Algebraic::scaled`]), with the largest denominator of their coefficients in bits.
+/// The generators of a cone certificate ([`vectors`]).
 fn generators<'a, F: Field>(
     field: &Arc<CosField<F>>,
     cert: &'a Certificate,
     limits: ParseLimits,
 ) -> Result<Generators<'a, AlgebraicInt<F>>, Rejection> {
-    const NAMES: [&str; 3] = ["u0", "u1", "v"];
-    let mut vectors = Vec::with_capacity(cert.cone.len());
+    vectors(field, &cert.cone, &["u0", "u1", "v"], &|i| format!("cone[{i}]"), limits)
+}
+
+/// Vectors of field elements (coordinates `names`, vector i at `path(i)`) as vectors of Z\[2c\],
+/// each a positive multiple of the vector as written ([`Algebraic::scaled`]), with the largest
+/// denominator of their coefficients in bits.
+pub fn vectors<'a, F: Field>(
+    field: &Arc<CosField<F>>,
+    written: &'a [Generator],
+    names: &'static [&'static str],
+    path: &dyn Fn(usize) -> String,
+    limits: ParseLimits,
+) -> Result<Generators<'a, AlgebraicInt<F>>, Rejection> {
+    let mut vectors = Vec::with_capacity(written.len());
     let mut bits = 0;
-    for (i, g) in cert.cone.iter().enumerate() {
+    for (i, g) in written.iter().enumerate() {
         in_time(limits, "reading the generators")?;
-        if g.0.len() != NAMES.len() {
-            let detail = Detail::Arity(&NAMES, g.0.len());
-            return Err(Rejection::at(Code::WrongArity, format!("cone[{i}]"), detail));
+        if g.0.len() != names.len() {
+            let detail = Detail::Arity(names, g.0.len());
+            return Err(Rejection::at(Code::WrongArity, path(i), detail));
         }
-        let mut v = Vec::with_capacity(3);
-        for (c, name) in g.0.iter().zip(NAMES) {
-            let x = element(field, &format!("cone[{i}].{name}"), c, limits)?;
+        let mut v = Vec::with_capacity(names.len());
+        for (c, name) in g.0.iter().zip(names) {
+            let x = element(field, &format!("{}.{name}", path(i)), c, limits)?;
             bits = x.coeffs().iter().map(|a| a.denom().bit_length()).fold(bits, u64::max);
             v.push(x);
         }
         vectors.push(Algebraic::scaled(&v));
     }
-    Ok(Generators { vectors, max_denominator_bits: bits, written: &cert.cone })
+    Ok(Generators { vectors, max_denominator_bits: bits, written })
 }

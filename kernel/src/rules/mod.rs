@@ -33,4 +33,6 @@ pub mod proof;
 pub mod refutation;
 #[cfg(feature = "rest")]
 pub mod rest;
+#[cfg(all(feature = "rest", feature = "field"))]
+pub mod rest_field;
 pub mod rod;

@@ -1,15 +1,19 @@
 //! Time-to-rest certificates (feature `rest`; docs/certificate-format.md §16, why:
 //! docs/kernel-soundness.md §9 and docs/time-to-rest.md Theorem 5.1): a virtual-time graph of a
-//! regular polygon with rational cos(2 pi/n) at a point. Rules, in the order they are checked:
+//! regular polygon at a point. Rules, in the order they are checked:
 //!
 //! - the file: the header, claim `CcOrPccFromAllDown` or `CompleteChatterFromAllDown`
 //!   (`unknown-variant`), at most max-generators nodes and generators per node, the total digits
-//!   (`too-large`), a body at a point (`parameter-out-of-range`) with 0 < γ < 1;
+//!   (`too-large`);
+//! - the numbers: canonical rationals for n = 3, 4, 6; for irrational cos(2 pi/n) the rules of
+//!   [`super::rest_field`] (feature `field`, else `unsupported-body`): canonical elements of
+//!   Q(cos 2 pi/n) (docs/certificate-format.md §12) in a file of version 3 or more, and the
+//!   rules below run over that field;
+//! - a body at a point (`parameter-out-of-range`) with 0 < γ < 1;
 //! - G1: every generator of K_r has v < 0 (`generator-not-below`), K_r has an interior
 //!   (`degenerate-cone`), and -b_r·g > 0 (`virtual-time-not-positive`);
 //! - the numerator a_r: version 1 gives c_r and a_r = c_r b_r, version 2 gives a_r (the other
-//!   field absent: `unknown-field`, `missing-field`); version 2 reads b_r and a_r as written,
-//!   version 1 b_r up to a positive factor (which changes nothing there);
+//!   field absent: `unknown-field`, `missing-field`); b_r and a_r are read as written;
 //! - G2: a_r·m_{0,1} >= 0, a_r·m_{n-1,0} >= 0 (version 1: b_r·m, and c_r >= 1)
 //!   (`virtual-time-not-positive`);
 //! - F (version 2; implied by c_r >= 1 in version 1): a_r·g <= b_r·g for every generator g of
@@ -25,15 +29,17 @@
 
 use super::body::{body_error, gamma_range};
 use super::cone::{self as cone_rules, Cone, R2, Target, check_image, int_mat};
-use super::generators;
+use super::generators::{self, Generators};
 use crate::exact::{Field, ParseLimits, Ring};
+use crate::geometry::Scalar;
 use crate::model::linalg::{Vec3, dot, mat_vec, neg};
-use crate::model::polygon::Polygon;
+use crate::model::polygon::{BodyError, Polygon, is_irrational};
 use crate::reject::{Code, Counted, Detail, KindDetail, KindLocus, Locus, Rejection};
 use crate::syntax::cone::{Body, Claim, Generator, Param};
 use crate::syntax::numbers::{at_most, in_time, number, total};
 use crate::syntax::rest::{Node, TimeToRest};
 use crate::syntax::{Kind, expect};
+use std::marker::PhantomData;
 
 /// What an accepted time-to-rest certificate established.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -61,41 +67,124 @@ pub enum Failure {
     Height(bool, String),
     /// G2: c_r < 1.
     Scale(String),
-    /// F: a_r·g > b_r·g at generator `.0` of K_r; both sides.
+    /// F: a_r·g > b_r·g at generator `.0` of K_r; both sides, at g scaled to v = -1.
     Flight(usize, String, String),
     /// A node has the field `.0` of the other version (`.1`: it is present).
     Version(&'static str, bool),
     /// G3: no successor for step `.0`, or one (`.1`) naming no node; step 0: no node at all.
     Successor(u64, Option<usize>),
-    /// G3: the inequality fails at q = m_{j-1,j} (`.0` true) or m_{j,j+1}; both sides.
+    /// G3: the inequality fails at q = m_{j-1,j} (`.0` true) or m_{j,j+1}; both sides, at the
+    /// vertex p scaled to v = -1.
     Increases(bool, String, String),
     /// G5 fails at generator `.0` of D: B (-b_0·I_0 g) and a_0·m.
     Bound(usize, String, String),
 }
 
-/// Checks a time-to-rest certificate on the backend `F`.
+/// Checks a time-to-rest certificate on the backend `F`: the file's rules, then the graph's over
+/// the rationals (n = 3, 4, 6) or over Q(cos 2π/n) (feature `field`).
 pub fn check<F: Field>(cert: &TimeToRest, limits: ParseLimits) -> Result<Rested, Rejection> {
+    file(cert, limits)?;
+    if is_irrational(contacts(cert)) {
+        return in_field::<F>(cert, limits);
+    }
+    let nums = Rationals::<F>(limits, PhantomData);
+    graph(&body(cert, &nums, Polygon::new)?, cert, &nums)
+}
+
+/// n.
+pub(super) fn contacts(cert: &TimeToRest) -> u64 {
+    let Body::RegularPolygon { n, .. } = cert.body;
+    n
+}
+
+/// The file's rules: the header, a claim about drops, the limits.
+pub(super) fn file(cert: &TimeToRest, limits: ParseLimits) -> Result<(), Rejection> {
     expect(&cert.format, cert.version, Kind::Rest)?;
     if !matches!(cert.claim, Claim::CcOrPccFromAllDown | Claim::CompleteChatterFromAllDown) {
         return Err(fail(Code::UnknownVariant, None, Failure::Claim(cert.claim)));
     }
     at_most("max-generators", cert.nodes.len(), limits.max_generators, Counted::Generators)?;
-    total(cert.numbers(), limits)?;
-    let body = body::<F>(cert, limits)?;
-    let graph: Vec<Read<F>> = (cert.nodes.iter().enumerate())
-        .map(|(r, n)| read(&body, (r, cert.version), n, limits))
+    total(cert.numbers(), limits)
+}
+
+#[cfg(feature = "field")]
+use super::rest_field::in_field;
+
+/// Without the feature `field`, irrational cos(2π/n) is not built (`unsupported-body`).
+#[cfg(not(feature = "field"))]
+#[allow(clippy::extra_unused_type_parameters)] // the signature of the field path's
+fn in_field<F: Field>(cert: &TimeToRest, _: ParseLimits) -> Result<Rested, Rejection> {
+    let detail = Detail::Needs(crate::reject::Needs::Feature("field"), cert.version);
+    Err(Rejection::at(Code::UnsupportedBody, "body.n", detail))
+}
+
+/// The oldest version of the file that may be about a body with irrational cos(2π/n).
+pub const FIELD_VERSION: u64 = 3;
+
+/// Rules G1 to G5 (and R4) on the body.
+pub(super) fn graph<N: Numbers>(
+    body: &Polygon<N::E>,
+    cert: &TimeToRest,
+    nums: &N,
+) -> Result<Rested, Rejection> {
+    let graph: Vec<Read<N::E>> = (cert.nodes.iter().enumerate())
+        .map(|(r, n)| read(body, (r, cert.version), n, nums))
         .collect::<Result<_, _>>()?;
     for r in 0..graph.len() {
-        transitions(&body, &graph, r, limits)?;
+        transitions(body, &graph, r, nums.limits())?;
     }
-    cone_rules::all_down(&body, &graph.first().ok_or_else(no_nodes)?.cone)?;
-    let bound: F = number("bound", &cert.bound, limits)?;
-    bound_holds(&body, &graph[0], &bound)?;
+    cone_rules::all_down(body, &graph.first().ok_or_else(no_nodes)?.cone)?;
+    bound_holds(body, &graph[0], &nums.rational("bound", &cert.bound)?)?;
     if cert.claim == Claim::CompleteChatterFromAllDown {
-        cone_rules::pcc(&body)?;
+        cone_rules::pcc(body)?;
     }
     let Body::RegularPolygon { n, .. } = cert.body;
     Ok(Rested { claim: cert.claim, n, bound: cert.bound.clone(), nodes: graph.len() })
+}
+
+/// How a file's numbers are read: canonical rationals (n = 3, 4, 6), or canonical elements of
+/// Q(cos 2π/n) (feature `field`).
+pub(super) trait Numbers {
+    /// The body's scalar.
+    type E: Scalar;
+    /// The limits of the reading.
+    fn limits(&self) -> ParseLimits;
+    /// The number at `path`.
+    fn number(&self, path: &str, text: &str) -> Result<Self::E, Rejection>;
+    /// The rational at `path` (B, in every version).
+    fn rational(&self, path: &str, text: &str) -> Result<Self::E, Rejection>;
+    /// Vectors (coordinates `names`, vector i at `path(i)`), each as a positive multiple over
+    /// the scalar's ring.
+    fn vectors<'a>(
+        &self,
+        written: &'a [Generator],
+        names: &'static [&'static str],
+        path: &dyn Fn(usize) -> String,
+    ) -> Result<Generators<'a, <Self::E as Scalar>::R>, Rejection>;
+}
+
+/// Canonical rationals on the backend `F`.
+struct Rationals<F>(ParseLimits, PhantomData<F>);
+
+impl<F: Field> Numbers for Rationals<F> {
+    type E = F;
+    fn limits(&self) -> ParseLimits {
+        self.0
+    }
+    fn number(&self, path: &str, text: &str) -> Result<F, Rejection> {
+        number(path, text, self.0)
+    }
+    fn rational(&self, path: &str, text: &str) -> Result<F, Rejection> {
+        number(path, text, self.0)
+    }
+    fn vectors<'a>(
+        &self,
+        written: &'a [Generator],
+        names: &'static [&'static str],
+        path: &dyn Fn(usize) -> String,
+    ) -> Result<Generators<'a, F::Int>, Rejection> {
+        generators::read::<F>(written, names, path, self.0)
+    }
 }
 
 /// What a basin certificate's `Rest` leaves need of node r of an accepted graph: the inner
@@ -116,11 +205,12 @@ pub fn forms<F: Field>(
     limits: ParseLimits,
 ) -> Result<(Rested, Vec<NodeForms<F>>), Rejection> {
     let rested = check::<F>(cert, limits)?;
-    let body = body::<F>(cert, limits)?;
+    let nums = Rationals::<F>(limits, PhantomData);
+    let body = body(cert, &nums, Polygon::new)?;
     let lift = |v: &Vec3<F::Int>| -> Vec3<F> { std::array::from_fn(|i| F::from_int(&v[i])) };
     let nodes = (cert.nodes.iter().enumerate())
         .map(|(r, n)| {
-            let node = read(&body, (r, cert.version), n, limits)?;
+            let node = read(&body, (r, cert.version), n, &nums)?;
             let facets = node.cone.polygon.facets.iter().map(lift).collect();
             Ok(NodeForms { facets, weight: node.weight, numerator: node.numerator })
         })
@@ -128,36 +218,40 @@ pub fn forms<F: Field>(
     Ok((rested, nodes))
 }
 
-/// The body at a point, with 0 < γ < 1.
-fn body<F: Field>(cert: &TimeToRest, limits: ParseLimits) -> Result<Polygon<F>, Rejection> {
+/// The body at a point, with 0 < γ < 1, built by `make` from n, κ and γ.
+pub(super) fn body<N: Numbers>(
+    cert: &TimeToRest,
+    nums: &N,
+    make: impl FnOnce(u64, N::E, N::E) -> Result<Polygon<N::E>, BodyError>,
+) -> Result<Polygon<N::E>, Rejection> {
     let Body::RegularPolygon { n, kappa: Param::Point(k), gamma: Param::Point(g) } = &cert.body else {
         return Err(Rejection::at(Code::ParameterOutOfRange, "body", KindDetail::Rest(Failure::NotAtPoint)));
     };
-    let (kappa, gamma) = (number("body.kappa", k, limits)?, number("body.gamma", g, limits)?);
-    let body = Polygon::new(*n, kappa, gamma).map_err(|e| body_error(e, "body.kappa", "body.gamma"))?;
+    let (kappa, gamma) = (nums.number("body.kappa", k)?, nums.number("body.gamma", g)?);
+    let body = make(*n, kappa, gamma).map_err(|e| body_error(e, "body.kappa", "body.gamma"))?;
     gamma_range(body.gamma(), "body.gamma", cert.claim)?;
     Ok(body)
 }
 
-/// A node read: K_r (R1's checks), b_r, a_r and the successors.
-struct Read<'a, F: Field> {
-    cone: Cone<F::Int>,
-    weight: Vec3<F>,
-    numerator: Vec3<F>,
+/// A node read: K_r (R1's checks), b_r, a_r and the successors, over the body's scalar `E`.
+struct Read<'a, E: Scalar> {
+    cone: Cone<E::R>,
+    weight: Vec3<E>,
+    numerator: Vec3<E>,
     next: &'a [(u64, usize)],
 }
 
 /// Reads node r of a file of the given version and checks G1, G2 and F on it.
-fn read<'a, F: Field>(
-    body: &Polygon<F>,
+fn read<'a, N: Numbers>(
+    body: &Polygon<N::E>,
     (r, version): (usize, u64),
     node: &'a Node,
-    limits: ParseLimits,
-) -> Result<Read<'a, F>, Rejection> {
+    nums: &N,
+) -> Result<Read<'a, N::E>, Rejection> {
+    let limits = nums.limits();
     at_most("max-generators", node.cone.len(), limits.max_generators, Counted::Generators)?;
-    let gens =
-        generators::read::<F>(&node.cone, &["u0", "u1", "v"], |i| format!("nodes[{r}].cone[{i}]"), limits)?;
-    let cone = cone_rules::cone::<F>(&gens).map_err(|e| Rejection { locus: locus(r, None, None), ..e })?;
+    let gens = nums.vectors(&node.cone, &["u0", "u1", "v"], &|i| format!("nodes[{r}].cone[{i}]"))?;
+    let cone = cone_rules::cone::<N::E>(&gens).map_err(|e| Rejection { locus: locus(r, None, None), ..e })?;
     let (own, other) = if version == 1 { ("scale", "numerator") } else { ("numerator", "scale") };
     let path = |name: &str| format!("nodes[{r}].{name}");
     let (own_absent, other_present) = if version == 1 {
@@ -173,70 +267,60 @@ fn read<'a, F: Field>(
         let detail = KindDetail::Rest(Failure::Version(own, false));
         return Err(Rejection::at(Code::MissingField, path(own), detail));
     }
-    let weight = if version == 1 {
-        let w = generators::read::<F>(
-            std::slice::from_ref(&node.weight),
-            &["b0", "b1", "b2"],
-            |_| path("weight"),
-            limits,
-        )?;
-        std::array::from_fn(|i| F::from_int(&w.vectors[0][i]))
-    } else {
-        triple(&node.weight, &["b0", "b1", "b2"], &path("weight"), limits)?
-    };
-    let scale: Option<F> =
-        if version == 1 { Some(number(&path("scale"), &node.scale, limits)?) } else { None };
+    let weight = triple(&node.weight, &["b0", "b1", "b2"], &path("weight"), nums)?;
+    let scale = if version == 1 { Some(nums.number(&path("scale"), &node.scale)?) } else { None };
     let numerator = match &scale {
         Some(c) => weight.clone().map(|b| b.times(c)),
-        None => triple(&node.numerator, &["a0", "a1", "a2"], &path("numerator"), limits)?,
+        None => triple(&node.numerator, &["a0", "a1", "a2"], &path("numerator"), nums)?,
     };
     let at = Some((r, None, None));
     for (index, g) in gens.vectors.iter().enumerate() {
-        let g: Vec3<F> = std::array::from_fn(|i| F::from_int(&g[i]));
+        let g: Vec3<N::E> = std::array::from_fn(|i| N::E::lift(&g[i]));
         let value = dot(&weight, &g).negated();
         if !value.is_positive() {
-            let at_v = value.over(&g[2].negated()).unwrap_or(value);
-            return Err(fail(Code::VirtualTimeNotPositive, at, Failure::Denominator(index, text(&at_v))));
+            let failure = Failure::Denominator(index, unit(&value, &g));
+            return Err(fail(Code::VirtualTimeNotPositive, at, failure));
         }
     }
     let height = if scale.is_some() { &weight } else { &numerator };
     for (first, m) in [(true, rest(body, 0)), (false, rest(body, -1))] {
         let value = dot(height, &m);
         if value.is_negative() {
-            return Err(fail(Code::VirtualTimeNotPositive, at, Failure::Height(first, text(&value))));
+            return Err(fail(Code::VirtualTimeNotPositive, at, Failure::Height(first, value.text())));
         }
     }
-    if let Some(c) = scale.filter(|c| c < &F::one()) {
-        return Err(fail(Code::VirtualTimeNotPositive, at, Failure::Scale(text(&c))));
+    if let Some(c) = scale.filter(|c| c < &N::E::one()) {
+        return Err(fail(Code::VirtualTimeNotPositive, at, Failure::Scale(c.text())));
     }
     for (index, g) in gens.vectors.iter().enumerate() {
-        let g: Vec3<F> = std::array::from_fn(|i| F::from_int(&g[i]));
+        let g: Vec3<N::E> = std::array::from_fn(|i| N::E::lift(&g[i]));
         let (a, b) = (dot(&numerator, &g), dot(&weight, &g));
         if a > b {
-            return Err(fail(Code::VirtualTimeIncreases, at, Failure::Flight(index, text(&a), text(&b))));
+            let failure = Failure::Flight(index, unit(&a, &g), unit(&b, &g));
+            return Err(fail(Code::VirtualTimeIncreases, at, failure));
         }
     }
     Ok(Read { cone, weight, numerator, next: &node.next })
 }
 
-/// Three canonical rationals, read exactly (`wrong-arity` unless there are three).
-fn triple<F: Field>(
+/// Three canonical numbers (`wrong-arity` unless there are three).
+fn triple<N: Numbers>(
     g: &Generator,
     names: &'static [&'static str],
     path: &str,
-    limits: ParseLimits,
-) -> Result<Vec3<F>, Rejection> {
+    nums: &N,
+) -> Result<Vec3<N::E>, Rejection> {
     if g.0.len() != 3 {
         return Err(Rejection::at(Code::WrongArity, path, Detail::Arity(names, g.0.len())));
     }
-    let x = |i: usize| number::<F>(&format!("{path}.{}", names[i]), &g.0[i], limits);
+    let x = |i: usize| nums.number(&format!("{path}.{}", names[i]), &g.0[i]);
     Ok([x(0)?, x(1)?, x(2)?])
 }
 
 /// G3 on node r: for each step j with K_r ∩ C_j not {0}, containment in K_s and the virtual time.
-fn transitions<F: Field>(
-    body: &Polygon<F>,
-    graph: &[Read<F>],
+fn transitions<E: Scalar>(
+    body: &Polygon<E>,
+    graph: &[Read<E>],
     r: usize,
     limits: ParseLimits,
 ) -> Result<(), Rejection> {
@@ -256,8 +340,8 @@ fn transitions<F: Field>(
                 Locus::Kind(KindLocus::RestNode { node: r, step: Some(j), vertex: Some(i), outside })
             };
             let t = Target { point: p, locus: &at, codes: R2, n: body.n() };
-            check_image::<F>(&graph[s].cone, &mat_vec(&int_mat(&step), p), &t)?;
-            let p: Vec3<F> = std::array::from_fn(|k| F::from_int(&p[k]));
+            check_image::<E>(&graph[s].cone, &mat_vec(&int_mat(&step), p), &t)?;
+            let p: Vec3<E> = std::array::from_fn(|k| E::lift(&p[k]));
             decreases(body, (&graph[r], &graph[s]), j, &p, (r, i))?;
         }
     }
@@ -265,11 +349,11 @@ fn transitions<F: Field>(
 }
 
 /// G3's inequality at the vertex p for both generators q of the configurations with h_j = 0.
-fn decreases<F: Field>(
-    body: &Polygon<F>,
-    (from, to): (&Read<F>, &Read<F>),
+fn decreases<E: Scalar>(
+    body: &Polygon<E>,
+    (from, to): (&Read<E>, &Read<E>),
     j: u64,
-    p: &Vec3<F>,
+    p: &Vec3<E>,
     (r, i): (usize, usize),
 ) -> Result<(), Rejection> {
     let (relabel, sp) = (body.relabel(j as i64), mat_vec(&body.step(j as i64), p));
@@ -278,7 +362,7 @@ fn decreases<F: Field>(
         let lhs = dot(&to.numerator, &mat_vec(&relabel, &q)).times(&dot(&from.weight, p).negated());
         let rhs = dot(&from.numerator, &q).times(&dot(&to.weight, &sp).negated());
         if lhs > rhs {
-            let failure = Failure::Increases(left, text(&lhs), text(&rhs));
+            let failure = Failure::Increases(left, unit(&lhs, p), unit(&rhs, p));
             return Err(fail(Code::VirtualTimeIncreases, Some((r, Some(j as u64), Some(i))), failure));
         }
     }
@@ -286,13 +370,13 @@ fn decreases<F: Field>(
 }
 
 /// G5: B (-b_0·I_0 g) >= a_0·m for every generator g of D and both m.
-fn bound_holds<F: Field>(body: &Polygon<F>, entry: &Read<F>, bound: &F) -> Result<(), Rejection> {
+fn bound_holds<E: Scalar>(body: &Polygon<E>, entry: &Read<E>, bound: &E) -> Result<(), Rejection> {
     let i0 = body.impact(0);
     let heights = [rest(body, 0), rest(body, -1)].map(|m| dot(&entry.numerator, &m));
     for (generator, g) in body.all_down_generators().iter().enumerate() {
         let lhs = bound.times(&dot(&entry.weight, &mat_vec(&i0, g)).negated());
         if let Some(rhs) = heights.iter().find(|h| lhs < **h) {
-            let failure = Failure::Bound(generator, text(&lhs), text(rhs));
+            let failure = Failure::Bound(generator, lhs.text(), rhs.text());
             return Err(fail(Code::BoundTooSmall, Some((0, None, None)), failure));
         }
     }
@@ -300,19 +384,21 @@ fn bound_holds<F: Field>(body: &Polygon<F>, entry: &Read<F>, bound: &F) -> Resul
 }
 
 /// m_{k,k+1} (k mod n): minus generator k of D.
-fn rest<F: Field>(body: &Polygon<F>, k: i64) -> Vec3<F> {
+fn rest<E: Scalar>(body: &Polygon<E>, k: i64) -> Vec3<E> {
     neg(&body.all_down_generators()[k.rem_euclid(body.n() as i64) as usize])
 }
 
-fn text<F: Field>(x: &F) -> String {
-    crate::exact::to_canonical(x)
+/// A value linear in the vector x (v < 0), as at x scaled to v = -1: the same for every positive
+/// multiple of x, so for the vector as written.
+fn unit<E: Scalar>(value: &E, x: &Vec3<E>) -> String {
+    value.over(&x[2].negated()).unwrap_or_else(|| value.clone()).text()
 }
 
 fn locus(node: usize, step: Option<u64>, vertex: Option<usize>) -> Locus {
     Locus::Kind(KindLocus::RestNode { node, step, vertex, outside: None })
 }
 
-fn fail(code: Code, at: Option<(usize, Option<u64>, Option<usize>)>, f: Failure) -> Rejection {
+pub(super) fn fail(code: Code, at: Option<(usize, Option<u64>, Option<usize>)>, f: Failure) -> Rejection {
     let locus = at.map_or(Locus::Nowhere, |(r, j, i)| locus(r, j, i));
     Rejection::new(code, locus, Detail::Kind(KindDetail::Rest(f)))
 }

@@ -52,6 +52,9 @@ fn every_rule_of_time_to_rest_certificates_has_a_corpus_file_rejected_with_its_c
         ("rest-v2-numerator-height.ron", "virtual-time-not-positive"),
         ("rest-v2-scale-field.ron", "unknown-field"),
         ("rest-v2-missing-numerator.ron", "missing-field"),
+        ("rest-v3-version-2.ron", "unsupported-version"),
+        ("rest-v3-bound-not-rational.ron", "bad-number"),
+        ("rest-v3-virtual-time-increases.ron", "virtual-time-increases"),
     ];
     for (file, code) in rows {
         assert_eq!(code_of(&corpus(&format!("invalid/{file}"))), code, "{file}");
@@ -101,6 +104,78 @@ fn a_time_to_rest_certificate_at_an_interval_or_another_n_is_refused() {
     let text = corpus(SQUARE);
     let boxed = text.replace("kappa: \"1/6\"", "kappa: [\"1/7\", \"1/6\"]");
     assert_eq!(code_of(&boxed), "parameter-out-of-range");
+    // n = 5 needs version 3 (its numbers are read in Q(cos 2π/5)); then the square's graph is
+    // not the pentagon's.
     let pentagon = text.replace("RegularPolygon(n: 4", "RegularPolygon(n: 5");
-    assert_eq!(code_of(&pentagon), "unsupported-body");
+    assert_eq!(code_of(&pentagon), "unsupported-version");
+    let v3 = corpus(V2_SQUARE).replace("version: 2", "version: 3");
+    assert_eq!(code_of(&v3), "accepted", "version 3 reads a square's file as version 2 does");
+    assert_ne!(code_of(&v3.replace("RegularPolygon(n: 4", "RegularPolygon(n: 5")), "accepted");
+    for n in [2, 65] {
+        let other = v3.replace("RegularPolygon(n: 4", &format!("RegularPolygon(n: {n}"));
+        assert_eq!(code_of(&other), "unsupported-body", "n = {n}");
+    }
+}
+
+const V2_SQUARE: &str = "valid/rest-v2-n4-kappa1_6-gamma1_100.ron";
+
+/// Version 3: the tool's graphs of the pentagon (n = 5, CC) and the octagon (n = 8, CC or PCC),
+/// whose covectors and numerators are elements of Q(cos 2π/n), are accepted on both backends.
+#[cfg(feature = "field")]
+#[test]
+fn the_number_field_graphs_are_accepted_on_both_backends() {
+    for (file, n, claim, nodes) in [
+        ("valid/rest-v3-n5-kappa1_20-gamma1_10.ron", 5, Claim::CompleteChatterFromAllDown, 35),
+        ("valid/rest-v3-n8-kappa1_100-gamma1_50.ron", 8, Claim::CcOrPccFromAllDown, 18),
+    ] {
+        let text = corpus(file);
+        assert!(text.contains("*c"), "{file} has field elements");
+        let Verdict::Accepted(a) = verify_rest_text_in(&text, Encoding::Ron, ParseLimits::default(), &BOTH)
+        else {
+            panic!("{file} is rejected")
+        };
+        assert_eq!((a.claim, a.n, a.nodes), (claim, n, nodes), "{file}");
+    }
+}
+
+/// The rules over Q(cos 2π/n) give the rational path's verdict (acceptance, code, locus and
+/// values) on every time-to-rest file of the corpus about n = 3, 4, 6, valid or not, on both
+/// backends: the field path run in a field of degree 1.
+#[cfg(feature = "field")]
+#[test]
+fn the_field_path_gives_the_rational_paths_verdict_on_the_rational_corpus() {
+    use chatter_kernel::rest::check_in_field;
+    use chatter_kernel::syntax::read;
+    use malachite::rational::Rational;
+    use num_rational::BigRational;
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../certificates");
+    let mut seen = 0;
+    for sub in ["valid", "invalid"] {
+        for e in std::fs::read_dir(dir.join(sub)).unwrap() {
+            let path = e.unwrap().path();
+            let name = path.file_name().unwrap().to_string_lossy().to_string();
+            if !(name.starts_with("rest-") && name.ends_with(".ron")) || name.starts_with("rest-v3-") {
+                continue;
+            }
+            let Ok(cert) = read::<chatter_kernel::rest::TimeToRest>(
+                &std::fs::read_to_string(&path).unwrap(),
+                Encoding::Ron,
+            ) else {
+                continue;
+            };
+            let limits = ParseLimits::default();
+            assert_eq!(
+                check_in_field::<Rational>(&cert, limits),
+                chatter_kernel::rest::check::<Rational>(&cert, limits),
+                "{name}"
+            );
+            assert_eq!(
+                check_in_field::<BigRational>(&cert, limits),
+                chatter_kernel::rest::check::<BigRational>(&cert, limits),
+                "{name}"
+            );
+            seen += 1;
+        }
+    }
+    assert!(seen >= 15, "{seen} files");
 }

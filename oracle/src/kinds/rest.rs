@@ -1,9 +1,9 @@
 //! Time-to-rest certificates (docs/certificate-format.md §16): the schema, the file's rules (the
-//! claim, the limits, a body at a point, n = 3, 4 or 6, 0 < γ < 1, the numbers and their arity),
+//! claim, the limits, a body at a point, 3 <= n <= 64 (Q(cos 2π/n) where it is irrational), 0 < γ < 1, the numbers and their arity),
 //! then the virtual-time graph's rules G1-G5 and R4 (`crate::regular::virtual_time`).
 
 use super::limits::Limits;
-use super::numbers::rational;
+use super::numbers::{element, rational};
 use crate::arith::rational::rational_text;
 use crate::arith::{Field, Num, Rat};
 use crate::claim::Claim;
@@ -150,18 +150,30 @@ fn size(f: &RestFile, limits: &Limits) -> Checked<()> {
     Ok(())
 }
 
-/// The body: at a point, n = 3, 4 or 6 (cos 2π/n rational), κ > 0 and 0 < γ < 1.
+/// The body: 3 <= n <= 64 (n beyond 64 refused first), a file of version 3 where cos 2π/n is
+/// irrational, at a point, κ > 0 and 0 < γ < 1, read in Q(cos 2π/n).
 fn body(f: &RestFile, limits: &Limits) -> Checked<Polygon> {
     let out = |what: &str| Err(Fail::new("parameter-out-of-range", what.to_string()));
+    let unsupported =
+        || Err(Fail::new("unsupported-body", format!("n = {} (time-to-rest: 3 <= n <= 64)", f.n)));
+    if f.n > 64 {
+        return unsupported();
+    }
+    let irrational = f.n >= 5 && f.n != 6;
+    if irrational && f.version < 3 {
+        return Err(Fail::new("unsupported-version", "a body with irrational cos 2π/n needs version 3"));
+    }
     if f.kappa.len() != 1 || f.gamma.len() != 1 {
         return out("a time-to-rest certificate is about a body at a point");
     }
-    if ![3, 4, 6].contains(&f.n) {
-        return Err(Fail::new("unsupported-body", format!("n = {} (time-to-rest: n = 3, 4 or 6)", f.n)));
+    if f.n < 3 {
+        rational("body.kappa", f.kappa[0], limits)?;
+        rational("body.gamma", f.gamma[0], limits)?;
+        return unsupported();
     }
     let field = Field::cos(f.n as u32);
-    let kappa = Num::rational(&field, rational("body.kappa", f.kappa[0], limits)?);
-    let gamma = Num::rational(&field, rational("body.gamma", f.gamma[0], limits)?);
+    let kappa = element("body.kappa", f.kappa[0], &field, limits)?;
+    let gamma = element("body.gamma", f.gamma[0], &field, limits)?;
     if !kappa.is_positive() {
         return out("kappa must be > 0");
     }
@@ -176,7 +188,7 @@ fn triple(path: &str, texts: &[&str], field: &Arc<Field>, limits: &Limits) -> Ch
     if texts.len() != 3 {
         return Err(Fail::new("wrong-arity", format!("{path} has {} coordinates", texts.len())));
     }
-    let x = |i: usize| -> Checked<Num> { Ok(Num::rational(field, rational(path, texts[i], limits)?)) };
+    let x = |i: usize| -> Checked<Num> { element(path, texts[i], field, limits) };
     Ok([x(0)?, x(1)?, x(2)?])
 }
 
@@ -187,10 +199,10 @@ fn node_numbers(r: usize, t: &NodeText, version: u64, field: &Arc<Field>, limits
         .map(|(i, g)| triple(&format!("nodes[{r}].cone[{i}]"), g, field, limits))
         .collect::<Checked<_>>()?;
     match (version, t.scale.is_some(), t.numerator.is_some()) {
-        (1, _, true) | (2, true, _) => {
+        (1, _, true) | (2 | 3, true, _) => {
             return Err(Fail::new("unknown-field", format!("node {r} has the field of the other version")));
         }
-        (1, false, _) | (2, _, false) => {
+        (1, false, _) | (2 | 3, _, false) => {
             return Err(Fail::new("missing-field", format!("node {r} lacks its version's field")));
         }
         _ => {}

@@ -32,7 +32,7 @@ pub enum Reader {
     Refutation,
     /// Basin certificates, versions 1 and 2 (§15; version 2 adds tree leaves).
     Basin,
-    /// Time-to-rest certificates, versions 1 and 2 (§16).
+    /// Time-to-rest certificates, versions 1 to 3 (§16).
     Rest,
 }
 
@@ -75,7 +75,7 @@ pub fn header(v: &Value) -> Checked<Reader> {
         (CERTIFICATE, 4) | (FAMILY, 1..=2) => Reader::Family,
         (CERTIFICATE, 5) | (ORBIT, 1) => Reader::Orbit,
         (BASIN, 1..=2) => Reader::Basin,
-        (REST, 1..=2) => Reader::Rest,
+        (REST, 1..=3) => Reader::Rest,
         _ => return Err(Fail::new("unsupported-version", format!("version {version}"))),
     };
     let expected_name = match reader {

@@ -353,7 +353,7 @@ fn the_embedded_certificate_passes_its_own_rules_after_b3() {
         let format = rest.replacen("chatter-time-to-rest", other, 1);
         assert_eq!(code(&basin("1/100", CENTRE, Some(&format), &leaf)), ["wrong-format"], "{other}");
     }
-    let version = rest.replacen("version: 2", "version: 3", 1);
+    let version = rest.replacen("version: 2", "version: 4", 1);
     assert_eq!(code(&basin("1/100", CENTRE, Some(&version), &leaf)), ["unsupported-version"]);
     // B3 comes first; every failing rule is found when each is evaluated on its own.
     let halves = "(path: \"0\", verdict: Undecided)";

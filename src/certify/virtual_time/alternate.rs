@@ -7,9 +7,10 @@
 //! t < 0. All in `f64` and untrusted: the covectors found are made exact and checked again
 //! ([`super::exactify`], [`super::numerator`]), and the kernel checks the file.
 
+use super::Num;
 use super::exactify::{Edge, Node, rest};
 use super::tie::Ties;
-use crate::exact::{Q, QExt};
+
 use chatter_kernel::model::Polygon;
 use chatter_kernel::model::linalg::{Vec3, is_zero, mat_vec};
 use microlp::{ComparisonOp, OptimizationDirection, Problem, SolveOutcome, Variable};
@@ -52,8 +53,8 @@ pub struct Data {
     kicks: Vec<Vec<V>>,
 }
 
-fn f(x: &Vec3<Q>) -> V {
-    std::array::from_fn(|i| x[i].to_f64())
+fn f<E: Num>(x: &Vec3<E>) -> V {
+    std::array::from_fn(|i| x[i].f64())
 }
 
 fn dot(a: &V, b: &V) -> f64 {
@@ -67,9 +68,9 @@ fn pull(m: &M, y: &V) -> V {
 
 impl Data {
     /// The data of the exact graph (`kicks`: per node index of a representative, its tied kicks).
-    pub fn new(
-        body: &Polygon<Q>,
-        (nodes, edges): (&[Node], &[Edge]),
+    pub fn new<E: Num>(
+        body: &Polygon<E>,
+        (nodes, edges): (&[Node<E>], &[Edge<E>]),
         t: &Ties,
         kicks: Vec<Vec<V>>,
     ) -> Result<Self, String> {

@@ -3,9 +3,10 @@
 //! nodes ([`tie`]), the pieces K_r ∩ C_j clipped exactly and their images checked in K_s,
 //! and (G1), (G2), (G4) checked exactly. Untrusted: the kernel checks the file.
 
+use super::Num;
 use super::graph::Graph;
 use super::tie::{self, Ties};
-use crate::exact::{Q, QExt, Ring};
+use crate::exact::{Q, QExt};
 use crate::finder::geometry::P2;
 use chatter_kernel::geometry::{ConvexPolygon, clip, hull};
 use chatter_kernel::model::Polygon;
@@ -15,18 +16,19 @@ use nalgebra::Vector3;
 /// Bits of the dyadic rounding of cones and covectors.
 const BITS: u64 = 24;
 
-/// A node made exact: K_r (its extreme generators, counter-clockwise) and b_r.
-pub struct Node {
-    pub cone: ConvexPolygon<Q>,
-    pub weight: Vec3<Q>,
+/// A node made exact: K_r (its extreme generators, counter-clockwise: rationals, in the body's
+/// field) and b_r.
+pub struct Node<E> {
+    pub cone: ConvexPolygon<E>,
+    pub weight: Vec3<E>,
 }
 
 /// An exact edge: r --j--> s with the exact piece K_r ∩ C_j (nonzero).
-pub struct Edge {
+pub struct Edge<E> {
     pub from: usize,
     pub step: usize,
     pub to: usize,
-    pub piece: Vec<Vec3<Q>>,
+    pub piece: Vec<Vec3<E>>,
 }
 
 fn rat(x: f64) -> Result<Q, String> {
@@ -36,7 +38,7 @@ fn rat(x: f64) -> Result<Q, String> {
 }
 
 /// K_r with generators (x, y, -1) rounded to 2^-24, its exact hull.
-fn cone(node: &[P2], r: usize) -> Result<ConvexPolygon<Q>, String> {
+fn cone<E: Num>(node: &[P2], r: usize) -> Result<ConvexPolygon<E>, String> {
     let gens: Vec<Vec3<Q>> = node
         .iter()
         .map(|p| -> Result<Vec3<Q>, String> { Ok([rat(p.x)?, rat(p.y)?, Q::int(-1)]) })
@@ -45,7 +47,7 @@ fn cone(node: &[P2], r: usize) -> Result<ConvexPolygon<Q>, String> {
     if idx.len() < 3 {
         return Err(format!("node {r}'s cone is degenerate after rounding"));
     }
-    Ok(ConvexPolygon::new(idx.into_iter().map(|i| gens[i].clone()).collect()))
+    Ok(ConvexPolygon::new(idx.into_iter().map(|i| gens[i].clone().map(|x| E::from_q(&x))).collect()))
 }
 
 /// The rounded covector of a representative, scaled to largest |component| 1.
@@ -59,10 +61,15 @@ fn rounded(b: &Vector3<f64>) -> Result<Vec3<Q>, String> {
 
 /// The exact nodes, with (G1) checked ((G2) is on the numerators, [`super::numerator`], or on
 /// b_r where a_r = c_r b_r, [`super::scale`]).
-pub fn nodes(body: &Polygon<Q>, g: &Graph, t: &Ties, reps: &[Vector3<f64>]) -> Result<Vec<Node>, String> {
-    let mut balanced = vec![[Q::int(0), Q::int(0), Q::int(0)]; g.nodes.len()];
+pub fn nodes<E: Num>(
+    body: &Polygon<E>,
+    g: &Graph,
+    t: &Ties,
+    reps: &[Vector3<f64>],
+) -> Result<Vec<Node<E>>, String> {
+    let mut balanced = vec![[E::zero(), E::zero(), E::zero()]; g.nodes.len()];
     for k in t.reps() {
-        balanced[k] = tie::balanced(body, g, t, k, rounded(&reps[k])?)?;
+        balanced[k] = tie::balanced(body, g, t, k, rounded(&reps[k])?.map(|x| E::from_q(&x)))?;
     }
     let mut out = Vec::with_capacity(g.nodes.len());
     for (r, node) in g.nodes.iter().enumerate() {
@@ -77,28 +84,28 @@ pub fn nodes(body: &Polygon<Q>, g: &Graph, t: &Ties, reps: &[Vector3<f64>]) -> R
 }
 
 /// m_{k,k+1}.
-pub fn rest(body: &Polygon<Q>, k: i64) -> Vec3<Q> {
-    body.rest_point(k, k + 1).unwrap_or_else(|| [Q::int(0), Q::int(0), Q::int(0)])
+pub fn rest<E: Num>(body: &Polygon<E>, k: i64) -> Vec3<E> {
+    body.rest_point(k, k + 1).unwrap_or_else(|| [E::zero(), E::zero(), E::zero()])
 }
 
 /// Whether x (nonzero) lies in K with v < 0.
-pub fn inside(k: &ConvexPolygon<Q>, x: &Vec3<Q>) -> bool {
+pub fn inside<E: Num>(k: &ConvexPolygon<E>, x: &Vec3<E>) -> bool {
     x[2].is_negative() && k.contains(x)
 }
 
 /// The exact edges: for each node r and step j with K_r ∩ C_j ≠ {0}, the float successor, or
 /// (where the float piece was degenerate) the first node that contains the exact images; every
 /// image of a vertex lies in K_s (else an error naming it).
-pub fn edges(body: &Polygon<Q>, g: &Graph, nodes: &[Node]) -> Result<Vec<Edge>, String> {
+pub fn edges<E: Num>(body: &Polygon<E>, g: &Graph, nodes: &[Node<E>]) -> Result<Vec<Edge<E>>, String> {
     let mut out = Vec::new();
     for (r, node) in nodes.iter().enumerate() {
         for j in 1..body.n() {
             let cov = body.next_contact_cone(j as i64);
-            let piece: Vec<Vec3<Q>> = cov.iter().fold(node.cone.vertices.clone(), |p, l| clip(&p, l));
+            let piece: Vec<Vec3<E>> = cov.iter().fold(node.cone.vertices.clone(), |p, l| clip(&p, l));
             if piece.iter().all(is_zero) {
                 continue;
             }
-            let images: Vec<Vec3<Q>> = piece.iter().map(|p| mat_vec(&body.step(j as i64), p)).collect();
+            let images: Vec<Vec3<E>> = piece.iter().map(|p| mat_vec(&body.step(j as i64), p)).collect();
             let fits = |s: usize| images.iter().all(|x| is_zero(x) || inside(&nodes[s].cone, x));
             let float = g.edges.iter().find(|e| e.from == r && e.step == j).map(|e| e.to);
             let to = float.filter(|&s| fits(s)).or_else(|| (0..nodes.len()).find(|&s| fits(s)));
@@ -114,7 +121,7 @@ pub fn edges(body: &Polygon<Q>, g: &Graph, nodes: &[Node]) -> Result<Vec<Edge>, 
 }
 
 /// (G4): I_0(−m_{k,k+1}) ∈ K_0 for every k.
-pub fn initial_inside(body: &Polygon<Q>, nodes: &[Node]) -> Result<(), String> {
+pub fn initial_inside<E: Num>(body: &Polygon<E>, nodes: &[Node<E>]) -> Result<(), String> {
     let i0 = body.impact(0);
     match body.all_down_generators().iter().position(|g| !inside(&nodes[0].cone, &mat_vec(&i0, g))) {
         Some(k) => Err(format!("(G4) fails exactly: I_0(-m_{{{k},{}}}) is outside node 0", k + 1)),

@@ -1,7 +1,8 @@
 //! A producer of time-to-rest certificates (issue 24 §1; docs/time-to-rest.md §5, Theorem 5.1;
-//! the file format docs/certificate-format.md §16) for a regular polygon (n = 3, 4, 6) at a
-//! point: the virtual-time graph and covectors searched in `f64` (`graph`, `covector`,
-//! `tie`), made exact (`exactify`), the scales and the bound computed exactly (`scale`,
+//! the file format docs/certificate-format.md §16) for a regular polygon at a point (exact in Q
+//! for n = 3, 4, 6, in Q(cos 2π/n) for the other n, where cones stay rational and the covectors,
+//! numerators and pieces are field elements): the virtual-time graph and covectors searched in
+//! `f64` (`graph`, `covector`, `tie`), made exact (`exactify`), the scales and the bound computed exactly (`scale`,
 //! `bound`), and the file's text accepted by the kernel on both backends before anything is
 //! written or reported. Untrusted: only the kernel's acceptance is a proof.
 
@@ -14,13 +15,39 @@ mod numerator;
 mod scale;
 mod tie;
 
-use crate::exact::{Q, QExt, Ring};
+use crate::exact::{Algebraic, CosField, Q, QExt, QField, Ring};
 use crate::model::float::FloatPolygon;
 use chatter_kernel::certificate::{Body, Claim, Coordinates, Encoding, Generator, Param};
+use chatter_kernel::check::is_irrational;
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::model::{PccExclusion, Polygon, pcc_quadratic};
-use chatter_kernel::rest::{FORMAT, Node, TimeToRest, VERSION};
+use chatter_kernel::rest::{FIELD_VERSION, FORMAT, Node, TimeToRest, VERSION};
 use chatter_kernel::verify::{Backend, Verdict, verify_rest_text_in};
+
+/// The producer's exact scalars: Q (n = 3, 4, 6) or Q(cos 2π/n) (the other n).
+pub trait Num: crate::exact::OrderedField {
+    /// The nearest float (for the untrusted linear programs).
+    fn f64(&self) -> f64 {
+        self.nearest_f64()
+    }
+    /// A rational >= the number (the number itself when it is rational).
+    fn upper(&self) -> Q;
+}
+
+impl Num for Q {
+    fn f64(&self) -> f64 {
+        self.to_f64()
+    }
+    fn upper(&self) -> Q {
+        self.clone()
+    }
+}
+
+impl Num for Algebraic<Q> {
+    fn upper(&self) -> Q {
+        self.enclose(&Q::new(1, 1 << 60)).1
+    }
+}
 
 /// The search's budgets (all finite: the producer always stops).
 #[derive(Clone, Debug)]
@@ -108,7 +135,7 @@ pub const PRODUCER: &str =
 
 /// The claim the kernel can accept: `CompleteChatterFromAllDown` where R4 excludes PCC, else
 /// `CcOrPccFromAllDown` (docs/certificate-format.md §16).
-fn claim(body: &Polygon<Q>) -> Claim {
+fn claim<E: Num>(body: &Polygon<E>) -> Claim {
     match pcc_quadratic(body).map(|q| q.exclusion()) {
         Ok(PccExclusion::Excluded) => Claim::CompleteChatterFromAllDown,
         _ => Claim::CcOrPccFromAllDown,
@@ -124,14 +151,33 @@ pub fn produce(
     backends: &[Backend],
 ) -> Result<Produced, NotProduced> {
     let failed = NotProduced::Failed;
-    let body = Polygon::new(n, kappa.clone(), gamma.clone()).map_err(|e| {
-        failed(format!(
-            "no exact model of n = {n} at this point ({e:?}): time-to-rest certificates take n = 3, 4, 6"
-        ))
-    })?;
     if !(gamma.is_positive() && gamma < &Q::int(1)) {
         return Err(failed("time-to-rest certificates need 0 < gamma < 1".into()));
     }
+    if !is_irrational(n) {
+        let body = Polygon::new(n, kappa.clone(), gamma.clone()).map_err(|e| {
+            failed(format!(
+                "no exact model of n = {n} at this point ({e:?}): time-to-rest certificates take 3 <= n <= 64"
+            ))
+        })?;
+        return search(&body, (kappa, gamma), cfg, backends);
+    }
+    let field: std::sync::Arc<CosField<Q>> = CosField::new(n)
+        .ok_or_else(|| failed(format!("n = {n}: regular polygons have 3 to 64 contacts here")))?;
+    let (k, g) = (Algebraic::rational(kappa.clone()), Algebraic::rational(gamma.clone()));
+    let body = Polygon::with_cosine(n, field.generator(), k, g).map_err(|e| failed(format!("{e:?}")))?;
+    search(&body, (kappa, gamma), cfg, backends)
+}
+
+/// Every graph of the configuration, in turn, until the kernel accepts one.
+fn search<E: Num>(
+    body: &Polygon<E>,
+    (kappa, gamma): (&Q, &Q),
+    cfg: &Config,
+    backends: &[Backend],
+) -> Result<Produced, NotProduced> {
+    let failed = NotProduced::Failed;
+    let n = body.n() as u64;
     let fbody = FloatPolygon::new(n, kappa.to_f64(), gamma.to_f64()).map_err(|e| failed(format!("{e:?}")))?;
     let Some(&first) = cfg.pads.first() else {
         return Err(failed("no pad to try: the configuration's list of pads is empty".into()));
@@ -148,7 +194,7 @@ pub fn produce(
     };
     let mut why = Vec::new();
     for ((pad, merge), g) in graphs {
-        match attempt((&body, &fbody), (kappa, gamma), cfg, g, backends) {
+        match attempt((body, &fbody), (kappa, gamma), cfg, g, backends) {
             Err(NotProduced::Failed(m)) => why.push((
                 (pad, merge),
                 match merge {
@@ -170,8 +216,8 @@ pub fn produce(
 
 /// One graph (nodes padded by a pad, images perhaps merged into nodes: [`graph::build`]),
 /// searched, made exact and checked.
-fn attempt(
-    (body, fbody): (&Polygon<Q>, &FloatPolygon),
+fn attempt<E: Num>(
+    (body, fbody): (&Polygon<E>, &FloatPolygon),
     (kappa, gamma): (&Q, &Q),
     cfg: &Config,
     g: graph::Graph,
@@ -205,16 +251,16 @@ fn attempt(
 }
 
 /// Exact nodes and edges, numerators and B.
-type Finished = (Vec<exactify::Node>, Vec<exactify::Edge>, Vec<[Q; 3]>, Q);
+type Finished<E> = (Vec<exactify::Node<E>>, Vec<exactify::Edge<E>>, Vec<[E; 3]>, Q);
 
 /// Where the numerators' program fails for the search's covectors: covectors and numerators by
 /// alternating linear programs ([`alternate`]), then made exact and checked as before.
-fn jointly(
-    body: &Polygon<Q>,
+fn jointly<E: Num>(
+    body: &Polygon<E>,
     (g, ties, maps): (&graph::Graph, &tie::Ties, &covector::Maps),
-    (nodes, edges): (&[exactify::Node], &[exactify::Edge]),
+    (nodes, edges): (&[exactify::Node<E>], &[exactify::Edge<E>]),
     pace: bool,
-) -> Result<Finished, String> {
+) -> Result<Finished<E>, String> {
     let kicks = (0..nodes.len())
         .map(|k| match ties.rep[k] == k {
             true => maps.tied_kicks(g, ties, k).iter().map(|v| [v.x, v.y, v.z]).collect(),
@@ -222,7 +268,7 @@ fn jointly(
         })
         .collect();
     let data = alternate::Data::new(body, (nodes, edges), ties, kicks)?;
-    let start = nodes.iter().map(|x| x.weight.clone().map(|w| w.to_f64())).collect();
+    let start = nodes.iter().map(|x| x.weight.clone().map(|w| w.f64())).collect();
     let better = alternate::improve(&data, start, pace)
         .ok_or("alternating the covectors' and the numerators' linear programs (at most 30 rounds) found no covectors whose numerators keep (G3)")?;
     let reps: Vec<nalgebra::Vector3<f64>> =
@@ -236,12 +282,12 @@ fn jointly(
 
 /// The numerators a_r and B: the least B of the linear program ([`numerator`]), else
 /// a_r = c_r b_r with the least scales ([`scale`]); an error says why both failed.
-fn numerators(
-    body: &Polygon<Q>,
-    (nodes, edges): (&[exactify::Node], &[exactify::Edge]),
+fn numerators<E: Num>(
+    body: &Polygon<E>,
+    (nodes, edges): (&[exactify::Node<E>], &[exactify::Edge<E>]),
     ties: &tie::Ties,
     linear_program: bool,
-) -> Result<(Vec<[Q; 3]>, Q), String> {
+) -> Result<(Vec<[E; 3]>, Q), String> {
     let lp = match linear_program.then(|| numerator::numerators(body, nodes, edges, ties)) {
         Some(Ok(x)) => return Ok((x.a, x.bound)),
         Some(Err(e)) => format!("; the numerators' linear program: {e}"),
@@ -251,19 +297,23 @@ fn numerators(
     let cons = scale::constraints(body, nodes, edges).map_err(also)?;
     let c = scale::scales(nodes.len(), &cons).map_err(also)?;
     let b = bound::bound(body, &nodes[0], &c[0]).map_err(also)?;
-    Ok((nodes.iter().zip(&c).map(|(x, c)| x.weight.clone().map(|w| &w * c)).collect(), b))
+    let scaled = |(x, c): (&exactify::Node<E>, &Q)| x.weight.clone().map(|w| w.times(&E::from_q(c)));
+    Ok((nodes.iter().zip(&c).map(scaled).collect(), b))
 }
 
+/// The exact graph: nodes, edges and numerators.
+type Graph<'a, E> = (&'a [exactify::Node<E>], &'a [exactify::Edge<E>], &'a [[E; 3]]);
+
 /// The certificate's fields.
-fn certificate(
+fn certificate<E: Num>(
     n: u64,
     (kappa, gamma): (&Q, &Q),
     claim: Claim,
     bound: &Q,
-    (nodes, edges, a): (&[exactify::Node], &[exactify::Edge], &[[Q; 3]]),
+    (nodes, edges, a): Graph<'_, E>,
 ) -> TimeToRest {
-    let text = |v: &[Q; 3]| Generator(v.iter().map(ToString::to_string).collect());
-    let node = |(r, x): (usize, &exactify::Node)| Node {
+    let text = |v: &[E; 3]| Generator(v.iter().map(ToString::to_string).collect());
+    let node = |(r, x): (usize, &exactify::Node<E>)| Node {
         cone: x.cone.vertices.iter().map(text).collect(),
         weight: text(&x.weight),
         scale: String::new(),
@@ -272,7 +322,7 @@ fn certificate(
     };
     TimeToRest {
         format: FORMAT.into(),
-        version: VERSION,
+        version: if is_irrational(n) { FIELD_VERSION } else { VERSION },
         body: Body::RegularPolygon {
             n,
             kappa: Param::Point(kappa.to_string()),

@@ -6,9 +6,10 @@
 //! every condition is then checked exactly. Version 1's a_r = c_r b_r is one feasible point, so
 //! the program's B is never worse than the scales'. Untrusted: the kernel checks the file.
 
+use super::Num;
 use super::exactify::{Edge, Node, rest};
 use super::tie::{self, Ties};
-use crate::exact::{Q, QExt, Ring};
+use crate::exact::{Q, QExt};
 use chatter_kernel::model::Polygon;
 use chatter_kernel::model::linalg::{Vec3, dot, is_zero, mat_vec, neg};
 use microlp::{ComparisonOp, OptimizationDirection, Problem, SolveOutcome, Variable};
@@ -24,19 +25,19 @@ const MARGINS: [f64; 2] = [1e-7, 0.0];
 const ZERO_ROW: f64 = 1e-11;
 
 /// The numerators a_r (exact) and the bound B of (G5), rounded up.
-pub struct Numerators {
-    pub a: Vec<Vec3<Q>>,
+pub struct Numerators<E> {
+    pub a: Vec<Vec3<E>>,
     pub bound: Q,
 }
 
 /// a_r = T_r a_rep: T_r in `f64` as the images of the unit covectors (columns).
-pub(super) fn transports(body: &Polygon<Q>, t: &Ties) -> Result<Vec<[[f64; 3]; 3]>, String> {
-    let unit = |i: usize| -> Vec3<Q> { std::array::from_fn(|c| Q::int(i64::from(c == i))) };
+pub(super) fn transports<E: Num>(body: &Polygon<E>, t: &Ties) -> Result<Vec<[[f64; 3]; 3]>, String> {
+    let unit = |i: usize| -> Vec3<E> { std::array::from_fn(|c| E::from_i64(i64::from(c == i))) };
     (0..t.rep.len())
         .map(|r| {
-            let cols: Vec<Vec3<Q>> =
+            let cols: Vec<Vec3<E>> =
                 (0..3).map(|i| tie::transported(body, &t.path[r], unit(i))).collect::<Result<_, _>>()?;
-            Ok(std::array::from_fn(|row| std::array::from_fn(|col| cols[col][row].to_f64())))
+            Ok(std::array::from_fn(|row| std::array::from_fn(|col| cols[col][row].f64())))
         })
         .collect()
 }
@@ -45,8 +46,8 @@ pub(super) fn transports(body: &Polygon<Q>, t: &Ties) -> Result<Vec<[[f64; 3]; 3
 type Row = Vec<(usize, [f64; 3])>;
 
 /// The form x ↦ a_r·x as a row on a_rep(r): T_r^T x.
-fn form(t: &Ties, tr: &[[[f64; 3]; 3]], r: usize, x: &Vec3<Q>) -> Row {
-    let xf: [f64; 3] = std::array::from_fn(|i| x[i].to_f64());
+fn form<E: Num>(t: &Ties, tr: &[[[f64; 3]; 3]], r: usize, x: &Vec3<E>) -> Row {
+    let xf: [f64; 3] = std::array::from_fn(|i| x[i].f64());
     let m = &tr[r];
     vec![(t.rep[r], std::array::from_fn(|c| (0..3).map(|i| m[i][c] * xf[i]).sum()))]
 }
@@ -67,12 +68,12 @@ impl Rows {
 }
 
 /// (F): a_r·g ≤ b_r·g on every generator g; (G2): a_r·m ≥ 0.
-fn node_rows(body: &Polygon<Q>, nodes: &[Node], t: &Ties, tr: &[[[f64; 3]; 3]], rows: &mut Rows) {
+fn node_rows<E: Num>(body: &Polygon<E>, nodes: &[Node<E>], t: &Ties, tr: &[[[f64; 3]; 3]], rows: &mut Rows) {
     for (r, node) in nodes.iter().enumerate() {
         for (i, g) in node.cone.vertices.iter().enumerate() {
             rows.push(
                 form(t, tr, r, g),
-                dot(&node.weight, g).to_f64(),
+                dot(&node.weight, g).f64(),
                 format!("(F) at node {r}, generator {i}"),
             );
         }
@@ -83,10 +84,10 @@ fn node_rows(body: &Polygon<Q>, nodes: &[Node], t: &Ties, tr: &[[[f64; 3]; 3]], 
 }
 
 /// (G3): (a_s·R_j q)(−b_r·p) − (a_r·q)(−b_s·S_j p) ≤ 0 at every vertex p and q.
-fn edge_rows(
-    body: &Polygon<Q>,
-    nodes: &[Node],
-    edges: &[Edge],
+fn edge_rows<E: Num>(
+    body: &Polygon<E>,
+    nodes: &[Node<E>],
+    edges: &[Edge<E>],
     t: &Ties,
     tr: &[[[f64; 3]; 3]],
     rows: &mut Rows,
@@ -94,8 +95,8 @@ fn edge_rows(
     for e in edges {
         let (j, rel, step) = (e.step as i64, body.relabel(e.step as i64), body.step(e.step as i64));
         for (i, p) in e.piece.iter().enumerate().filter(|(_, p)| !is_zero(p)) {
-            let dr = dot(&nodes[e.from].weight, &neg(p)).to_f64();
-            let ds = dot(&nodes[e.to].weight, &neg(&mat_vec(&step, p))).to_f64();
+            let dr = dot(&nodes[e.from].weight, &neg(p)).f64();
+            let ds = dot(&nodes[e.to].weight, &neg(&mat_vec(&step, p))).f64();
             for q in [rest(body, j - 1), rest(body, j)] {
                 let after = scaled(form(t, tr, e.to, &mat_vec(&rel, &q)), dr);
                 let before = scaled(form(t, tr, e.from, &q), -ds);
@@ -164,17 +165,19 @@ fn solve(
 }
 
 /// The numerators and B, checked exactly ((F), (G2), (G3), (G5)); `Err` names what failed.
-pub fn numerators(body: &Polygon<Q>, nodes: &[Node], edges: &[Edge], t: &Ties) -> Result<Numerators, String> {
+pub fn numerators<E: Num>(
+    body: &Polygon<E>,
+    nodes: &[Node<E>],
+    edges: &[Edge<E>],
+    t: &Ties,
+) -> Result<Numerators<E>, String> {
     let tr = transports(body, t)?;
     let mut rows = Rows { rows: Vec::new() };
     node_rows(body, nodes, t, &tr, &mut rows);
     edge_rows(body, nodes, edges, t, &tr, &mut rows);
     let i0 = body.impact(0);
-    let depth: Vec<f64> = body
-        .all_down_generators()
-        .iter()
-        .map(|g| -dot(&nodes[0].weight, &mat_vec(&i0, g)).to_f64())
-        .collect();
+    let depth: Vec<f64> =
+        body.all_down_generators().iter().map(|g| -dot(&nodes[0].weight, &mat_vec(&i0, g)).f64()).collect();
     let heights: Vec<Row> = [rest(body, 0), rest(body, -1)].iter().map(|m| form(t, &tr, 0, m)).collect();
     let mut why = Vec::new();
     for margin in MARGINS {
@@ -189,19 +192,19 @@ pub fn numerators(body: &Polygon<Q>, nodes: &[Node], edges: &[Edge], t: &Ties) -
 }
 
 /// The rounded numerators transported exactly, every condition checked exactly, B computed.
-fn exact(
-    body: &Polygon<Q>,
-    nodes: &[Node],
-    edges: &[Edge],
+fn exact<E: Num>(
+    body: &Polygon<E>,
+    nodes: &[Node<E>],
+    edges: &[Edge<E>],
     t: &Ties,
     sol: &[[f64; 3]],
-) -> Result<Numerators, String> {
+) -> Result<Numerators<E>, String> {
     let round = |x: f64| Q::from_f64_exact(x).map(|q| q.ceil_dyadic(BITS)).ok_or("a numerator is not finite");
     let mut a = Vec::with_capacity(nodes.len());
     for r in 0..nodes.len() {
         let k = t.rep[r];
         let ak: Vec3<Q> = [round(sol[k][0])?, round(sol[k][1])?, round(sol[k][2])?];
-        a.push(tie::transported(body, &t.path[r], ak)?);
+        a.push(tie::transported(body, &t.path[r], ak.map(|x| E::from_q(&x)))?);
     }
     check(body, nodes, edges, &a)?;
     let bound = bound(body, &nodes[0], &a[0])?;
@@ -209,7 +212,12 @@ fn exact(
 }
 
 /// (F), (G2) and (G3) exactly.
-fn check(body: &Polygon<Q>, nodes: &[Node], edges: &[Edge], a: &[Vec3<Q>]) -> Result<(), String> {
+fn check<E: Num>(
+    body: &Polygon<E>,
+    nodes: &[Node<E>],
+    edges: &[Edge<E>],
+    a: &[Vec3<E>],
+) -> Result<(), String> {
     for (r, node) in nodes.iter().enumerate() {
         if let Some(i) = node.cone.vertices.iter().position(|g| dot(&a[r], g) > dot(&node.weight, g)) {
             return Err(format!("(F) fails exactly at node {r}, generator {i}"));
@@ -224,14 +232,14 @@ fn check(body: &Polygon<Q>, nodes: &[Node], edges: &[Edge], a: &[Vec3<Q>]) -> Re
             let dr = dot(&nodes[e.from].weight, &neg(p));
             let ds = dot(&nodes[e.to].weight, &neg(&mat_vec(&step, p)));
             for q in [rest(body, j - 1), rest(body, j)] {
-                let l = &dot(&a[e.to], &mat_vec(&rel, &q)) * &dr;
-                let rr = &dot(&a[e.from], &q) * &ds;
+                let l = dot(&a[e.to], &mat_vec(&rel, &q)).times(&dr);
+                let rr = dot(&a[e.from], &q).times(&ds);
                 if l > rr {
                     return Err(format!(
                         "(G3) fails exactly at node {}, step {}, vertex {i} (by {:.3e})",
                         e.from,
                         e.step,
-                        (&l - &rr).to_f64()
+                        l.minus(&rr).f64()
                     ));
                 }
             }
@@ -241,20 +249,19 @@ fn check(body: &Polygon<Q>, nodes: &[Node], edges: &[Edge], a: &[Vec3<Q>]) -> Re
 }
 
 /// The least B of (G5) for a_0, rounded up to a multiple of 2^-40.
-fn bound(body: &Polygon<Q>, entry: &Node, a0: &Vec3<Q>) -> Result<Q, String> {
+fn bound<E: Num>(body: &Polygon<E>, entry: &Node<E>, a0: &Vec3<E>) -> Result<Q, String> {
     let i0 = body.impact(0);
-    let height =
-        [rest(body, 0), rest(body, -1)].iter().map(|m| dot(a0, m)).max().unwrap_or_else(|| Q::int(0));
-    let mut need = Q::int(0);
+    let height = [rest(body, 0), rest(body, -1)].iter().map(|m| dot(a0, m)).max().unwrap_or_else(E::zero);
+    let mut need = E::zero();
     for (k, g) in body.all_down_generators().iter().enumerate() {
         let d = dot(&entry.weight, &mat_vec(&i0, g)).negated();
         if !d.is_positive() {
             return Err(format!("(G5): -b_0·I_0(-m_{{{k},{}}}) is not positive", k + 1));
         }
-        let b = &height / &d;
+        let b = height.over(&d).unwrap_or_else(E::zero);
         if b > need {
             need = b;
         }
     }
-    Ok(need.ceil_dyadic(BITS))
+    Ok(need.upper().ceil_dyadic(BITS))
 }

@@ -5,8 +5,9 @@
 //! at all otherwise. The least c ≥ 1 meeting all of them is a longest path (Bellman-Ford); it
 //! fails exactly when a cycle's product of ratios exceeds 1. Untrusted: the kernel checks.
 
+use super::Num;
 use super::exactify::{Edge, Node, rest};
-use crate::exact::{Q, QExt, Ring};
+use crate::exact::{Q, QExt};
 use chatter_kernel::model::Polygon;
 use chatter_kernel::model::linalg::{Vec3, dot, is_zero, mat_vec, neg};
 use std::collections::BTreeMap;
@@ -20,7 +21,11 @@ pub struct Constraint {
 }
 
 /// The conditions of (G3) on the scales, the largest factor per ordered pair (x, y).
-pub fn constraints(body: &Polygon<Q>, nodes: &[Node], edges: &[Edge]) -> Result<Vec<Constraint>, String> {
+pub fn constraints<E: Num>(
+    body: &Polygon<E>,
+    nodes: &[Node<E>],
+    edges: &[Edge<E>],
+) -> Result<Vec<Constraint>, String> {
     for (r, node) in nodes.iter().enumerate() {
         if [rest(body, 0), rest(body, -1)].iter().any(|m| dot(&node.weight, m).is_negative()) {
             return Err(format!("(G2) fails exactly at node {r} with a_r = c_r b_r: b_r·m < 0"));
@@ -42,20 +47,27 @@ pub fn constraints(body: &Polygon<Q>, nodes: &[Node], edges: &[Edge]) -> Result<
     Ok(by_pair.into_values().collect())
 }
 
-/// The conditions at one vertex p of K_r ∩ C_j (both q).
-fn vertex(body: &Polygon<Q>, nodes: &[Node], e: &Edge, p: &Vec3<Q>) -> Result<Vec<Constraint>, String> {
+/// The conditions at one vertex p of K_r ∩ C_j (both q), each factor a rational upper bound on
+/// the ratio (the ratio itself over Q).
+fn vertex<E: Num>(
+    body: &Polygon<E>,
+    nodes: &[Node<E>],
+    e: &Edge<E>,
+    p: &Vec3<E>,
+) -> Result<Vec<Constraint>, String> {
     let (br, bs) = (&nodes[e.from].weight, &nodes[e.to].weight);
     let j = e.step as i64;
     let (sp, rel) = (mat_vec(&body.step(j), p), body.relabel(j));
     let (dr, ds) = (dot(br, &neg(p)), dot(bs, &neg(&sp)));
     let mut out = Vec::new();
     for q in [rest(body, j - 1), rest(body, j)] {
-        let l = &dot(bs, &mat_vec(&rel, &q)) * &dr;
-        let r = &dot(br, &q) * &ds;
+        let l = dot(bs, &mat_vec(&rel, &q)).times(&dr);
+        let r = dot(br, &q).times(&ds);
+        let ratio = |a: &E, b: &E| a.over(b).map_or_else(|| Q::int(0), |x| x.upper());
         let (x, y, factor) = match (l.is_positive(), r.is_positive(), l.is_negative(), r.is_negative()) {
             (false, _, _, false) => continue,
-            (true, true, _, _) => (e.from, e.to, &l / &r),
-            (_, _, true, true) => (e.to, e.from, &r / &l),
+            (true, true, _, _) => (e.from, e.to, ratio(&l, &r)),
+            (_, _, true, true) => (e.to, e.from, ratio(&r, &l)),
             _ => return Err(format!("no scales satisfy it (L = {l}, R = {r})")),
         };
         out.push(Constraint { x, y, factor });

@@ -5,8 +5,9 @@
 //! vertex only if b_r·d_j = 0 (the two edges ask for opposite signs, the pattern of PCC with its
 //! eigenvalue 1 of S_{n−j} S_j): the exact covectors are balanced to meet it exactly. Untrusted.
 
+use super::Num;
 use super::graph::{Edge, Graph};
-use crate::exact::{Q, Ring};
+use crate::exact::Ring;
 use chatter_kernel::model::Polygon;
 use chatter_kernel::model::linalg::{Mat3, Vec3, dot, mat_vec};
 
@@ -69,39 +70,46 @@ pub fn along_tree(t: &Ties, n: usize, e: &Edge) -> bool {
 }
 
 /// The 3 × 3 inverse by the adjugate (`None` if singular).
-fn inverse(m: &Mat3<Q>) -> Option<Mat3<Q>> {
+fn inverse<E: Num>(m: &Mat3<E>) -> Option<Mat3<E>> {
     let c = |i: usize, j: usize| {
         let (a, b) = ([(i + 1) % 3, (i + 2) % 3], [(j + 1) % 3, (j + 2) % 3]);
-        &(&m[a[0]][b[0]] * &m[a[1]][b[1]]) - &(&m[a[0]][b[1]] * &m[a[1]][b[0]])
+        m[a[0]][b[0]].times(&m[a[1]][b[1]]).minus(&m[a[0]][b[1]].times(&m[a[1]][b[0]]))
     };
-    let det = (0..3).fold(Q::int(0), |s, j| &s + &(&m[0][j] * &c(0, j)));
-    (!det.is_zero()).then(|| std::array::from_fn(|i| std::array::from_fn(|j| &c(j, i) / &det)))
+    let det = (0..3).fold(E::zero(), |s, j| s.plus(&m[0][j].times(&c(0, j))));
+    let entry = |i: usize, j: usize| c(j, i).over(&det).unwrap_or_else(E::zero);
+    (!det.is_zero()).then(|| std::array::from_fn(|i| std::array::from_fn(|j| entry(i, j))))
 }
 
-fn relabel_inverse(body: &Polygon<Q>, j: usize) -> Result<Mat3<Q>, String> {
+fn relabel_inverse<E: Num>(body: &Polygon<E>, j: usize) -> Result<Mat3<E>, String> {
     inverse(&body.relabel(j as i64)).ok_or_else(|| "a relabelling is singular".to_string())
 }
 
 /// b transported along a tie path, exactly: b R_{j_1}^{-1} R_{j_2}^{-1} ... as a covector.
-pub fn transported(body: &Polygon<Q>, path: &[usize], b: Vec3<Q>) -> Result<Vec3<Q>, String> {
-    path.iter().try_fold(b, |b, &j| -> Result<Vec3<Q>, String> {
+pub fn transported<E: Num>(body: &Polygon<E>, path: &[usize], b: Vec3<E>) -> Result<Vec3<E>, String> {
+    path.iter().try_fold(b, |b, &j| -> Result<Vec3<E>, String> {
         let inv = relabel_inverse(body, j)?;
-        Ok(std::array::from_fn(|c| (0..3).fold(Q::int(0), |s, r| &s + &(&b[r] * &inv[r][c]))))
+        Ok(std::array::from_fn(|c| (0..3).fold(E::zero(), |s, r| s.plus(&b[r].times(&inv[r][c])))))
     })
 }
 
 /// The vector a with b_rep·a = b_r·d_j for the tied edge r --j--> (the kick direction d_j of
 /// an impact at contact j in r's frame, carried back along r's tie path).
-fn kick_at_rep(body: &Polygon<Q>, path: &[usize], j: usize) -> Result<Vec3<Q>, String> {
+fn kick_at_rep<E: Num>(body: &Polygon<E>, path: &[usize], j: usize) -> Result<Vec3<E>, String> {
     let d = body.impact_direction(j as i64);
     path.iter().rev().try_fold(d, |d, &i| Ok(mat_vec(&relabel_inverse(body, i)?, &d)))
 }
 
 /// b minus its exact orthogonal projection on the span of the tied edges' kick directions, so
 /// that b_r·d_j = 0 exactly on every tied edge of the component of `k`.
-pub fn balanced(body: &Polygon<Q>, g: &Graph, t: &Ties, k: usize, b: Vec3<Q>) -> Result<Vec3<Q>, String> {
+pub fn balanced<E: Num>(
+    body: &Polygon<E>,
+    g: &Graph,
+    t: &Ties,
+    k: usize,
+    b: Vec3<E>,
+) -> Result<Vec3<E>, String> {
     let tied = |e: &&Edge| t.rep[e.from] == k && along_tree(t, body.n(), e);
-    let mut basis: Vec<Vec3<Q>> = Vec::new();
+    let mut basis: Vec<Vec3<E>> = Vec::new();
     for e in g.edges.iter().filter(tied) {
         let mut a = kick_at_rep(body, &t.path[e.from], e.step)?;
         for u in &basis {
@@ -119,7 +127,7 @@ pub fn balanced(body: &Polygon<Q>, g: &Graph, t: &Ties, k: usize, b: Vec3<Q>) ->
 }
 
 /// x minus its component along u (u ≠ 0), exactly.
-fn minus_along(x: &Vec3<Q>, u: &Vec3<Q>) -> Vec3<Q> {
-    let f = &dot(x, u) / &dot(u, u);
-    std::array::from_fn(|i| &x[i] - &(&f * &u[i]))
+fn minus_along<E: Num>(x: &Vec3<E>, u: &Vec3<E>) -> Vec3<E> {
+    let f = dot(x, u).over(&dot(u, u)).unwrap_or_else(E::zero);
+    std::array::from_fn(|i| x[i].minus(&f.times(&u[i])))
 }

@@ -1,7 +1,8 @@
 //! The schema of time-to-rest certificates (docs/certificate-format.md §16): a regular polygon at
 //! a point, a claim about all-down drops, a bound B and a virtual-time graph (docs/time-to-rest.md
-//! §5). Format `"chatter-time-to-rest"`, versions 1 (a scale c_r per node) and 2 (a numerator
-//! a_r per node). The numbers stay text here.
+//! §5). Format `"chatter-time-to-rest"`, versions 1 (a scale c_r per node), 2 (a numerator
+//! a_r per node) and 3 (version 2, also about a body with irrational cos 2π/n, whose numbers are
+//! elements of Q(cos 2π/n)). The numbers stay text here.
 
 use crate::syntax::cone::{Body, Claim, Coordinates, Generator};
 use crate::syntax::{Kind, Schema};
@@ -9,7 +10,8 @@ use serde::Deserialize;
 
 /// Value of the `format` field.
 pub const FORMAT: &str = "chatter-time-to-rest";
-/// The newest version this build reads (and the tool writes); version 1 is read too.
+/// The version the tool writes for n = 3, 4, 6; version 1 is read too, and version 3
+/// (`rules::rest::FIELD_VERSION`) for every n.
 pub const VERSION: u64 = 2;
 
 /// A time-to-rest certificate.
@@ -18,7 +20,7 @@ pub const VERSION: u64 = 2;
 pub struct TimeToRest {
     /// Always [`FORMAT`].
     pub format: String,
-    /// 1 or 2 ([`VERSION`]).
+    /// 1, 2 ([`VERSION`]) or 3.
     pub version: u64,
     /// The falling body, at a point.
     pub body: Body,
