@@ -89,8 +89,10 @@ def test_exact_simulation_in_a_number_field_agrees_with_f64():
     assert e["arithmetic"] == "exact" and f["arithmetic"] == "f64"
     # The exact run's verdict is proved (or undecided); f64's is evidence (issue 22).
     assert e["evidence"]["outcome"] == f["outcome"] and f["proved"] is False and f["basis"] == "evidence"
-    # Here the state enters a certified cone, then an orbit certificate's set: proved CC (issue 24).
-    assert e["outcome"] == "CC" and f["outcome"] == "CC" and e["proved"] and e["entered"]["kind"] == "orbit"
+    # Here a time-to-rest certificate in Q(cos 2 pi/5), made on the fly, proves the drop CC at its
+    # first impact, with a bound on the time to rest (issue 24; an orbit set did before).
+    assert e["outcome"] == "CC" and f["outcome"] == "CC" and e["proved"]
+    assert e["entered"]["kind"] == "time-to-rest" and e["entered"]["impact"] == 1
     # The exact run stops once a proof is found, so its impacts are a prefix of the f64 run's.
     n = len(e["sequence"])
     assert n >= 1 and e["sequence"] == f["sequence"][:n]

@@ -94,7 +94,8 @@ pub struct CertifyArgs {
     /// cos(2 pi/n) is irrational, whose covectors and numerators are elements of Q(cos 2 pi/n))
     /// and write it here if the kernel accepts it on both backends; it bounds the time until every
     /// all-down drop's impacts accumulate by B h/|v| (`time_to_rest_bound`). Regular polygons,
-    /// 3 <= n <= 64, at a point with rational kappa and gamma only. Three graphs are tried in turn (nodes padded by 10^-3, 10^-4, 10^-5), then
+    /// 3 <= n <= 64, at a point with rational kappa and gamma, or, for n = 3, 4, 6, on a box of
+    /// them (one graph and one B for the whole box, version 3). Three graphs are tried in turn (nodes padded by 10^-3, 10^-4, 10^-5), then
     /// nine that merge an image no node holds into the node it enlarges least (area factors
     /// from 1.05 to 2.5; pad 10^-3); each search stops at 200 nodes and 12 rounds of the covector
     /// search (40 x 20 directions each);
@@ -180,8 +181,9 @@ fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
     req.finder.max_iterations = a.max_iterations;
     req.finder.max_vertices = a.max_vertices;
     req.backends = env.backends;
-    if a.time_to_rest.is_some() && !(n >= 3 && req.upper.is_none() && req.kappa_field.is_none()) {
-        return Err("--time-to-rest: time-to-rest certificates take a regular polygon (n >= 3) at a point (rational kappa and gamma)".into());
+    let region = req.upper.is_none() || matches!(n, 3 | 4 | 6);
+    if a.time_to_rest.is_some() && !(n >= 3 && region && req.kappa_field.is_none()) {
+        return Err("--time-to-rest: time-to-rest certificates take a regular polygon (n >= 3) with rational kappa and gamma, at a point or, for n = 3, 4, 6, on a box".into());
     }
     Ok(Validated { req, output: a.output, rest: a.time_to_rest, json: a.json, timings: a.timings })
 }
@@ -288,9 +290,11 @@ pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
     }
 }
 
-/// The time-to-rest producer at the request's point (docs/time-to-rest.md §5).
+/// The time-to-rest producer at the request's point or on its box (docs/time-to-rest.md §5).
 fn rest(req: &Request) -> Result<Produced, NotProduced> {
-    virtual_time::produce(req.n, &req.kappa, &req.gamma, &virtual_time::Config::default(), &req.backends)
+    let (k1, g1) = req.upper.clone().unwrap_or((req.kappa.clone(), req.gamma.clone()));
+    let region = virtual_time::Region { kappa: [req.kappa.clone(), k1], gamma: [req.gamma.clone(), g1] };
+    virtual_time::produce_on(req.n, &region, &virtual_time::Config::default(), &req.backends)
 }
 
 /// The text output's lines about the time-to-rest certificate.

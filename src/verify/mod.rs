@@ -222,8 +222,11 @@ impl FileVerdict {
             );
         }
         if let (Some(nodes), Some(b)) = (self.rest_nodes, &self.time_to_rest_bound) {
+            let region = self.region.as_ref().map_or(String::new(), |[k, g]| {
+                format!(", for every kappa in [{}, {}] and gamma in [{}, {}]", k[0], k[1], g[0], g[1])
+            });
             return format!(
-                "{}: OK ({}, n = {}: every all-down drop's impacts accumulate within T <= {b} h/|v|; a virtual time on {nodes} nodes, rules G1-G5, F)",
+                "{}: OK ({}, n = {}{region}: every all-down drop's impacts accumulate within T <= {b} h/|v|; a virtual time on {nodes} nodes, rules G1-G5, F)",
                 self.path,
                 self.claim.unwrap_or("?"),
                 self.n.unwrap_or(0)
@@ -366,6 +369,7 @@ pub fn rest_verdict_of(path: &Path, verdict: Verdict<chatter_kernel::rest::Reste
             (v.claim, v.n) = (Some(a.claim.name()), Some(a.n));
             v.proves = Some(crate::claims::proves_virtual_time(a.claim.name()));
             (v.time_to_rest_bound, v.rest_nodes) = (Some(a.bound), Some(a.nodes));
+            v.region = a.region;
             v
         }
         Verdict::Rejected(r) => verdict_of(path, Verdict::Rejected(r)),

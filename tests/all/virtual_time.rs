@@ -312,3 +312,51 @@ fn certify_writes_a_number_field_time_to_rest_file_and_refuses_the_rod() {
     assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(!rod.exists());
 }
+
+/// Over a box of γ (the square, κ 1/6, γ in [1/100, 1/50]): one graph and one B, version 3,
+/// accepted on both backends with its region; 1000 simulated drops at each end and in the
+/// middle follow the graph with the virtual time falling and T|v|/h <= B (the corner argument of
+/// docs/kernel-soundness.md §10, checked by brute force on drops); an interval of κ at the same
+/// point fails cleanly (its tied edges leave no covector).
+#[test]
+fn a_gamma_interval_graph_is_accepted_and_bounds_drops_across_the_interval() {
+    use chatter::certify::virtual_time::{Region, produce_on};
+    let region = Region { kappa: [q("1/6"), q("1/6")], gamma: [q("1/100"), q("1/50")] };
+    let p = produce_on(4, &region, &Config::default(), &BOTH).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(p.cert.version, chatter_kernel::rest::FIELD_VERSION);
+    for gamma in [1.0 / 100.0, 3.0 / 200.0, 1.0 / 50.0] {
+        let plate = Plate { n: 4, kappa: 1.0 / 6.0, gamma };
+        let (bound, largest) = accepted_and_bounding(&p, &plate);
+        assert!(bound < 10.0 * largest, "gamma {gamma}: B = {bound}, largest T|v|/h {largest}");
+    }
+    let Verdict::Accepted(a) = verify_rest_text_in(&p.text, Encoding::Ron, ParseLimits::default(), &BOTH)
+    else {
+        panic!("rejected")
+    };
+    assert_eq!(a.region.map(|r| r[1].clone()), Some(["1/100".to_string(), "1/50".to_string()]));
+    let kappas = Region { kappa: [q("1/7"), q("1/6")], gamma: [q("1/100"), q("1/50")] };
+    let e =
+        produce_on(4, &kappas, &Config::default(), &BOTH).err().expect("no graph over an interval of kappa");
+    assert!(e.to_string().contains("leave no covector"), "{e}");
+}
+
+/// `certify --gamma a:b --time-to-rest` writes a version-3 box file that `verify` accepts for
+/// every γ of the interval; a box at n = 5 is refused as usage (exit 2).
+#[test]
+fn certify_writes_a_box_time_to_rest_file_and_refuses_a_box_in_a_number_field() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("box.ron");
+    let args = ["certify", "--n", "4", "--kappa", "1/6", "--gamma", "1/100:1/50", "--time-to-rest"];
+    let o = chatter(&[&args[..], &[file.to_str().unwrap()]].concat(), &root());
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stdout));
+    let v = chatter(&["verify", file.to_str().unwrap()], &root());
+    let out = String::from_utf8_lossy(&v.stdout);
+    assert_eq!(v.status.code(), Some(0), "{out}");
+    assert!(
+        out.contains("for every kappa in [1/6, 1/6] and gamma in [1/100, 1/50]: every all-down drop"),
+        "{out}"
+    );
+    let args = ["certify", "--n", "5", "--kappa", "1/20", "--gamma", "1/20:1/10", "--time-to-rest"];
+    let o = chatter(&[&args[..], &[dir.path().join("five.ron").to_str().unwrap()]].concat(), &root());
+    assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stderr));
+}

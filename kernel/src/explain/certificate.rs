@@ -38,7 +38,7 @@ pub(super) fn words(detail: &Detail, locus: &Locus) -> String {
         Detail::Body(e) => e.to_string(),
         #[cfg(feature = "field")]
         Detail::Kind(KindDetail::Contacts(n, max)) => format!("n = {n}: the kernel models regular polygons with 2 to {max} contacts"),
-        #[cfg(feature = "field")]
+        #[cfg(any(feature = "field", feature = "boxes"))]
         Detail::Kind(KindDetail::IntervalIrrational(n)) => format!(
             "parameter intervals (box certificates) are supported only where cos(2 pi/n) is rational (n = 2, 3, 4, 6), not for n = {n}"
         ),
@@ -240,7 +240,7 @@ fn image(f: &ImageFailure, locus: &Locus) -> String {
             (format!("{}{what}", at_gamma(gamma)), outside)
         }
         #[cfg(feature = "rest")]
-        Locus::Kind(KindLocus::RestNode { node, step: Some(j), vertex: Some(i), outside }) => {
+        Locus::Kind(KindLocus::RestNode { node, step: Some(j), vertex: Some(i), outside, .. }) => {
             let what = format!("node {node}: vertex {i} of K_{node}∩C_{j}, at {p}, maps under S_{j}");
             (format!("{what} (K: the cone of the node `next` names)"), outside)
         }

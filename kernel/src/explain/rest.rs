@@ -7,16 +7,22 @@ use crate::rules::rest::Failure;
 /// The words of a failure of a time-to-rest certificate (at a locus).
 pub(super) fn words(f: &Failure, locus: &Locus) -> String {
     let at = match locus {
-        Locus::Kind(KindLocus::RestNode { node, step, vertex, .. }) => {
+        Locus::Kind(KindLocus::RestNode { node, step, vertex, corner, .. }) => {
             let step = step.map_or(String::new(), |j| format!(", step j = {j}"));
             let vertex = vertex.map_or(String::new(), |i| format!(", vertex {i}"));
-            format!("node {node}{step}{vertex}: ")
+            let corner = corner.map_or(String::new(), |c| format!(", at corner {c} of the box"));
+            format!("node {node}{step}{vertex}{corner}: ")
         }
         _ => String::new(),
     };
     let what = match f {
         Failure::Claim(c) => format!("the claim {c:?} is not about all-down drops"),
         Failure::NotAtPoint => "kappa and gamma must be numbers, not intervals".into(),
+        Failure::BoxVersion(v) => {
+            format!(
+                "a time-to-rest certificate over a box of kappa and gamma needs version 3; this file says version {v}"
+            )
+        }
         Failure::Denominator(index, value) => {
             format!("-b·g = {value} at generator {index}, scaled to v = -1 (rule G1 needs > 0)")
         }

@@ -190,6 +190,9 @@ pub enum KindLocus {
         /// For an image outside the successor's cone: the boundary it crosses.
         #[serde(skip_serializing_if = "Option::is_none")]
         outside: Option<Boundary>,
+        /// On a box of parameters: the corner (0 to 3, docs/certificate-format.md §9).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        corner: Option<usize>,
     },
 }
 
@@ -200,7 +203,7 @@ pub enum KindDetail {
     #[cfg(feature = "field")]
     Contacts(u64, u64),
     /// A parameter interval where cos(2 pi/n) is irrational (n).
-    #[cfg(feature = "field")]
+    #[cfg(any(feature = "field", feature = "boxes"))]
     IntervalIrrational(u64),
     /// An empty parameter interval [lo, hi], lo > hi (canonical text).
     #[cfg(any(feature = "boxes", feature = "family"))]

@@ -57,7 +57,7 @@ pub fn check<F: Field>(cert: &Certificate, limits: ParseLimits) -> Result<Accept
 }
 
 /// The bounds [lo, hi] of one parameter (lo = hi for a number), lo <= hi.
-fn bounds<F: Field>(name: &str, p: &Param, limits: ParseLimits) -> Result<[F; 2], Rejection> {
+pub(super) fn bounds<F: Field>(name: &str, p: &Param, limits: ParseLimits) -> Result<[F; 2], Rejection> {
     let path = format!("body.{name}");
     match p {
         Param::Point(s) => {
@@ -88,7 +88,7 @@ pub struct Corner {
 
 /// A rejection of rule R2 or R3 at the body of a corner (the point kernel's, which names no
 /// corner): the corner's number in the locus, its (kappa, gamma) in the failure.
-fn at_corner(mut e: Rejection, c: &Corner) -> Rejection {
+pub(super) fn at_corner(mut e: Rejection, c: &Corner) -> Rejection {
     if let Locus::Piece { corner, .. } | Locus::AllDown { corner, .. } = &mut e.locus {
         *corner = Some(c.index);
     }
@@ -100,7 +100,7 @@ fn at_corner(mut e: Rejection, c: &Corner) -> Rejection {
 
 /// The distinct corners (kappa index, gamma index) in the order (lo, lo), (hi, lo), (lo, hi),
 /// (hi, hi), with their numbers and values.
-fn corners<F: Field>(rect: &Rect<F>) -> Vec<(usize, usize, Corner)> {
+pub(super) fn corners<F: Field>(rect: &Rect<F>) -> Vec<(usize, usize, Corner)> {
     let mut out: Vec<(usize, usize, Corner)> = Vec::with_capacity(4);
     for (gi, ki) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
         let at = [to_canonical(&rect.kappa[ki]), to_canonical(&rect.gamma[gi])];
@@ -112,7 +112,7 @@ fn corners<F: Field>(rect: &Rect<F>) -> Vec<(usize, usize, Corner)> {
 }
 
 /// The model at each corner, `make` building it from (kappa, gamma).
-fn bodies<F: Field, B>(
+pub(super) fn bodies<F: Field, B>(
     rect: &Rect<F>,
     corners: &[(usize, usize, Corner)],
     make: impl Fn(F, F) -> Result<B, crate::model::polygon::BodyError>,
@@ -125,7 +125,7 @@ fn bodies<F: Field, B>(
 }
 
 /// Range of γ on the box: at gamma_lo when it is 0, else at gamma_hi.
-fn gamma_on_box<F: Field>(rect: &Rect<F>, claim: Claim) -> Result<(), Rejection> {
+pub(super) fn gamma_on_box<F: Field>(rect: &Rect<F>, claim: Claim) -> Result<(), Rejection> {
     let [g0, g1] = &rect.gamma;
     if g0.is_zero() {
         gamma_range(g0, "body.gamma[0]", claim)
@@ -197,7 +197,7 @@ fn polygon_box<F: Field>(
 }
 
 /// R4 on the box: both polynomials negative on it; the number of sub-boxes examined.
-fn pcc_on_box<F: Field>(body: &Polygon<F>, rect: &Rect<F>) -> Result<usize, Rejection> {
+pub(super) fn pcc_on_box<F: Field>(body: &Polygon<F>, rect: &Rect<F>) -> Result<usize, Rejection> {
     let polys = pcc_polynomials(body)
         .map_err(|_| Rejection::new(Code::Internal, Locus::Nowhere, KindInternal::NotARootOnBox))?;
     let mut boxes = 0;

@@ -33,6 +33,8 @@ pub mod proof;
 pub mod refutation;
 #[cfg(feature = "rest")]
 pub mod rest;
+#[cfg(all(feature = "rest", feature = "boxes"))]
+pub mod rest_box;
 #[cfg(all(feature = "rest", feature = "field"))]
 pub mod rest_field;
 pub mod rod;

@@ -5,6 +5,8 @@
 //! - the file: the header, claim `CcOrPccFromAllDown` or `CompleteChatterFromAllDown`
 //!   (`unknown-variant`), at most max-generators nodes and generators per node, the total digits
 //!   (`too-large`);
+//! - a box (κ or γ an interval): the rules of [`super::rest_box`] (feature `boxes`, else
+//!   `unsupported-version`), which run the rules below at the box's corners;
 //! - the numbers: canonical rationals for n = 3, 4, 6; for irrational cos(2 pi/n) the rules of
 //!   [`super::rest_field`] (feature `field`, else `unsupported-body`): canonical elements of
 //!   Q(cos 2 pi/n) (docs/certificate-format.md §12) in a file of version 3 or more, and the
@@ -52,6 +54,8 @@ pub struct Rested {
     pub bound: String,
     /// Number of nodes.
     pub nodes: usize,
+    /// On a box: [kappa, gamma] as [lo, hi] canonical text (docs/certificate-format.md §16).
+    pub region: Option<[[String; 2]; 2]>,
 }
 
 /// Why a time-to-rest certificate is rejected (besides the shared codes), with the exact values.
@@ -61,6 +65,8 @@ pub enum Failure {
     Claim(Claim),
     /// κ or γ is an interval.
     NotAtPoint,
+    /// A box of parameters in a file of this version (boxes need version 3).
+    BoxVersion(u64),
     /// G1: -b_r·g <= 0 at generator `.0` of K_r; `.1` its value at the generator scaled to v = -1.
     Denominator(usize, String),
     /// G2: a_r·m < 0 (version 1: b_r·m) at m_{0,1} (`.0` true) or m_{n-1,0}; `.1` its value.
@@ -84,11 +90,26 @@ pub enum Failure {
 /// the rationals (n = 3, 4, 6) or over Q(cos 2π/n) (feature `field`).
 pub fn check<F: Field>(cert: &TimeToRest, limits: ParseLimits) -> Result<Rested, Rejection> {
     file(cert, limits)?;
+    let Body::RegularPolygon { kappa, gamma, .. } = &cert.body;
+    if matches!(kappa, Param::Interval(..)) || matches!(gamma, Param::Interval(..)) {
+        return on_box::<F>(cert, limits);
+    }
     if is_irrational(contacts(cert)) {
         return in_field::<F>(cert, limits);
     }
     let nums = Rationals::<F>(limits, PhantomData);
-    graph(&body(cert, &nums, Polygon::new)?, cert, &nums)
+    at_point(&body(cert, &nums, Polygon::new)?, cert, &nums)
+}
+
+#[cfg(feature = "boxes")]
+use super::rest_box::on_box;
+
+/// Without the feature `boxes`, a box of parameters is not built (`unsupported-version`).
+#[cfg(not(feature = "boxes"))]
+#[allow(clippy::extra_unused_type_parameters)] // the signature of the box path's
+fn on_box<F: Field>(cert: &TimeToRest, _: ParseLimits) -> Result<Rested, Rejection> {
+    let detail = Detail::Needs(crate::reject::Needs::Feature("boxes"), cert.version);
+    Err(Rejection::at(Code::UnsupportedVersion, "version", detail))
 }
 
 /// n.
@@ -121,7 +142,7 @@ fn in_field<F: Field>(cert: &TimeToRest, _: ParseLimits) -> Result<Rested, Rejec
 /// The oldest version of the file that may be about a body with irrational cos(2π/n).
 pub const FIELD_VERSION: u64 = 3;
 
-/// Rules G1 to G5 (and R4) on the body.
+/// Rules G1 to G5 on the body.
 pub(super) fn graph<N: Numbers>(
     body: &Polygon<N::E>,
     cert: &TimeToRest,
@@ -135,11 +156,26 @@ pub(super) fn graph<N: Numbers>(
     }
     cone_rules::all_down(body, &graph.first().ok_or_else(no_nodes)?.cone)?;
     bound_holds(body, &graph[0], &nums.rational("bound", &cert.bound)?)?;
+    Ok(Rested {
+        claim: cert.claim,
+        n: contacts(cert),
+        bound: cert.bound.clone(),
+        nodes: graph.len(),
+        region: None,
+    })
+}
+
+/// Rules G1 to G5, then R4 at the point.
+pub(super) fn at_point<N: Numbers>(
+    body: &Polygon<N::E>,
+    cert: &TimeToRest,
+    nums: &N,
+) -> Result<Rested, Rejection> {
+    let rested = graph(body, cert, nums)?;
     if cert.claim == Claim::CompleteChatterFromAllDown {
         cone_rules::pcc(body)?;
     }
-    let Body::RegularPolygon { n, .. } = cert.body;
-    Ok(Rested { claim: cert.claim, n, bound: cert.bound.clone(), nodes: graph.len() })
+    Ok(rested)
 }
 
 /// How a file's numbers are read: canonical rationals (n = 3, 4, 6), or canonical elements of
@@ -164,7 +200,7 @@ pub(super) trait Numbers {
 }
 
 /// Canonical rationals on the backend `F`.
-struct Rationals<F>(ParseLimits, PhantomData<F>);
+pub(super) struct Rationals<F>(pub(super) ParseLimits, pub(super) PhantomData<F>);
 
 impl<F: Field> Numbers for Rationals<F> {
     type E = F;
@@ -337,7 +373,13 @@ fn transitions<E: Scalar>(
         for (i, p) in piece.iter().enumerate() {
             in_time(limits, "checking the virtual time (rule G3)")?;
             let at = |outside| {
-                Locus::Kind(KindLocus::RestNode { node: r, step: Some(j), vertex: Some(i), outside })
+                Locus::Kind(KindLocus::RestNode {
+                    node: r,
+                    step: Some(j),
+                    vertex: Some(i),
+                    outside,
+                    corner: None,
+                })
             };
             let t = Target { point: p, locus: &at, codes: R2, n: body.n() };
             check_image::<E>(&graph[s].cone, &mat_vec(&int_mat(&step), p), &t)?;
@@ -395,7 +437,7 @@ fn unit<E: Scalar>(value: &E, x: &Vec3<E>) -> String {
 }
 
 fn locus(node: usize, step: Option<u64>, vertex: Option<usize>) -> Locus {
-    Locus::Kind(KindLocus::RestNode { node, step, vertex, outside: None })
+    Locus::Kind(KindLocus::RestNode { node, step, vertex, outside: None, corner: None })
 }
 
 pub(super) fn fail(code: Code, at: Option<(usize, Option<u64>, Option<usize>)>, f: Failure) -> Rejection {

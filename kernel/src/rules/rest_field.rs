@@ -9,7 +9,7 @@
 
 use super::field as field_rules;
 use super::generators::Generators;
-use super::rest::{FIELD_VERSION, Numbers, Rested, body, contacts, file, graph};
+use super::rest::{FIELD_VERSION, Numbers, Rested, at_point, body, contacts, file};
 use crate::exact::{Algebraic, AlgebraicInt, CosField, Field, MAX_N, ParseLimits};
 use crate::model::polygon::Polygon;
 use crate::reject::{Code, Detail, KindDetail, Needs, Rejection};
@@ -35,7 +35,7 @@ fn field_graph<F: Field>(cert: &TimeToRest, limits: ParseLimits) -> Result<Reste
         return Err(Rejection::at(Code::UnsupportedBody, "body.n", KindDetail::Contacts(n, MAX_N)));
     };
     let nums = Elements(field.clone(), limits);
-    graph(&body(cert, &nums, |n, k, g| Polygon::with_cosine(n, field.generator(), k, g))?, cert, &nums)
+    at_point(&body(cert, &nums, |n, k, g| Polygon::with_cosine(n, field.generator(), k, g))?, cert, &nums)
 }
 
 /// The file's rules, then the body and the graph's in Q(cos 2π/n) also where cos(2π/n) is

@@ -55,6 +55,9 @@ fn every_rule_of_time_to_rest_certificates_has_a_corpus_file_rejected_with_its_c
         ("rest-v3-version-2.ron", "unsupported-version"),
         ("rest-v3-bound-not-rational.ron", "bad-number"),
         ("rest-v3-virtual-time-increases.ron", "virtual-time-increases"),
+        ("rest-v3-box-version-2.ron", "unsupported-version"),
+        ("rest-v3-box-upper-corner.ron", "image-outside"),
+        ("rest-v3-box-pcc-on-box.ron", "pcc-not-excluded"),
     ];
     for (file, code) in rows {
         assert_eq!(code_of(&corpus(&format!("invalid/{file}"))), code, "{file}");
@@ -102,8 +105,13 @@ fn the_bound_less_one_unit_of_its_last_place_breaks_rule_g5_only() {
 #[test]
 fn a_time_to_rest_certificate_at_an_interval_or_another_n_is_refused() {
     let text = corpus(SQUARE);
+    // A box of parameters needs version 3; the square's version-1 file is refused as such.
     let boxed = text.replace("kappa: \"1/6\"", "kappa: [\"1/7\", \"1/6\"]");
-    assert_eq!(code_of(&boxed), "parameter-out-of-range");
+    assert_eq!(code_of(&boxed), "unsupported-version");
+    let empty = corpus(V2_SQUARE)
+        .replace("version: 2", "version: 3")
+        .replace("kappa: \"1/6\"", "kappa: [\"1/6\", \"1/7\"]");
+    assert_eq!(code_of(&empty), "parameter-out-of-range");
     // n = 5 needs version 3 (its numbers are read in Q(cos 2π/5)); then the square's graph is
     // not the pentagon's.
     let pentagon = text.replace("RegularPolygon(n: 4", "RegularPolygon(n: 5");
@@ -178,4 +186,48 @@ fn the_field_path_gives_the_rational_paths_verdict_on_the_rational_corpus() {
         }
     }
     assert!(seen >= 15, "{seen} files");
+}
+
+#[cfg(feature = "boxes")]
+const BOX: &str = "valid/rest-v3-box-n4-kappa1_6-gamma1_100-1_50.ron";
+
+/// Version 3 over a box: the square's graph for every γ in [1/100, 1/50] is accepted on both
+/// backends with its region; a failure names its corner; without version 3 it is refused.
+#[cfg(feature = "boxes")]
+#[test]
+fn a_box_graph_is_accepted_with_its_region_and_a_failure_names_its_corner() {
+    let Verdict::Accepted(a) =
+        verify_rest_text_in(&corpus(BOX), Encoding::Ron, ParseLimits::default(), &BOTH)
+    else {
+        panic!("the box file is rejected")
+    };
+    let region = [["1/6".to_string(), "1/6".to_string()], ["1/100".to_string(), "1/50".to_string()]];
+    assert_eq!((a.claim, a.n, a.region), (Claim::CompleteChatterFromAllDown, 4, Some(region)));
+    let Verdict::Rejected(r) = verify_rest_text_in(
+        &corpus("invalid/rest-v3-box-upper-corner.ron"),
+        Encoding::Ron,
+        ParseLimits::default(),
+        &BOTH,
+    ) else {
+        panic!("the raised box is not rejected")
+    };
+    let locus = serde_json::to_value(&r.locus).unwrap();
+    assert_eq!(locus["corner"], 2, "{locus}");
+}
+
+/// The corner argument, by brute force: the graph and B of every accepted box file hold as a
+/// point certificate at 9 evenly spaced γ of the interval and at the corners (both backends).
+#[cfg(feature = "boxes")]
+#[test]
+fn a_box_graph_holds_at_every_sampled_point_of_its_box() {
+    let text = corpus(BOX);
+    for k in 0..=8 {
+        let gamma = format!("{}/{}", 800 + 100 * k, 80_000);
+        let point = text.replace("gamma: [\"1/100\", \"1/50\"]", &format!("gamma: \"{gamma}\""));
+        assert_ne!(point, text);
+        let canonical =
+            chatter_kernel::exact::to_canonical(&gamma.parse::<malachite::rational::Rational>().unwrap());
+        let point = point.replace(&gamma, &canonical);
+        assert_eq!(code_of(&point), "accepted", "gamma = {canonical}");
+    }
 }

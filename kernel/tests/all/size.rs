@@ -11,7 +11,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The kinds of verdict: name in the table, the rules file (under src/), the features.
-const KINDS: [(&str, &str, &[&str]); 12] = [
+const KINDS: [(&str, &str, &[&str]); 13] = [
     ("point certificates, n = 3, 4, 6", "rules/cone.rs", &[]),
     ("point certificates of the rod", "rules/rod.rs", &[]),
     ("box certificates", "rules/boxes.rs", &["boxes"]),
@@ -24,6 +24,7 @@ const KINDS: [(&str, &str, &[&str]); 12] = [
     ("proofs", "rules/proof/mod.rs", &["proof"]),
     ("time-to-rest certificates", "rules/rest.rs", &["rest"]),
     ("time-to-rest certificates in number fields", "rules/rest.rs", &["rest", "field"]),
+    ("time-to-rest certificates on boxes", "rules/rest.rs", &["rest", "boxes"]),
 ];
 
 /// Point certificates for n = 3, 4, 6: at most this many lines to read, of which at most this many

@@ -1,6 +1,8 @@
 //! Time-to-rest certificates (docs/certificate-format.md §16): the schema, the file's rules (the
-//! claim, the limits, a body at a point, 3 <= n <= 64 (Q(cos 2π/n) where it is irrational), 0 < γ < 1, the numbers and their arity),
-//! then the virtual-time graph's rules G1-G5 and R4 (`crate::regular::virtual_time`).
+//! claim, the limits, a body at a point, 3 <= n <= 64 (in Q(cos 2π/n) where it is irrational),
+//! 0 < γ < 1, the numbers and their arity), then the virtual-time graph's rules G1-G5 and R4
+//! (`crate::regular::virtual_time`); or a box of (κ, γ) for n = 3, 4, 6, the rules at its corners
+//! and at interior points, and R4 on the box.
 
 use super::limits::Limits;
 use super::numbers::{element, rational};
@@ -11,6 +13,7 @@ use crate::read::Value;
 use crate::read::schema::{
     integer, list, param, regular_polygon, string, strings, tuple, unit_variant, walk,
 };
+use crate::regular::boxes;
 use crate::regular::model::{Polygon, V3};
 use crate::regular::rules::Polygon2;
 use crate::regular::virtual_time::{Node, bound_rules, graph_rules, node_rules};
@@ -264,9 +267,101 @@ pub fn verified(f: &RestFile, limits: &Limits) -> Checked<(Graph, Rat)> {
     Ok((g, b))
 }
 
+/// A parameter as an interval [lo, hi] (a point gives lo = hi), lo <= hi.
+fn interval(path: &str, texts: &[&str], limits: &Limits) -> Checked<[Rat; 2]> {
+    let lo = rational(path, texts[0], limits)?;
+    let hi = match texts.get(1) {
+        Some(t) => rational(path, t, limits)?,
+        None => lo.clone(),
+    };
+    if lo > hi {
+        return Err(Fail::new("parameter-out-of-range", format!("{path}: lo > hi")));
+    }
+    Ok([lo, hi])
+}
+
+/// A time-to-rest certificate over a box of (κ, γ) (version 3, n = 3, 4, 6): the box's rules, then
+/// G1-G5 at every corner, the corner argument tested at interior points (brute force), R4 on the
+/// box.
+fn check_box(f: &RestFile, limits: &Limits) -> Checked<(Report, String)> {
+    claim(f)?;
+    size(f, limits)?;
+    if f.version < 3 {
+        return Err(Fail::new("unsupported-version", "a box of parameters needs version 3"));
+    }
+    if f.n >= 5 && f.n != 6 {
+        return Err(Fail::new("unsupported-body", "boxes need a rational cos 2π/n"));
+    }
+    let (k, g) = (interval("body.kappa", &f.kappa, limits)?, interval("body.gamma", &f.gamma, limits)?);
+    if f.n < 3 {
+        return Err(Fail::new("unsupported-body", format!("n = {}", f.n)));
+    }
+    let out = |what: &str| Err(Fail::new("parameter-out-of-range", what.to_string()));
+    let cs = boxes::corners(&k, &g);
+    let zero = Rat::from_integer(0.into());
+    if cs.iter().any(|(kappa, gamma)| *kappa <= zero || *gamma < zero || *gamma > Rat::from_integer(1.into()))
+    {
+        return out("a corner outside kappa > 0, 0 <= gamma <= 1");
+    }
+    if g[0] <= zero || g[1] >= Rat::from_integer(1.into()) {
+        return out("the claims about drops need 0 < gamma < 1 on the box");
+    }
+    for (kappa, gamma) in &cs {
+        at_point(f, kappa, gamma, limits)?;
+    }
+    for (a, b, c, d) in [(1, 3, 5, 7), (6, 7, 2, 9)] {
+        let kappa = &k[0] + (&k[1] - &k[0]) * Rat::new(a.into(), b.into());
+        let gamma = &g[0] + (&g[1] - &g[0]) * Rat::new(c.into(), d.into());
+        if let Err(e) = at_point(f, &kappa, &gamma, limits) {
+            let why =
+                format!("the corners pass but ({kappa}, {gamma}) fails ({}): {}", e.codes.join(", "), e.why);
+            return Err(Fail::new("corner-argument-violated", why));
+        }
+    }
+    if f.claim == Claim::CompleteChatterFromAllDown {
+        boxes::pcc_on_box(f.n as usize, &k, &g)?;
+    }
+    let report = Report {
+        claim: f.claim.name().into(),
+        n: f.n,
+        rest_nodes: Some(f.nodes.len()),
+        region: Some([
+            [rational_text(&k[0]), rational_text(&k[1])],
+            [rational_text(&g[0]), rational_text(&g[1])],
+        ]),
+        ..Report::default()
+    };
+    Ok((report, rational_text(&bound(f, limits)?)))
+}
+
+/// G1-G5 (not R4) at one point of a box.
+fn at_point(f: &RestFile, kappa: &Rat, gamma: &Rat, limits: &Limits) -> Checked<()> {
+    let field = Field::cos(f.n as u32);
+    let body = Polygon::new(
+        f.n as usize,
+        Num::rational(&field, kappa.clone()),
+        Num::rational(&field, gamma.clone()),
+    );
+    let (mut nodes, mut polygons) = (vec![], vec![]);
+    for (r, t) in f.nodes.iter().enumerate() {
+        let node = node_numbers(r, t, f.version, &field, limits)?;
+        polygons.push(node_rules(&body, r, &node)?);
+        nodes.push(node);
+    }
+    graph_rules(&body, &nodes, &polygons)?;
+    let b = Num::rational(&field, bound(f, limits)?);
+    let Some(node0) = nodes.first() else {
+        return Err(Fail::new("missing-successor", "no node 0 for the first impact"));
+    };
+    bound_rules(&body, Claim::CcOrPccFromAllDown, &b, node0)
+}
+
 /// Every rule of a time-to-rest certificate after its schema, in §16's order; returns the report
 /// and B (canonical text).
 pub fn check(f: &RestFile, limits: &Limits) -> Checked<(Report, String)> {
+    if f.kappa.len() == 2 || f.gamma.len() == 2 {
+        return check_box(f, limits);
+    }
     let (g, b) = verified(f, limits)?;
     let report =
         Report { claim: f.claim.name().into(), n: f.n, rest_nodes: Some(g.nodes.len()), ..Report::default() };

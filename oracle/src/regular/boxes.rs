@@ -109,6 +109,20 @@ pub fn corners(k: &[Rat; 2], g: &[Rat; 2]) -> Vec<(Rat, Rat)> {
     out
 }
 
+/// R4 on the box (n >= 3), from the closed form (module documentation).
+pub fn pcc_on_box(n: usize, k: &[Rat; 2], g: &[Rat; 2]) -> Checked<()> {
+    let cs = corners(k, g);
+    let c1 = Num::generator(&Field::cos(n as u32)).as_rational().expect("rational").clone();
+    let crosses = k[0] <= -c1.clone() && -c1 <= k[1];
+    let corners_ok = cs.iter().all(|(kappa, gamma)| closed_form(n, kappa, gamma).is_negative());
+    let sampled_ok = cs.iter().all(|(kappa, gamma)| pcc_at(n, kappa, gamma));
+    assert!(crosses || corners_ok == sampled_ok, "closed form and matrix disagree at a corner");
+    if crosses || !corners_ok {
+        return Err(Fail::new("pcc-not-excluded", "the PCC quadratic has real roots somewhere on the box"));
+    }
+    Ok(())
+}
+
 /// All rules on a box (the file's rules already checked).
 pub fn check_box(
     n: usize,
@@ -157,17 +171,7 @@ pub fn check_box(
         }
     }
     if claim == Claim::CompleteChatterFromAllDown && n >= 3 {
-        let c1 = Num::generator(&Field::cos(n as u32)).as_rational().expect("rational").clone();
-        let crosses = k[0] <= -c1.clone() && -c1 <= k[1];
-        let corners_ok = cs.iter().all(|(kappa, gamma)| closed_form(n, kappa, gamma).is_negative());
-        let sampled_ok = cs.iter().all(|(kappa, gamma)| pcc_at(n, kappa, gamma));
-        assert!(crosses || corners_ok == sampled_ok, "closed form and matrix disagree at a corner");
-        if crosses || !corners_ok {
-            return Err(Fail::new(
-                "pcc-not-excluded",
-                "the PCC quadratic has real roots somewhere on the box",
-            ));
-        }
+        pcc_on_box(n, k, g)?;
     }
     report.claim = claim.name().into();
     report.contains_translation = Some(translation);

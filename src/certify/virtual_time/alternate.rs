@@ -67,16 +67,18 @@ fn pull(m: &M, y: &V) -> V {
 }
 
 impl Data {
-    /// The data of the exact graph (`kicks`: per node index of a representative, its tied kicks).
+    /// The data of the exact graph (`kicks`: per node index of a representative, its tied kicks),
+    /// with the (G3) pairs of every body (the corners of a box).
     pub fn new<E: Num>(
-        body: &Polygon<E>,
+        bodies: &[Polygon<E>],
         (nodes, edges): (&[Node<E>], &[Edge<E>]),
         t: &Ties,
         kicks: Vec<Vec<V>>,
     ) -> Result<Self, String> {
+        let body = &bodies[0];
         let tr = super::numerator::transports(body, t)?;
         let mut pairs = Vec::new();
-        for e in edges {
+        for (body, e) in bodies.iter().flat_map(|b| edges.iter().map(move |e| (b, e))) {
             let (j, rel, step) = (e.step as i64, body.relabel(e.step as i64), body.step(e.step as i64));
             for p in e.piece.iter().filter(|p| !is_zero(p)) {
                 for q in [rest(body, j - 1), rest(body, j)] {

@@ -62,14 +62,15 @@ fn rounded(b: &Vector3<f64>) -> Result<Vec3<Q>, String> {
 /// The exact nodes, with (G1) checked ((G2) is on the numerators, [`super::numerator`], or on
 /// b_r where a_r = c_r b_r, [`super::scale`]).
 pub fn nodes<E: Num>(
-    body: &Polygon<E>,
+    bodies: &[Polygon<E>],
     g: &Graph,
     t: &Ties,
     reps: &[Vector3<f64>],
 ) -> Result<Vec<Node<E>>, String> {
+    let body = &bodies[0];
     let mut balanced = vec![[E::zero(), E::zero(), E::zero()]; g.nodes.len()];
     for k in t.reps() {
-        balanced[k] = tie::balanced(body, g, t, k, rounded(&reps[k])?.map(|x| E::from_q(&x)))?;
+        balanced[k] = tie::balanced(bodies, g, t, k, rounded(&reps[k])?.map(|x| E::from_q(&x)))?;
     }
     let mut out = Vec::with_capacity(g.nodes.len());
     for (r, node) in g.nodes.iter().enumerate() {
@@ -95,8 +96,10 @@ pub fn inside<E: Num>(k: &ConvexPolygon<E>, x: &Vec3<E>) -> bool {
 
 /// The exact edges: for each node r and step j with K_r ∩ C_j ≠ {0}, the float successor, or
 /// (where the float piece was degenerate) the first node that contains the exact images; every
-/// image of a vertex lies in K_s (else an error naming it).
-pub fn edges<E: Num>(body: &Polygon<E>, g: &Graph, nodes: &[Node<E>]) -> Result<Vec<Edge<E>>, String> {
+/// image of a vertex, under every body's S_j (the corners of a box), lies in K_s (else an error
+/// naming it).
+pub fn edges<E: Num>(bodies: &[Polygon<E>], g: &Graph, nodes: &[Node<E>]) -> Result<Vec<Edge<E>>, String> {
+    let body = &bodies[0];
     let mut out = Vec::new();
     for (r, node) in nodes.iter().enumerate() {
         for j in 1..body.n() {
@@ -105,7 +108,9 @@ pub fn edges<E: Num>(body: &Polygon<E>, g: &Graph, nodes: &[Node<E>]) -> Result<
             if piece.iter().all(is_zero) {
                 continue;
             }
-            let images: Vec<Vec3<E>> = piece.iter().map(|p| mat_vec(&body.step(j as i64), p)).collect();
+            let images: Vec<Vec3<E>> = (bodies.iter())
+                .flat_map(|b| piece.iter().map(|p| mat_vec(&b.step(j as i64), p)).collect::<Vec<_>>())
+                .collect();
             let fits = |s: usize| images.iter().all(|x| is_zero(x) || inside(&nodes[s].cone, x));
             let float = g.edges.iter().find(|e| e.from == r && e.step == j).map(|e| e.to);
             let to = float.filter(|&s| fits(s)).or_else(|| (0..nodes.len()).find(|&s| fits(s)));
@@ -121,10 +126,14 @@ pub fn edges<E: Num>(body: &Polygon<E>, g: &Graph, nodes: &[Node<E>]) -> Result<
 }
 
 /// (G4): I_0(−m_{k,k+1}) ∈ K_0 for every k.
-pub fn initial_inside<E: Num>(body: &Polygon<E>, nodes: &[Node<E>]) -> Result<(), String> {
-    let i0 = body.impact(0);
-    match body.all_down_generators().iter().position(|g| !inside(&nodes[0].cone, &mat_vec(&i0, g))) {
-        Some(k) => Err(format!("(G4) fails exactly: I_0(-m_{{{k},{}}}) is outside node 0", k + 1)),
-        None => Ok(()),
+pub fn initial_inside<E: Num>(bodies: &[Polygon<E>], nodes: &[Node<E>]) -> Result<(), String> {
+    for body in bodies {
+        let i0 = body.impact(0);
+        if let Some(k) =
+            body.all_down_generators().iter().position(|g| !inside(&nodes[0].cone, &mat_vec(&i0, g)))
+        {
+            return Err(format!("(G4) fails exactly: I_0(-m_{{{k},{}}}) is outside node 0", k + 1));
+        }
     }
+    Ok(())
 }

@@ -29,10 +29,18 @@ pub fn piece(body: &FloatPolygon, k: &[P2], j: usize) -> Vec<P2> {
     body.next_contact_cone(j as i64).iter().fold(k.to_vec(), |p, l| clip(&p, l))
 }
 
-/// S_j of the piece's vertices, on the plane v = -1; `None` if an image is not below v = 0.
-fn image(body: &FloatPolygon, j: usize, piece: &[P2]) -> Option<Vec<P2>> {
-    let s = body.step(j as i64);
-    piece.iter().map(|p| s * lift(p)).map(|x| (x.z < 0.0).then(|| project(&x))).collect()
+/// S_j of the piece's vertices for every body (the corners of a box: each image is affine in γ
+/// and, times 1 + κ, in κ, so the hull of the corners' images holds the images of the whole box),
+/// on the plane v = -1; `None` if an image is not below v = 0.
+fn image(bodies: &[FloatPolygon], j: usize, piece: &[P2]) -> Option<Vec<P2>> {
+    let mut out = Vec::with_capacity(bodies.len() * piece.len());
+    for body in bodies {
+        let s = body.step(j as i64);
+        for x in piece.iter().map(|p| s * lift(p)) {
+            out.push((x.z < 0.0).then(|| project(&x))?);
+        }
+    }
+    Some(out)
 }
 
 /// The hull of P scaled by 1 + d about its vertex centroid, with a square of half-side `pad` at
@@ -58,14 +66,18 @@ fn smallest_containing(nodes: &[Vec<P2>], img: &[P2]) -> Option<usize> {
         .min_by(|&a, &b| area(&nodes[a]).total_cmp(&area(&nodes[b])))
 }
 
-/// Builds the graph breadth first from node 0 = I_0(D) (padded by `pad`), at most `cfg.max_nodes`
+/// Builds the graph breadth first from node 0 = I_0(D) (padded by `pad`; of every body: the
+/// corners of a box, whose C_j are the same), at most `cfg.max_nodes`
 /// nodes (and, merging, at most 20 times as many node searches). With `merge` = Some(t), an image
 /// that no node contains is first merged into the node whose hull with the image's enlarged hull
 /// has the least area, if that area is at most t times the larger of the two (the node is then
 /// searched again); else it becomes a new node.
-pub fn build(body: &FloatPolygon, cfg: &Config, pad: f64, merge: Option<f64>) -> Graph {
-    let i0 = body.impact(0);
-    let first: Vec<P2> = body.all_down_generators().iter().map(|g| project(&(i0 * g))).collect();
+pub fn build(bodies: &[FloatPolygon], cfg: &Config, pad: f64, merge: Option<f64>) -> Graph {
+    let body = &bodies[0];
+    let first: Vec<P2> = bodies
+        .iter()
+        .flat_map(|b| b.all_down_generators().iter().map(|g| project(&(b.impact(0) * g))).collect::<Vec<_>>())
+        .collect();
     let mut g = Graph { nodes: vec![enlarge(&hull(&first, 1e-15), 0.0, pad)], edges: vec![], closed: false };
     let mut todo = VecDeque::from([0]);
     for _ in 0..20 * cfg.max_nodes {
@@ -79,7 +91,7 @@ pub fn build(body: &FloatPolygon, cfg: &Config, pad: f64, merge: Option<f64>) ->
             if piece.len() < 3 {
                 continue;
             }
-            let Some(img) = image(body, j, &piece) else { return g };
+            let Some(img) = image(bodies, j, &piece) else { return g };
             let Some(to) = place(&mut g, &mut todo, &img, (cfg, pad, merge)) else { return g };
             g.edges.push(Edge { from: r, step: j, to, piece });
         }

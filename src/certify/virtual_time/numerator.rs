@@ -164,25 +164,29 @@ fn solve(
     Ok(vars.iter().map(|v| v.map(|x| sol.var_value(x))).collect())
 }
 
-/// The numerators and B, checked exactly ((F), (G2), (G3), (G5)); `Err` names what failed.
+/// The numerators and B, checked exactly ((F), (G2), (G3), (G5)) at every body (the corners of a
+/// box: (G3) and (G5) are affine in γ and, times 1 + κ, in κ); `Err` names what failed.
 pub fn numerators<E: Num>(
-    body: &Polygon<E>,
+    bodies: &[Polygon<E>],
     nodes: &[Node<E>],
     edges: &[Edge<E>],
     t: &Ties,
 ) -> Result<Numerators<E>, String> {
+    let body = &bodies[0];
     let tr = transports(body, t)?;
     let mut rows = Rows { rows: Vec::new() };
     node_rows(body, nodes, t, &tr, &mut rows);
-    edge_rows(body, nodes, edges, t, &tr, &mut rows);
-    let i0 = body.impact(0);
-    let depth: Vec<f64> =
-        body.all_down_generators().iter().map(|g| -dot(&nodes[0].weight, &mat_vec(&i0, g)).f64()).collect();
+    let mut depth: Vec<f64> = Vec::new();
+    for b in bodies {
+        edge_rows(b, nodes, edges, t, &tr, &mut rows);
+        let i0 = b.impact(0);
+        depth.extend(b.all_down_generators().iter().map(|g| -dot(&nodes[0].weight, &mat_vec(&i0, g)).f64()));
+    }
     let heights: Vec<Row> = [rest(body, 0), rest(body, -1)].iter().map(|m| form(t, &tr, 0, m)).collect();
     let mut why = Vec::new();
     for margin in MARGINS {
         match solve(&rows, (&heights, &depth), t.rep.len(), margin)
-            .and_then(|sol| exact(body, nodes, edges, t, &sol))
+            .and_then(|sol| exact(bodies, nodes, edges, t, &sol))
         {
             Ok(x) => return Ok(x),
             Err(e) => why.push(format!("margin {margin:e}: {e}")),
@@ -193,7 +197,7 @@ pub fn numerators<E: Num>(
 
 /// The rounded numerators transported exactly, every condition checked exactly, B computed.
 fn exact<E: Num>(
-    body: &Polygon<E>,
+    bodies: &[Polygon<E>],
     nodes: &[Node<E>],
     edges: &[Edge<E>],
     t: &Ties,
@@ -204,11 +208,14 @@ fn exact<E: Num>(
     for r in 0..nodes.len() {
         let k = t.rep[r];
         let ak: Vec3<Q> = [round(sol[k][0])?, round(sol[k][1])?, round(sol[k][2])?];
-        a.push(tie::transported(body, &t.path[r], ak.map(|x| E::from_q(&x)))?);
+        a.push(tie::transported(&bodies[0], &t.path[r], ak.map(|x| E::from_q(&x)))?);
     }
-    check(body, nodes, edges, &a)?;
-    let bound = bound(body, &nodes[0], &a[0])?;
-    Ok(Numerators { a, bound })
+    let mut most = Q::int(0);
+    for body in bodies {
+        check(body, nodes, edges, &a)?;
+        most = most.max(bound(body, &nodes[0], &a[0])?);
+    }
+    Ok(Numerators { a, bound: most })
 }
 
 /// (F), (G2) and (G3) exactly.

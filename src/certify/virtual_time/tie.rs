@@ -99,24 +99,27 @@ fn kick_at_rep<E: Num>(body: &Polygon<E>, path: &[usize], j: usize) -> Result<Ve
     path.iter().rev().try_fold(d, |d, &i| Ok(mat_vec(&relabel_inverse(body, i)?, &d)))
 }
 
-/// b minus its exact orthogonal projection on the span of the tied edges' kick directions, so
+/// b minus its exact orthogonal projection on the span of the tied edges' kick directions (of
+/// every body: d_j is affine in κ, so b_r·d_j = 0 at the corners of a box holds on the box), so
 /// that b_r·d_j = 0 exactly on every tied edge of the component of `k`.
 pub fn balanced<E: Num>(
-    body: &Polygon<E>,
+    bodies: &[Polygon<E>],
     g: &Graph,
     t: &Ties,
     k: usize,
     b: Vec3<E>,
 ) -> Result<Vec3<E>, String> {
-    let tied = |e: &&Edge| t.rep[e.from] == k && along_tree(t, body.n(), e);
+    let tied = |e: &&Edge| t.rep[e.from] == k && along_tree(t, bodies[0].n(), e);
     let mut basis: Vec<Vec3<E>> = Vec::new();
     for e in g.edges.iter().filter(tied) {
-        let mut a = kick_at_rep(body, &t.path[e.from], e.step)?;
-        for u in &basis {
-            a = minus_along(&a, u);
-        }
-        if a.iter().any(|x| !x.is_zero()) {
-            basis.push(a);
+        for body in bodies {
+            let mut a = kick_at_rep(body, &t.path[e.from], e.step)?;
+            for u in &basis {
+                a = minus_along(&a, u);
+            }
+            if a.iter().any(|x| !x.is_zero()) {
+                basis.push(a);
+            }
         }
     }
     let b = basis.iter().fold(b, |b, u| minus_along(&b, u));

@@ -117,6 +117,7 @@ pub fn kernel_rest_in(text: &str, encoding: chatter_kernel::syntax::Encoding) ->
                 claim: a.claim.name().to_string(),
                 n: a.n,
                 rest_nodes: Some(a.nodes),
+                region: a.region,
                 ..Report::default()
             },
             time_to_rest_bound: Some(Some(a.bound)),
