@@ -1,8 +1,8 @@
 //! Time to rest (issue 24, docs/time-to-rest.md): for the paper's bodies, the proved bound on the
 //! time at which a drop's impacts accumulate beside the accumulation time that an `f64` run of the
 //! same drop estimates (evidence). The rod's bound is its theorem's (§2, rule T1: t_1 + B h/|v|),
-//! the plates' and the hexagon's from time-to-rest certificates made on the fly (§5: t_1 + B h/|v|)
-//! or orbit certificates entered after the cone (§1, §4: t_k + B h/|v|).
+//! the plates', the hexagon's and the pentagon's from time-to-rest certificates made on the fly
+//! (§5: t_1 + B h/|v|) or orbit certificates entered after the cone (§1, §4: t_k + B h/|v|).
 
 use super::items::Context;
 use super::{Item, Report, Table, Verdict};
@@ -26,8 +26,8 @@ pub struct Body {
     pub gamma: Q,
 }
 
-/// The rod, the square plate, the triangle plate (the paper's) and a hexagon point below the CC
-/// threshold.
+/// The rod, the square plate, the triangle plate (the paper's), and a hexagon and a pentagon point
+/// below the CC threshold (the pentagon's certificate in Q(cos 2π/5), docs/time-to-rest.md §5).
 pub fn bodies() -> Vec<Body> {
     let b = |name, n, k: (i64, i64), g: (i64, i64)| Body {
         name,
@@ -40,6 +40,7 @@ pub fn bodies() -> Vec<Body> {
         b("square plate", 4, (1, 6), (1, 100)),
         b("triangle plate", 3, (1, 8), (1, 10)),
         b("hexagon", 6, (1, 50), (1, 10)),
+        b("pentagon", 5, (1, 20), (1, 10)),
     ]
 }
 

@@ -265,7 +265,7 @@ fn the_bound_is_sharp_at_rational_roots_and_absent_outside_the_theorem() {
 }
 
 /// Issue 24 §1 (`chatter reproduce`'s time-to-rest item): at the rod, the square plate, the
-/// triangle plate and the hexagon point of the table, every drop counts once (proved CC with a
+/// triangle plate, the hexagon point and the pentagon point of the table, every drop counts once (proved CC with a
 /// bound, proved no-ICC-no-PCC, or other), the drops proved CC with a bound are those of the
 /// documented measurements (all of them), and no proved bound lies below the `f64` accumulation
 /// time of its drop beyond rounding.
