@@ -60,6 +60,19 @@ pub struct Request {
     pub kappa_field: Option<String>,
 }
 
+/// The distinct corners (kappa, gamma) of [κ_lo, κ_hi] × [γ_lo, γ_hi] in the kernel's order:
+/// (lo, lo), (hi, lo), (lo, hi), (hi, hi); one for a point.
+pub fn corners(kappa: &[Q; 2], gamma: &[Q; 2]) -> Vec<(Q, Q)> {
+    let mut out: Vec<(Q, Q)> = Vec::new();
+    for (gi, ki) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
+        let c = (kappa[ki].clone(), gamma[gi].clone());
+        if !out.contains(&c) {
+            out.push(c);
+        }
+    }
+    out
+}
+
 impl Request {
     pub fn new(n: u64, kappa: Q, gamma: Q) -> Self {
         Request {
@@ -101,16 +114,7 @@ impl Request {
     /// (hi, hi); one for a point.
     pub fn corners(&self) -> Vec<(Q, Q)> {
         let (k1, g1) = self.upper.clone().unwrap_or((self.kappa.clone(), self.gamma.clone()));
-        let ks = [self.kappa.clone(), k1];
-        let gs = [self.gamma.clone(), g1];
-        let mut out: Vec<(Q, Q)> = Vec::new();
-        for (gi, ki) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
-            let c = (ks[ki].clone(), gs[gi].clone());
-            if !out.contains(&c) {
-                out.push(c);
-            }
-        }
-        out
+        corners(&[self.kappa.clone(), k1], &[self.gamma.clone(), g1])
     }
 
     /// "n=4 kappa=1/6 gamma=1/100", or with intervals for a box.

@@ -164,14 +164,7 @@ pub struct Region {
 impl Region {
     /// The distinct corners in the kernel's order (lo, lo), (hi, lo), (lo, hi), (hi, hi).
     fn corners(&self) -> Vec<(Q, Q)> {
-        let mut out: Vec<(Q, Q)> = Vec::new();
-        for (ki, gi) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
-            let c = (self.kappa[ki].clone(), self.gamma[gi].clone());
-            if !out.contains(&c) {
-                out.push(c);
-            }
-        }
-        out
+        super::corners(&self.kappa, &self.gamma)
     }
 
     fn is_point(&self) -> bool {
