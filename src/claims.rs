@@ -54,12 +54,13 @@ pub fn proves_virtual_time(name: &str) -> &'static str {
 simultaneous impact leaves the model) keeps v < 0 for ever and ends in complete chatter: its impacts \
 never stop, PCC is excluded (the paper's Lemma on PCC), and they accumulate at a finite time \
 T <= B h/|v| (B = time_to_rest_bound, rules G1-G5, F; h: the centre's height at the first impact, v: \
-its velocity just before it; docs/time-to-rest.md Theorem 5.1)"
+its velocity just before it; docs/time-to-rest.md Theorem 5.1, Theorem 5.2 for a general body)"
     } else {
         "every drop with all contacts moving down (impacts one contact at a time: a drop reaching a \
 simultaneous impact leaves the model) keeps v < 0 for ever, its impacts never stop and they \
 accumulate at a finite time T <= B h/|v| (B = time_to_rest_bound, rules G1-G5, F; h: the centre's \
-height at the first impact, v: its velocity just before it; docs/time-to-rest.md Theorem 5.1); \
+height at the first impact, v: its velocity just before it; docs/time-to-rest.md Theorem 5.1, Theorem 5.2 for a \
+general body); \
 PCC not excluded"
     }
 }

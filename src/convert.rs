@@ -13,6 +13,7 @@ use chatter_kernel::certificate::{
 };
 use chatter_kernel::refute::{Refutation, Step};
 use chatter_kernel::rest::TimeToRest;
+use chatter_kernel::rest_family::FamilyTimeToRest;
 use chatter_kernel::syntax::basin::{BasinCertificate, LeafVerdict};
 use chatter_kernel::syntax::{self, Kind, kind_of, schema};
 
@@ -132,9 +133,7 @@ pub fn rest_to_json(c: &TimeToRest) -> String {
 /// Writes a family certificate (a general convex body, docs/certificate-format.md §13) as its
 /// JSON twin: one contact per line, each cone as a list of generators one per line.
 pub fn convex_to_json(c: &ConvexCertificate) -> String {
-    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma, inertia_tensor } = &c.body;
     let tuple = |xs: &[&String]| format!("[{}]", xs.iter().map(|s| quoted(s)).collect::<Vec<_>>().join(", "));
-    let contacts: Vec<String> = contacts.iter().map(|(x, y)| format!("    {}", tuple(&[x, y]))).collect();
     let cones: Vec<String> = c
         .cones
         .iter()
@@ -145,17 +144,58 @@ pub fn convex_to_json(c: &ConvexCertificate) -> String {
         })
         .collect();
     format!(
-        "{{\n    \"format\": {},\n    \"version\": {},\n    \"body\": {{\"ConvexPolygon\": {{\n        \"contacts\": {},\n        \"inertia\": {},\n        \"gamma\": {}{}\n    }}}},\n    \"coordinates\": \"PaperVelocities\",\n    \"claim\": \"{}\",\n    \"cones\": {},\n    \"producer\": {}\n}}\n",
+        "{{\n    \"format\": {},\n    \"version\": {},\n    \"body\": {},\n    \"coordinates\": \"PaperVelocities\",\n    \"claim\": \"{}\",\n    \"cones\": {},\n    \"producer\": {}\n}}\n",
         quoted(&c.format),
         c.version,
+        convex_body_json(&c.body),
+        c.claim.name(),
+        list(&cones),
+        quoted(&c.producer)
+    )
+}
+
+/// The `body` of a general body's JSON twin: one contact per line.
+fn convex_body_json(body: &ConvexBodyText) -> String {
+    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma, inertia_tensor } = body;
+    let tuple = |xs: &[&String]| format!("[{}]", xs.iter().map(|s| quoted(s)).collect::<Vec<_>>().join(", "));
+    let contacts: Vec<String> = contacts.iter().map(|(x, y)| format!("    {}", tuple(&[x, y]))).collect();
+    format!(
+        "{{\"ConvexPolygon\": {{\n        \"contacts\": {},\n        \"inertia\": {},\n        \"gamma\": {}{}\n    }}}}",
         list(&contacts).replace("\n    ]", "\n        ]"),
         tuple(&[&inertia.0, &inertia.1, &inertia.2]),
         param(gamma),
         inertia_tensor.as_ref().map_or(String::new(), |t| {
             format!(",\n        \"inertia_tensor\": {}", tuple(&[&t.0, &t.1, &t.2, &t.3, &t.4, &t.5]))
         }),
+    )
+}
+
+/// Writes a general body's time-to-rest certificate (docs/certificate-format.md §17) as its JSON
+/// twin: one node per line.
+pub fn rest_family_to_json(c: &FamilyTimeToRest) -> String {
+    let arr = |xs: &[String]| format!("[{}]", xs.iter().map(|x| quoted(x)).collect::<Vec<_>>().join(", "));
+    let node = |n: &chatter_kernel::rest_family::FamilyNode| {
+        let cone: Vec<String> = n.cone.iter().map(|g| arr(&g.0)).collect();
+        let next: Vec<String> = n.next.iter().map(|(j, s)| format!("[{j}, {s}]")).collect();
+        format!(
+            "{{\"contact\": {}, \"cone\": [{}], \"weight\": {}, \"numerator\": {}, \"next\": [{}]}}",
+            n.contact,
+            cone.join(", "),
+            arr(&n.weight.0),
+            arr(&n.numerator.0),
+            next.join(", ")
+        )
+    };
+    let entries: Vec<String> = c.entries.iter().map(ToString::to_string).collect();
+    format!(
+        "{{\n    \"format\": {},\n    \"version\": {},\n    \"body\": {},\n    \"coordinates\": \"PaperVelocities\",\n    \"claim\": \"{}\",\n    \"bound\": {},\n    \"entries\": [{}],\n    \"nodes\": {},\n    \"producer\": {}\n}}\n",
+        quoted(&c.format),
+        c.version,
+        convex_body_json(&c.body),
         c.claim.name(),
-        list(&cones),
+        quoted(&c.bound),
+        entries.join(", "),
+        list(&c.nodes.iter().map(node).collect::<Vec<_>>()),
         quoted(&c.producer)
     )
 }
@@ -266,6 +306,10 @@ pub fn convert(text: &str, from: Encoding, target: Target) -> Result<String, Str
         Kind::Rest => {
             let c: TimeToRest = schema(text, from).map_err(unreadable)?;
             Ok(if json { rest_to_json(&c) } else { write_rest(&c) })
+        }
+        Kind::RestFamily => {
+            let c: FamilyTimeToRest = schema(text, from).map_err(unreadable)?;
+            Ok(if json { rest_family_to_json(&c) } else { crate::write::write_rest_family(&c) })
         }
         Kind::Refutation => {
             let r: Refutation = schema(text, from).map_err(unreadable)?;

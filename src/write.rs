@@ -58,24 +58,11 @@ pub fn write(c: &Certificate) -> String {
 /// per line, cones in order.
 pub fn write_convex(c: &ConvexCertificate) -> String {
     let q = |s: &str| quoted(s);
-    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma, inertia_tensor } = &c.body;
     let mut out = String::new();
     out.push_str("Certificate(\n");
     out.push_str(&format!("    format: {},\n", q(&c.format)));
     out.push_str(&format!("    version: {},\n", c.version));
-    out.push_str("    body: ConvexPolygon(\n");
-    out.push_str("        contacts: [\n");
-    for (x, y) in contacts {
-        out.push_str(&format!("            ({}, {}),\n", q(x), q(y)));
-    }
-    out.push_str("        ],\n");
-    out.push_str(&format!("        inertia: ({}, {}, {}),\n", q(&inertia.0), q(&inertia.1), q(&inertia.2)));
-    out.push_str(&format!("        gamma: {},\n", param(gamma)));
-    if let Some(t) = inertia_tensor {
-        let six = [&t.0, &t.1, &t.2, &t.3, &t.4, &t.5].map(|x| q(x)).join(", ");
-        out.push_str(&format!("        inertia_tensor: Some(({six})),\n"));
-    }
-    out.push_str("    ),\n");
+    write_convex_body(&c.body, &mut out);
     out.push_str("    coordinates: PaperVelocities,\n");
     out.push_str(&format!("    claim: {},\n", c.claim.name()));
     out.push_str("    cones: [\n");
@@ -90,6 +77,52 @@ pub fn write_convex(c: &ConvexCertificate) -> String {
     out.push_str("    ],\n");
     out.push_str(&format!("    producer: {},\n", q(&c.producer)));
     out.push_str(")\n");
+    out
+}
+
+/// The `body: ConvexPolygon(...)` field of a general body's file.
+fn write_convex_body(body: &ConvexBodyText, out: &mut String) {
+    let q = |s: &str| quoted(s);
+    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma, inertia_tensor } = body;
+    out.push_str("    body: ConvexPolygon(\n        contacts: [\n");
+    for (x, y) in contacts {
+        out.push_str(&format!("            ({}, {}),\n", q(x), q(y)));
+    }
+    out.push_str("        ],\n");
+    out.push_str(&format!("        inertia: ({}, {}, {}),\n", q(&inertia.0), q(&inertia.1), q(&inertia.2)));
+    out.push_str(&format!("        gamma: {},\n", param(gamma)));
+    if let Some(t) = inertia_tensor {
+        let six = [&t.0, &t.1, &t.2, &t.3, &t.4, &t.5].map(|x| q(x)).join(", ");
+        out.push_str(&format!("        inertia_tensor: Some(({six})),\n"));
+    }
+    out.push_str("    ),\n");
+}
+
+/// RON text of a general body's time-to-rest certificate (docs/certificate-format.md §17).
+pub fn write_rest_family(c: &chatter_kernel::rest_family::FamilyTimeToRest) -> String {
+    let mut out = String::from("FamilyTimeToRest(\n");
+    out.push_str(&format!("    format: {},\n    version: {},\n", quoted(&c.format), c.version));
+    write_convex_body(&c.body, &mut out);
+    out.push_str(&format!("    coordinates: PaperVelocities,\n    claim: {},\n", c.claim.name()));
+    let entries: Vec<String> = c.entries.iter().map(ToString::to_string).collect();
+    out.push_str(&format!(
+        "    bound: {},\n    entries: [{}],\n    nodes: [\n",
+        quoted(&c.bound),
+        entries.join(", ")
+    ));
+    for node in &c.nodes {
+        let cone: Vec<String> = node.cone.iter().map(|g| ron_tuple(&g.0)).collect();
+        let next: Vec<String> = node.next.iter().map(|(j, s)| format!("({j}, {s})")).collect();
+        out.push_str(&format!(
+            "        (\n            contact: {},\n            cone: [{}],\n            weight: {},\n            numerator: {},\n            next: [{}],\n        ),\n",
+            node.contact,
+            cone.join(", "),
+            ron_tuple(&node.weight.0),
+            ron_tuple(&node.numerator.0),
+            next.join(", ")
+        ));
+    }
+    out.push_str(&format!("    ],\n    producer: {},\n)\n", quoted(&c.producer)));
     out
 }
 

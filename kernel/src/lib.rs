@@ -121,5 +121,12 @@ pub mod rest {
     pub use crate::syntax::rest::{FORMAT, Node, TimeToRest, VERSION};
 }
 
+/// Time-to-rest certificates of general convex bodies (feature `family-rest`).
+#[cfg(feature = "family-rest")]
+pub mod rest_family {
+    pub use crate::rules::rest_family::check;
+    pub use crate::syntax::rest_family::{FORMAT, FamilyNode, FamilyTimeToRest, VERSION};
+}
+
 #[cfg(feature = "proof")]
 pub use rules::proof;

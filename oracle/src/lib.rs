@@ -112,6 +112,16 @@ fn judge_value(value: &Value, reader: Reader, limits: &Limits) -> Judgement {
                 Err(f) => done(Kind::Rest, Sided::Two, Err(f)),
             },
         },
+        Reader::RestFamily => match kinds::rest_family::read(value) {
+            Err(f) => unread(f),
+            Ok(file) => match kinds::rest_family::check(&file, limits) {
+                Ok((report, bound)) => Judgement {
+                    time_to_rest_bound: Some(bound),
+                    ..done(Kind::RestFamily, Sided::Two, Ok(report))
+                },
+                Err(f) => done(Kind::RestFamily, Sided::Two, Err(f)),
+            },
+        },
         Reader::Orbit => match kinds::orbit::read(value) {
             Err(f) => unread(f),
             Ok(file) => match kinds::orbit::rules(&file, limits) {

@@ -33,6 +33,8 @@ pub enum Kind {
     Basin,
     /// A time-to-rest certificate (a virtual-time graph).
     Rest,
+    /// A time-to-rest certificate of a general convex body (nodes carry a contact).
+    RestFamily,
 }
 
 /// What an accepted file established, for comparison with the kernel's report.
@@ -91,7 +93,7 @@ pub struct Judgement {
     /// The bound B on the time to rest, T ≤ B h/|v| (canonical text), of an accepted file: for a
     /// rod point certificate, its `time_to_rest_bound` as rule T1 shows it; for an orbit
     /// certificate T̄/(1 - ρ) (docs/certificate-format.md §5); for a time-to-rest certificate, its `bound`
-    /// (rule G5, §16); for a basin certificate, the largest
+    /// (rule G5, §16, and §17 for a general body); for a basin certificate, the largest
     /// exact (time to rest)/h over the drops the oracle followed into X, a lower bound of the
     /// kernel's bound. Kept beside the [`Report`], whose
     /// fields other crates fill in literally.

@@ -95,7 +95,8 @@ pub struct CertifyArgs {
     /// and write it here if the kernel accepts it on both backends; it bounds the time until every
     /// all-down drop's impacts accumulate by B h/|v| (`time_to_rest_bound`). Regular polygons,
     /// 3 <= n <= 64, at a point with rational kappa and gamma, or, for n = 3, 4, 6, on a box of
-    /// them (one graph and one B for the whole box, version 3). Three graphs are tried in turn (nodes padded by 10^-3, 10^-4, 10^-5), then
+    /// them (one graph and one B for the whole box, version 3); general bodies (--body,
+    /// --rectangle, --box, --polygon) at one gamma (format chatter-family-time-to-rest). Three graphs are tried in turn (nodes padded by 10^-3, 10^-4, 10^-5), then
     /// nine that merge an image no node holds into the node it enlarges least (area factors
     /// from 1.05 to 2.5; pad 10^-3); each search stops at 200 nodes and 12 rounds of the covector
     /// search (40 x 20 directions each);
@@ -239,10 +240,9 @@ pub(super) fn is_general(a: &CertifyArgs) -> bool {
 }
 
 pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
-    if a.time_to_rest.is_some() && (a.largest_gamma || is_general(&a)) {
+    if a.time_to_rest.is_some() && a.largest_gamma {
         return Outcome::Usage(
-            "--time-to-rest: takes a regular polygon at a point, not --largest-gamma or a general body"
-                .into(),
+            "--time-to-rest: takes a body at a point or on a box, not --largest-gamma".into(),
         );
     }
     if a.largest_gamma {
@@ -280,7 +280,16 @@ pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
     } else {
         emit(&(summary(&v, &report) + &rest.as_ref().map_or(String::new(), |(path, r)| rest_line(path, r))));
     }
-    match (&report.result, rest.as_ref().map(|r| &r.1)) {
+    outcome(&report.result, rest.as_ref().map(|r| &r.1))
+}
+
+/// The exit outcome of `certify`: the cone certificate and, when asked for, the time-to-rest
+/// certificate must both be made.
+pub(super) fn outcome<T, C>(
+    result: &Result<T, Failure>,
+    rest: Option<&Result<Produced<C>, NotProduced>>,
+) -> Outcome {
+    match (result, rest) {
         (Err(Failure::Internal(s)), _) => Outcome::Internal(s.clone()),
         (_, Some(Err(NotProduced::Disagree(s)))) => {
             Outcome::Internal(format!("the kernel's backends disagree: {s}"))
@@ -298,13 +307,16 @@ fn rest(req: &Request) -> Result<Produced, NotProduced> {
 }
 
 /// The text output's lines about the time-to-rest certificate.
-fn rest_line(path: &std::path::Path, r: &Result<Produced, NotProduced>) -> String {
+pub(super) fn rest_line<C: virtual_time::RestFile>(
+    path: &std::path::Path,
+    r: &Result<Produced<C>, NotProduced>,
+) -> String {
     match r {
         Ok(p) => format!(
             "\ntime_to_rest_bound: {} (about {}): every all-down drop's impacts accumulate within B h/|v| of its first impact (time-to-rest certificate, claim {}, a virtual-time graph of {} nodes accepted by the kernel on both backends) -> {}",
             p.bound,
             p.bound.decimal(6, Rounding::Up),
-            p.cert.claim.name(),
+            p.cert.claim().name(),
             p.nodes,
             path.display()
         ),

@@ -2,13 +2,15 @@
 //! `--box`, `--polygon`, `--body NAME|FILE`. The family finder and exactifier propose one cone
 //! per contact; the kernel checks the version-4 certificate on both backends.
 
-use super::certify_cmd::{CertifyArgs, ms};
+use super::certify_cmd::{CertifyArgs, ms, outcome, rest_line};
 use super::convex_args::GeneralBody;
 use super::{Env, Outcome, emit, emit_report, range};
 use crate::bodies::inertia::Tensor;
 use crate::certify::Failure;
 use crate::certify::convex::{ConvexReport, ConvexRequest, certify_convex};
+use crate::certify::virtual_time;
 use crate::exact::Q;
+use crate::report::certify::RestReport;
 use crate::write::write_convex;
 use chatter_kernel::exact::{ParseLimits, to_canonical};
 use chatter_kernel::syntax::family::ConvexBodyText;
@@ -22,6 +24,8 @@ struct Validated {
     /// The full inertia tensor the body was given by, recorded in the certificate (rule K0).
     tensor: Option<Tensor>,
     output: Option<PathBuf>,
+    /// `--time-to-rest FILE`.
+    rest: Option<PathBuf>,
     json: bool,
     timings: bool,
 }
@@ -39,13 +43,24 @@ fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
     if a.max_vertices < 3 {
         return Err("--max-vertices must be at least 3".into());
     }
+    if a.time_to_rest.is_some() && hi != gamma {
+        return Err("--time-to-rest: a general body's time-to-rest certificate takes gamma at a point, not an interval".into());
+    }
     let mut req = ConvexRequest::new(body);
     req.gamma_hi = (hi != gamma).then_some(hi);
     req.claim = a.claim.choice();
     req.finder.max_iterations = a.max_iterations;
     req.finder.max_vertices = a.max_vertices;
     req.backends = env.backends;
-    Ok(Validated { req, description, tensor, output: a.output, json: a.json, timings: a.timings })
+    Ok(Validated {
+        req,
+        description,
+        tensor,
+        output: a.output,
+        rest: a.time_to_rest,
+        json: a.json,
+        timings: a.timings,
+    })
 }
 
 /// "the family finder + exactifier" or "transport from a regular polygon certificate".
@@ -108,17 +123,36 @@ pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
     {
         return Outcome::Usage(format!("cannot write {}: {e}", path.display()));
     }
+    let rest = v.rest.as_ref().map(|path| {
+        let tensor = v.tensor.as_ref().map(Tensor::urdf);
+        (
+            path,
+            virtual_time::produce_family(
+                &v.req.body,
+                tensor,
+                &virtual_time::Config::default(),
+                &v.req.backends,
+            ),
+        )
+    });
+    if let Some((path, Ok(p))) = &rest
+        && let Err(e) = std::fs::write(path, &p.text)
+    {
+        return Outcome::Usage(format!("cannot write {}: {e}", path.display()));
+    }
     if v.json {
         let output = v.output.as_ref().map(|p| p.display().to_string());
-        emit_report(&crate::report::certify::of_convex(&v.description, &v.req, &report, output, v.timings));
+        let mut r = crate::report::certify::of_convex(&v.description, &v.req, &report, output, v.timings);
+        if let Some((path, result)) = &rest {
+            r.time_to_rest = Some(RestReport::of(result, &path.display().to_string()));
+            r.time_to_rest_bound = result.as_ref().ok().map(|p| p.bound.to_string());
+        }
+        emit_report(&r);
     } else {
-        emit(&summary(&v, &report));
+        let lines = rest.as_ref().map_or(String::new(), |(path, r)| rest_line(path, r));
+        emit(&(summary(&v, &report) + &lines));
     }
-    match &report.result {
-        Ok(_) => Outcome::Success,
-        Err(Failure::Internal(s)) => Outcome::Internal(s.clone()),
-        Err(_) => Outcome::Negative,
-    }
+    outcome(&report.result, rest.as_ref().map(|r| &r.1))
 }
 
 /// Records the full inertia tensor in an accepted certificate and has the kernel check the file

@@ -64,7 +64,7 @@ pub struct CertifyReport {
 }
 
 /// A time-to-rest certificate tried by `certify --time-to-rest` (docs/time-to-rest.md §5,
-/// docs/certificate-format.md §16).
+/// docs/certificate-format.md §16, and §17 for a general body).
 #[derive(Clone, Debug, Serialize, JsonSchema)]
 pub struct RestReport {
     /// Whether the kernel accepted it on both backends (then it was written to `output`).
@@ -84,15 +84,15 @@ pub struct RestReport {
 
 impl RestReport {
     /// The report of a producer run whose file (if accepted) was written to `output`.
-    pub fn of(
-        r: &Result<crate::certify::virtual_time::Produced, crate::certify::virtual_time::NotProduced>,
+    pub fn of<C: crate::certify::virtual_time::RestFile>(
+        r: &Result<crate::certify::virtual_time::Produced<C>, crate::certify::virtual_time::NotProduced>,
         output: &str,
     ) -> Self {
         match r {
             Ok(p) => RestReport {
                 accepted: true,
                 output: Some(output.to_string()),
-                claim: Some(p.cert.claim.name()),
+                claim: Some(p.cert.claim().name()),
                 bound: Some(p.bound.to_string()),
                 nodes: Some(p.nodes),
                 reason: None,

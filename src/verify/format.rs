@@ -48,12 +48,18 @@ pub fn format_of(text: &str) -> Option<String> {
     struct RestHeader {
         format: Option<String>,
     }
+    #[derive(serde::Deserialize)]
+    #[serde(rename = "FamilyTimeToRest")]
+    struct FamilyRestHeader {
+        format: Option<String>,
+    }
     lenient
         .from_str::<CertificateHeader>(text)
         .map(|h| h.format)
         .or_else(|_| lenient.from_str::<ProofHeader>(text).map(|h| h.format))
         .or_else(|_| lenient.from_str::<RefutationHeader>(text).map(|h| h.format))
         .or_else(|_| lenient.from_str::<RestHeader>(text).map(|h| h.format))
+        .or_else(|_| lenient.from_str::<FamilyRestHeader>(text).map(|h| h.format))
         .or_else(|_| lenient.from_str::<Header>(text).map(|h| h.format))
         .ok()
         .flatten()

@@ -426,6 +426,10 @@ fn verify_any(
             let v = chatter_kernel::verify::verify_rest_text_in(text, encoding, limits, backends);
             (rest_verdict_of(path, v), Kind::Certificate)
         }
+        Some(chatter_kernel::rest_family::FORMAT) => {
+            let v = chatter_kernel::verify::verify_rest_family_text_in(text, encoding, limits, backends);
+            (rest_verdict_of(path, v), Kind::Certificate)
+        }
         Some(chatter_kernel::syntax::basin::FORMAT) => {
             let v = chatter_kernel::verify::verify_basin_text_in(text, encoding, limits, backends);
             (basin_verdict_of(path, v), Kind::Certificate)

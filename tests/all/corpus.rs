@@ -86,6 +86,13 @@ fn rejection(
             other => panic!("expected a rejection, got {other:?}"),
         };
     }
+    if format.as_deref() == Some(chatter_kernel::rest_family::FORMAT) {
+        let limits = ParseLimits::default();
+        return match chatter_kernel::verify::verify_rest_family_text_in(text, encoding, limits, backends) {
+            Verdict::Rejected(r) => Some(r),
+            other => panic!("expected a rejection, got {other:?}"),
+        };
+    }
     if format.as_deref() == Some(chatter_kernel::syntax::basin::FORMAT) {
         let limits = ParseLimits::default();
         return match chatter_kernel::verify::verify_basin_text_in(text, encoding, limits, backends) {
@@ -235,6 +242,12 @@ fn corpus_certificates_round_trip_through_the_writer() {
             let cert: chatter_kernel::rest::TimeToRest =
                 chatter_kernel::syntax::read(&text, Encoding::Ron).unwrap();
             assert_eq!(chatter::write::write_rest(&cert), text, "{}", f.display());
+            continue;
+        }
+        if kind == Kind::RestFamily {
+            let cert: chatter_kernel::rest_family::FamilyTimeToRest =
+                chatter_kernel::syntax::read(&text, Encoding::Ron).unwrap();
+            assert_eq!(chatter::write::write_rest_family(&cert), text, "{}", f.display());
             continue;
         }
         if kind == Kind::Basin {

@@ -37,6 +37,7 @@ mod spectral;
 mod sweep;
 mod symbolic;
 mod time_to_rest;
+mod time_to_rest_family;
 mod toolchain;
 mod transport;
 mod verify;

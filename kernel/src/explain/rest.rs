@@ -27,8 +27,10 @@ pub(super) fn words(f: &Failure, locus: &Locus) -> String {
             format!("-b·g = {value} at generator {index}, scaled to v = -1 (rule G1 needs > 0)")
         }
         Failure::Height(first, value) => {
-            let m = if *first { "m_{0,1}" } else { "m_{n-1,0}" };
-            format!("a·{m} = {value} (b·{m} in version 1; rule G2 needs >= 0)")
+            let m = if *first { "m_{i,i+1}" } else { "m_{i-1,i}" };
+            format!(
+                "a·{m} = {value}, i the node's last contact (0 in a regular polygon's frame; b·{m} in version 1; rule G2 needs >= 0)"
+            )
         }
         Failure::Scale(c) => format!("the scale c = {c} (rule G2 needs >= 1)"),
         Failure::Flight(index, a, b) => format!(
@@ -40,7 +42,11 @@ pub(super) fn words(f: &Failure, locus: &Locus) -> String {
             format!("`{field}` is not a field of this version (docs/certificate-format.md §16)")
         }
         Failure::Version(field, false) => format!("`{field}` is missing (docs/certificate-format.md §16)"),
-        Failure::Successor(step, Some(s)) => format!("step {step} names node {s}, which does not exist"),
+        Failure::Successor(step, Some(s)) => {
+            format!(
+                "step {step} names node {s}, which does not exist (or, for a general body, is not a node of contact {step})"
+            )
+        }
         Failure::Successor(0, None) => "the graph has no node".into(),
         Failure::Successor(step, None) => {
             format!("K ∩ C_{step} is not {{0}} but `next` names no node for step {step} (rule G3)")
@@ -52,6 +58,11 @@ pub(super) fn words(f: &Failure, locus: &Locus) -> String {
                 "the virtual time grows at q = {q}: (a_s·R_j q)(-b_r·p) = {l} > (a_r·q)(-b_s·S_j p) = {r}, p scaled to v = -1 (rule G3; a = c b in version 1)"
             )
         }
+        Failure::Entry(i, None) => format!("the entry of contact {i} names no node (rule G4)"),
+        Failure::Entry(i, Some((e, c))) => {
+            format!("the entry of contact {i} names node {e}, a node of contact {c} (rule G4)")
+        }
+        Failure::Contact(c, n) => format!("the node's contact {c} is not one of the body's {n} contacts"),
         Failure::Bound(generator, lhs, rhs) => format!(
             "B is too small at generator {generator} of D: B (-b_0·I_0 g) = {} < a_0·m = {} (rule G5; a = c b in version 1)",
             abbreviate(lhs),

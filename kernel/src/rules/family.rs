@@ -51,7 +51,7 @@ pub fn check<F: Field>(cert: &ConvexCertificate, limits: ParseLimits) -> Result<
     let ends = gammas::<F>(cert, limits)?;
     let mut bodies = Vec::with_capacity(ends.len());
     for (g, path) in &ends {
-        let body = body::<F>(cert, g.clone(), path, limits)?;
+        let body = body::<F>(&cert.body, g.clone(), path, limits)?;
         if let (true, ConvexBodyText::ConvexPolygon { inertia_tensor: Some(t), .. }) =
             (bodies.is_empty(), &cert.body)
         {
@@ -130,7 +130,11 @@ fn at_end(mut e: Rejection, end: Option<String>) -> Rejection {
 
 /// K0: J is J_eff of the full tensor (Proposition 11.0): Izz > 0 (with J positive definite,
 /// the tensor is then positive definite) and each entry of J equal to its Schur complement's.
-fn derived<F: Field>(body: &ConvexBody<F>, t: &TensorText, limits: ParseLimits) -> Result<(), Rejection> {
+pub(super) fn derived<F: Field>(
+    body: &ConvexBody<F>,
+    t: &TensorText,
+    limits: ParseLimits,
+) -> Result<(), Rejection> {
     let names = ["Ixx", "Ixy", "Ixz", "Iyy", "Iyz", "Izz"];
     let texts = [&t.0, &t.1, &t.2, &t.3, &t.4, &t.5];
     let mut v = Vec::with_capacity(6);
@@ -237,13 +241,13 @@ fn prelude(cert: &ConvexCertificate, limits: ParseLimits) -> Result<(), Rejectio
 
 /// The body: canonical numbers, and the assumptions of docs/model.md §11.1 checked by
 /// [`ConvexBody::new`].
-fn body<F: Field>(
-    cert: &ConvexCertificate,
+pub(super) fn body<F: Field>(
+    text: &ConvexBodyText,
     g: F,
     gamma_path: &str,
     limits: ParseLimits,
 ) -> Result<ConvexBody<F>, Rejection> {
-    let ConvexBodyText::ConvexPolygon { contacts, inertia, .. } = &cert.body;
+    let ConvexBodyText::ConvexPolygon { contacts, inertia, .. } = text;
     let mut points = Vec::with_capacity(contacts.len());
     for (k, (x, y)) in contacts.iter().enumerate() {
         in_time(limits, "reading the contacts")?;
@@ -267,7 +271,7 @@ fn body<F: Field>(
 }
 
 /// K1 for cone i: every generator has v < 0, and the generators span a 3-D cone.
-fn cone<F: Field>(i: usize, gens: &Generators<'_, F::Int>) -> Result<Cone<F::Int>, Rejection> {
+pub(super) fn cone<F: Field>(i: usize, gens: &Generators<'_, F::Int>) -> Result<Cone<F::Int>, Rejection> {
     let vectors: Vec<Vec3<F::Int>> =
         gens.vectors.iter().map(|g| [g[0].clone(), g[1].clone(), g[2].clone()]).collect();
     if let Some(g) = vectors.iter().position(|g| !g[2].is_negative()) {
@@ -312,7 +316,7 @@ fn transition<F: Field>(
 }
 
 /// K3 for cone i: I_i(D) ⊆ K_i, on the generators -m_{k,k+1} of D.
-fn all_down<F: Field>(body: &ConvexBody<F>, i: usize, k: &Cone<F::Int>) -> Result<(), Rejection> {
+pub(super) fn all_down<F: Field>(body: &ConvexBody<F>, i: usize, k: &Cone<F::Int>) -> Result<(), Rejection> {
     let map = int_mat(&body.impact(i as i64));
     for (m, g) in body.all_down_generators().iter().enumerate() {
         let g = int_vec(g);
@@ -324,7 +328,7 @@ fn all_down<F: Field>(body: &ConvexBody<F>, i: usize, k: &Cone<F::Int>) -> Resul
 }
 
 /// K4 for the adjacent pair (k, k+1): non-real roots and constant term q < 1 (Lemma 11.5(2)).
-fn pcc<F: Field>(body: &ConvexBody<F>, k: usize) -> Result<(), Rejection> {
+pub(super) fn pcc<F: Field>(body: &ConvexBody<F>, k: usize) -> Result<(), Rejection> {
     let pair = (k, (k + 1) % body.n());
     let quad = body.pair_pcc_quadratic(k as i64).map_err(|at_one| {
         let detail = KindInternal::NotARootAtPair(to_canonical(&at_one), pair);

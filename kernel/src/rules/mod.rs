@@ -9,7 +9,8 @@
 //!   Q(cos 2 pi/n); `family` (feature `family`): general convex bodies (K1-K4);
 //!   `orbit` (feature `orbit`): orbit certificates (O1, O2); `refutation` (feature
 //!   `refutation`); `proof` (feature `proof`): the proof checker; `rest` (feature `rest`):
-//!   time-to-rest certificates (G1-G5).
+//!   time-to-rest certificates (G1-G5); `rest_family` (feature `family-rest`): those of a
+//!   general convex body.
 
 #[cfg(feature = "basin")]
 pub mod basin;
@@ -35,6 +36,8 @@ pub mod refutation;
 pub mod rest;
 #[cfg(all(feature = "rest", feature = "boxes"))]
 pub mod rest_box;
+#[cfg(feature = "family-rest")]
+pub mod rest_family;
 #[cfg(all(feature = "rest", feature = "field"))]
 pub mod rest_field;
 pub mod rod;

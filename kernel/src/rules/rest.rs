@@ -34,7 +34,7 @@ use super::cone::{self as cone_rules, Cone, R2, Target, check_image, int_mat};
 use super::generators::{self, Generators};
 use crate::exact::{Field, ParseLimits, Ring};
 use crate::geometry::Scalar;
-use crate::model::linalg::{Vec3, dot, mat_vec, neg};
+use crate::model::linalg::{Mat3, Vec3, dot, mat_vec, neg};
 use crate::model::polygon::{BodyError, Polygon, is_irrational};
 use crate::reject::{Code, Counted, Detail, KindDetail, KindLocus, Locus, Rejection};
 use crate::syntax::cone::{Body, Claim, Generator, Param};
@@ -69,7 +69,8 @@ pub enum Failure {
     BoxVersion(u64),
     /// G1: -b_r·g <= 0 at generator `.0` of K_r; `.1` its value at the generator scaled to v = -1.
     Denominator(usize, String),
-    /// G2: a_r·m < 0 (version 1: b_r·m) at m_{0,1} (`.0` true) or m_{n-1,0}; `.1` its value.
+    /// G2: a_r·m < 0 (version 1: b_r·m) at m_{i,i+1} (`.0` true) or m_{i-1,i}, i the node's
+    /// last contact (0 in a regular polygon's frame); `.1` its value.
     Height(bool, String),
     /// G2: c_r < 1.
     Scale(String),
@@ -77,13 +78,19 @@ pub enum Failure {
     Flight(usize, String, String),
     /// A node has the field `.0` of the other version (`.1`: it is present).
     Version(&'static str, bool),
-    /// G3: no successor for step `.0`, or one (`.1`) naming no node; step 0: no node at all.
+    /// G3: no successor for step `.0`, or one (`.1`) naming no node (a general body: no node of
+    /// contact `.0`); step 0: no node at all.
     Successor(u64, Option<usize>),
     /// G3: the inequality fails at q = m_{j-1,j} (`.0` true) or m_{j,j+1}; both sides, at the
     /// vertex p scaled to v = -1.
     Increases(bool, String, String),
     /// G5 fails at generator `.0` of D: B (-b_0·I_0 g) and a_0·m.
     Bound(usize, String, String),
+    /// A general body's entry of contact `.0` names no node of that contact (`.1`: the node it
+    /// names and that node's contact).
+    Entry(usize, Option<(usize, usize)>),
+    /// A general body's node names contact `.0`, and the body has `.1` contacts.
+    Contact(usize, usize),
 }
 
 /// Checks a time-to-rest certificate on the backend `F`: the file's rules, then the graph's over
@@ -270,11 +277,11 @@ pub(super) fn body<N: Numbers>(
 }
 
 /// A node read: K_r (R1's checks), b_r, a_r and the successors, over the body's scalar `E`.
-struct Read<'a, E: Scalar> {
-    cone: Cone<E::R>,
-    weight: Vec3<E>,
-    numerator: Vec3<E>,
-    next: &'a [(u64, usize)],
+pub(super) struct Read<'a, E: Scalar> {
+    pub(super) cone: Cone<E::R>,
+    pub(super) weight: Vec3<E>,
+    pub(super) numerator: Vec3<E>,
+    pub(super) next: &'a [(u64, usize)],
 }
 
 /// Reads node r of a file of the given version and checks G1, G2 and F on it.
@@ -284,10 +291,6 @@ fn read<'a, N: Numbers>(
     node: &'a Node,
     nums: &N,
 ) -> Result<Read<'a, N::E>, Rejection> {
-    let limits = nums.limits();
-    at_most("max-generators", node.cone.len(), limits.max_generators, Counted::Generators)?;
-    let gens = nums.vectors(&node.cone, &["u0", "u1", "v"], &|i| format!("nodes[{r}].cone[{i}]"))?;
-    let cone = cone_rules::cone::<N::E>(&gens).map_err(|e| Rejection { locus: locus(r, None, None), ..e })?;
     let (own, other) = if version == 1 { ("scale", "numerator") } else { ("numerator", "scale") };
     let path = |name: &str| format!("nodes[{r}].{name}");
     let (own_absent, other_present) = if version == 1 {
@@ -295,6 +298,10 @@ fn read<'a, N: Numbers>(
     } else {
         (node.numerator.0.is_empty(), !node.scale.is_empty())
     };
+    let limits = nums.limits();
+    at_most("max-generators", node.cone.len(), limits.max_generators, Counted::Generators)?;
+    let gens = nums.vectors(&node.cone, &["u0", "u1", "v"], &|i| format!("nodes[{r}].cone[{i}]"))?;
+    let cone = cone_rules::cone::<N::E>(&gens).map_err(|e| Rejection { locus: locus(r, None, None), ..e })?;
     if other_present {
         let detail = KindDetail::Rest(Failure::Version(other, true));
         return Err(Rejection::at(Code::UnknownField, path(other), detail));
@@ -309,38 +316,55 @@ fn read<'a, N: Numbers>(
         Some(c) => weight.clone().map(|b| b.times(c)),
         None => triple(&node.numerator, &["a0", "a1", "a2"], &path("numerator"), nums)?,
     };
+    let read = Read { cone, weight, numerator, next: &node.next };
+    node_forms(&read, &gens, [rest(body, 0), rest(body, -1)], scale.as_ref(), r)?;
+    Ok(read)
+}
+
+/// G1, G2 and F on node r: -b_r·g > 0 on every generator g, a_r·m >= 0 at the two rest points
+/// `heights` of the configurations after the node's impact (m_{i,i+1}, m_{i-1,i}; version 1:
+/// b_r·m and c_r >= 1), and a_r·g <= b_r·g on every generator.
+pub(super) fn node_forms<E: Scalar>(
+    node: &Read<'_, E>,
+    gens: &Generators<'_, E::R>,
+    heights: [Vec3<E>; 2],
+    scale: Option<&E>,
+    r: usize,
+) -> Result<(), Rejection> {
+    let (weight, numerator) = (&node.weight, &node.numerator);
     let at = Some((r, None, None));
+    let lifted = |g: &[E::R]| -> Vec3<E> { std::array::from_fn(|i| E::lift(&g[i])) };
     for (index, g) in gens.vectors.iter().enumerate() {
-        let g: Vec3<N::E> = std::array::from_fn(|i| N::E::lift(&g[i]));
-        let value = dot(&weight, &g).negated();
+        let g = lifted(g);
+        let value = dot(weight, &g).negated();
         if !value.is_positive() {
             let failure = Failure::Denominator(index, unit(&value, &g));
             return Err(fail(Code::VirtualTimeNotPositive, at, failure));
         }
     }
-    let height = if scale.is_some() { &weight } else { &numerator };
-    for (first, m) in [(true, rest(body, 0)), (false, rest(body, -1))] {
+    let height = if scale.is_some() { weight } else { numerator };
+    for (first, m) in [true, false].into_iter().zip(heights) {
         let value = dot(height, &m);
         if value.is_negative() {
             return Err(fail(Code::VirtualTimeNotPositive, at, Failure::Height(first, value.text())));
         }
     }
-    if let Some(c) = scale.filter(|c| c < &N::E::one()) {
+    if let Some(c) = scale.filter(|c| *c < &E::one()) {
         return Err(fail(Code::VirtualTimeNotPositive, at, Failure::Scale(c.text())));
     }
     for (index, g) in gens.vectors.iter().enumerate() {
-        let g: Vec3<N::E> = std::array::from_fn(|i| N::E::lift(&g[i]));
-        let (a, b) = (dot(&numerator, &g), dot(&weight, &g));
+        let g = lifted(g);
+        let (a, b) = (dot(numerator, &g), dot(weight, &g));
         if a > b {
             let failure = Failure::Flight(index, unit(&a, &g), unit(&b, &g));
             return Err(fail(Code::VirtualTimeIncreases, at, failure));
         }
     }
-    Ok(Read { cone, weight, numerator, next: &node.next })
+    Ok(())
 }
 
 /// Three canonical numbers (`wrong-arity` unless there are three).
-fn triple<N: Numbers>(
+pub(super) fn triple<N: Numbers>(
     g: &Generator,
     names: &'static [&'static str],
     path: &str,
@@ -384,28 +408,32 @@ fn transitions<E: Scalar>(
             let t = Target { point: p, locus: &at, codes: R2, n: body.n() };
             check_image::<E>(&graph[s].cone, &mat_vec(&int_mat(&step), p), &t)?;
             let p: Vec3<E> = std::array::from_fn(|k| E::lift(&p[k]));
-            decreases(body, (&graph[r], &graph[s]), j, &p, (r, i))?;
+            let maps = (Some(&body.relabel(j as i64)), &body.step(j as i64));
+            let qs = [rest(body, j as i64 - 1), rest(body, j as i64)];
+            decreases(maps, qs, (&graph[r], &graph[s]), &p, (r, j, i))?;
         }
     }
     Ok(())
 }
 
-/// G3's inequality at the vertex p for both generators q of the configurations with h_j = 0.
-fn decreases<E: Scalar>(
-    body: &Polygon<E>,
+/// G3's inequality at the vertex p for both generators q of the configurations with h_j = 0
+/// (`qs`: m_{j-1,j}, m_{j,j+1}), with the step's maps: R_j on configurations (`None`: the
+/// identity, a general body) and S_j on velocities.
+pub(super) fn decreases<E: Scalar>(
+    (relabel, step): (Option<&Mat3<E>>, &Mat3<E>),
+    qs: [Vec3<E>; 2],
     (from, to): (&Read<E>, &Read<E>),
-    j: u64,
     p: &Vec3<E>,
-    (r, i): (usize, usize),
+    (r, j, i): (usize, u64, usize),
 ) -> Result<(), Rejection> {
-    let (relabel, sp) = (body.relabel(j as i64), mat_vec(&body.step(j as i64), p));
-    let j = j as i64;
-    for (left, q) in [(true, rest(body, j - 1)), (false, rest(body, j))] {
-        let lhs = dot(&to.numerator, &mat_vec(&relabel, &q)).times(&dot(&from.weight, p).negated());
+    let sp = mat_vec(step, p);
+    for (left, q) in [true, false].into_iter().zip(qs) {
+        let rq = relabel.map_or_else(|| q.clone(), |m| mat_vec(m, &q));
+        let lhs = dot(&to.numerator, &rq).times(&dot(&from.weight, p).negated());
         let rhs = dot(&from.numerator, &q).times(&dot(&to.weight, &sp).negated());
         if lhs > rhs {
             let failure = Failure::Increases(left, unit(&lhs, p), unit(&rhs, p));
-            return Err(fail(Code::VirtualTimeIncreases, Some((r, Some(j as u64), Some(i))), failure));
+            return Err(fail(Code::VirtualTimeIncreases, Some((r, Some(j), Some(i))), failure));
         }
     }
     Ok(())
@@ -413,13 +441,25 @@ fn decreases<E: Scalar>(
 
 /// G5: B (-b_0·I_0 g) >= a_0·m for every generator g of D and both m.
 fn bound_holds<E: Scalar>(body: &Polygon<E>, entry: &Read<E>, bound: &E) -> Result<(), Rejection> {
-    let i0 = body.impact(0);
-    let heights = [rest(body, 0), rest(body, -1)].map(|m| dot(&entry.numerator, &m));
-    for (generator, g) in body.all_down_generators().iter().enumerate() {
-        let lhs = bound.times(&dot(&entry.weight, &mat_vec(&i0, g)).negated());
+    let heights = [rest(body, 0), rest(body, -1)];
+    bound_at(entry, (&body.impact(0), &body.all_down_generators()), heights, bound, 0)
+}
+
+/// G5 at the entry node `r` of an impact with the map I (`impact`): B (-b_r·I g) >= a_r·m for
+/// every generator g of D (`down`) and both rest points m of `heights`.
+pub(super) fn bound_at<E: Scalar>(
+    entry: &Read<E>,
+    (impact, down): (&Mat3<E>, &[Vec3<E>]),
+    heights: [Vec3<E>; 2],
+    bound: &E,
+    r: usize,
+) -> Result<(), Rejection> {
+    let heights = heights.map(|m| dot(&entry.numerator, &m));
+    for (generator, g) in down.iter().enumerate() {
+        let lhs = bound.times(&dot(&entry.weight, &mat_vec(impact, g)).negated());
         if let Some(rhs) = heights.iter().find(|h| lhs < **h) {
             let failure = Failure::Bound(generator, lhs.text(), rhs.text());
-            return Err(fail(Code::BoundTooSmall, Some((0, None, None)), failure));
+            return Err(fail(Code::BoundTooSmall, Some((r, None, None)), failure));
         }
     }
     Ok(())
@@ -432,11 +472,11 @@ fn rest<E: Scalar>(body: &Polygon<E>, k: i64) -> Vec3<E> {
 
 /// A value linear in the vector x (v < 0), as at x scaled to v = -1: the same for every positive
 /// multiple of x, so for the vector as written.
-fn unit<E: Scalar>(value: &E, x: &Vec3<E>) -> String {
+pub(super) fn unit<E: Scalar>(value: &E, x: &Vec3<E>) -> String {
     value.over(&x[2].negated()).unwrap_or_else(|| value.clone()).text()
 }
 
-fn locus(node: usize, step: Option<u64>, vertex: Option<usize>) -> Locus {
+pub(super) fn locus(node: usize, step: Option<u64>, vertex: Option<usize>) -> Locus {
     Locus::Kind(KindLocus::RestNode { node, step, vertex, outside: None, corner: None })
 }
 
@@ -445,6 +485,6 @@ pub(super) fn fail(code: Code, at: Option<(usize, Option<u64>, Option<usize>)>, 
     Rejection::new(code, locus, Detail::Kind(KindDetail::Rest(f)))
 }
 
-fn no_nodes() -> Rejection {
+pub(super) fn no_nodes() -> Rejection {
     fail(Code::MissingSuccessor, None, Failure::Successor(0, None))
 }

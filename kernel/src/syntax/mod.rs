@@ -47,12 +47,14 @@ pub enum Kind {
     Proof,
     /// A time-to-rest certificate (§16).
     Rest,
+    /// A time-to-rest certificate of a general convex body (§17).
+    RestFamily,
 }
 
 /// Every header this build knows: (format, versions, kind, the Cargo feature that builds the kind
 /// (`""`: always built), whether it is built). Each kind's own format first, then the legacy
 /// aliases.
-const HEADERS: [(&str, [u64; 2], Kind, &str, bool); 9] = [
+const HEADERS: [(&str, [u64; 2], Kind, &str, bool); 10] = [
     ("chatter-certificate", [1, 3], Kind::Cone, "", true),
     ("chatter-family-certificate", [1, 2], Kind::Family, "family", cfg!(feature = "family")),
     ("chatter-orbit-certificate", [1, 1], Kind::Orbit, "orbit", cfg!(feature = "orbit")),
@@ -60,6 +62,7 @@ const HEADERS: [(&str, [u64; 2], Kind, &str, bool); 9] = [
     ("chatter-refutation", [1, 1], Kind::Refutation, "refutation", cfg!(feature = "refutation")),
     ("chatter-proof", [1, 1], Kind::Proof, "proof", cfg!(feature = "proof")),
     ("chatter-time-to-rest", [1, 3], Kind::Rest, "rest", cfg!(feature = "rest")),
+    ("chatter-family-time-to-rest", [1, 1], Kind::RestFamily, "family-rest", cfg!(feature = "family-rest")),
     ("chatter-certificate", [4, 4], Kind::Family, "family", cfg!(feature = "family")),
     ("chatter-certificate", [5, 5], Kind::Orbit, "orbit", cfg!(feature = "orbit")),
 ];

@@ -11,7 +11,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The kinds of verdict: name in the table, the rules file (under src/), the features.
-const KINDS: [(&str, &str, &[&str]); 13] = [
+const KINDS: [(&str, &str, &[&str]); 14] = [
     ("point certificates, n = 3, 4, 6", "rules/cone.rs", &[]),
     ("point certificates of the rod", "rules/rod.rs", &[]),
     ("box certificates", "rules/boxes.rs", &["boxes"]),
@@ -25,6 +25,7 @@ const KINDS: [(&str, &str, &[&str]); 13] = [
     ("time-to-rest certificates", "rules/rest.rs", &["rest"]),
     ("time-to-rest certificates in number fields", "rules/rest.rs", &["rest", "field"]),
     ("time-to-rest certificates on boxes", "rules/rest.rs", &["rest", "boxes"]),
+    ("time-to-rest certificates of general bodies", "rules/rest_family.rs", &["family-rest"]),
 ];
 
 /// Point certificates for n = 3, 4, 6: at most this many lines to read, of which at most this many
@@ -32,7 +33,7 @@ const KINDS: [(&str, &str, &[&str]); 13] = [
 /// at its measurement (1,821 before the JSON twin, the codes of the other kinds and the
 /// conveniences left the point kernel's files; docs/kernel-soundness.md §4 says where the lines
 /// still are) so that it cannot grow unseen.
-const POINT_BUDGET: (usize, usize) = (1_643, 279);
+const POINT_BUDGET: (usize, usize) = (1_645, 279);
 
 fn src() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")

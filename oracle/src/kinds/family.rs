@@ -25,16 +25,33 @@ pub const INTERVALS: u64 = 2;
 /// The most contacts of a body, and cones of a family (§13).
 const MAX_CONTACTS: usize = 64;
 
+/// The body `ConvexPolygon(...)` as written (§13; also the body of a general body's time-to-rest
+/// certificate, §17).
+#[derive(Default)]
+pub struct BodyText<'a> {
+    /// The contacts r_k, two numbers each.
+    pub contacts: Vec<Vec<&'a str>>,
+    /// J as (Jxx, Jxy, Jyy).
+    pub inertia: Vec<&'a str>,
+    /// The optional full inertia tensor (Ixx, Ixy, Ixz, Iyy, Iyz, Izz) as written (rule K0).
+    pub tensor: Option<Vec<&'a str>>,
+    /// γ as written: one number, or the two ends of an interval.
+    pub gamma: Vec<&'a str>,
+}
+
+impl<'a> BodyText<'a> {
+    /// Every number of the body as text, for `max-total-digits`.
+    pub fn numbers(&self) -> impl Iterator<Item = &&'a str> {
+        let contacts = self.contacts.iter().flatten();
+        contacts.chain(&self.inertia).chain(&self.gamma).chain(self.tensor.iter().flatten())
+    }
+}
+
 /// A family certificate as read.
 pub struct FamilyFile<'a> {
     /// 1 or 2 (4 with the legacy header).
     version: u64,
-    contacts: Vec<Vec<&'a str>>,
-    inertia: Vec<&'a str>,
-    /// The optional full inertia tensor (Ixx, Ixy, Ixz, Iyy, Iyz, Izz) as written (rule K0).
-    tensor: Option<Vec<&'a str>>,
-    /// γ as written: one number, or the two ends of an interval.
-    gamma: Vec<&'a str>,
+    body: BodyText<'a>,
     claim: Claim,
     cones: Vec<Vec<Vec<&'a str>>>,
 }
@@ -43,7 +60,7 @@ impl FamilyFile<'_> {
     /// [γ_lo, γ_hi] as written when γ is an interval (an accepted file's numbers are canonical):
     /// what the report gives as `gamma_interval`.
     pub fn gamma_interval(&self) -> Option<[String; 2]> {
-        match self.gamma[..] {
+        match self.body.gamma[..] {
             [lo, hi] => Some([lo.to_string(), hi.to_string()]),
             _ => None,
         }
@@ -81,7 +98,9 @@ fn exactly<'a>(v: &'a Value, n: usize, what: &str) -> Checked<Vec<&'a str>> {
     Ok(xs)
 }
 
-fn body<'a>(value: &'a Value, f: &mut FamilyFile<'a>) -> Checked<()> {
+/// The body `ConvexPolygon(contacts, inertia, gamma, inertia_tensor)` of §13 as written.
+pub fn body_text(value: &Value) -> Checked<BodyText<'_>> {
+    let mut f = BodyText::default();
     let (name, fields) = variant(value)?;
     if name != "ConvexPolygon" {
         return Err(Fail::new("unknown-variant", format!("unknown body `{name}`")));
@@ -100,17 +119,15 @@ fn body<'a>(value: &'a Value, f: &mut FamilyFile<'a>) -> Checked<()> {
             _ => f.gamma = param(v)?,
         }
         Ok(())
-    })
+    })?;
+    Ok(f)
 }
 
 /// The schema of §13.
 pub fn read(v: &Value) -> Checked<FamilyFile<'_>> {
     let mut f = FamilyFile {
         version: 0,
-        contacts: vec![],
-        inertia: vec![],
-        tensor: None,
-        gamma: vec![],
+        body: BodyText::default(),
         claim: Claim::EffectivelyInvariant,
         cones: vec![],
     };
@@ -127,7 +144,7 @@ pub fn read(v: &Value) -> Checked<FamilyFile<'_>> {
         match name {
             "format" | "producer" => drop(string(value)?),
             "version" => f.version = integer(value)?,
-            "body" => body(value, &mut f)?,
+            "body" => f.body = body_text(value)?,
             "coordinates" => drop(unit_variant(value, &[("PaperVelocities", true)])?),
             "claim" => {
                 let known: Vec<(&str, bool)> = Claim::ALL.iter().map(|(_, n)| (*n, true)).collect();
@@ -151,10 +168,7 @@ fn file_rules(f: &FamilyFile, limits: &Limits) -> Checked<()> {
     if f.claim == Claim::CompleteChatterFromSet {
         return Err(Fail::new("unknown-variant", "CompleteChatterFromSet is an orbit claim"));
     }
-    if f.contacts.len() > MAX_CONTACTS {
-        let why = format!("field `body.contacts`: {} contacts, at most {MAX_CONTACTS}", f.contacts.len());
-        return Err(Fail::new("unsupported-body", why));
-    }
+    contact_count(&f.body)?;
     if f.cones.iter().any(|c| c.len() > limits.max_generators) {
         return Err(Fail::new("too-large", "a cone with more generators than max-generators"));
     }
@@ -162,9 +176,7 @@ fn file_rules(f: &FamilyFile, limits: &Limits) -> Checked<()> {
         let why = format!("field `cones`: {} cones, at most {MAX_CONTACTS}", f.cones.len());
         return Err(Fail::new("wrong-arity", why));
     }
-    let numbers =
-        f.contacts.iter().flatten().chain(&f.inertia).chain(&f.gamma).chain(f.tensor.iter().flatten());
-    let chars: usize = numbers.chain(f.cones.iter().flatten().flatten()).map(|s| s.len()).sum();
+    let chars: usize = f.body.numbers().chain(f.cones.iter().flatten().flatten()).map(|s| s.len()).sum();
     if chars > limits.max_total_digits {
         return Err(Fail::new("too-large", "more characters of numbers than max-total-digits"));
     }
@@ -175,7 +187,7 @@ fn file_rules(f: &FamilyFile, limits: &Limits) -> Checked<()> {
 /// canonical numbers with lo ≤ hi, each distinct end once.
 fn ends(f: &FamilyFile, limits: &Limits) -> Checked<Vec<End>> {
     let q = Field::rationals();
-    let [lo, hi] = match f.gamma[..] {
+    let [lo, hi] = match f.body.gamma[..] {
         [g] => {
             let gamma = element("body.gamma", g, &q, limits)?;
             return Ok(vec![End { gamma, path: "body.gamma", of_interval: false }]);
@@ -193,36 +205,58 @@ fn ends(f: &FamilyFile, limits: &Limits) -> Checked<Vec<End>> {
     let hi =
         End { gamma: element("body.gamma[1]", hi, &q, limits)?, path: "body.gamma[1]", of_interval: true };
     if lo.gamma > hi.gamma {
-        let why = format!("field `body.gamma`: the interval [{}, {}] is empty", f.gamma[0], f.gamma[1]);
+        let why =
+            format!("field `body.gamma`: the interval [{}, {}] is empty", f.body.gamma[0], f.body.gamma[1]);
         return Err(Fail::new("parameter-out-of-range", why));
     }
     Ok(if lo.gamma == hi.gamma { vec![lo] } else { vec![lo, hi] })
 }
 
+/// At most 64 contacts (`unsupported-body`), a rule of the file before any number.
+pub fn contact_count(t: &BodyText) -> Checked<()> {
+    if t.contacts.len() > MAX_CONTACTS {
+        let why = format!("field `body.contacts`: {} contacts, at most {MAX_CONTACTS}", t.contacts.len());
+        return Err(Fail::new("unsupported-body", why));
+    }
+    Ok(())
+}
+
 /// The body at the value `end` of γ; rule K0 with it when `first`.
 fn the_body(f: &FamilyFile, end: &End, first: bool, limits: &Limits) -> Checked<Body> {
+    convex_body(&f.body, (&end.gamma, end.path), first, limits)
+}
+
+/// The body of `t` at γ (read from the field `path`): its numbers, (A1), (A2), J positive
+/// definite, 0 ≤ γ ≤ 1, and rule K0 when `tensor` (and the file has one).
+pub fn convex_body(
+    t: &BodyText,
+    (gamma, path): (&Num, &str),
+    tensor: bool,
+    limits: &Limits,
+) -> Checked<Body> {
     let q = Field::rationals();
     let mut contacts = vec![];
     // The arities of the contacts, the inertia and the tensor were read ([`exactly`]).
-    for (k, c) in f.contacts.iter().enumerate() {
+    for (k, c) in t.contacts.iter().enumerate() {
         let path = format!("body.contacts[{k}]");
         contacts.push((element(&path, c[0], &q, limits)?, element(&path, c[1], &q, limits)?));
     }
     let j: Vec<Num> =
-        f.inertia.iter().map(|s| element("body.inertia", s, &q, limits)).collect::<Checked<_>>()?;
-    let body =
-        Body::new(contacts, [j[0].clone(), j[1].clone(), j[2].clone()], end.gamma.clone()).map_err(|e| {
-            match e {
-                BodyFault::Gamma => end.field("parameter-out-of-range", "gamma must lie in [0, 1]"),
-                BodyFault::Inertia => Fail {
-                    codes: vec!["unsupported-body", "parameter-out-of-range"],
-                    why: "J is not positive definite".into(),
-                },
-                other => Fail::new("unsupported-body", format!("{other:?}")),
+        t.inertia.iter().map(|s| element("body.inertia", s, &q, limits)).collect::<Checked<_>>()?;
+    let body = Body::new(contacts, [j[0].clone(), j[1].clone(), j[2].clone()], gamma.clone()).map_err(
+        |e| match e {
+            BodyFault::Gamma => {
+                Fail::new("parameter-out-of-range", format!("field `{path}`: gamma must lie in [0, 1]"))
             }
-        })?;
-    if let Some(t) = &f.tensor
-        && first
+            BodyFault::Inertia => Fail {
+                codes: vec!["unsupported-body", "parameter-out-of-range"],
+                why: "J is not positive definite".into(),
+            },
+            other => Fail::new("unsupported-body", format!("{other:?}")),
+        },
+    )?;
+    if let Some(t) = &t.tensor
+        && tensor
     {
         effective_inertia(t, &j, limits)?;
     }

@@ -8,3 +8,4 @@ pub mod numbers;
 pub mod orbit;
 pub mod refutation;
 pub mod rest;
+pub mod rest_family;

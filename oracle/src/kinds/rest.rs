@@ -59,7 +59,7 @@ impl RestFile<'_> {
 }
 
 /// A pair (j, s) of `next`: after step j, node s.
-fn successor(v: &Value) -> Checked<(u64, u64)> {
+pub fn successor(v: &Value) -> Checked<(u64, u64)> {
     match tuple(v)? {
         [j, s] => Ok((integer(j)?, integer(s)?)),
         xs => Err(Fail::new("syntax", format!("a successor is a pair (j, s), found {} values", xs.len()))),
@@ -187,7 +187,7 @@ fn body(f: &RestFile, limits: &Limits) -> Checked<Polygon> {
 }
 
 /// A triple of numbers (a generator or a covector), `wrong-arity` unless it has three.
-fn triple(path: &str, texts: &[&str], field: &Arc<Field>, limits: &Limits) -> Checked<V3> {
+pub fn triple(path: &str, texts: &[&str], field: &Arc<Field>, limits: &Limits) -> Checked<V3> {
     if texts.len() != 3 {
         return Err(Fail::new("wrong-arity", format!("{path} has {} coordinates", texts.len())));
     }

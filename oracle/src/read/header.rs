@@ -15,6 +15,8 @@ pub const ORBIT: &str = "chatter-orbit-certificate";
 pub const BASIN: &str = "chatter-basin-certificate";
 /// `format` of time-to-rest certificates (§16).
 pub const REST: &str = "chatter-time-to-rest";
+/// `format` of time-to-rest certificates of a general convex body (§17).
+pub const REST_FAMILY: &str = "chatter-family-time-to-rest";
 /// `format` of refutations (§10).
 pub const REFUTATION: &str = "chatter-refutation";
 
@@ -34,11 +36,13 @@ pub enum Reader {
     Basin,
     /// Time-to-rest certificates, versions 1 to 3 (§16).
     Rest,
+    /// Time-to-rest certificates of a general convex body, version 1 (§17).
+    RestFamily,
 }
 
 /// Reads `format` and `version` and picks the reader. The top-level struct's name, when written,
 /// must be `Certificate` for certificates, `TimeToRest` for time-to-rest certificates (§16's
-/// example) and `Refutation` for refutations (checked after the
+/// example), `FamilyTimeToRest` for those of a general body (§17) and `Refutation` for refutations (checked after the
 /// header: the kernel reads the header under any struct name, then the kind's schema).
 pub fn header(v: &Value) -> Checked<Reader> {
     let named = match v {
@@ -64,7 +68,7 @@ pub fn header(v: &Value) -> Checked<Reader> {
         }
     }
     let format = format.flatten().ok_or_else(|| Fail::new("missing-field", "missing field `format`"))?;
-    if ![CERTIFICATE, FAMILY, ORBIT, REFUTATION, BASIN, REST].contains(&format) {
+    if ![CERTIFICATE, FAMILY, ORBIT, REFUTATION, BASIN, REST, REST_FAMILY].contains(&format) {
         return Err(Fail::new("wrong-format", format!("format {format:?}")));
     }
     let version = version.flatten().ok_or_else(|| Fail::new("missing-field", "missing field `version`"))?;
@@ -76,11 +80,13 @@ pub fn header(v: &Value) -> Checked<Reader> {
         (CERTIFICATE, 5) | (ORBIT, 1) => Reader::Orbit,
         (BASIN, 1..=2) => Reader::Basin,
         (REST, 1..=3) => Reader::Rest,
+        (REST_FAMILY, 1) => Reader::RestFamily,
         _ => return Err(Fail::new("unsupported-version", format!("version {version}"))),
     };
     let expected_name = match reader {
         Reader::Refutation => "Refutation",
         Reader::Rest => "TimeToRest",
+        Reader::RestFamily => "FamilyTimeToRest",
         _ => "Certificate",
     };
     if let Some(name) = named

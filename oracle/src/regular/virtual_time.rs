@@ -51,6 +51,14 @@ fn after_impact(b: &Polygon) -> [V3; 2] {
 /// documents leave the order open).
 pub fn node_rules(b: &Polygon, r: usize, node: &Node) -> Checked<Polygon2> {
     let k = cone_polygon(&node.cone).map_err(|f| Fail { why: format!("node {r}: {}", f.why), ..f })?;
+    node_forms(r, node, &after_impact(b))?;
+    Ok(k)
+}
+
+/// G1, G2 and F on node r (its cone's rule R1 checked): -b_r·g > 0 at every generator g,
+/// a_r·m ≥ 0 at both rest points `heights` of the configurations after the node's impact (in
+/// version 1 b_r·m, and c_r ≥ 1), and a_r·g ≤ b_r·g at every generator.
+pub fn node_forms(r: usize, node: &Node, heights: &[V3; 2]) -> Checked<()> {
     if let Some(i) = node.cone.iter().position(|g| !minus(&dot(&node.weight, g)).is_positive()) {
         return Err(Fail::new(
             "virtual-time-not-positive",
@@ -58,9 +66,9 @@ pub fn node_rules(b: &Polygon, r: usize, node: &Node) -> Checked<Polygon2> {
         ));
     }
     let height = if node.scale.is_some() { &node.weight } else { &node.numerator };
-    let heights = after_impact(b).iter().all(|m| !dot(height, m).is_negative());
-    let one = Num::int(&b.kappa.field, 1);
-    if !heights || node.scale.as_ref().is_some_and(|c| (c - &one).is_negative()) {
+    let positive = heights.iter().all(|m| !dot(height, m).is_negative());
+    let below_one = |c: &Num| (c - &Num::int(&c.field, 1)).is_negative();
+    if !positive || node.scale.as_ref().is_some_and(below_one) {
         return Err(Fail::new("virtual-time-not-positive", format!("node {r}: a·m < 0 or c < 1 (G2)")));
     }
     if let Some(i) = node.cone.iter().position(|g| dot(&node.numerator, g) > dot(&node.weight, g)) {
@@ -69,7 +77,7 @@ pub fn node_rules(b: &Polygon, r: usize, node: &Node) -> Checked<Polygon2> {
             format!("node {r}: a·g > b·g at generator {i}: Φ falls slower than time in flight (F)"),
         ));
     }
-    Ok(k)
+    Ok(())
 }
 
 /// The node `next` names for step j of node r, `missing-successor` when it names none (or a node

@@ -13,6 +13,7 @@ mod family;
 mod mutations;
 mod orbit_field;
 mod produced;
+mod rest_family;
 mod rules;
 mod time_to_rest;
 mod units;

@@ -8,10 +8,10 @@
 //! ([`super::exactify`], [`super::numerator`]), and the kernel checks the file.
 
 use super::Num;
-use super::exactify::{Edge, Node, rest};
+use super::exactify::Exact;
+use super::frames::{Frames, apply};
 use super::tie::Ties;
 
-use chatter_kernel::model::Polygon;
 use chatter_kernel::model::linalg::{Vec3, is_zero, mat_vec};
 use microlp::{ComparisonOp, OptimizationDirection, Problem, SolveOutcome, Variable};
 
@@ -48,7 +48,8 @@ pub struct Data {
     reps: usize,
     tr: Vec<M>,
     gens: Vec<Vec<V>>,
-    ms: [V; 2],
+    /// Per node, the rest points of (G2).
+    ms: Vec<[V; 2]>,
     pairs: Vec<Pair>,
     kicks: Vec<Vec<V>>,
 }
@@ -69,9 +70,9 @@ fn pull(m: &M, y: &V) -> V {
 impl Data {
     /// The data of the exact graph (`kicks`: per node index of a representative, its tied kicks),
     /// with the (G3) pairs of every body (the corners of a box).
-    pub fn new<E: Num>(
-        bodies: &[Polygon<E>],
-        (nodes, edges): (&[Node<E>], &[Edge<E>]),
+    pub fn new<B: Frames>(
+        bodies: &[B],
+        (nodes, edges): Exact<'_, B::E>,
         t: &Ties,
         kicks: Vec<Vec<V>>,
     ) -> Result<Self, String> {
@@ -79,10 +80,10 @@ impl Data {
         let tr = super::numerator::transports(body, t)?;
         let mut pairs = Vec::new();
         for (body, e) in bodies.iter().flat_map(|b| edges.iter().map(move |e| (b, e))) {
-            let (j, rel, step) = (e.step as i64, body.relabel(e.step as i64), body.step(e.step as i64));
+            let (rel, step) = (body.relabel(e.step), body.step(e.step));
             for p in e.piece.iter().filter(|p| !is_zero(p)) {
-                for q in [rest(body, j - 1), rest(body, j)] {
-                    let (p, sp, rq) = (f(p), f(&mat_vec(&step, p)), f(&mat_vec(&rel, &q)));
+                for q in body.landing(e.step) {
+                    let (p, sp, rq) = (f(p), f(&mat_vec(&step, p)), f(&apply(rel.as_ref(), &q)));
                     let q = f(&q);
                     let weight = (dot(&p, &p) * dot(&q, &q)).sqrt();
                     pairs.push(Pair { weight, r: e.from, s: e.to, p, sp, q, rq });
@@ -90,7 +91,7 @@ impl Data {
             }
         }
         let gens = nodes.iter().map(|n| n.cone.vertices.iter().map(f).collect()).collect();
-        let ms = [f(&rest(body, 0)), f(&rest(body, -1))];
+        let ms = nodes.iter().map(|x| body.heights(x.label).map(|m| f(&m))).collect();
         Ok(Data { rep: t.rep.clone(), reps: nodes.len(), tr, gens, ms, pairs, kicks })
     }
 
@@ -187,7 +188,7 @@ fn numerator_step(d: &Data, b: &[V], scale: Option<f64>) -> Option<(Vec<V>, f64)
         for g in &d.gens[r] {
             lp.row(&[(k, pull(&d.tr[r], g))], dot(&br, g), None, ComparisonOp::Le);
         }
-        for m in &d.ms {
+        for m in &d.ms[r] {
             lp.row(&[(k, pull(&d.tr[r], m))], 0.0, None, ComparisonOp::Ge);
         }
     }

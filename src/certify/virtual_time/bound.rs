@@ -1,31 +1,32 @@
 //! The bound B of (G5) (docs/time-to-rest.md §5, Theorem 5.1 (f)): the least B with
-//! B (−b_0·I_0(−m_{k,k+1})) ≥ c_0 (b_0·m) for every k and m ∈ {m_{0,1}, m_{n−1,0}}, rounded up
-//! to a multiple of 2^-20. Untrusted: the kernel checks (G5).
+//! B (−b_e·I_i(−m_{k,k+1})) ≥ a_e·m for every entry node e (of contact i: node 0 and i = 0 for a
+//! regular polygon), every k and m ∈ {m_{i,i+1}, m_{i−1,i}}, rounded up to a multiple of 2^-bits.
+//! Untrusted: the kernel checks (G5).
 
 use super::Num;
-use super::exactify::{Node, rest};
+use super::exactify::Node;
+use super::frames::Frames;
 use crate::exact::{Q, QExt};
-use chatter_kernel::model::Polygon;
-use chatter_kernel::model::linalg::{dot, mat_vec};
+use chatter_kernel::exact::{OrderedField as _, Ring as _};
+use chatter_kernel::model::linalg::{Vec3, dot, mat_vec};
 
-/// Bits of B's dyadic rounding.
-const BITS: u64 = 20;
-
-/// B from node 0 and its scale c_0; `Err` if some −b_0·I_0(−m_{k,k+1}) is not positive.
-pub fn bound<E: Num>(body: &Polygon<E>, entry: &Node<E>, c0: &Q) -> Result<Q, String> {
-    let i0 = body.impact(0);
-    let height =
-        [rest(body, 0), rest(body, -1)].iter().map(|m| dot(&entry.weight, m)).max().unwrap_or_else(E::zero);
-    let mut need = E::zero();
-    for (k, g) in body.all_down_generators().iter().enumerate() {
-        let d = dot(&entry.weight, &mat_vec(&i0, g)).negated();
-        if !d.is_positive() {
-            return Err(format!("(G5): -b_0·I_0(-m_{{{k},{}}}) is not positive", k + 1));
-        }
-        let b = E::from_q(c0).times(&height).over(&d).unwrap_or_else(E::zero);
-        if b > need {
-            need = b;
+/// B for the numerators `a` (a_r = c_r b_r for scales), rounded up to a multiple of 2^-`bits`;
+/// `Err` if some −b_e·I_i(−m_{k,k+1}) is not positive.
+pub fn bound<B: Frames>(body: &B, nodes: &[Node<B::E>], a: &[Vec3<B::E>], bits: u64) -> Result<Q, String> {
+    let mut need = B::E::zero();
+    for (e, i) in body.entries().into_iter().enumerate() {
+        let map = body.impact(i);
+        let height = body.heights(i).iter().map(|m| dot(&a[e], m)).max().unwrap_or_else(B::E::zero);
+        for (k, g) in body.all_down().iter().enumerate() {
+            let d = dot(&nodes[e].weight, &mat_vec(&map, g)).negated();
+            if !d.is_positive() {
+                return Err(format!("(G5): -b_{e}·I_{i}(-m_{{{k},{}}}) is not positive", (k + 1) % body.n()));
+            }
+            let b = height.over(&d).unwrap_or_else(B::E::zero);
+            if b > need {
+                need = b;
+            }
         }
     }
-    Ok(need.upper().ceil_dyadic(BITS))
+    Ok(need.upper().ceil_dyadic(bits))
 }

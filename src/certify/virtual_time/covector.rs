@@ -3,51 +3,43 @@
 //! the least scale c_r = max over outgoing edges of ratio × c_s (a pattern search, a few rounds
 //! over the components). Untrusted: the scales that go into the file are exact ([`super::scale`]).
 
+use super::frames::FloatFrames;
 use super::graph::{Edge, Graph};
 use super::tie::{self, Ties};
 use crate::finder::geometry::{P2, lift};
-use crate::model::float::FloatPolygon;
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::Vector3;
 
 type V3 = Vector3<f64>;
 
-/// The float model pieces the search needs.
+/// The float model pieces the search needs: the rounded maps and the graph's labels.
 pub struct Maps<'a> {
-    pub body: &'a FloatPolygon,
-    /// R_j^{-1}, j = 0..n-1 (index 0 unused): b_s = (R_j^{-1})^T b_r.
-    inverse: Vec<Matrix3<f64>>,
-    /// S_j and R_j, j = 0..n-1 (the search evaluates [`ratio`] millions of times).
-    step: Vec<(Matrix3<f64>, Matrix3<f64>)>,
-    /// m_{k,k+1}, k = 0..n-1.
-    rest: Vec<V3>,
+    pub body: &'a FloatFrames,
+    label: Vec<usize>,
 }
 
 impl<'a> Maps<'a> {
-    pub fn new(body: &'a FloatPolygon) -> Self {
-        let inv = |j: usize| body.relabel(j as i64).try_inverse().unwrap_or_else(Matrix3::zeros);
-        let step = |j: usize| (body.step(j as i64), body.relabel(j as i64));
-        let rest = |k: usize| body.rest_point(k as i64, k as i64 + 1).unwrap_or_else(V3::zeros);
-        let n = body.n();
-        Maps {
-            body,
-            inverse: (0..n).map(inv).collect(),
-            step: (0..n).map(step).collect(),
-            rest: (0..n).map(rest).collect(),
-        }
+    pub fn new(body: &'a FloatFrames, g: &Graph) -> Self {
+        Maps { body, label: g.label.clone() }
+    }
+
+    /// The step of the edge back along a tie from node r reached by step j.
+    pub fn back(&self, r: usize, j: usize) -> Option<usize> {
+        self.body.back(self.label[r], j)
     }
 
     /// b transported along the steps of a tie path (docs/time-to-rest.md §5).
     pub fn transport(&self, path: &[usize], b: V3) -> V3 {
-        path.iter().fold(b, |b, &j| self.inverse[j].transpose() * b)
+        path.iter().fold(b, |b, &j| self.body.inverse(j).transpose() * b)
     }
 
     /// An orthonormal basis of the kick directions d_j of the component's tie-tree edges carried
     /// to its representative (b_r·d_j = 0 is needed there: [`super::tie`]).
     pub fn tied_kicks(&self, g: &Graph, t: &Ties, k: usize) -> Vec<V3> {
         let mut basis: Vec<V3> = Vec::new();
-        for e in g.edges.iter().filter(|e| t.rep[e.from] == k && tie::along_tree(t, self.body.n(), e)) {
-            let d = self.body.impact_direction(e.step as i64);
-            let a = t.path[e.from].iter().rev().fold(d, |d, &i| self.inverse[i] * d);
+        let back = |r: usize, j: usize| self.back(r, j);
+        for e in g.edges.iter().filter(|e| t.rep[e.from] == k && tie::along_tree(t, &back, e)) {
+            let d = self.body.kick(e.step);
+            let a = t.path[e.from].iter().rev().fold(d, |d, &i| self.body.inverse(i) * d);
             let a = basis.iter().fold(a, |a, u| a - u * u.dot(&a));
             if a.norm() > 1e-9 {
                 basis.push(a.normalize());
@@ -57,14 +49,14 @@ impl<'a> Maps<'a> {
     }
 
     fn m(&self, k: i64) -> V3 {
-        self.rest[k.rem_euclid(self.rest.len() as i64) as usize]
+        self.body.rest(k)
     }
 }
 
 /// The largest ratio Φ_s(after)/Φ_r(before) over the piece's vertices and q ∈ {m_{j−1,j},
 /// m_{j,j+1}} (the float form of (G3)); infinite where a denominator is not positive.
 pub fn ratio(maps: &Maps, br: &V3, bs: &V3, j: usize, piece: &[P2]) -> f64 {
-    let (s, rel) = &maps.step[j % maps.step.len()];
+    let (s, rel) = (maps.body.step(j), maps.body.relabel(j));
     // b_s·R_j q and b_r·q do not depend on the vertex.
     let terms = [maps.m(j as i64 - 1), maps.m(j as i64)].map(|q| (bs.dot(&(rel * q)), br.dot(&q)));
     let mut worst: f64 = 0.0;
@@ -88,9 +80,11 @@ pub fn ratio(maps: &Maps, br: &V3, bs: &V3, j: usize, piece: &[P2]) -> f64 {
     worst
 }
 
-/// (G1) and (G2) with margins: b·m_{0,1}, b·m_{n−1,0} > 1e-9 and −b·g > 1e-6 on the node.
-pub fn admissible(maps: &Maps, b: &V3, node: &[P2]) -> bool {
-    b.dot(&maps.m(0)).min(b.dot(&maps.m(-1))) > 1e-9 && node.iter().all(|g| -b.dot(&lift(g)) > 1e-6)
+/// (G1) and (G2) with margins on node r: b·m > 1e-9 at both rest points of its label and
+/// −b·g > 1e-6 on the node.
+pub fn admissible(maps: &Maps, b: &V3, g: &Graph, r: usize) -> bool {
+    let [m0, m1] = maps.body.heights(g.label[r]);
+    b.dot(&m0).min(b.dot(&m1)) > 1e-9 && g.nodes[r].iter().all(|p| -b.dot(&lift(p)) > 1e-6)
 }
 
 /// n × n/2 unit directions on a latitude-longitude grid.
@@ -134,7 +128,7 @@ fn best(score: &dyn Fn(&V3) -> f64, grid: usize, extra: Option<V3>, steps: usize
 fn first(maps: &Maps, g: &Graph, k: usize, grid: usize) -> V3 {
     let outs: Vec<&Edge> = g.edges.iter().filter(|e| e.from == k).collect();
     let score = |b: &V3| {
-        if !admissible(maps, b, &g.nodes[k]) {
+        if !admissible(maps, b, g, k) {
             return f64::INFINITY;
         }
         outs.iter().map(|e| ratio(maps, b, b, e.step, &e.piece)).fold(0.0, f64::max)
@@ -160,7 +154,7 @@ fn balance(kicks: &[V3], b: &V3) -> V3 {
 fn required(maps: &Maps, g: &Graph, t: &Ties, st: &State, k: usize, cand: &V3) -> f64 {
     let cand = &balance(&st.kicks[k], cand);
     let bof = |r: usize| maps.transport(&t.path[r], if t.rep[r] == k { *cand } else { st.b[t.rep[r]] });
-    if !t.members(k).iter().all(|&r| admissible(maps, &bof(r), &g.nodes[r])) {
+    if !t.members(k).iter().all(|&r| admissible(maps, &bof(r), g, r)) {
         return f64::INFINITY;
     }
     let mut v: f64 = 1.0;

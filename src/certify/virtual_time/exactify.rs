@@ -4,24 +4,29 @@
 //! and (G1), (G2), (G4) checked exactly. Untrusted: the kernel checks the file.
 
 use super::Num;
+use super::frames::Frames;
 use super::graph::Graph;
 use super::tie::{self, Ties};
 use crate::exact::{Q, QExt};
+use crate::exact::{QField as _, Ring as _};
 use crate::finder::geometry::P2;
 use chatter_kernel::geometry::{ConvexPolygon, clip, hull};
-use chatter_kernel::model::Polygon;
 use chatter_kernel::model::linalg::{Vec3, dot, is_zero, mat_vec};
 use nalgebra::Vector3;
 
 /// Bits of the dyadic rounding of cones and covectors.
 const BITS: u64 = 24;
 
-/// A node made exact: K_r (its extreme generators, counter-clockwise: rationals, in the body's
-/// field) and b_r.
+/// A node made exact: its label, K_r (its extreme generators, counter-clockwise: rationals, in
+/// the body's field) and b_r.
 pub struct Node<E> {
+    pub label: usize,
     pub cone: ConvexPolygon<E>,
     pub weight: Vec3<E>,
 }
+
+/// The exact nodes and edges of a graph.
+pub type Exact<'a, E> = (&'a [Node<E>], &'a [Edge<E>]);
 
 /// An exact edge: r --j--> s with the exact piece K_r ∩ C_j (nonzero).
 pub struct Edge<E> {
@@ -61,16 +66,17 @@ fn rounded(b: &Vector3<f64>) -> Result<Vec3<Q>, String> {
 
 /// The exact nodes, with (G1) checked ((G2) is on the numerators, [`super::numerator`], or on
 /// b_r where a_r = c_r b_r, [`super::scale`]).
-pub fn nodes<E: Num>(
-    bodies: &[Polygon<E>],
+pub fn nodes<B: Frames>(
+    bodies: &[B],
     g: &Graph,
     t: &Ties,
     reps: &[Vector3<f64>],
-) -> Result<Vec<Node<E>>, String> {
+) -> Result<Vec<Node<B::E>>, String> {
     let body = &bodies[0];
-    let mut balanced = vec![[E::zero(), E::zero(), E::zero()]; g.nodes.len()];
+    let zero = B::E::zero;
+    let mut balanced = vec![[zero(), zero(), zero()]; g.nodes.len()];
     for k in t.reps() {
-        balanced[k] = tie::balanced(bodies, g, t, k, rounded(&reps[k])?.map(|x| E::from_q(&x)))?;
+        balanced[k] = tie::balanced(bodies, g, t, k, rounded(&reps[k])?.map(|x| B::E::from_q(&x)))?;
     }
     let mut out = Vec::with_capacity(g.nodes.len());
     for (r, node) in g.nodes.iter().enumerate() {
@@ -79,14 +85,9 @@ pub fn nodes<E: Num>(
         if let Some(i) = cone.vertices.iter().position(|v| !dot(&weight, v).is_negative()) {
             return Err(format!("(G1) fails exactly at node {r}, generator {i}: -b_r·g <= 0"));
         }
-        out.push(Node { cone, weight });
+        out.push(Node { label: g.label[r], cone, weight });
     }
     Ok(out)
-}
-
-/// m_{k,k+1}.
-pub fn rest<E: Num>(body: &Polygon<E>, k: i64) -> Vec3<E> {
-    body.rest_point(k, k + 1).unwrap_or_else(|| [E::zero(), E::zero(), E::zero()])
 }
 
 /// Whether x (nonzero) lies in K with v < 0.
@@ -95,23 +96,25 @@ pub fn inside<E: Num>(k: &ConvexPolygon<E>, x: &Vec3<E>) -> bool {
 }
 
 /// The exact edges: for each node r and step j with K_r ∩ C_j ≠ {0}, the float successor, or
-/// (where the float piece was degenerate) the first node that contains the exact images; every
-/// image of a vertex, under every body's S_j (the corners of a box), lies in K_s (else an error
-/// naming it).
-pub fn edges<E: Num>(bodies: &[Polygon<E>], g: &Graph, nodes: &[Node<E>]) -> Result<Vec<Edge<E>>, String> {
+/// (where the float piece was degenerate) the first node of the step's label that contains the
+/// exact images; every image of a vertex, under every body's S_j (the corners of a box), lies in
+/// K_s (else an error naming it).
+pub fn edges<B: Frames>(bodies: &[B], g: &Graph, nodes: &[Node<B::E>]) -> Result<Vec<Edge<B::E>>, String> {
     let body = &bodies[0];
     let mut out = Vec::new();
     for (r, node) in nodes.iter().enumerate() {
-        for j in 1..body.n() {
-            let cov = body.next_contact_cone(j as i64);
-            let piece: Vec<Vec3<E>> = cov.iter().fold(node.cone.vertices.clone(), |p, l| clip(&p, l));
+        for (j, at) in body.steps(node.label) {
+            let cov = body.next_cone(node.label, j);
+            let piece: Vec<Vec3<B::E>> = cov.iter().fold(node.cone.vertices.clone(), |p, l| clip(&p, l));
             if piece.iter().all(is_zero) {
                 continue;
             }
-            let images: Vec<Vec3<E>> = (bodies.iter())
-                .flat_map(|b| piece.iter().map(|p| mat_vec(&b.step(j as i64), p)).collect::<Vec<_>>())
+            let images: Vec<Vec3<B::E>> = (bodies.iter())
+                .flat_map(|b| piece.iter().map(|p| mat_vec(&b.step(j), p)).collect::<Vec<_>>())
                 .collect();
-            let fits = |s: usize| images.iter().all(|x| is_zero(x) || inside(&nodes[s].cone, x));
+            let fits = |s: usize| {
+                nodes[s].label == at && images.iter().all(|x| is_zero(x) || inside(&nodes[s].cone, x))
+            };
             let float = g.edges.iter().find(|e| e.from == r && e.step == j).map(|e| e.to);
             let to = float.filter(|&s| fits(s)).or_else(|| (0..nodes.len()).find(|&s| fits(s)));
             let Some(to) = to else {
@@ -125,14 +128,17 @@ pub fn edges<E: Num>(bodies: &[Polygon<E>], g: &Graph, nodes: &[Node<E>]) -> Res
     Ok(out)
 }
 
-/// (G4): I_0(−m_{k,k+1}) ∈ K_0 for every k.
-pub fn initial_inside<E: Num>(bodies: &[Polygon<E>], nodes: &[Node<E>]) -> Result<(), String> {
+/// (G4): I_i(−m_{k,k+1}) ∈ K_e for every entry node e (of contact i) and every k.
+pub fn initial_inside<B: Frames>(bodies: &[B], nodes: &[Node<B::E>]) -> Result<(), String> {
     for body in bodies {
-        let i0 = body.impact(0);
-        if let Some(k) =
-            body.all_down_generators().iter().position(|g| !inside(&nodes[0].cone, &mat_vec(&i0, g)))
-        {
-            return Err(format!("(G4) fails exactly: I_0(-m_{{{k},{}}}) is outside node 0", k + 1));
+        for (e, i) in body.entries().into_iter().enumerate() {
+            let map = body.impact(i);
+            if let Some(k) = body.all_down().iter().position(|g| !inside(&nodes[e].cone, &mat_vec(&map, g))) {
+                return Err(format!(
+                    "(G4) fails exactly: I_{i}(-m_{{{k},{}}}) is outside node {e}",
+                    (k + 1) % body.n()
+                ));
+            }
         }
     }
     Ok(())

@@ -10,6 +10,7 @@ mod alternate;
 mod bound;
 mod covector;
 mod exactify;
+mod frames;
 mod graph;
 mod numerator;
 mod scale;
@@ -20,9 +21,12 @@ use crate::model::float::FloatPolygon;
 use chatter_kernel::certificate::{Body, Claim, Coordinates, Encoding, Generator, Param};
 use chatter_kernel::check::is_irrational;
 use chatter_kernel::exact::ParseLimits;
-use chatter_kernel::model::{PccExclusion, Polygon, pcc_quadratic};
-use chatter_kernel::rest::{FIELD_VERSION, FORMAT, Node, TimeToRest, VERSION};
-use chatter_kernel::verify::{Backend, Verdict, verify_rest_text_in};
+use chatter_kernel::model::{ConvexBody, PccExclusion, Polygon, pcc_quadratic};
+use chatter_kernel::rest::{FIELD_VERSION, FORMAT, Node, Rested, TimeToRest, VERSION};
+use chatter_kernel::rest_family::{FamilyNode, FamilyTimeToRest};
+use chatter_kernel::syntax::family::{ConvexBodyText, ConvexCoordinates};
+use chatter_kernel::verify::{Backend, Verdict, verify_rest_family_text_in, verify_rest_text_in};
+use frames::{FloatFrames, Frames};
 
 /// The producer's exact scalars: Q (n = 3, 4, 6) or Q(cos 2π/n) (the other n).
 pub trait Num: crate::exact::OrderedField {
@@ -100,15 +104,33 @@ impl Default for Config {
     }
 }
 
-/// A time-to-rest certificate the kernel accepted on both backends.
-pub struct Produced {
-    pub cert: TimeToRest,
+/// A time-to-rest certificate the kernel accepted on both backends (of a regular polygon, or
+/// `Produced<FamilyTimeToRest>` of a general body).
+pub struct Produced<C = TimeToRest> {
+    pub cert: C,
     /// The file's RON text (what the kernel read).
     pub text: String,
     /// B as the kernel accepted it.
     pub bound: Q,
     pub nodes: usize,
     pub edges: usize,
+}
+
+/// The claim of a time-to-rest file (of a regular polygon or of a general body).
+pub trait RestFile {
+    fn claim(&self) -> Claim;
+}
+
+impl RestFile for TimeToRest {
+    fn claim(&self) -> Claim {
+        self.claim
+    }
+}
+
+impl RestFile for FamilyTimeToRest {
+    fn claim(&self) -> Claim {
+        self.claim
+    }
 }
 
 /// Why no certificate was produced: what was searched and which check failed.
@@ -170,12 +192,6 @@ impl Region {
     fn is_point(&self) -> bool {
         self.kappa[0] == self.kappa[1] && self.gamma[0] == self.gamma[1]
     }
-
-    /// The centre, where the covectors are searched.
-    fn centre(&self) -> (f64, f64) {
-        let mid = |x: &[Q; 2]| (x[0].to_f64() + x[1].to_f64()) / 2.0;
-        (mid(&self.kappa), mid(&self.gamma))
-    }
 }
 
 /// Produces a time-to-rest certificate for every (κ, γ) of the region (one graph and one B:
@@ -216,7 +232,12 @@ pub fn produce_on(
     search(&[body], region, cfg, backends)
 }
 
-/// Every graph of the configuration, in turn, until the kernel accepts one.
+/// The file a front end writes from an exact graph (its claim, B, nodes, edges and numerators)
+/// and has the kernel check.
+type Finish<'a, E, C> = &'a dyn Fn(&Q, Graph<'_, E>) -> Result<Produced<C>, NotProduced>;
+
+/// The regular polygons' front end: every graph of the configuration over the bodies of the
+/// region's corners, searched at its centre, written as a time-to-rest certificate.
 fn search<E: Num>(
     bodies: &[Polygon<E>],
     region: &Region,
@@ -225,18 +246,40 @@ fn search<E: Num>(
 ) -> Result<Produced, NotProduced> {
     let failed = NotProduced::Failed;
     let n = bodies[0].n() as u64;
-    let float = |k: f64, g: f64| FloatPolygon::new(n, k, g).map_err(|e| failed(format!("{e:?}")));
+    let float = |k: f64, g: f64| {
+        FloatPolygon::new(n, k, g).map(|b| FloatFrames::regular(&b)).map_err(|e| failed(format!("{e:?}")))
+    };
     let fbodies = (region.corners().iter())
         .map(|(k, g)| float(k.to_f64(), g.to_f64()))
         .collect::<Result<Vec<_>, _>>()?;
-    let (kc, gc) = region.centre();
-    let centre = float(kc, gc)?;
+    let mid = |x: &[Q; 2]| (x[0].to_f64() + x[1].to_f64()) / 2.0;
+    let centre = float(mid(&region.kappa), mid(&region.gamma))?;
+    let claim = if bodies.iter().all(|b| claim(b) == Claim::CompleteChatterFromAllDown) {
+        Claim::CompleteChatterFromAllDown
+    } else {
+        Claim::CcOrPccFromAllDown
+    };
+    let finish = |b: &Q, graph: Graph<'_, E>| {
+        let edges = graph.1.len();
+        accepted(certificate(n, region, claim, b, graph), backends, edges)
+    };
+    graphs((bodies, &fbodies), &centre, cfg, &finish)
+}
+
+/// Every graph of the configuration, in turn, until the kernel accepts one.
+fn graphs<B: Frames, C>(
+    (bodies, fbodies): (&[B], &[FloatFrames]),
+    centre: &FloatFrames,
+    cfg: &Config,
+    finish: Finish<'_, B::E, C>,
+) -> Result<Produced<C>, NotProduced> {
+    let failed = NotProduced::Failed;
     let Some(&first) = cfg.pads.first() else {
         return Err(failed("no pad to try: the configuration's list of pads is empty".into()));
     };
     let plain = cfg.pads.iter().map(|&pad| (pad, None));
     let keys = plain.chain(cfg.merges.iter().map(|&t| (first, Some(t))));
-    let build = |(pad, merge): (f64, Option<f64>)| ((pad, merge), graph::build(&fbodies, cfg, pad, merge));
+    let build = |(pad, merge): (f64, Option<f64>)| ((pad, merge), graph::build(fbodies, cfg, pad, merge));
     let graphs: Box<dyn Iterator<Item = _>> = if cfg.smallest_first {
         let mut all: Vec<_> = keys.map(build).collect();
         all.sort_by_key(|(_, g)| (!g.closed, g.nodes.len()));
@@ -246,7 +289,7 @@ fn search<E: Num>(
     };
     let mut why = Vec::new();
     for ((pad, merge), g) in graphs {
-        match attempt((bodies, &centre), region, cfg, g, backends) {
+        match attempt((bodies, centre), cfg, g, finish) {
             Err(NotProduced::Failed(m)) => why.push((
                 (pad, merge),
                 match merge {
@@ -267,14 +310,13 @@ fn search<E: Num>(
 }
 
 /// One graph (nodes padded by a pad, images perhaps merged into nodes: [`graph::build`]),
-/// searched (at the region's centre), made exact and checked (at every corner).
-fn attempt<E: Num>(
-    (bodies, centre): (&[Polygon<E>], &FloatPolygon),
-    region: &Region,
+/// searched (at the region's centre), made exact and checked (at every corner), then written.
+fn attempt<B: Frames, C>(
+    (bodies, centre): (&[B], &FloatFrames),
     cfg: &Config,
     g: graph::Graph,
-    backends: &[Backend],
-) -> Result<Produced, NotProduced> {
+    finish: Finish<'_, B::E, C>,
+) -> Result<Produced<C>, NotProduced> {
     let failed = NotProduced::Failed;
     let size = format!("{} nodes, {} edges", g.nodes.len(), g.edges.len());
     if !g.closed {
@@ -285,8 +327,8 @@ fn attempt<E: Num>(
     }
     let exact =
         |e: String| failed(format!("the float graph closed ({size}) but the exact check failed: {e}"));
-    let maps = covector::Maps::new(centre);
-    let ties = tie::ties(centre.n(), g.nodes.len(), &g.edges);
+    let maps = covector::Maps::new(centre, &g);
+    let ties = tie::ties(&|r, j| maps.back(r, j), g.nodes.len(), &g.edges);
     let reps = covector::search(&maps, &g, &ties, cfg.rounds, cfg.grid)
         .map_err(|e| failed(format!("the float graph closed ({size}) but {e}")))?;
     let nodes = exactify::nodes(bodies, &g, &ties, &reps).map_err(exact)?;
@@ -298,26 +340,96 @@ fn attempt<E: Num>(
             .map_err(|j| exact(format!("{e}; {j}")))?,
         Err(e) => return Err(exact(e)),
     };
-    let claim = if bodies.iter().all(|b| claim(b) == Claim::CompleteChatterFromAllDown) {
-        Claim::CompleteChatterFromAllDown
-    } else {
-        Claim::CcOrPccFromAllDown
-    };
-    let cert = certificate(bodies[0].n() as u64, region, claim, &b, (&nodes, &edges, &a));
-    accepted(cert, backends, edges.len())
+    finish(&b, (&nodes, &edges, &a))
 }
 
 /// Exact nodes and edges, numerators and B.
 type Finished<E> = (Vec<exactify::Node<E>>, Vec<exactify::Edge<E>>, Vec<[E; 3]>, Q);
 
+/// Produces a time-to-rest certificate of a general convex body at its γ (docs/time-to-rest.md
+/// §5, "General bodies"; docs/certificate-format.md §17), accepted by the kernel on `backends`.
+pub fn produce_family(
+    body: &ConvexBody<Q>,
+    tensor: Option<[Q; 6]>,
+    cfg: &Config,
+    backends: &[Backend],
+) -> Result<Produced<FamilyTimeToRest>, NotProduced> {
+    let g = body.gamma();
+    if !(g.is_positive() && g < &Q::int(1)) {
+        return Err(NotProduced::Failed("time-to-rest certificates need 0 < gamma < 1".into()));
+    }
+    let excluded = (0..body.n() as i64)
+        .all(|k| body.pair_pcc_quadratic(k).is_ok_and(|q| q.exclusion() == PccExclusion::Excluded));
+    let claim = if excluded { Claim::CompleteChatterFromAllDown } else { Claim::CcOrPccFromAllDown };
+    let finish = |b: &Q, graph: Graph<'_, Q>| {
+        let cert = family_certificate(body, tensor.as_ref(), claim, b, graph);
+        let text = crate::write::write_rest_family(&cert);
+        let v = verify_rest_family_text_in(&text, Encoding::Ron, ParseLimits::default(), backends);
+        produced(v, cert, text, graph.1.len())
+    };
+    let float = FloatFrames::of(body);
+    graphs((std::slice::from_ref(body), std::slice::from_ref(&float)), &float, cfg, &finish)
+}
+
+/// The fields of a general body's file: nodes 0..n-1 are the entries of contacts 0..n-1.
+fn family_certificate(
+    body: &ConvexBody<Q>,
+    tensor: Option<&[Q; 6]>,
+    claim: Claim,
+    bound: &Q,
+    (nodes, edges, a): Graph<'_, Q>,
+) -> FamilyTimeToRest {
+    let text = |v: &[Q; 3]| Generator(v.iter().map(ToString::to_string).collect());
+    let node = |(r, x): (usize, &exactify::Node<Q>)| FamilyNode {
+        contact: x.label,
+        cone: x.cone.vertices.iter().map(text).collect(),
+        weight: text(&x.weight),
+        numerator: text(&a[r]),
+        next: edges.iter().filter(|e| e.from == r).map(|e| (e.step as u64, e.to)).collect(),
+    };
+    let s = |q: &Q| q.to_string();
+    let j = body.inertia();
+    FamilyTimeToRest {
+        format: chatter_kernel::rest_family::FORMAT.into(),
+        version: chatter_kernel::rest_family::VERSION,
+        body: ConvexBodyText::ConvexPolygon {
+            contacts: body.contacts().iter().map(|c| (s(&c[0]), s(&c[1]))).collect(),
+            inertia: (s(&j[0][0]), s(&j[0][1]), s(&j[1][1])),
+            gamma: Param::Point(s(body.gamma())),
+            inertia_tensor: tensor.map(|t| (s(&t[0]), s(&t[1]), s(&t[2]), s(&t[3]), s(&t[4]), s(&t[5]))),
+        },
+        coordinates: ConvexCoordinates::PaperVelocities,
+        claim,
+        bound: bound.to_string(),
+        entries: (0..body.n()).collect(),
+        nodes: nodes.iter().enumerate().map(node).collect(),
+        producer: PRODUCER.into(),
+    }
+}
+
+/// The kernel's verdict on a file's text: the certificate, or why not.
+fn produced<C>(v: Verdict<Rested>, cert: C, text: String, edges: usize) -> Result<Produced<C>, NotProduced> {
+    match v {
+        Verdict::Accepted(a) => {
+            let bound = a
+                .bound
+                .parse::<Q>()
+                .map_err(|e| NotProduced::Failed(format!("the bound cannot be read: {e}")))?;
+            Ok(Produced { nodes: a.nodes, cert, text, bound, edges })
+        }
+        Verdict::Rejected(r) => Err(NotProduced::Failed(format!("the kernel rejected the graph: {r}"))),
+        Verdict::Disagree(s) => Err(NotProduced::Disagree(s)),
+    }
+}
+
 /// Where the numerators' program fails for the search's covectors: covectors and numerators by
 /// alternating linear programs ([`alternate`]), then made exact and checked as before.
-fn jointly<E: Num>(
-    bodies: &[Polygon<E>],
+fn jointly<B: Frames>(
+    bodies: &[B],
     (g, ties, maps): (&graph::Graph, &tie::Ties, &covector::Maps),
-    (nodes, edges): (&[exactify::Node<E>], &[exactify::Edge<E>]),
+    (nodes, edges): exactify::Exact<'_, B::E>,
     pace: bool,
-) -> Result<Finished<E>, String> {
+) -> Result<Finished<B::E>, String> {
     let kicks = (0..nodes.len())
         .map(|k| match ties.rep[k] == k {
             true => maps.tied_kicks(g, ties, k).iter().map(|v| [v.x, v.y, v.z]).collect(),
@@ -337,14 +449,17 @@ fn jointly<E: Num>(
     Ok((nodes, edges, x.a, x.bound))
 }
 
+/// Numerators a_r and B.
+type Numerated<E> = (Vec<[E; 3]>, Q);
+
 /// The numerators a_r and B: the least B of the linear program ([`numerator`]), else
 /// a_r = c_r b_r with the least scales ([`scale`]); an error says why both failed.
-fn numerators<E: Num>(
-    bodies: &[Polygon<E>],
-    (nodes, edges): (&[exactify::Node<E>], &[exactify::Edge<E>]),
+fn numerators<B: Frames>(
+    bodies: &[B],
+    (nodes, edges): exactify::Exact<'_, B::E>,
     ties: &tie::Ties,
     linear_program: bool,
-) -> Result<(Vec<[E; 3]>, Q), String> {
+) -> Result<Numerated<B::E>, String> {
     let lp = match linear_program.then(|| numerator::numerators(bodies, nodes, edges, ties)) {
         Some(Ok(x)) => return Ok((x.a, x.bound)),
         Some(Err(e)) => format!("; the numerators' linear program: {e}"),
@@ -356,12 +471,13 @@ fn numerators<E: Num>(
         cons.extend(scale::constraints(body, nodes, edges).map_err(also)?);
     }
     let c = scale::scales(nodes.len(), &cons).map_err(also)?;
+    let scaled = |(x, c): (&exactify::Node<B::E>, &Q)| x.weight.clone().map(|w| w.times(&B::E::from_q(c)));
+    let a: Vec<[B::E; 3]> = nodes.iter().zip(&c).map(scaled).collect();
     let mut b = Q::int(0);
     for body in bodies {
-        b = b.max(bound::bound(body, &nodes[0], &c[0]).map_err(also)?);
+        b = b.max(bound::bound(body, nodes, &a, 20).map_err(also)?);
     }
-    let scaled = |(x, c): (&exactify::Node<E>, &Q)| x.weight.clone().map(|w| w.times(&E::from_q(c)));
-    Ok((nodes.iter().zip(&c).map(scaled).collect(), b))
+    Ok((a, b))
 }
 
 /// The exact graph: nodes, edges and numerators.
@@ -407,13 +523,6 @@ fn param(x: &[Q; 2]) -> Param {
 fn accepted(cert: TimeToRest, backends: &[Backend], edges: usize) -> Result<Produced, NotProduced> {
     let text = crate::write::write_rest(&cert);
     match verify_rest_text_in(&text, Encoding::Ron, ParseLimits::default(), backends) {
-        Verdict::Accepted(a) => {
-            let bound = a
-                .bound
-                .parse::<Q>()
-                .map_err(|e| NotProduced::Failed(format!("the bound cannot be read: {e}")))?;
-            Ok(Produced { nodes: a.nodes, cert, text, bound, edges })
-        }
         // On a box, PCC may be excluded at every corner but not shown on the whole box (rule R4's
         // Bernstein bounds): the weaker claim then.
         Verdict::Rejected(r)
@@ -425,6 +534,6 @@ fn accepted(cert: TimeToRest, backends: &[Backend], edges: usize) -> Result<Prod
             "the kernel rejected the graph ({} nodes): {r}",
             cert.nodes.len()
         ))),
-        Verdict::Disagree(s) => Err(NotProduced::Disagree(s)),
+        v => produced(v, cert, text, edges),
     }
 }

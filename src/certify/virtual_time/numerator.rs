@@ -7,10 +7,11 @@
 //! the program's B is never worse than the scales'. Untrusted: the kernel checks the file.
 
 use super::Num;
-use super::exactify::{Edge, Node, rest};
+use super::exactify::{Edge, Node};
+use super::frames::{Frames, apply};
 use super::tie::{self, Ties};
 use crate::exact::{Q, QExt};
-use chatter_kernel::model::Polygon;
+use crate::exact::{QField as _, Ring as _};
 use chatter_kernel::model::linalg::{Vec3, dot, is_zero, mat_vec, neg};
 use microlp::{ComparisonOp, OptimizationDirection, Problem, SolveOutcome, Variable};
 
@@ -31,11 +32,11 @@ pub struct Numerators<E> {
 }
 
 /// a_r = T_r a_rep: T_r in `f64` as the images of the unit covectors (columns).
-pub(super) fn transports<E: Num>(body: &Polygon<E>, t: &Ties) -> Result<Vec<[[f64; 3]; 3]>, String> {
-    let unit = |i: usize| -> Vec3<E> { std::array::from_fn(|c| E::from_i64(i64::from(c == i))) };
+pub(super) fn transports<B: Frames>(body: &B, t: &Ties) -> Result<Vec<[[f64; 3]; 3]>, String> {
+    let unit = |i: usize| -> Vec3<B::E> { std::array::from_fn(|c| B::E::from_i64(i64::from(c == i))) };
     (0..t.rep.len())
         .map(|r| {
-            let cols: Vec<Vec3<E>> =
+            let cols: Vec<Vec3<B::E>> =
                 (0..3).map(|i| tie::transported(body, &t.path[r], unit(i))).collect::<Result<_, _>>()?;
             Ok(std::array::from_fn(|row| std::array::from_fn(|col| cols[col][row].f64())))
         })
@@ -68,7 +69,7 @@ impl Rows {
 }
 
 /// (F): a_r·g ≤ b_r·g on every generator g; (G2): a_r·m ≥ 0.
-fn node_rows<E: Num>(body: &Polygon<E>, nodes: &[Node<E>], t: &Ties, tr: &[[[f64; 3]; 3]], rows: &mut Rows) {
+fn node_rows<B: Frames>(body: &B, nodes: &[Node<B::E>], t: &Ties, tr: &[[[f64; 3]; 3]], rows: &mut Rows) {
     for (r, node) in nodes.iter().enumerate() {
         for (i, g) in node.cone.vertices.iter().enumerate() {
             rows.push(
@@ -77,28 +78,28 @@ fn node_rows<E: Num>(body: &Polygon<E>, nodes: &[Node<E>], t: &Ties, tr: &[[[f64
                 format!("(F) at node {r}, generator {i}"),
             );
         }
-        for m in [rest(body, 0), rest(body, -1)] {
+        for m in body.heights(node.label) {
             rows.push(scaled(form(t, tr, r, &m), -1.0), 0.0, format!("(G2) at node {r}"));
         }
     }
 }
 
 /// (G3): (a_s·R_j q)(−b_r·p) − (a_r·q)(−b_s·S_j p) ≤ 0 at every vertex p and q.
-fn edge_rows<E: Num>(
-    body: &Polygon<E>,
-    nodes: &[Node<E>],
-    edges: &[Edge<E>],
+fn edge_rows<B: Frames>(
+    body: &B,
+    nodes: &[Node<B::E>],
+    edges: &[Edge<B::E>],
     t: &Ties,
     tr: &[[[f64; 3]; 3]],
     rows: &mut Rows,
 ) {
     for e in edges {
-        let (j, rel, step) = (e.step as i64, body.relabel(e.step as i64), body.step(e.step as i64));
+        let (rel, step) = (body.relabel(e.step), body.step(e.step));
         for (i, p) in e.piece.iter().enumerate().filter(|(_, p)| !is_zero(p)) {
             let dr = dot(&nodes[e.from].weight, &neg(p)).f64();
             let ds = dot(&nodes[e.to].weight, &neg(&mat_vec(&step, p))).f64();
-            for q in [rest(body, j - 1), rest(body, j)] {
-                let after = scaled(form(t, tr, e.to, &mat_vec(&rel, &q)), dr);
+            for q in body.landing(e.step) {
+                let after = scaled(form(t, tr, e.to, &apply(rel.as_ref(), &q)), dr);
                 let before = scaled(form(t, tr, e.from, &q), -ds);
                 let what = format!("(G3) at node {}, step {}, vertex {i}", e.from, e.step);
                 rows.push([after, before].concat(), 0.0, what);
@@ -122,7 +123,7 @@ fn normalised(row: &Row, reps: usize) -> Option<(Vec<[f64; 3]>, f64)> {
 /// The least B in `f64` and the representatives' numerators, or why none was found.
 fn solve(
     rows: &Rows,
-    (heights, depth): (&[Row], &[f64]),
+    g5: &[(Vec<Row>, Vec<f64>)],
     reps: usize,
     margin: f64,
 ) -> Result<Vec<[f64; 3]>, String> {
@@ -147,12 +148,14 @@ fn solve(
             lp.add_constraint(expr(&dense, 1.0 / big), ComparisonOp::Le, rhs / big - margin);
         }
     }
-    // (G5): a_0·m ≤ B (−b_0·I_0(−m_{k,k+1})) for both m and every k.
-    for dense in heights.iter().filter_map(|h| normalised(h, reps)).map(|(d, _)| d) {
-        for d in depth {
-            let mut e = expr(&dense, 1.0);
-            e.push((bound, -d));
-            lp.add_constraint(e, ComparisonOp::Le, 0.0);
+    // (G5): a_e·m ≤ B (−b_e·I_i(−m_{k,k+1})) at every entry e (of contact i), both m, every k.
+    for (heights, depth) in g5 {
+        for dense in heights.iter().filter_map(|h| normalised(h, reps)).map(|(d, _)| d) {
+            for d in depth {
+                let mut e = expr(&dense, 1.0);
+                e.push((bound, -d));
+                lp.add_constraint(e, ComparisonOp::Le, 0.0);
+            }
         }
     }
     let outcome = std::panic::catch_unwind(|| lp.solve())
@@ -166,28 +169,37 @@ fn solve(
 
 /// The numerators and B, checked exactly ((F), (G2), (G3), (G5)) at every body (the corners of a
 /// box: (G3) and (G5) are affine in γ and, times 1 + κ, in κ); `Err` names what failed.
-pub fn numerators<E: Num>(
-    bodies: &[Polygon<E>],
-    nodes: &[Node<E>],
-    edges: &[Edge<E>],
+pub fn numerators<B: Frames>(
+    bodies: &[B],
+    nodes: &[Node<B::E>],
+    edges: &[Edge<B::E>],
     t: &Ties,
-) -> Result<Numerators<E>, String> {
+) -> Result<Numerators<B::E>, String> {
     let body = &bodies[0];
     let tr = transports(body, t)?;
     let mut rows = Rows { rows: Vec::new() };
     node_rows(body, nodes, t, &tr, &mut rows);
-    let mut depth: Vec<f64> = Vec::new();
     for b in bodies {
         edge_rows(b, nodes, edges, t, &tr, &mut rows);
-        let i0 = b.impact(0);
-        depth.extend(b.all_down_generators().iter().map(|g| -dot(&nodes[0].weight, &mat_vec(&i0, g)).f64()));
     }
-    let heights: Vec<Row> = [rest(body, 0), rest(body, -1)].iter().map(|m| form(t, &tr, 0, m)).collect();
+    let g5: Vec<(Vec<Row>, Vec<f64>)> = (body.entries().into_iter().enumerate())
+        .map(|(e, i)| {
+            let heights = body.heights(i).iter().map(|m| form(t, &tr, e, m)).collect();
+            let depth = (bodies.iter())
+                .flat_map(|b| {
+                    let map = b.impact(i);
+                    b.all_down()
+                        .iter()
+                        .map(|g| -dot(&nodes[e].weight, &mat_vec(&map, g)).f64())
+                        .collect::<Vec<_>>()
+                })
+                .collect();
+            (heights, depth)
+        })
+        .collect();
     let mut why = Vec::new();
     for margin in MARGINS {
-        match solve(&rows, (&heights, &depth), t.rep.len(), margin)
-            .and_then(|sol| exact(bodies, nodes, edges, t, &sol))
-        {
+        match solve(&rows, &g5, t.rep.len(), margin).and_then(|sol| exact(bodies, nodes, edges, t, &sol)) {
             Ok(x) => return Ok(x),
             Err(e) => why.push(format!("margin {margin:e}: {e}")),
         }
@@ -196,50 +208,50 @@ pub fn numerators<E: Num>(
 }
 
 /// The rounded numerators transported exactly, every condition checked exactly, B computed.
-fn exact<E: Num>(
-    bodies: &[Polygon<E>],
-    nodes: &[Node<E>],
-    edges: &[Edge<E>],
+fn exact<B: Frames>(
+    bodies: &[B],
+    nodes: &[Node<B::E>],
+    edges: &[Edge<B::E>],
     t: &Ties,
     sol: &[[f64; 3]],
-) -> Result<Numerators<E>, String> {
+) -> Result<Numerators<B::E>, String> {
     let round = |x: f64| Q::from_f64_exact(x).map(|q| q.ceil_dyadic(BITS)).ok_or("a numerator is not finite");
     let mut a = Vec::with_capacity(nodes.len());
     for r in 0..nodes.len() {
         let k = t.rep[r];
         let ak: Vec3<Q> = [round(sol[k][0])?, round(sol[k][1])?, round(sol[k][2])?];
-        a.push(tie::transported(&bodies[0], &t.path[r], ak.map(|x| E::from_q(&x)))?);
+        a.push(tie::transported(&bodies[0], &t.path[r], ak.map(|x| B::E::from_q(&x)))?);
     }
     let mut most = Q::int(0);
     for body in bodies {
         check(body, nodes, edges, &a)?;
-        most = most.max(bound(body, &nodes[0], &a[0])?);
+        most = most.max(super::bound::bound(body, nodes, &a, BITS)?);
     }
     Ok(Numerators { a, bound: most })
 }
 
 /// (F), (G2) and (G3) exactly.
-fn check<E: Num>(
-    body: &Polygon<E>,
-    nodes: &[Node<E>],
-    edges: &[Edge<E>],
-    a: &[Vec3<E>],
+fn check<B: Frames>(
+    body: &B,
+    nodes: &[Node<B::E>],
+    edges: &[Edge<B::E>],
+    a: &[Vec3<B::E>],
 ) -> Result<(), String> {
     for (r, node) in nodes.iter().enumerate() {
         if let Some(i) = node.cone.vertices.iter().position(|g| dot(&a[r], g) > dot(&node.weight, g)) {
             return Err(format!("(F) fails exactly at node {r}, generator {i}"));
         }
-        if [rest(body, 0), rest(body, -1)].iter().any(|m| dot(&a[r], m).is_negative()) {
+        if body.heights(node.label).iter().any(|m| dot(&a[r], m).is_negative()) {
             return Err(format!("(G2) fails exactly at node {r}"));
         }
     }
     for e in edges {
-        let (j, rel, step) = (e.step as i64, body.relabel(e.step as i64), body.step(e.step as i64));
+        let (rel, step) = (body.relabel(e.step), body.step(e.step));
         for (i, p) in e.piece.iter().enumerate().filter(|(_, p)| !is_zero(p)) {
             let dr = dot(&nodes[e.from].weight, &neg(p));
             let ds = dot(&nodes[e.to].weight, &neg(&mat_vec(&step, p)));
-            for q in [rest(body, j - 1), rest(body, j)] {
-                let l = dot(&a[e.to], &mat_vec(&rel, &q)).times(&dr);
+            for q in body.landing(e.step) {
+                let l = dot(&a[e.to], &apply(rel.as_ref(), &q)).times(&dr);
                 let rr = dot(&a[e.from], &q).times(&ds);
                 if l > rr {
                     return Err(format!(
@@ -253,22 +265,4 @@ fn check<E: Num>(
         }
     }
     Ok(())
-}
-
-/// The least B of (G5) for a_0, rounded up to a multiple of 2^-40.
-fn bound<E: Num>(body: &Polygon<E>, entry: &Node<E>, a0: &Vec3<E>) -> Result<Q, String> {
-    let i0 = body.impact(0);
-    let height = [rest(body, 0), rest(body, -1)].iter().map(|m| dot(a0, m)).max().unwrap_or_else(E::zero);
-    let mut need = E::zero();
-    for (k, g) in body.all_down_generators().iter().enumerate() {
-        let d = dot(&entry.weight, &mat_vec(&i0, g)).negated();
-        if !d.is_positive() {
-            return Err(format!("(G5): -b_0·I_0(-m_{{{k},{}}}) is not positive", k + 1));
-        }
-        let b = height.over(&d).unwrap_or_else(E::zero);
-        if b > need {
-            need = b;
-        }
-    }
-    Ok(need.upper().ceil_dyadic(BITS))
 }

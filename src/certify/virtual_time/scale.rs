@@ -6,9 +6,10 @@
 //! fails exactly when a cycle's product of ratios exceeds 1. Untrusted: the kernel checks.
 
 use super::Num;
-use super::exactify::{Edge, Node, rest};
+use super::exactify::{Edge, Node};
+use super::frames::{Frames, apply};
 use crate::exact::{Q, QExt};
-use chatter_kernel::model::Polygon;
+use chatter_kernel::exact::{OrderedField as _, Ring as _};
 use chatter_kernel::model::linalg::{Vec3, dot, is_zero, mat_vec, neg};
 use std::collections::BTreeMap;
 
@@ -21,13 +22,13 @@ pub struct Constraint {
 }
 
 /// The conditions of (G3) on the scales, the largest factor per ordered pair (x, y).
-pub fn constraints<E: Num>(
-    body: &Polygon<E>,
-    nodes: &[Node<E>],
-    edges: &[Edge<E>],
+pub fn constraints<B: Frames>(
+    body: &B,
+    nodes: &[Node<B::E>],
+    edges: &[Edge<B::E>],
 ) -> Result<Vec<Constraint>, String> {
     for (r, node) in nodes.iter().enumerate() {
-        if [rest(body, 0), rest(body, -1)].iter().any(|m| dot(&node.weight, m).is_negative()) {
+        if body.heights(node.label).iter().any(|m| dot(&node.weight, m).is_negative()) {
             return Err(format!("(G2) fails exactly at node {r} with a_r = c_r b_r: b_r·m < 0"));
         }
     }
@@ -49,21 +50,20 @@ pub fn constraints<E: Num>(
 
 /// The conditions at one vertex p of K_r ∩ C_j (both q), each factor a rational upper bound on
 /// the ratio (the ratio itself over Q).
-fn vertex<E: Num>(
-    body: &Polygon<E>,
-    nodes: &[Node<E>],
-    e: &Edge<E>,
-    p: &Vec3<E>,
+fn vertex<B: Frames>(
+    body: &B,
+    nodes: &[Node<B::E>],
+    e: &Edge<B::E>,
+    p: &Vec3<B::E>,
 ) -> Result<Vec<Constraint>, String> {
     let (br, bs) = (&nodes[e.from].weight, &nodes[e.to].weight);
-    let j = e.step as i64;
-    let (sp, rel) = (mat_vec(&body.step(j), p), body.relabel(j));
+    let (sp, rel) = (mat_vec(&body.step(e.step), p), body.relabel(e.step));
     let (dr, ds) = (dot(br, &neg(p)), dot(bs, &neg(&sp)));
     let mut out = Vec::new();
-    for q in [rest(body, j - 1), rest(body, j)] {
-        let l = dot(bs, &mat_vec(&rel, &q)).times(&dr);
+    for q in body.landing(e.step) {
+        let l = dot(bs, &apply(rel.as_ref(), &q)).times(&dr);
         let r = dot(br, &q).times(&ds);
-        let ratio = |a: &E, b: &E| a.over(b).map_or_else(|| Q::int(0), |x| x.upper());
+        let ratio = |a: &B::E, b: &B::E| a.over(b).map_or_else(|| Q::int(0), |x| x.upper());
         let (x, y, factor) = match (l.is_positive(), r.is_positive(), l.is_negative(), r.is_negative()) {
             (false, _, _, false) => continue,
             (true, true, _, _) => (e.from, e.to, ratio(&l, &r)),

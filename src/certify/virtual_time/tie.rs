@@ -3,13 +3,15 @@
 //! c_s = c_r, so that (G3) holds with equality at the vertices with u_j = 0. Then b_s·S_j p =
 //! b_r·I_j p = b_r·p − β u_j(p) (b_r·d_j), so (G3) on the edges r -> s and s -> r holds at every
 //! vertex only if b_r·d_j = 0 (the two edges ask for opposite signs, the pattern of PCC with its
-//! eigenvalue 1 of S_{n−j} S_j): the exact covectors are balanced to meet it exactly. Untrusted.
+//! eigenvalue 1 of S_{n−j} S_j): the exact covectors are balanced to meet it exactly. For a
+//! general body (no relabelling) the tie is r --j--> s and s --i(r)--> r with b_s = b_r and the
+//! kick w_j ([`super::frames`]). Untrusted.
 
 use super::Num;
+use super::frames::{Frames, apply, relabel_inverse};
 use super::graph::{Edge, Graph};
 use crate::exact::Ring;
-use chatter_kernel::model::Polygon;
-use chatter_kernel::model::linalg::{Mat3, Vec3, dot, mat_vec};
+use chatter_kernel::model::linalg::{Vec3, dot};
 
 /// Each node's representative and the steps j_1, j_2, ... from it: b = b_rep R_{j_1}^{-1} R_{j_2}^{-1} ...
 pub struct Ties {
@@ -29,10 +31,13 @@ impl Ties {
     }
 }
 
-/// The components of the "linked both ways by j and n − j" relation, explored depth first from
-/// the lowest node.
-pub fn ties(n: usize, nodes: usize, edges: &[Edge]) -> Ties {
-    let linked = |r: usize, s: usize, j: usize| edges.iter().any(|e| (e.from, e.step, e.to) == (s, n - j, r));
+/// The components of the "linked both ways" relation (r --j--> s and s --back(r, j)--> r, with
+/// `back` the step of the edge back: n − j, or r's label for adjacent contacts), explored depth
+/// first from the lowest node.
+pub fn ties(back: &dyn Fn(usize, usize) -> Option<usize>, nodes: usize, edges: &[Edge]) -> Ties {
+    let linked = |r: usize, s: usize, j: usize| {
+        back(r, j).is_some_and(|b| edges.iter().any(|e| (e.from, e.step, e.to) == (s, b, r)))
+    };
     let mut adj: Vec<Vec<(usize, usize)>> = vec![Vec::new(); nodes];
     for e in edges.iter().filter(|e| e.to != e.from && linked(e.from, e.to, e.step)) {
         adj[e.from].push((e.to, e.step));
@@ -60,57 +65,46 @@ pub fn ties(n: usize, nodes: usize, edges: &[Edge]) -> Ties {
 }
 
 /// Whether the edge x --i--> y joins a node to its parent or child in the tie tree, where
-/// b_y = b_x R_i^{-1} holds exactly (R_{n-i} = R_i^{-1}); other edges inside a component are
-/// ordinary ones.
-pub fn along_tree(t: &Ties, n: usize, e: &Edge) -> bool {
+/// b_y = b_x R_i^{-1} holds exactly (R_{n-i} = R_i^{-1}; `back` as for [`ties`]); other edges
+/// inside a component are ordinary ones.
+pub fn along_tree(t: &Ties, back: &dyn Fn(usize, usize) -> Option<usize>, e: &Edge) -> bool {
     let (px, py) = (&t.path[e.from], &t.path[e.to]);
     let child =
         |a: &[usize], b: &[usize], j: usize| a.len() == b.len() + 1 && a[..b.len()] == *b && a[b.len()] == j;
-    t.rep[e.from] == t.rep[e.to] && e.from != e.to && (child(py, px, e.step) || child(px, py, n - e.step))
+    t.rep[e.from] == t.rep[e.to]
+        && e.from != e.to
+        && (child(py, px, e.step) || back(e.from, e.step).is_some_and(|b| child(px, py, b)))
 }
 
-/// The 3 × 3 inverse by the adjugate (`None` if singular).
-fn inverse<E: Num>(m: &Mat3<E>) -> Option<Mat3<E>> {
-    let c = |i: usize, j: usize| {
-        let (a, b) = ([(i + 1) % 3, (i + 2) % 3], [(j + 1) % 3, (j + 2) % 3]);
-        m[a[0]][b[0]].times(&m[a[1]][b[1]]).minus(&m[a[0]][b[1]].times(&m[a[1]][b[0]]))
-    };
-    let det = (0..3).fold(E::zero(), |s, j| s.plus(&m[0][j].times(&c(0, j))));
-    let entry = |i: usize, j: usize| c(j, i).over(&det).unwrap_or_else(E::zero);
-    (!det.is_zero()).then(|| std::array::from_fn(|i| std::array::from_fn(|j| entry(i, j))))
-}
-
-fn relabel_inverse<E: Num>(body: &Polygon<E>, j: usize) -> Result<Mat3<E>, String> {
-    inverse(&body.relabel(j as i64)).ok_or_else(|| "a relabelling is singular".to_string())
-}
-
-/// b transported along a tie path, exactly: b R_{j_1}^{-1} R_{j_2}^{-1} ... as a covector.
-pub fn transported<E: Num>(body: &Polygon<E>, path: &[usize], b: Vec3<E>) -> Result<Vec3<E>, String> {
-    path.iter().try_fold(b, |b, &j| -> Result<Vec3<E>, String> {
-        let inv = relabel_inverse(body, j)?;
-        Ok(std::array::from_fn(|c| (0..3).fold(E::zero(), |s, r| s.plus(&b[r].times(&inv[r][c])))))
+/// b transported along a tie path, exactly: b R_{j_1}^{-1} R_{j_2}^{-1} ... as a covector (b
+/// itself for a general body).
+pub fn transported<B: Frames>(body: &B, path: &[usize], b: Vec3<B::E>) -> Result<Vec3<B::E>, String> {
+    path.iter().try_fold(b, |b, &j| -> Result<Vec3<B::E>, String> {
+        let Some(inv) = relabel_inverse(body, j)? else { return Ok(b) };
+        Ok(std::array::from_fn(|c| (0..3).fold(B::E::zero(), |s, r| s.plus(&b[r].times(&inv[r][c])))))
     })
 }
 
 /// The vector a with b_rep·a = b_r·d_j for the tied edge r --j--> (the kick direction d_j of
 /// an impact at contact j in r's frame, carried back along r's tie path).
-fn kick_at_rep<E: Num>(body: &Polygon<E>, path: &[usize], j: usize) -> Result<Vec3<E>, String> {
-    let d = body.impact_direction(j as i64);
-    path.iter().rev().try_fold(d, |d, &i| Ok(mat_vec(&relabel_inverse(body, i)?, &d)))
+fn kick_at_rep<B: Frames>(body: &B, path: &[usize], j: usize) -> Result<Vec3<B::E>, String> {
+    let d = body.kick(j);
+    path.iter().rev().try_fold(d, |d, &i| Ok(apply(relabel_inverse(body, i)?.as_ref(), &d)))
 }
 
 /// b minus its exact orthogonal projection on the span of the tied edges' kick directions (of
 /// every body: d_j is affine in κ, so b_r·d_j = 0 at the corners of a box holds on the box), so
 /// that b_r·d_j = 0 exactly on every tied edge of the component of `k`.
-pub fn balanced<E: Num>(
-    bodies: &[Polygon<E>],
+pub fn balanced<B: Frames>(
+    bodies: &[B],
     g: &Graph,
     t: &Ties,
     k: usize,
-    b: Vec3<E>,
-) -> Result<Vec3<E>, String> {
-    let tied = |e: &&Edge| t.rep[e.from] == k && along_tree(t, bodies[0].n(), e);
-    let mut basis: Vec<Vec3<E>> = Vec::new();
+    b: Vec3<B::E>,
+) -> Result<Vec3<B::E>, String> {
+    let back = |r: usize, j: usize| bodies[0].back(g.label[r], j);
+    let tied = |e: &&Edge| t.rep[e.from] == k && along_tree(t, &back, e);
+    let mut basis: Vec<Vec3<B::E>> = Vec::new();
     for e in g.edges.iter().filter(tied) {
         for body in bodies {
             let mut a = kick_at_rep(body, &t.path[e.from], e.step)?;

@@ -77,7 +77,14 @@ impl Schema for ConvexCertificate {
 impl ConvexCertificate {
     /// Every number of the file as text, in order (for `max-total-digits`).
     pub fn numbers(&self) -> impl Iterator<Item = &str> {
-        let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma, inertia_tensor } = &self.body;
+        self.body.numbers().chain(self.cones.iter().flatten().flat_map(|g| g.0.iter().map(String::as_str)))
+    }
+}
+
+impl ConvexBodyText {
+    /// Every number of the body as text, in order: contacts, inertia, gamma, the tensor.
+    pub fn numbers(&self) -> impl Iterator<Item = &str> {
+        let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma, inertia_tensor } = self;
         let body = contacts.iter().flat_map(|(x, y)| [x.as_str(), y.as_str()]).chain([
             inertia.0.as_str(),
             inertia.1.as_str(),
@@ -85,8 +92,6 @@ impl ConvexCertificate {
         ]);
         let tensor =
             inertia_tensor.iter().flat_map(|t| [&t.0, &t.1, &t.2, &t.3, &t.4, &t.5].map(String::as_str));
-        body.chain(gamma.texts())
-            .chain(tensor)
-            .chain(self.cones.iter().flatten().flat_map(|g| g.0.iter().map(String::as_str)))
+        body.chain(gamma.texts()).chain(tensor)
     }
 }

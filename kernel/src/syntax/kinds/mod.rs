@@ -13,3 +13,5 @@ pub mod proof;
 pub mod refutation;
 #[cfg(feature = "rest")]
 pub mod rest;
+#[cfg(feature = "family-rest")]
+pub mod rest_family;

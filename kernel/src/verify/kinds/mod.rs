@@ -21,6 +21,8 @@ mod proof;
 mod refutation;
 #[cfg(feature = "rest")]
 mod rest;
+#[cfg(feature = "family-rest")]
+mod rest_family;
 
 #[cfg(feature = "basin")]
 pub use basin::{verify_basin, verify_basin_text_in};
@@ -34,6 +36,8 @@ pub use proof::{verify_proof, verify_proof_text};
 pub use refutation::{verify_refutation, verify_refutation_text, verify_refutation_text_in};
 #[cfg(feature = "rest")]
 pub use rest::{verify_rest, verify_rest_text_in};
+#[cfg(feature = "family-rest")]
+pub use rest_family::{verify_rest_family, verify_rest_family_text_in};
 
 #[cfg(feature = "basin")]
 use crate::rules::basin::{self as basin_rules, BasinReport};
@@ -61,6 +65,8 @@ use crate::syntax::proof::ProofFile;
 use crate::syntax::refutation::Refutation;
 #[cfg(feature = "rest")]
 use crate::syntax::rest::TimeToRest;
+#[cfg(feature = "family-rest")]
+use crate::syntax::rest_family::FamilyTimeToRest;
 #[cfg(any(feature = "family", feature = "orbit"))]
 use crate::syntax::schema;
 
@@ -85,6 +91,9 @@ pub struct Kinds {
     /// Time-to-rest certificates.
     #[cfg(feature = "rest")]
     pub rest: fn(&TimeToRest, ParseLimits) -> Result<Rested, Rejection>,
+    /// Time-to-rest certificates of general bodies.
+    #[cfg(feature = "family-rest")]
+    pub rest_family: fn(&FamilyTimeToRest, ParseLimits) -> Result<Rested, Rejection>,
 }
 
 impl Kinds {
@@ -103,6 +112,8 @@ impl Kinds {
             basin: basin_rules::check::<F>,
             #[cfg(feature = "rest")]
             rest: rest_rules::check::<F>,
+            #[cfg(feature = "family-rest")]
+            rest_family: crate::rules::rest_family::check::<F>,
         }
     }
 }

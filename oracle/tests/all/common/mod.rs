@@ -8,8 +8,10 @@
 #![allow(dead_code)]
 
 use chatter::verify::format::format_of;
+use chatter_kernel::rest::Rested;
 use chatter_kernel::verify::{
-    MALACHITE, Verdict, verify_basin_text_in, verify_refutation_text, verify_rest_text_in, verify_text,
+    MALACHITE, Verdict, verify_basin_text_in, verify_refutation_text, verify_rest_family_text_in,
+    verify_rest_text_in, verify_text,
 };
 use chatter_oracle::compare::{Agreement, Finding, KernelView, differential};
 use chatter_oracle::read::Encoding;
@@ -33,6 +35,9 @@ pub fn kernel_ron(text: &str) -> KernelView {
     }
     if format_of(text).as_deref() == Some("chatter-time-to-rest") {
         return kernel_rest(text);
+    }
+    if format_of(text).as_deref() == Some("chatter-family-time-to-rest") {
+        return kernel_rest_family_in(text, chatter_kernel::syntax::Encoding::Ron);
     }
     if format_of(text).as_deref() == Some("chatter-refutation") {
         return match verify_refutation_text(text, Default::default(), &[MALACHITE]) {
@@ -110,7 +115,17 @@ fn kernel_rest(text: &str) -> KernelView {
 
 /// The kernel (both backends) on a time-to-rest certificate in either encoding.
 pub fn kernel_rest_in(text: &str, encoding: chatter_kernel::syntax::Encoding) -> KernelView {
-    match verify_rest_text_in(text, encoding, Default::default(), &[MALACHITE]) {
+    rested(verify_rest_text_in(text, encoding, Default::default(), &[MALACHITE]))
+}
+
+/// The kernel (both backends) on a general body's time-to-rest certificate in either encoding.
+pub fn kernel_rest_family_in(text: &str, encoding: chatter_kernel::syntax::Encoding) -> KernelView {
+    rested(verify_rest_family_text_in(text, encoding, Default::default(), &[MALACHITE]))
+}
+
+/// A time-to-rest verdict as plain data: claim, n, nodes, region and B.
+fn rested(verdict: Verdict<Rested>) -> KernelView {
+    match verdict {
         Verdict::Accepted(a) => KernelView {
             accepted: true,
             report: Report {

@@ -1,0 +1,212 @@
+//! Time-to-rest certificates of a general convex body (docs/certificate-format.md §17, format
+//! `chatter-family-time-to-rest`): the corpus's files (`rest-family-*`) judged by the oracle with
+//! the kernel's verdict, code, n, nodes and B; their JSON twins; one edit per rule, each with the
+//! code the kernel gives; targeted random edits of a weight, a numerator, the bound, a generator
+//! or a successor (`Edit::Field`), and random structure-aware edits (`mutate::decode`), judged
+//! alike by both.
+
+use crate::common::{differential_file, differential_ron, root};
+use chatter_oracle::compare::Agreement;
+use chatter_oracle::mutate::{Edit, FIELDS, decode, mutated};
+use chatter_oracle::read::{Encoding, parse::parse};
+use chatter_oracle::verdict::Kind;
+use std::collections::BTreeMap;
+
+/// The valid general bodies' time-to-rest certificates of the corpus.
+const VALID: [&str; 2] = ["rest-family-lander-gamma1_50.ron", "rest-family-rectangle2x1-gamma1_100.ron"];
+
+fn text(dir: &str, name: &str) -> String {
+    std::fs::read_to_string(root().join("certificates").join(dir).join(name)).expect("a corpus file")
+}
+
+/// The corpus's `rest-family-*` files, valid and invalid.
+fn corpus_files() -> Vec<std::path::PathBuf> {
+    let mut out = vec![];
+    for dir in ["valid", "invalid"] {
+        for e in std::fs::read_dir(root().join("certificates").join(dir)).expect("the corpus") {
+            let path = e.expect("entry").path();
+            if path.file_name().is_some_and(|n| n.to_string_lossy().starts_with("rest-family-")) {
+                out.push(path);
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+/// Every `rest-family-*` file of the corpus: read as the new kind, the kernel's verdict (both
+/// accept with the same claim, n, nodes and B; both reject with the same code), and the valid ones
+/// accepted.
+#[test]
+fn corpus_rest_family_files_get_the_kernels_verdict() {
+    let mut failures = vec![];
+    let mut accepted = 0;
+    for path in corpus_files() {
+        let (kernel, oracle, cmp) = differential_file(&path);
+        let name = path.display();
+        if let Err(f) = cmp {
+            failures.push(format!("{name}: {f}"));
+        }
+        if oracle.kind != Kind::RestFamily && oracle.accepted() {
+            failures.push(format!("{name}: read as {:?}", oracle.kind));
+        }
+        if path.parent().is_some_and(|d| d.ends_with("valid")) {
+            assert!(oracle.accepted() && kernel.accepted, "{name}: {oracle:?} {kernel:?}");
+            assert!(oracle.time_to_rest_bound.is_some(), "{name}");
+            accepted += 1;
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(accepted >= VALID.len(), "{accepted} valid rest-family files");
+}
+
+/// The JSON twin (the tool's `convert`) of each valid file gets its RON's verdict from the oracle,
+/// and the kernel's on the twin agrees.
+#[test]
+fn json_twins_of_rest_family_certificates_get_the_verdict_of_their_ron() {
+    use chatter::convert::{Target, convert};
+    use chatter_kernel::syntax::Encoding as KernelEncoding;
+    for name in VALID {
+        let ron = text("valid", name);
+        let json = convert(&ron, KernelEncoding::Ron, Target::Json).expect("a twin");
+        let oracle = chatter_oracle::judge(&json, Encoding::Json);
+        assert_eq!(oracle, chatter_oracle::judge(&ron, Encoding::Ron), "{name}");
+        assert!(oracle.accepted(), "{name}: {oracle:?}");
+        let kernel = crate::common::kernel_rest_family_in(&json, KernelEncoding::Json);
+        let cmp = chatter_oracle::compare::compare(&kernel, &oracle);
+        assert_eq!(cmp, Ok(Agreement::BothAccept), "{name}: {kernel:?} {oracle:?}");
+    }
+}
+
+/// The lander's file with `from` replaced by `to` (the first occurrence, which must exist).
+fn lander_with(from: &str, to: &str) -> String {
+    let base = text("valid", VALID[0]);
+    assert!(base.contains(from), "{from:?} is not in the lander's file");
+    base.replacen(from, to, 1)
+}
+
+/// One edit per rule of §17 (and of the header and schema), each rejected by the oracle with the
+/// expected code and by the kernel with the same one.
+#[test]
+fn each_rule_breaks_alike() {
+    // Node 3 (contact 1, no entry) given contact 3 = n.
+    let node3 = "contact: 1,\n            cone: [(\"7027177/16777216\"";
+    let cases: Vec<(&str, String)> = vec![
+        ("unsupported-version", lander_with("version: 1,", "version: 2,")),
+        ("syntax", lander_with("FamilyTimeToRest(", "TimeToRest(")),
+        ("unknown-field", lander_with("entries:", "extra: 1,\n    entries:")),
+        ("missing-field", lander_with("    entries: [0, 1, 2],\n", "")),
+        ("unknown-variant", lander_with("CompleteChatterFromAllDown", "EffectivelyInvariant")),
+        ("parameter-out-of-range", lander_with("gamma: \"1/50\"", "gamma: [\"1/100\", \"1/50\"]")),
+        ("parameter-out-of-range", lander_with("gamma: \"1/50\"", "gamma: \"1\"")),
+        ("bad-number", lander_with("gamma: \"1/50\"", "gamma: \"2/100\"")),
+        ("unsupported-body", lander_with("(\"164/75\", \"0\")", "(\"-164/75\", \"0\")")),
+        ("inertia-not-derived", lander_with("\"1765967/1406250\"", "\"1765969/1406250\"")),
+        ("wrong-arity", lander_with("entries: [0, 1, 2]", "entries: [0, 1]")),
+        ("missing-successor", lander_with("entries: [0, 1, 2]", "entries: [1, 1, 2]")),
+        ("missing-successor", lander_with("entries: [0, 1, 2]", "entries: [0, 1, 99]")),
+        ("parameter-out-of-range", lander_with(node3, &node3.replace("contact: 1", "contact: 3"))),
+        (
+            "generator-not-below",
+            lander_with("\"-7689285/16777216\", \"-1\")", "\"-7689285/16777216\", \"1\")"),
+        ),
+        ("wrong-arity", lander_with("\"-7689285/16777216\", \"-1\")", "\"-7689285/16777216\")")),
+        (
+            "virtual-time-not-positive",
+            lander_with("weight: (\"-10743095/16777216\", \"-1\", \"1\")", "weight: (\"0\", \"0\", \"-1\")"),
+        ),
+        ("bound-too-small", lander_with("bound: \"12935641583736815/549755813888\"", "bound: \"1\"")),
+        ("missing-successor", lander_with("next: [(1, 3), (2, 4)]", "next: [(2, 4)]")),
+        ("missing-successor", lander_with("next: [(1, 3), (2, 4)]", "next: [(1, 4), (2, 4)]")),
+    ];
+    let mut failures = vec![];
+    for (i, (code, text)) in cases.iter().enumerate() {
+        let (kernel, oracle, cmp) = differential_ron(text);
+        if cmp.is_err() || kernel.code.as_deref() != Some(*code) || !oracle.codes().contains(code) {
+            failures.push(format!("case {i} ({code}): kernel {kernel:?}, oracle {oracle:?}, {cmp:?}"));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// One number of a valid file changed flips the verdict of both: the bound halved
+/// (`bound-too-small`), a numerator's height coordinate negated (G2), a weight scaled down (F).
+#[test]
+fn one_number_changed_flips_the_verdict() {
+    let lander = text("valid", VALID[0]);
+    let (kernel, oracle, cmp) = differential_ron(&lander);
+    assert!(kernel.accepted && oracle.accepted() && cmp.is_ok(), "{kernel:?} {oracle:?}");
+    let b = "12935641583736815/549755813888";
+    let halved = lander.replacen(b, "12935641583736815/1099511627776", 1);
+    let flipped = lander.replacen("\"26827743191587/549755813888\"", "\"-26827743191587/549755813888\"", 1);
+    for (code, t) in [("bound-too-small", halved), ("virtual-time-not-positive", flipped)] {
+        let (kernel, oracle, cmp) = differential_ron(&t);
+        assert_eq!(kernel.code.as_deref(), Some(code), "{kernel:?}");
+        assert!(oracle.codes().contains(&code) && cmp.is_ok(), "{oracle:?} {cmp:?}");
+    }
+}
+
+/// splitmix64, for deterministic inputs.
+fn next(state: &mut u64) -> u64 {
+    *state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    let mut z = *state;
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// Single edits of a weight, the bound, a generator, a successor or a numerator of the valid
+/// files (`Edit::Field`; `scale` is not a field of this kind), judged alike by the kernel and
+/// the oracle; both verdicts occur.
+#[test]
+fn rest_family_parts_mutated_alike() {
+    let bases: Vec<_> =
+        VALID.iter().map(|b| parse(&text("valid", b), Encoding::Ron).expect("a base file parses")).collect();
+    let names: Vec<u8> = (0..FIELDS.len() as u8).filter(|&i| FIELDS[usize::from(i)] != "scale").collect();
+    let (mut tally, mut codes): (BTreeMap<String, usize>, BTreeMap<String, usize>) = Default::default();
+    let mut failures = vec![];
+    let mut state = 31;
+    for case in 0..60 {
+        let r = next(&mut state);
+        let edit = Edit::Field { name: names[case % names.len()], at: (r >> 8) as u8, how: (r >> 16) as u8 };
+        // The lander (small) three times in four.
+        let base = if r % 4 == 3 { &bases[1] } else { &bases[0] };
+        let text = mutated(base, &[edit]);
+        let (kernel, _, cmp) = differential_ron(&text);
+        *codes.entry(kernel.code.clone().unwrap_or_else(|| "accepted".into())).or_default() += 1;
+        match cmp {
+            Ok(a) => *tally.entry(format!("{a:?}")).or_default() += 1,
+            Err(f) => failures.push(format!("case {case} {edit:?}: {f}\n{text}")),
+        }
+    }
+    eprintln!("rest-family mutations: {tally:?}\nkernel verdicts: {codes:?}");
+    assert!(failures.is_empty(), "{} disagreements:\n{}", failures.len(), failures.join("\n\n"));
+    assert!(tally.get("BothAccept").copied().unwrap_or(0) >= 2, "{tally:?}");
+    assert!(tally.get("BothReject").copied().unwrap_or(0) >= 10, "{tally:?}");
+}
+
+/// Random structure-aware plans of up to three edits (the fuzz target's decoder: numbers nudged,
+/// scaled, negated, spoiled; elements dropped, duplicated, swapped; identifiers, integers and
+/// fields changed; γ widened) of the lander's file, judged alike by the kernel and the oracle.
+#[test]
+fn random_edits_of_the_lander_judged_alike() {
+    let base = parse(&text("valid", VALID[0]), Encoding::Ron).expect("parses");
+    let (mut tally, mut codes): (BTreeMap<String, usize>, BTreeMap<String, usize>) = Default::default();
+    let mut failures = vec![];
+    let mut state = 37;
+    for case in 0..80 {
+        let len = 1 + 4 * (1 + next(&mut state) % 3) as usize;
+        let bytes: Vec<u8> = (0..len).map(|_| next(&mut state) as u8).collect();
+        let plan = decode(&bytes);
+        let text = mutated(&base, &plan.edits);
+        let (kernel, _, cmp) = differential_ron(&text);
+        *codes.entry(kernel.code.clone().unwrap_or_else(|| "accepted".into())).or_default() += 1;
+        match cmp {
+            Ok(a) => *tally.entry(format!("{a:?}")).or_default() += 1,
+            Err(f) => failures.push(format!("case {case} {plan:?}: {f}\n{text}")),
+        }
+    }
+    eprintln!("lander edits: {tally:?}\nkernel verdicts: {codes:?}");
+    assert!(failures.is_empty(), "{} disagreements:\n{}", failures.len(), failures.join("\n\n"));
+    assert!(tally.get("BothReject").copied().unwrap_or(0) >= 30, "{tally:?}");
+}

@@ -1,0 +1,165 @@
+//! Issue 24 §1 for general bodies: time-to-rest certificates of a general convex body
+//! (docs/time-to-rest.md §5, Theorem 5.2; docs/certificate-format.md §17), produced by
+//! `chatter certify --time-to-rest` and checked against brute force with the physics of
+//! docs/model.md §11 written again here in `f64`.
+
+use crate::common::root;
+use crate::time_to_rest::num;
+use chatter_kernel::rest_family::FamilyTimeToRest;
+use std::process::Command;
+
+/// A general body in `f64` (docs/model.md §11.1-§11.3): contacts, J and γ.
+struct Body {
+    contacts: Vec<[f64; 2]>,
+    j: [[f64; 2]; 2],
+    gamma: f64,
+}
+
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+impl Body {
+    fn of(cert: &FamilyTimeToRest) -> Body {
+        let chatter_kernel::syntax::family::ConvexBodyText::ConvexPolygon {
+            contacts, inertia, gamma, ..
+        } = &cert.body;
+        let chatter_kernel::syntax::cone::Param::Point(g) = gamma else { panic!("a point") };
+        let (a, b, c) = (num(&inertia.0), num(&inertia.1), num(&inertia.2));
+        Body {
+            contacts: contacts.iter().map(|(x, y)| [num(x), num(y)]).collect(),
+            j: [[a, b], [b, c]],
+            gamma: num(g),
+        }
+    }
+    fn n(&self) -> usize {
+        self.contacts.len()
+    }
+    /// f_k = (y_k, -x_k, 1).
+    fn f(&self, k: usize) -> [f64; 3] {
+        let [x, y] = self.contacts[k % self.n()];
+        [y, -x, 1.0]
+    }
+    /// p - (1 + γ) u_k w_k, w_k = M^{-1} f_k / N_k.
+    fn impact(&self, k: usize, p: [f64; 3]) -> [f64; 3] {
+        let [[a, b], [_, c]] = self.j;
+        let det = a * c - b * b;
+        let f = self.f(k);
+        let minv = [(c * f[0] - b * f[1]) / det, (a * f[1] - b * f[0]) / det, f[2]];
+        let nk = dot(f, minv);
+        let uk = dot(f, p);
+        std::array::from_fn(|i| p[i] - (1.0 + self.gamma) * uk * minv[i] / nk)
+    }
+    /// m_{k,k+1} = f_k × f_{k+1} / D.
+    fn rest(&self, k: usize) -> [f64; 3] {
+        let (a, b) = (self.f(k), self.f(k + 1));
+        let x = [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+        x.map(|c| c / x[2])
+    }
+    /// The next contact to land and the flight before it.
+    fn next(&self, q: [f64; 3], p: [f64; 3]) -> Option<(usize, f64)> {
+        (0..self.n())
+            .filter(|&k| dot(self.f(k), p) < 0.0)
+            .map(|k| (k, dot(self.f(k), q) / -dot(self.f(k), p)))
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+    }
+}
+
+fn vector(g: &chatter_kernel::certificate::Generator) -> [f64; 3] {
+    [0, 1, 2].map(|i| num(&g.0[i]))
+}
+
+/// Follows a drop (configuration q with every contact up, velocity p with every contact moving
+/// down) through the certificate's nodes for 300 impacts, checking that the virtual time Φ_r falls
+/// in every flight and at every impact; the time from the first impact over h/|v| there.
+fn follow(body: &Body, cert: &FamilyTimeToRest, mut q: [f64; 3], mut p: [f64; 3]) -> f64 {
+    let phi = |r: usize, q: [f64; 3], p: [f64; 3]| {
+        let node = &cert.nodes[r];
+        dot(vector(&node.numerator), q) / -dot(vector(&node.weight), p)
+    };
+    let (first, t) = body.next(q, p).expect("a contact moves down");
+    q = std::array::from_fn(|i| q[i] + t * p[i]);
+    let (h, v) = (q[2], -p[2]);
+    p = body.impact(first, p);
+    let (mut node, mut time) = (cert.entries[first], 0.0);
+    assert_eq!(cert.nodes[node].contact, first);
+    let mut after = phi(node, q, p);
+    for _ in 0..300 {
+        let (k, f) = body.next(q, p).expect("v < 0: another contact lands");
+        let to = cert.nodes[node].next.iter().find(|s| s.0 == k as u64).expect("a successor").1;
+        q = std::array::from_fn(|i| q[i] + f * p[i]);
+        let before = phi(node, q, p);
+        assert!(before <= after - f + 1e-9 * after.abs(), "the flight shortens Φ by less than {f}");
+        p = body.impact(k, p);
+        let now = phi(to, q, p);
+        assert!(now <= before * (1.0 + 1e-9), "the virtual time grows: {before} -> {now}");
+        (node, after, time) = (to, now, time + f);
+    }
+    time * v / h
+}
+
+fn uniform(seed: &mut u64) -> f64 {
+    *seed ^= *seed << 13;
+    *seed ^= *seed >> 7;
+    *seed ^= *seed << 17;
+    (*seed >> 11) as f64 / (1u64 << 53) as f64
+}
+
+/// 200 random all-down drops of a corpus file's body (velocity a random positive combination of
+/// the generators -m_{k,k+1} of D, configuration one of the m_{k,k+1} with every contact up),
+/// followed through its nodes: the largest T|v|/h, never above B.
+fn falls_along_drops(file: &str) -> (f64, f64) {
+    let text = std::fs::read_to_string(root().join("certificates/valid").join(file)).unwrap();
+    let cert: FamilyTimeToRest =
+        chatter_kernel::syntax::read(&text, chatter_kernel::syntax::Encoding::Ron).unwrap();
+    let body = Body::of(&cert);
+    let bound = num(&cert.bound);
+    let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+    let mut largest = 0.0_f64;
+    for _ in 0..200 {
+        let weights: Vec<f64> = (0..body.n()).map(|_| 0.01 + uniform(&mut seed)).collect();
+        let mut p = [0.0; 3];
+        let mut q = [0.0; 3];
+        for (k, w) in weights.iter().enumerate() {
+            let (m, mu) = (body.rest(k), 0.01 + uniform(&mut seed));
+            (0..3).for_each(|i| (p[i], q[i]) = (p[i] - w * m[i], q[i] + mu * m[i]));
+        }
+        let ratio = follow(&body, &cert, q, p);
+        assert!(ratio <= bound * (1.0 + 1e-9), "{file}: T |v|/h = {ratio} > B = {bound}");
+        largest = largest.max(ratio);
+    }
+    (largest, bound)
+}
+
+/// The corpus's general-body files against brute force: the lander (3 contacts, full inertia
+/// tensor) and the 2 x 1 rectangular plate.
+#[test]
+fn the_virtual_time_of_general_body_certificates_falls_along_simulated_drops() {
+    for file in ["rest-family-lander-gamma1_50.ron", "rest-family-rectangle2x1-gamma1_100.ron"] {
+        let (largest, bound) = falls_along_drops(file);
+        eprintln!("{file}: largest T|v|/h of 200 drops {largest}, B = {bound}, factor {}", bound / largest);
+        // The drops take time: the check is not vacuous.
+        assert!(largest > 0.5 && largest < bound, "{file}: largest T |v|/h = {largest}, B = {bound}");
+    }
+}
+
+/// `certify --rectangle 2,1 --gamma 1/100 --time-to-rest FILE --json` writes a general body's file
+/// that `verify` accepts, and reports its B; a γ interval is refused.
+#[test]
+fn certify_writes_a_general_bodys_time_to_rest_certificate() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("rest.ron");
+    let bin = env!("CARGO_BIN_EXE_chatter");
+    let args = ["certify", "--rectangle", "2,1", "--gamma", "1/100", "--json", "--time-to-rest"];
+    let out = Command::new(bin).args(args).arg(&file).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let b = v["time_to_rest_bound"].as_str().unwrap_or_else(|| panic!("{v}"));
+    assert_eq!(v["time_to_rest"]["claim"], "CompleteChatterFromAllDown", "{v}");
+    let verified = Command::new(bin).arg("verify").arg("--json").arg(&file).output().unwrap();
+    let w: serde_json::Value = serde_json::from_slice(&verified.stdout).unwrap();
+    assert_eq!(w["files"][0]["time_to_rest_bound"].as_str(), Some(b), "{w}");
+    let interval = ["certify", "--rectangle", "2,1", "--gamma", "1/100:1/50", "--time-to-rest"];
+    let out = Command::new(bin).args(interval).arg(dir.path().join("x.ron")).output().unwrap();
+    assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stdout));
+}
