@@ -162,3 +162,21 @@ pub fn regular_polygon_exact(n: usize, kappa: &Q, gamma: &Q) -> Result<ConvexBod
     };
     regular_polygon(n, &c, &s, Algebraic::rational(kappa.clone()), Algebraic::rational(gamma.clone()))
 }
+
+/// The exact body a file's `ConvexPolygon` names, at each end of its γ (one for a number): the
+/// model's checks as error text (the kernel decides a file's acceptance).
+pub fn of_text(b: &chatter_kernel::syntax::family::ConvexBodyText) -> Result<Vec<ConvexBody<Q>>, String> {
+    use chatter_kernel::syntax::cone::Param;
+    let q = |text: &str| text.parse::<Q>().map_err(|e| format!("{text:?}: {e}"));
+    let chatter_kernel::syntax::family::ConvexBodyText::ConvexPolygon { contacts, inertia, gamma, .. } = b;
+    let pts = contacts.iter().map(|(x, y)| Ok([q(x)?, q(y)?])).collect::<Result<Vec<_>, String>>()?;
+    let jxy = q(&inertia.1)?;
+    let j = [[q(&inertia.0)?, jxy.clone()], [jxy, q(&inertia.2)?]];
+    let body = |g: &str| {
+        ConvexBody::new(pts.clone(), j.clone(), q(g)?).map_err(|e| format!("the body is not valid: {e}"))
+    };
+    match gamma {
+        Param::Point(g) => Ok(vec![body(g)?]),
+        Param::Interval(lo, hi) => Ok(vec![body(lo)?, body(hi)?]),
+    }
+}

@@ -89,9 +89,10 @@ pub struct SimulateArgs {
     #[arg(long, default_value_t = DEFAULT_PCC_EPSILON)]
     pub pcc_epsilon: f64,
     /// With --exact: prove outcomes from these certificates only (cone certificates with claim
-    /// CompleteChatterFromAllDown: no ICC and no PCC; orbit certificates: CC; RON or .json; each
-    /// re-checked by the kernel on both backends and required to be about this body). Without it,
-    /// certificates are made on the fly.
+    /// CompleteChatterFromAllDown: no ICC and no PCC; orbit certificates: CC; time-to-rest
+    /// certificates, also of a general body: CC of every all-down drop with a time bound; RON or
+    /// .json; each re-checked by the kernel on both backends and required to be about this body).
+    /// Without it, certificates are made on the fly (for a general body, a time-to-rest one).
     #[arg(long, value_name = "FILE", num_args = 1..)]
     pub certificate: Vec<PathBuf>,
 }
@@ -201,7 +202,7 @@ fn validate(a: SimulateArgs) -> Result<Validated, String> {
         return Err("--trajectory and --plot describe a single run: drop --runs".into());
     }
     let arithmetic = if a.exact { Arithmetic::Exact } else { Arithmetic::Float };
-    let (sets, make_orbits) = certified_sets(&model, arithmetic, &a.certificate)?;
+    let (sets, make_orbits) = certified_sets(&model, general.as_ref(), arithmetic, &a.certificate)?;
     let mut opts = Options::new(impacts);
     opts.pcc_epsilon = a.pcc_epsilon;
     opts.record = a.trajectory.is_some() || a.plot.is_some();
@@ -224,27 +225,26 @@ fn validate(a: SimulateArgs) -> Result<Validated, String> {
     })
 }
 
-/// The certified sets of an exact run on a regular polygon: the given files (each must be
-/// accepted by the kernel, exclude PCC and be about this body), or those made on the fly.
+/// The certified sets of an exact run: the given files (each must be accepted by the kernel,
+/// exclude PCC and be about this body), or those made on the fly (for a general body, a
+/// time-to-rest certificate of it, docs/time-to-rest.md Theorem 5.2).
 fn certified_sets(
     model: &Model,
+    general: Option<&super::convex_args::GeneralBody>,
     arithmetic: Arithmetic,
     files: &[PathBuf],
 ) -> Result<(Option<Certified>, bool), String> {
-    let polygon = matches!(model.shape(), Shape::Polygon(_) | Shape::Rod);
-    if arithmetic == Arithmetic::Float || !polygon {
+    if arithmetic == Arithmetic::Float {
         if !files.is_empty() {
-            let why = if polygon {
-                "needs --exact (f64 runs prove nothing)"
-            } else {
-                "needs a regular polygon or the rod"
-            };
-            return Err(format!("--certificate {why}"));
+            return Err("--certificate needs --exact (f64 runs prove nothing)".into());
         }
         return Ok((None, false));
     }
     if files.is_empty() {
-        return Ok((Some(crate::prove::made(model)), true));
+        return Ok(match general {
+            Some(g) => (Some(crate::prove::made_general(model, &g.body)), false),
+            None => (Some(crate::prove::made(model)), true),
+        });
     }
     let mut sets = Certified::empty();
     for f in files {

@@ -120,6 +120,22 @@ pub fn made(model: &Model) -> Certified {
     cache().lock().expect("cache").entry(key(model)).or_insert(made).clone()
 }
 
+/// The sets made on the fly for a general body (docs/model.md §11): a time-to-rest certificate
+/// of the body (docs/time-to-rest.md Theorem 5.2), made by the producer with its full budget and
+/// accepted by the kernel on both backends, whose claim excludes PCC; otherwise none, and a note
+/// says why (no drop of the run is then proved).
+pub fn made_general(model: &Model, body: &chatter_kernel::model::ConvexBody<Q>) -> Certified {
+    let mut sets = Certified::empty();
+    let cfg = crate::certify::virtual_time::Config::default();
+    let both = chatter_kernel::verify::BOTH;
+    let note = match crate::certify::virtual_time::produce_family(body, None, &cfg, &both) {
+        Ok(p) => sets.add_rest_family(model, &p.cert, "time-to-rest certificate made on the fly").err(),
+        Err(e) => Some(format!("no time-to-rest certificate of this body was made: {e}")),
+    };
+    sets.notes.extend(note);
+    sets
+}
+
 /// Keeps these sets (e.g. with an orbit certificate added) as the model's cached sets.
 pub fn remember(model: &Model, sets: &Certified) {
     cache().lock().expect("cache").insert(key(model), sets.clone());

@@ -9,7 +9,9 @@
 
 mod make;
 
-pub use make::{Effort, ORBIT_DEPTH, add_orbit_for, add_rest_for, cone, made, remember, survey_rest_config};
+pub use make::{
+    Effort, ORBIT_DEPTH, add_orbit_for, add_rest_for, cone, made, made_general, remember, survey_rest_config,
+};
 
 use crate::simulate::certified::{Certified, pattern_text, primitive_cycle};
 use crate::simulate::{

@@ -13,7 +13,8 @@
 //!   `CompleteChatterFromSet`, n, κ, γ equal);
 //! - a time-to-rest certificate (claim `CompleteChatterFromAllDown`, rules G1-G5, F, n, κ, γ equal)
 //!   proves CC for every drop that is all-down at its first impact, with T <= B h/|v| from there
-//!   (docs/time-to-rest.md Theorem 5.1); it has no set to enter: the run tests the drop.
+//!   (docs/time-to-rest.md Theorem 5.1); it has no set to enter: the run tests the drop. So does a
+//!   general body's (`chatter-family-time-to-rest`, Theorem 5.2) for the general body it names.
 //!
 //! Sets come from files (`chatter simulate --certificate FILE...`) or are made on the fly
 //! (`crate::prove::made`, cached per body and parameters; `crate::prove::add_orbit_for` once a
@@ -28,8 +29,9 @@ use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::membership::{CertifiedCone, CertifiedOrbit, NotCertified};
 use chatter_kernel::model::linalg::Vec3;
 use chatter_kernel::rest::TimeToRest;
+use chatter_kernel::rest_family::FamilyTimeToRest;
 use chatter_kernel::syntax::{Kind, kind_of, read};
-use chatter_kernel::verify::{BOTH, Verdict, verify_rest};
+use chatter_kernel::verify::{BOTH, Verdict, verify_rest, verify_rest_family};
 use std::sync::Arc;
 
 /// The kind of a certified set.
@@ -69,6 +71,8 @@ pub enum Source {
     Orbit(Box<OrbitCertificate>),
     /// A time-to-rest certificate.
     Rest(Box<TimeToRest>),
+    /// A time-to-rest certificate of a general body.
+    RestFamily(Box<FamilyTimeToRest>),
 }
 
 /// One certified set, with where it came from.
@@ -238,12 +242,58 @@ impl Certified {
         Ok(())
     }
 
+    /// Adds a general body's time-to-rest certificate (docs/certificate-format.md §17) that the
+    /// kernel accepts on both backends, whose claim excludes PCC and whose body is the model's
+    /// (the same contact covectors, impact kicks and γ); `Err` says why it cannot serve.
+    pub fn add_rest_family(
+        &mut self,
+        model: &Model,
+        cert: &FamilyTimeToRest,
+        name: &str,
+    ) -> Result<(), String> {
+        if cert.claim != Claim::CompleteChatterFromAllDown {
+            return Err(format!("its claim {} does not exclude PCC", cert.claim.name()));
+        }
+        let accepted = match verify_rest_family(cert, ParseLimits::default(), &BOTH) {
+            Verdict::Accepted(a) => a,
+            Verdict::Rejected(r) => return Err(format!("rejected by the kernel: {r}")),
+            Verdict::Disagree(s) => return Err(format!("the kernel's backends disagree: {s}")),
+        };
+        let body = crate::bodies::convex::of_text(&cert.body)?.swap_remove(0);
+        let named = super::System::convex(&body);
+        let same = model.exact.as_ref().is_some_and(|sys| {
+            sys.shape.is_convex()
+                && (sys.contacts == named.contacts && sys.kicks == named.kicks && sys.gamma == named.gamma)
+        });
+        if !same {
+            return Err(
+                "it is about another body (its contacts, inertia or gamma differ from the run's)".into()
+            );
+        }
+        let bound = accepted.bound.parse::<Q>().map_err(|e| format!("its bound cannot be read: {e}"))?;
+        let set = Set {
+            name: name.into(),
+            kind: SetKind::Rest,
+            claim: cert.claim,
+            source: Source::RestFamily(Box::new(cert.clone())),
+            time_to_rest_bound: Some(bound),
+            inner: Inner::Rest,
+        };
+        self.sets.push(Arc::new(set));
+        Ok(())
+    }
+
     /// Adds the certificate in a file (RON, or its JSON twin by the extension `.json`).
     pub fn add_file(&mut self, model: &Model, path: &std::path::Path) -> Result<(), String> {
         let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read it: {e}"))?;
         let json = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"));
         let encoding = if json { Encoding::Json } else { Encoding::Ron };
         let name = path.display().to_string();
+        if kind_of(&text, encoding, Kind::Cone).is_ok_and(|k| k.0 == Kind::RestFamily) {
+            let cert: FamilyTimeToRest =
+                read(&text, encoding).map_err(|r| format!("rejected by the kernel: {r}"))?;
+            return self.add_rest_family(model, &cert, &name);
+        }
         if kind_of(&text, encoding, Kind::Cone).is_ok_and(|k| k.0 == Kind::Rest) {
             let cert: TimeToRest =
                 read(&text, encoding).map_err(|r| format!("rejected by the kernel: {r}"))?;

@@ -329,7 +329,8 @@ impl Decision {
                     ),
                     (SetKind::Rest, t) => (
                         "the drop is all-down; by its rules G1-G5, F (a virtual time),",
-                        "complete chatter for every all-down drop (docs/time-to-rest.md Theorem 5.1)",
+                        "complete chatter for every all-down drop (docs/time-to-rest.md Theorem 5.1; \
+                         Theorem 5.2 for a general body)",
                         t.as_ref().map_or(String::new(), |t| by("the first impact", t)),
                     ),
                     (SetKind::Orbit, t) => (
@@ -681,15 +682,16 @@ impl<'a, E: Engine> Driver<'a, E> {
     /// a cone entry without a finite time is kept ([`Driver::cone`]) and the run goes on, testing
     /// only orbit sets from then on (every later velocity lies in K).
     fn entered(&mut self, after: usize) -> Option<Verdict> {
-        let (q, p) = self.eng.relabelled()?;
         let sets = self.certified?;
-        // A time-to-rest certificate proves CC for a drop that was all-down at its first impact.
+        // A time-to-rest certificate proves CC for a drop that was all-down at its first impact
+        // (also of a general body, whose states are not relabelled).
         if after == 1
             && self.eng.first_drop().is_some()
             && let Some(set) = sets.rest()
         {
             return Some(Verdict::cc(self.certified_decision(after, set)));
         }
+        let (q, p) = self.eng.relabelled()?;
         if let Some(set) = sets.entered_kind(SetKind::Orbit, &q, &p) {
             return Some(Verdict::cc(self.certified_decision(after, set)));
         }

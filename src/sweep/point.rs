@@ -204,7 +204,7 @@ fn prove_point(n: u64, p: &Point, evidence: &[Brief], budget: usize, certificate
         .count();
     let orbit = proved.sets.sets().iter().find_map(|s| match &s.source {
         Source::Orbit(c) => Some(crate::write::write_orbit(c)),
-        Source::Cone(_) | Source::Rest(_) => None,
+        Source::Cone(_) | Source::Rest(_) | Source::RestFamily(_) => None,
     });
     let times = proved
         .briefs

@@ -163,3 +163,68 @@ fn certify_writes_a_general_bodys_time_to_rest_certificate() {
     let out = Command::new(bin).args(interval).arg(dir.path().join("x.ron")).output().unwrap();
     assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stdout));
 }
+
+fn simulate(args: &[&str]) -> serde_json::Value {
+    let out = Command::new(env!("CARGO_BIN_EXE_chatter")).arg("simulate").args(args).output().unwrap();
+    serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&out.stderr)))
+}
+
+/// `simulate --exact` of a general body proves each all-down drop CC at its first impact by a
+/// time-to-rest certificate (a corpus file, or one made on the fly), with the impacts accumulating
+/// by t_1 + B h/|v|; the `f64` run of the same drop (evidence) accumulates them before that bound.
+/// A drop with a contact moving up at the start is not decided by it.
+#[test]
+fn simulate_proves_general_body_drops_cc_by_a_time_to_rest_certificate() {
+    let lander = root().join("certificates/valid/rest-family-lander-gamma1_50.ron");
+    let cases: [(&[&str], Option<&std::path::Path>); 2] = [
+        (&["--body", "lander", "--gamma", "1/50"], Some(&lander)),
+        (&["--rectangle", "2,1", "--gamma", "1/100"], None),
+    ];
+    for (body, file) in cases {
+        for seed in ["0", "1"] {
+            let mut args = [body, &["--json", "--exact", "--seed", seed]].concat();
+            if let Some(f) = file {
+                args.extend(["--certificate", f.to_str().unwrap()]);
+            }
+            let v = simulate(&args);
+            assert_eq!((v["outcome"].as_str(), v["proved"].as_bool()), (Some("CC"), Some(true)), "{v}");
+            let entered = &v["entered"];
+            assert_eq!(
+                (entered["kind"].as_str(), entered["impact"].as_u64()),
+                (Some("time-to-rest"), Some(1))
+            );
+            let made = entered["certificate"].as_str().is_some_and(|s| s.contains("made on the fly"));
+            assert_eq!(made, file.is_none(), "{v}");
+            let bound: f64 = entered["time_to_rest_bound"].as_str().unwrap().parse().unwrap();
+            let f = simulate(&[body, &["--json", "--seed", seed, "--impacts", "2000"]].concat());
+            let t = f["accumulation_time"].as_f64().unwrap_or_else(|| panic!("{f}"));
+            assert!(
+                t > 0.0 && t <= bound,
+                "{body:?} seed {seed}: accumulation time {t} > proved bound {bound}"
+            );
+        }
+    }
+    let up = ["--position", "0.001,0.002,1", "--velocity", "1,0,-1", "--certificate"];
+    let v = simulate(
+        &[
+            &["--body", "lander", "--gamma", "1/50", "--json", "--exact"],
+            &up[..],
+            &[lander.to_str().unwrap()],
+        ]
+        .concat(),
+    );
+    assert_ne!(v["entered"]["kind"].as_str(), Some("time-to-rest"), "{v}");
+    // A file about another body serves no run.
+    let other = Command::new(env!("CARGO_BIN_EXE_chatter"))
+        .args(["simulate", "--rectangle", "2,1", "--gamma", "1/50", "--exact", "--certificate"])
+        .arg(&lander)
+        .output()
+        .unwrap();
+    assert_eq!(other.status.code(), Some(2), "{}", String::from_utf8_lossy(&other.stdout));
+    assert!(
+        String::from_utf8_lossy(&other.stderr).contains("another body"),
+        "{}",
+        String::from_utf8_lossy(&other.stderr)
+    );
+}

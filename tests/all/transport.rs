@@ -335,7 +335,7 @@ fn versions_one_to_three_are_unchanged() {
             );
             assert_eq!(read_convex(&text, Encoding::Ron).unwrap_err().code, Code::WrongFormat);
             old += 1;
-        } else if kind == Kind::Orbit || kind == Kind::Basin || kind == Kind::Rest {
+        } else if matches!(kind, Kind::Orbit | Kind::Basin | Kind::Rest | Kind::RestFamily) {
             // An orbit, basin or time-to-rest certificate is read by neither of the other readers.
             assert_eq!(read_convex(&text, Encoding::Ron).unwrap_err().code, Code::WrongFormat);
         } else {

@@ -17,8 +17,8 @@
 //!   (`missing-successor`); on each vertex p of K_r ∩ C_{i(r)j}, I_j p is 0 or lies in K_s with
 //!   v < 0 (`image-outside`, `image-not-below`), and for q in {m_{j-1,j}, m_{j,j+1}}:
 //!   (a_s·q)(-b_r·p) <= (a_r·q)(-b_s·I_j p) (`virtual-time-increases`);
-//! - G4: I_i(-m_{k,k+1}) ∈ K_{entries[i]} for every i and k (`initial-outside`);
-//! - G5: B (-b_e·I_i(-m_{k,k+1})) >= a_e·m for e = entries[i], every k and m in {m_{i,i+1},
+//! - G4: I_i(-m_{k,k+1}) ∈ K_e, e = `entries[i]`, for every i and k (`initial-outside`);
+//! - G5: B (-b_e·I_i(-m_{k,k+1})) >= a_e·m for e = `entries[i]`, every k and m in {m_{i,i+1},
 //!   m_{i-1,i}} (`bound-too-small`);
 //! - K4 (`CompleteChatterFromAllDown`): PCC excluded for every adjacent pair, as for family
 //!   certificates.

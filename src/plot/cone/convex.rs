@@ -24,21 +24,6 @@ fn q(text: &str) -> Result<Q, String> {
     text.parse::<Q>().map_err(|e| format!("{text:?}: {e}"))
 }
 
-/// The exact body of the certificate at each end of its γ (one for a number).
-fn bodies(b: &ConvexBodyText) -> Result<Vec<ConvexBody<Q>>, String> {
-    let ConvexBodyText::ConvexPolygon { contacts, inertia, gamma, .. } = b;
-    let pts = contacts.iter().map(|(x, y)| Ok([q(x)?, q(y)?])).collect::<Result<Vec<_>, String>>()?;
-    let jxy = q(&inertia.1)?;
-    let j = [[q(&inertia.0)?, jxy.clone()], [jxy, q(&inertia.2)?]];
-    let body = |g: &str| {
-        ConvexBody::new(pts.clone(), j.clone(), q(g)?).map_err(|e| format!("the body is not valid: {e}"))
-    };
-    match gamma {
-        Param::Point(g) => Ok(vec![body(g)?]),
-        Param::Interval(lo, hi) => Ok(vec![body(lo)?, body(hi)?]),
-    }
-}
-
 /// The polygon of a cone's generators on the plane.
 fn polygon(gens: &[chatter_kernel::certificate::Generator]) -> Result<Vec<P2>, String> {
     let mut pts = Vec::new();
@@ -63,7 +48,7 @@ pub fn figure(text: &str, encoding: Encoding) -> Result<ConeFigure, String> {
         read_convex(text, encoding).map_err(|r| format!("not a readable certificate: {}", r.message()))?;
     // Over an interval of γ each image is drawn as the hull of its images at both ends, which
     // holds its images at every γ between (the maps are affine in γ, docs/kernel-soundness.md §6).
-    let ends = bodies(&cert.body)?;
+    let ends = crate::bodies::convex::of_text(&cert.body)?;
     let b = &ends[0];
     let n = b.n();
     let ks: Vec<Vec<P2>> = cert.cones.iter().map(|c| polygon(c)).collect::<Result<_, _>>()?;
