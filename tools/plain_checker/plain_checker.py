@@ -1194,7 +1194,8 @@ def derive_rod(points, coeffs, claim, k, g):
 # ---------------------------------------------------------------------------------------------
 
 OTHER_FORMATS = ("chatter-family-certificate", "chatter-orbit-certificate",
-                 "chatter-basin-certificate", "chatter-proof", "chatter-time-to-rest")
+                 "chatter-basin-certificate", "chatter-proof", "chatter-time-to-rest",
+                 "chatter-family-time-to-rest")
 
 
 def header(tree):

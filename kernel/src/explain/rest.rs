@@ -62,6 +62,9 @@ pub(super) fn words(f: &Failure, locus: &Locus) -> String {
         Failure::Entry(i, Some((e, c))) => {
             format!("the entry of contact {i} names node {e}, a node of contact {c} (rule G4)")
         }
+        Failure::Entries(found, n) => {
+            format!("expected one entry node per contact ({n}), found {found} (rule G4)")
+        }
         Failure::Contact(c, n) => format!("the node's contact {c} is not one of the body's {n} contacts"),
         Failure::Bound(generator, lhs, rhs) => format!(
             "B is too small at generator {generator} of D: B (-b_0·I_0 g) = {} < a_0·m = {} (rule G5; a = c b in version 1)",

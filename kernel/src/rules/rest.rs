@@ -89,6 +89,8 @@ pub enum Failure {
     /// A general body's entry of contact `.0` names no node of that contact (`.1`: the node it
     /// names and that node's contact).
     Entry(usize, Option<(usize, usize)>),
+    /// A general body's file lists `.0` entries for `.1` contacts.
+    Entries(usize, usize),
     /// A general body's node names contact `.0`, and the body has `.1` contacts.
     Contact(usize, usize),
 }

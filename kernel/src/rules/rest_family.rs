@@ -99,7 +99,7 @@ fn convex_body<F: Field>(cert: &FamilyTimeToRest, limits: ParseLimits) -> Result
 /// One entry node per contact, `entries[i]` of contact i.
 fn entries(cert: &FamilyTimeToRest, n: usize) -> Result<(), Rejection> {
     if cert.entries.len() != n {
-        let detail = KindDetail::ConeCount(cert.entries.len(), n, false);
+        let detail = KindDetail::Rest(Failure::Entries(cert.entries.len(), n));
         return Err(Rejection::at(Code::WrongArity, "entries", detail));
     }
     for (i, &e) in cert.entries.iter().enumerate() {
