@@ -147,7 +147,11 @@ fn the_cone_figure_of_an_interval_family_says_where_its_images_are_drawn() {
         crate::common::root().join("certificates/valid/convex-lander-gamma1_20-117_2000-inertia-tensor.ron");
     ok(&chatter(&["plot", "cone", file.to_str().unwrap(), "-o", "i.svg"], d.path()));
     let svg = std::fs::read_to_string(d.path().join("i.svg")).unwrap();
-    assert!(svg.contains("every γ ∈ [1/20, 117/2000] (images and I_i(D) at both ends)"), "the title");
+    assert!(svg.contains("every γ ∈ [1/20, 117/2000]: the cones"), "the title");
+    assert!(
+        svg.contains("images and I_i(D) at both ends of the") && svg.contains("interval of γ"),
+        "the note"
+    );
 
     let point = crate::common::root().join("certificates/valid/convex-lander-gamma1_20-inertia-tensor.ron");
     ok(&chatter(&["plot", "cone", point.to_str().unwrap(), "-o", "p.svg"], d.path()));

@@ -101,17 +101,22 @@ pub fn figure(text: &str, encoding: Encoding) -> Result<ConeFigure, String> {
         });
     }
     let ConvexBodyText::ConvexPolygon { gamma, .. } = &cert.body;
+    let interval = matches!(gamma, Param::Interval(..));
     let gamma = match gamma {
         Param::Point(g) => format!("γ = {g}"),
-        Param::Interval(a, b) => format!("every γ ∈ [{a}, {b}] (images and I_i(D) at both ends)"),
+        Param::Interval(a, b) => format!("every γ ∈ [{a}, {b}]"),
     };
     let title = format!(
         "general convex body, {n} contacts, {gamma}: the cones K_i on the plane v = −1 ({})",
         cert.claim.name()
     );
-    let notes = vec![
+    let mut notes = vec![
         "hatched: where two C_ik overlap, both hatchings show".into(),
         "coordinates: the paper's (ω_x, ω_y, v), angular velocity over the centre's downward speed".into(),
     ];
+    if interval {
+        // In the notes, not the title: a title this long ran off both edges of the figure.
+        notes.insert(0, "images and I_i(D) at both ends of the interval of γ".into());
+    }
     Ok(ConeFigure { title, axes: ("ω_x / (−v)".into(), "ω_y / (−v)".into()), panels, notes })
 }
