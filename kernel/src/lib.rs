@@ -125,7 +125,7 @@ pub mod rest {
 #[cfg(feature = "family-rest")]
 pub mod rest_family {
     pub use crate::rules::rest_family::check;
-    pub use crate::syntax::rest_family::{FORMAT, FamilyNode, FamilyTimeToRest, VERSION};
+    pub use crate::syntax::rest_family::{FORMAT, FamilyNode, FamilyTimeToRest, INTERVAL_VERSION, VERSION};
 }
 
 #[cfg(feature = "proof")]

@@ -40,7 +40,8 @@ pub struct Finding {
     /// false), `oracle-accepts` (the kernel rejects what the oracle accepts, two-sided),
     /// `wrong-code` (both reject, the kernel's code is not one the oracle's first failing rule
     /// can give), `wrong-end` (both reject a family certificate over an interval of γ with the
-    /// same code, at different ends) or `wrong-report` (both accept, with different reports).
+    /// same code, at different ends; also time-to-rest certificates of general bodies) or
+    /// `wrong-report` (both accept, with different reports).
     pub kind: &'static str,
     /// What differs.
     pub detail: String,
@@ -159,15 +160,16 @@ fn basin_bound(k: &KernelView, o: &Judgement) -> Result<(), String> {
 }
 
 /// The end of an interval of γ at which the kernel rejects a family certificate (rules K2-K4:
-/// the loci `transition`, `convex-all-down` and `pcc-pair` carry it).
+/// the loci `transition`, `convex-all-down` and `pcc-pair` carry it) or a general body's
+/// time-to-rest certificate (G3-G5 and K4: `rest-node`, `convex-all-down`, `pcc-pair`).
 fn kernel_end(k: &KernelView) -> Option<&str> {
     let locus = k.locus.as_ref()?;
-    let kinds = ["transition", "convex-all-down", "pcc-pair"];
+    let kinds = ["transition", "convex-all-down", "pcc-pair", "rest-node"];
     kinds.iter().any(|kind| locus["kind"] == *kind).then(|| locus["gamma"].as_str()).flatten()
 }
 
-/// Both reject a family certificate with the same code: they must name the same end of an
-/// interval of γ (or none).
+/// Both reject a family certificate (or a general body's time-to-rest certificate) with the
+/// same code: they must name the same end of an interval of γ (or none).
 fn same_end(k: &KernelView, why: &str) -> Result<(), Finding> {
     let (kernel, oracle) = (kernel_end(k), crate::convex::rules::end_named(why));
     if kernel == oracle {
@@ -234,7 +236,7 @@ pub fn compare(k: &KernelView, o: &Judgement) -> Result<Agreement, Finding> {
             let basin_later = o.kind == Kind::Basin
                 && content.contains(&code)
                 && codes.iter().all(|c| content.contains(c) || later.contains(c));
-            if codes.contains(&code) && o.kind == Kind::Family {
+            if codes.contains(&code) && matches!(o.kind, Kind::Family | Kind::RestFamily) {
                 same_end(k, why).map(|()| Agreement::BothReject)
             } else if codes.contains(&code) || (o.sided == Sided::One && (both_content || basin_later)) {
                 Ok(Agreement::BothReject)

@@ -117,6 +117,7 @@ fn judge_value(value: &Value, reader: Reader, limits: &Limits) -> Judgement {
             Ok(file) => match kinds::rest_family::check(&file, limits) {
                 Ok((report, bound)) => Judgement {
                     time_to_rest_bound: Some(bound),
+                    gamma_interval: file.gamma_interval(),
                     ..done(Kind::RestFamily, Sided::Two, Ok(report))
                 },
                 Err(f) => done(Kind::RestFamily, Sided::Two, Err(f)),

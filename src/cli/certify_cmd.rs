@@ -96,7 +96,8 @@ pub struct CertifyArgs {
     /// all-down drop's impacts accumulate by B h/|v| (`time_to_rest_bound`). Regular polygons,
     /// 3 <= n <= 64, at a point with rational kappa and gamma, or, for n = 3, 4, 6, on a box of
     /// them (one graph and one B for the whole box, version 3); general bodies (--body,
-    /// --rectangle, --box, --polygon) at one gamma (format chatter-family-time-to-rest; the whole
+    /// --rectangle, --box, --polygon) at one gamma or, with --gamma a:b, for every gamma of the
+    /// interval (format chatter-family-time-to-rest, version 2 for an interval; the whole
     /// search below runs with new nodes enlarged by 0.3, 0.5 and 0.1, and the least B is kept). Three graphs are tried in turn (nodes padded by 10^-3, 10^-4, 10^-5), then
     /// nine that merge an image no node holds into the node it enlarges least (area factors
     /// from 1.05 to 2.5; pad 10^-3); each search stops at 200 nodes and 12 rounds of the covector

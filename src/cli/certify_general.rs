@@ -43,9 +43,6 @@ fn validate(a: CertifyArgs, env: &Env) -> Result<Validated, String> {
     if a.max_vertices < 3 {
         return Err("--max-vertices must be at least 3".into());
     }
-    if a.time_to_rest.is_some() && hi != gamma {
-        return Err("--time-to-rest: a general body's time-to-rest certificate takes gamma at a point, not an interval".into());
-    }
     let mut req = ConvexRequest::new(body);
     req.gamma_hi = (hi != gamma).then_some(hi);
     req.claim = a.claim.choice();
@@ -125,15 +122,12 @@ pub fn run(a: CertifyArgs, env: &Env) -> Outcome {
     }
     let rest = v.rest.as_ref().map(|path| {
         let tensor = v.tensor.as_ref().map(Tensor::urdf);
-        (
-            path,
-            virtual_time::produce_family(
-                &v.req.body,
-                tensor,
-                &virtual_time::Config::default(),
-                &v.req.backends,
-            ),
-        )
+        let cfg = virtual_time::Config::default();
+        let made = match v.req.ends() {
+            Ok(ends) => virtual_time::produce_family(&ends, tensor, &cfg, &v.req.backends),
+            Err(e) => Err(virtual_time::NotProduced::Failed(e.to_string())),
+        };
+        (path, made)
     });
     if let Some((path, Ok(p))) = &rest
         && let Err(e) = std::fs::write(path, &p.text)

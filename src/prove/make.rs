@@ -128,10 +128,11 @@ pub fn made_general(model: &Model, body: &chatter_kernel::model::ConvexBody<Q>) 
     let mut sets = Certified::empty();
     let cfg = crate::certify::virtual_time::Config::default();
     let both = chatter_kernel::verify::BOTH;
-    let note = match crate::certify::virtual_time::produce_family(body, None, &cfg, &both) {
-        Ok(p) => sets.add_rest_family(model, &p.cert, "time-to-rest certificate made on the fly").err(),
-        Err(e) => Some(format!("no time-to-rest certificate of this body was made: {e}")),
-    };
+    let note =
+        match crate::certify::virtual_time::produce_family(std::slice::from_ref(body), None, &cfg, &both) {
+            Ok(p) => sets.add_rest_family(model, &p.cert, "time-to-rest certificate made on the fly").err(),
+            Err(e) => Some(format!("no time-to-rest certificate of this body was made: {e}")),
+        };
     sets.notes.extend(note);
     sets
 }

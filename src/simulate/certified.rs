@@ -27,6 +27,7 @@ use chatter_kernel::certificate::{Body, Param};
 use chatter_kernel::certificate::{Certificate, Claim, Encoding, OrbitCertificate, read_in, read_orbit};
 use chatter_kernel::exact::ParseLimits;
 use chatter_kernel::membership::{CertifiedCone, CertifiedOrbit, NotCertified};
+use chatter_kernel::model::ConvexBody;
 use chatter_kernel::model::linalg::Vec3;
 use chatter_kernel::rest::TimeToRest;
 use chatter_kernel::rest_family::FamilyTimeToRest;
@@ -244,7 +245,8 @@ impl Certified {
 
     /// Adds a general body's time-to-rest certificate (docs/certificate-format.md §17) that the
     /// kernel accepts on both backends, whose claim excludes PCC and whose body is the model's
-    /// (the same contact covectors, impact kicks and γ); `Err` says why it cannot serve.
+    /// (the same contacts and inertia, and the model's γ the file's γ or in its interval: the
+    /// same contact covectors and impact kicks); `Err` says why it cannot serve.
     pub fn add_rest_family(
         &mut self,
         model: &Model,
@@ -259,15 +261,20 @@ impl Certified {
             Verdict::Rejected(r) => return Err(format!("rejected by the kernel: {r}")),
             Verdict::Disagree(s) => return Err(format!("the kernel's backends disagree: {s}")),
         };
-        let body = crate::bodies::convex::of_text(&cert.body)?.swap_remove(0);
-        let named = super::System::convex(&body);
+        let ends = crate::bodies::convex::of_text(&cert.body)?;
+        // The body at the run's γ, if that lies in the file's γ (a point, or an interval).
+        let (lo, hi) = (&ends[0], &ends[ends.len() - 1]);
         let same = model.exact.as_ref().is_some_and(|sys| {
+            let inside = lo.gamma() <= &sys.gamma && &sys.gamma <= hi.gamma();
+            let at = ConvexBody::new(lo.contacts().to_vec(), lo.inertia().clone(), sys.gamma.clone());
+            let named = at.map(|b| super::System::convex(&b));
             sys.shape.is_convex()
-                && (sys.contacts == named.contacts && sys.kicks == named.kicks && sys.gamma == named.gamma)
+                && inside
+                && named.is_ok_and(|named| sys.contacts == named.contacts && sys.kicks == named.kicks)
         });
         if !same {
             return Err(
-                "it is about another body (its contacts, inertia or gamma differ from the run's)".into()
+                "it is about another body (its contacts or inertia differ from the run's, or the run's gamma is not the file's)".into()
             );
         }
         let bound = accepted.bound.parse::<Q>().map_err(|e| format!("its bound cannot be read: {e}"))?;

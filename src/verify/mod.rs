@@ -87,7 +87,8 @@ pub struct FileVerdict {
     /// For a box certificate: [lo, hi] of kappa and of gamma.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub region: Option<[[String; 2]; 2]>,
-    /// For a family certificate over an interval of gamma: [lo, hi].
+    /// For a family certificate, or a general body's time-to-rest certificate, over an interval
+    /// of gamma: [lo, hi].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gamma_interval: Option<[String; 2]>,
     /// For an accepted family certificate that records a full inertia tensor (Ixx, Ixy, Ixz,
@@ -222,9 +223,13 @@ impl FileVerdict {
             );
         }
         if let (Some(nodes), Some(b)) = (self.rest_nodes, &self.time_to_rest_bound) {
-            let region = self.region.as_ref().map_or(String::new(), |[k, g]| {
-                format!(", for every kappa in [{}, {}] and gamma in [{}, {}]", k[0], k[1], g[0], g[1])
-            });
+            let region = match (&self.region, &self.gamma_interval) {
+                (Some([k, g]), _) => {
+                    format!(", for every kappa in [{}, {}] and gamma in [{}, {}]", k[0], k[1], g[0], g[1])
+                }
+                (None, Some(g)) => format!(", for every gamma in [{}, {}]", g[0], g[1]),
+                (None, None) => String::new(),
+            };
             return format!(
                 "{}: OK ({}, n = {}{region}: every all-down drop's impacts accumulate within T <= {b} h/|v|; a virtual time on {nodes} nodes, rules G1-G5, F)",
                 self.path,
@@ -369,7 +374,7 @@ pub fn rest_verdict_of(path: &Path, verdict: Verdict<chatter_kernel::rest::Reste
             (v.claim, v.n) = (Some(a.claim.name()), Some(a.n));
             v.proves = Some(crate::claims::proves_virtual_time(a.claim.name()));
             (v.time_to_rest_bound, v.rest_nodes) = (Some(a.bound), Some(a.nodes));
-            v.region = a.region;
+            (v.region, v.gamma_interval) = (a.region, a.gamma_interval);
             v
         }
         Verdict::Rejected(r) => verdict_of(path, Verdict::Rejected(r)),

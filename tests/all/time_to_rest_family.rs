@@ -6,6 +6,7 @@
 use crate::common::root;
 use crate::time_to_rest::num;
 use chatter_kernel::rest_family::FamilyTimeToRest;
+use chatter_kernel::syntax::cone::Param;
 use std::process::Command;
 
 /// A general body in `f64` (docs/model.md §11.1-§11.3): contacts, J and γ.
@@ -19,17 +20,27 @@ fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
+/// The γ a file's claim is about: its point, or its interval's ends and three points between.
+fn gammas(cert: &FamilyTimeToRest) -> Vec<f64> {
+    let chatter_kernel::syntax::family::ConvexBodyText::ConvexPolygon { gamma, .. } = &cert.body;
+    match gamma {
+        Param::Point(g) => vec![num(g)],
+        Param::Interval(lo, hi) => {
+            let (lo, hi) = (num(lo), num(hi));
+            [0.0, 0.25, 0.5, 0.75, 1.0].iter().map(|t| lo + t * (hi - lo)).collect()
+        }
+    }
+}
+
 impl Body {
-    fn of(cert: &FamilyTimeToRest) -> Body {
-        let chatter_kernel::syntax::family::ConvexBodyText::ConvexPolygon {
-            contacts, inertia, gamma, ..
-        } = &cert.body;
-        let chatter_kernel::syntax::cone::Param::Point(g) = gamma else { panic!("a point") };
+    fn of(cert: &FamilyTimeToRest, gamma: f64) -> Body {
+        let chatter_kernel::syntax::family::ConvexBodyText::ConvexPolygon { contacts, inertia, .. } =
+            &cert.body;
         let (a, b, c) = (num(&inertia.0), num(&inertia.1), num(&inertia.2));
         Body {
             contacts: contacts.iter().map(|(x, y)| [num(x), num(y)]).collect(),
             j: [[a, b], [b, c]],
-            gamma: num(g),
+            gamma,
         }
     }
     fn n(&self) -> usize {
@@ -107,35 +118,50 @@ fn uniform(seed: &mut u64) -> f64 {
 
 /// 200 random all-down drops of a corpus file's body (velocity a random positive combination of
 /// the generators -m_{k,k+1} of D, configuration one of the m_{k,k+1} with every contact up),
-/// followed through its nodes: the largest T|v|/h, never above B.
+/// followed through its nodes, at its γ (over an interval: at both ends and three γ between):
+/// the largest T|v|/h, never above B.
 fn falls_along_drops(file: &str) -> (f64, f64) {
     let text = std::fs::read_to_string(root().join("certificates/valid").join(file)).unwrap();
     let cert: FamilyTimeToRest =
         chatter_kernel::syntax::read(&text, chatter_kernel::syntax::Encoding::Ron).unwrap();
-    let body = Body::of(&cert);
     let bound = num(&cert.bound);
     let mut seed = 0x2545_f491_4f6c_dd1d_u64;
     let mut largest = 0.0_f64;
-    for _ in 0..200 {
-        let weights: Vec<f64> = (0..body.n()).map(|_| 0.01 + uniform(&mut seed)).collect();
-        let mut p = [0.0; 3];
-        let mut q = [0.0; 3];
-        for (k, w) in weights.iter().enumerate() {
-            let (m, mu) = (body.rest(k), 0.01 + uniform(&mut seed));
-            (0..3).for_each(|i| (p[i], q[i]) = (p[i] - w * m[i], q[i] + mu * m[i]));
-        }
-        let ratio = follow(&body, &cert, q, p);
-        assert!(ratio <= bound * (1.0 + 1e-9), "{file}: T |v|/h = {ratio} > B = {bound}");
-        largest = largest.max(ratio);
+    for body in gammas(&cert).into_iter().map(|g| Body::of(&cert, g)) {
+        largest = largest.max(drops(&body, &cert, &mut seed, file));
     }
     (largest, bound)
 }
 
+/// The largest T|v|/h of 200 random all-down drops of one body, each below the file's B.
+fn drops(body: &Body, cert: &FamilyTimeToRest, seed: &mut u64, file: &str) -> f64 {
+    let (bound, mut largest) = (num(&cert.bound), 0.0_f64);
+    for _ in 0..200 {
+        let weights: Vec<f64> = (0..body.n()).map(|_| 0.01 + uniform(seed)).collect();
+        let mut p = [0.0; 3];
+        let mut q = [0.0; 3];
+        for (k, w) in weights.iter().enumerate() {
+            let (m, mu) = (body.rest(k), 0.01 + uniform(seed));
+            (0..3).for_each(|i| (p[i], q[i]) = (p[i] - w * m[i], q[i] + mu * m[i]));
+        }
+        let ratio = follow(body, cert, q, p);
+        let gamma = body.gamma;
+        assert!(ratio <= bound * (1.0 + 1e-9), "{file}, gamma {gamma}: T |v|/h = {ratio} > B = {bound}");
+        largest = largest.max(ratio);
+    }
+    largest
+}
+
 /// The corpus's general-body files against brute force: the lander (3 contacts, full inertia
-/// tensor) and the 2 x 1 rectangular plate.
+/// tensor) and the 2 x 1 rectangular plate, at one γ and over an interval of γ.
 #[test]
 fn the_virtual_time_of_general_body_certificates_falls_along_simulated_drops() {
-    for file in ["rest-family-lander-gamma1_50.ron", "rest-family-rectangle2x1-gamma1_100.ron"] {
+    for file in [
+        "rest-family-lander-gamma1_50.ron",
+        "rest-family-rectangle2x1-gamma1_100.ron",
+        "rest-family-lander-gamma1_50-1_40.ron",
+        "rest-family-rectangle2x1-gamma1_100-1_50.ron",
+    ] {
         let (largest, bound) = falls_along_drops(file);
         eprintln!("{file}: largest T|v|/h of 200 drops {largest}, B = {bound}, factor {}", bound / largest);
         // The drops take time: the check is not vacuous.
@@ -144,7 +170,8 @@ fn the_virtual_time_of_general_body_certificates_falls_along_simulated_drops() {
 }
 
 /// `certify --rectangle 2,1 --gamma 1/100 --time-to-rest FILE --json` writes a general body's file
-/// that `verify` accepts, and reports its B; a γ interval is refused.
+/// that `verify` accepts, and reports its B; over an interval of γ (the lander, [1/50, 1/40]) it
+/// writes version 2, which `verify` reports for every γ of the interval.
 #[test]
 fn certify_writes_a_general_bodys_time_to_rest_certificate() {
     let dir = tempfile::tempdir().unwrap();
@@ -159,9 +186,97 @@ fn certify_writes_a_general_bodys_time_to_rest_certificate() {
     let verified = Command::new(bin).arg("verify").arg("--json").arg(&file).output().unwrap();
     let w: serde_json::Value = serde_json::from_slice(&verified.stdout).unwrap();
     assert_eq!(w["files"][0]["time_to_rest_bound"].as_str(), Some(b), "{w}");
-    let interval = ["certify", "--rectangle", "2,1", "--gamma", "1/100:1/50", "--time-to-rest"];
-    let out = Command::new(bin).args(interval).arg(dir.path().join("x.ron")).output().unwrap();
-    assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stdout));
+    let interval = ["certify", "--body", "lander", "--gamma", "1/50:1/40", "--time-to-rest"];
+    let file = dir.path().join("x.ron");
+    let out = Command::new(bin).args(interval).arg(&file).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stdout));
+    let cert: FamilyTimeToRest = chatter_kernel::syntax::read(
+        &std::fs::read_to_string(&file).unwrap(),
+        chatter_kernel::syntax::Encoding::Ron,
+    )
+    .unwrap();
+    assert_eq!(cert.version, chatter_kernel::rest_family::INTERVAL_VERSION);
+    let verified = Command::new(bin).arg("verify").arg(&file).output().unwrap();
+    let text = String::from_utf8_lossy(&verified.stdout);
+    assert!(
+        text.contains("OK (CompleteChatterFromAllDown, n = 3, for every gamma in [1/50, 1/40]:"),
+        "{text}"
+    );
+}
+
+/// Rules G3 to K4 over an interval of γ are checked at its two ends only (docs/kernel-soundness.md
+/// §10, "General bodies"): the corpus's interval files, written as version 1 at seven γ strictly
+/// inside their intervals, are accepted by the kernel on both backends (brute force against the
+/// reduction); the rectangle's graph over a wider interval fails at the upper end, and names it.
+#[test]
+fn an_interval_of_gamma_holds_at_every_gamma_between_its_ends() {
+    use chatter_kernel::verify::{BOTH, Verdict, verify_rest_family_text_in};
+    let limits = chatter_kernel::exact::ParseLimits::default();
+    for (file, lo, hi) in [
+        ("rest-family-lander-gamma1_50-1_40.ron", (1, 50), (1, 40)),
+        ("rest-family-rectangle2x1-gamma1_100-1_50.ron", (1, 100), (1, 50)),
+    ] {
+        let text = std::fs::read_to_string(root().join("certificates/valid").join(file)).unwrap();
+        let interval = format!("gamma: [\"{}/{}\", \"{}/{}\"]", lo.0, lo.1, hi.0, hi.1);
+        assert!(text.contains(&interval) && text.contains("version: 2,"), "{file}");
+        for k in 1..=7 {
+            // lo + k (hi - lo) / 8, as a fraction over 8 lo.1 hi.1.
+            let d = 8 * lo.1 * hi.1;
+            let g = (8 - k) * lo.0 * hi.1 + k * hi.0 * lo.1;
+            let point = text
+                .replace(&interval, &format!("gamma: \"{}\"", reduced(g, d)))
+                .replace("version: 2,", "version: 1,");
+            let v = verify_rest_family_text_in(&point, chatter_kernel::syntax::Encoding::Ron, limits, &BOTH);
+            assert!(matches!(v, Verdict::Accepted(_)), "{file} at gamma {g}/{d}: {v:?}");
+        }
+    }
+    let text = std::fs::read_to_string(
+        root().join("certificates/valid/rest-family-rectangle2x1-gamma1_100-1_50.ron"),
+    )
+    .unwrap();
+    let wide = text.replace("gamma: [\"1/100\", \"1/50\"]", "gamma: [\"1/100\", \"1/40\"]");
+    let v = verify_rest_family_text_in(&wide, chatter_kernel::syntax::Encoding::Ron, limits, &BOTH);
+    let Verdict::Rejected(r) = v else { panic!("{v:?}") };
+    let locus = serde_json::to_value(&r.locus).unwrap();
+    assert_eq!(locus["gamma"], "1/40", "{locus}");
+}
+
+/// p/q in lowest terms, as canonical text.
+fn reduced(p: u64, q: u64) -> String {
+    let g = (1..=p.min(q)).rev().find(|d| p.is_multiple_of(*d) && q.is_multiple_of(*d)).unwrap_or(1);
+    format!("{}/{}", p / g, q / g)
+}
+
+/// `simulate --exact --certificate` with a file over an interval of γ proves drops at a γ inside
+/// the interval (here 9/400, between 1/50 and 1/40) and is refused at a γ outside it.
+#[test]
+fn simulate_uses_an_interval_certificate_at_every_gamma_of_its_interval() {
+    let file = root().join("certificates/valid/rest-family-lander-gamma1_50-1_40.ron");
+    let args = |g: &'static str| {
+        ["--body", "lander", "--gamma", g, "--json", "--exact", "--seed", "3", "--certificate"]
+    };
+    let inside = Command::new(env!("CARGO_BIN_EXE_chatter"))
+        .arg("simulate")
+        .args(args("9/400"))
+        .arg(&file)
+        .output()
+        .unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&inside.stdout).unwrap();
+    assert_eq!((v["outcome"].as_str(), v["proved"].as_bool()), (Some("CC"), Some(true)), "{v}");
+    assert_eq!(v["entered"]["kind"], "time-to-rest", "{v}");
+    let outside = Command::new(env!("CARGO_BIN_EXE_chatter"))
+        .arg("simulate")
+        .args(args("1/30"))
+        .arg(&file)
+        .output()
+        .unwrap();
+    // With --json the usage error is a `chatter.error/1` report on stdout.
+    let err: serde_json::Value = serde_json::from_slice(&outside.stdout).unwrap();
+    assert_eq!(outside.status.code(), Some(2), "{err}");
+    assert!(
+        err["message"].as_str().is_some_and(|m| m.contains("the run's gamma is not the file's")),
+        "{err}"
+    );
 }
 
 fn simulate(args: &[&str]) -> serde_json::Value {

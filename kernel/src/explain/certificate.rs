@@ -148,7 +148,7 @@ fn needs_words(needs: Needs, found: u64) -> String {
     match needs {
         Needs::Intervals => {
             format!(
-                "parameter intervals (box certificates, family certificates over an interval of gamma) need version 2; this file says version {found}"
+                "parameter intervals (box certificates, general bodies over an interval of gamma) need version 2; this file says version {found}"
             )
         }
         Needs::FieldElements => {
@@ -240,9 +240,11 @@ fn image(f: &ImageFailure, locus: &Locus) -> String {
             (format!("{}{what}", at_gamma(gamma)), outside)
         }
         #[cfg(feature = "rest")]
-        Locus::Kind(KindLocus::RestNode { node, step: Some(j), vertex: Some(i), outside, .. }) => {
+        Locus::Kind(KindLocus::RestNode { node, step: Some(j), vertex: Some(i), outside, gamma, .. }) => {
             let what = format!("node {node}: vertex {i} of K_{node}∩C_{j}, at {p}, maps under S_{j}");
-            (format!("{what} (K: the cone of the node `next` names)"), outside)
+            let end =
+                gamma.as_ref().map_or(String::new(), |g| format!("at the end gamma = {g} of the interval: "));
+            (format!("{end}{what} (K: the cone of the node `next` names)"), outside)
         }
         _ => (format!("the point {p}"), &None),
     };

@@ -7,11 +7,13 @@ use crate::rules::rest::Failure;
 /// The words of a failure of a time-to-rest certificate (at a locus).
 pub(super) fn words(f: &Failure, locus: &Locus) -> String {
     let at = match locus {
-        Locus::Kind(KindLocus::RestNode { node, step, vertex, corner, .. }) => {
+        Locus::Kind(KindLocus::RestNode { node, step, vertex, corner, gamma, .. }) => {
             let step = step.map_or(String::new(), |j| format!(", step j = {j}"));
             let vertex = vertex.map_or(String::new(), |i| format!(", vertex {i}"));
             let corner = corner.map_or(String::new(), |c| format!(", at corner {c} of the box"));
-            format!("node {node}{step}{vertex}{corner}: ")
+            let end =
+                gamma.as_ref().map_or(String::new(), |g| format!(", at the end gamma = {g} of the interval"));
+            format!("node {node}{step}{vertex}{corner}{end}: ")
         }
         _ => String::new(),
     };

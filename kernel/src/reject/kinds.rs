@@ -193,6 +193,10 @@ pub enum KindLocus {
         /// On a box of parameters: the corner (0 to 3, docs/certificate-format.md §9).
         #[serde(skip_serializing_if = "Option::is_none")]
         corner: Option<usize>,
+        /// For a general body over an interval of γ: the end where the check fails (boxed, so that
+        /// a rejection stays small).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        gamma: Option<Box<str>>,
     },
 }
 

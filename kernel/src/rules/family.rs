@@ -48,7 +48,7 @@ use crate::syntax::{Kind, expect};
 /// "An interval of γ").
 pub fn check<F: Field>(cert: &ConvexCertificate, limits: ParseLimits) -> Result<Accepted, Rejection> {
     prelude(cert, limits)?;
-    let ends = gammas::<F>(cert, limits)?;
+    let ends = gammas::<F>(gamma_of(cert), cert.version == INTERVAL_VERSION, cert.version, limits)?;
     let mut bodies = Vec::with_capacity(ends.len());
     for (g, path) in &ends {
         let body = body::<F>(&cert.body, g.clone(), path, limits)?;
@@ -92,14 +92,19 @@ fn gamma_of(cert: &ConvexCertificate) -> &Param {
 }
 
 /// The distinct ends of gamma with their paths: one for a number, two for an interval
-/// [γ₀, γ₁] (version 2, γ₀ <= γ₁; one when γ₀ = γ₁).
-fn gammas<F: Field>(cert: &ConvexCertificate, limits: ParseLimits) -> Result<Vec<(F, String)>, Rejection> {
-    let (a, b) = match gamma_of(cert) {
+/// [γ₀, γ₁] (where the file's `version` reads intervals, γ₀ <= γ₁; one when γ₀ = γ₁).
+pub(super) fn gammas<F: Field>(
+    gamma: &Param,
+    intervals: bool,
+    version: u64,
+    limits: ParseLimits,
+) -> Result<Vec<(F, String)>, Rejection> {
+    let (a, b) = match gamma {
         Param::Point(s) => return Ok(vec![(number::<F>("body.gamma", s, limits)?, "body.gamma".into())]),
         Param::Interval(a, b) => (a, b),
     };
-    if cert.version != INTERVAL_VERSION {
-        let detail = Detail::Needs(Needs::Intervals, cert.version);
+    if !intervals {
+        let detail = Detail::Needs(Needs::Intervals, version);
         return Err(Rejection::at(Code::UnsupportedVersion, "version", detail));
     }
     let lo: F = number("body.gamma[0]", a, limits)?;
@@ -116,7 +121,7 @@ fn gammas<F: Field>(cert: &ConvexCertificate, limits: ParseLimits) -> Result<Vec
 }
 
 /// A rejection of K2, K3 or K4 at one end of an interval of gamma: the end's value in the locus.
-fn at_end(mut e: Rejection, end: Option<String>) -> Rejection {
+pub(super) fn at_end(mut e: Rejection, end: Option<String>) -> Rejection {
     if let Locus::Kind(
         KindLocus::Transition { gamma, .. }
         | KindLocus::ConvexAllDown { gamma, .. }

@@ -56,6 +56,8 @@ pub struct Rested {
     pub nodes: usize,
     /// On a box: [kappa, gamma] as [lo, hi] canonical text (docs/certificate-format.md §16).
     pub region: Option<[[String; 2]; 2]>,
+    /// A general body over an interval of γ: [lo, hi] canonical text (§17, version 2).
+    pub gamma_interval: Option<[String; 2]>,
 }
 
 /// Why a time-to-rest certificate is rejected (besides the shared codes), with the exact values.
@@ -171,6 +173,7 @@ pub(super) fn graph<N: Numbers>(
         bound: cert.bound.clone(),
         nodes: graph.len(),
         region: None,
+        gamma_interval: None,
     })
 }
 
@@ -405,6 +408,7 @@ fn transitions<E: Scalar>(
                     vertex: Some(i),
                     outside,
                     corner: None,
+                    gamma: None,
                 })
             };
             let t = Target { point: p, locus: &at, codes: R2, n: body.n() };
@@ -479,7 +483,7 @@ pub(super) fn unit<E: Scalar>(value: &E, x: &Vec3<E>) -> String {
 }
 
 pub(super) fn locus(node: usize, step: Option<u64>, vertex: Option<usize>) -> Locus {
-    Locus::Kind(KindLocus::RestNode { node, step, vertex, outside: None, corner: None })
+    Locus::Kind(KindLocus::RestNode { node, step, vertex, outside: None, corner: None, gamma: None })
 }
 
 pub(super) fn fail(code: Code, at: Option<(usize, Option<u64>, Option<usize>)>, f: Failure) -> Rejection {

@@ -49,5 +49,12 @@ pub(super) fn on_box<F: Field>(cert: &TimeToRest, limits: ParseLimits) -> Result
     }
     let text = |r: &[F; 2]| [to_canonical(&r[0]), to_canonical(&r[1])];
     let region = Some([text(&rect.kappa), text(&rect.gamma)]);
-    Ok(Rested { claim: cert.claim, n: *n, bound: cert.bound.clone(), nodes: cert.nodes.len(), region })
+    Ok(Rested {
+        claim: cert.claim,
+        n: *n,
+        bound: cert.bound.clone(),
+        nodes: cert.nodes.len(),
+        region,
+        gamma_interval: None,
+    })
 }

@@ -7,24 +7,28 @@
 //! - the file: the header, claim `CcOrPccFromAllDown` or `CompleteChatterFromAllDown`
 //!   (`unknown-variant`), at most 64 contacts (`unsupported-body`), at most max-generators nodes
 //!   and generators per node, the total digits (`too-large`);
-//! - the body at a point γ (`parameter-out-of-range` for an interval): the family certificates'
-//!   body rules (A1), (A2), J positive definite, K0 with `inertia_tensor`, and 0 < γ < 1;
+//! - γ: a number, or in version 2 an interval [γ₀, γ₁] (`unsupported-version` in version 1)
+//!   with canonical ends and γ₀ <= γ₁ (`parameter-out-of-range`), as for family certificates;
+//! - the body at each end of γ in turn: the family certificates' body rules (A1), (A2), J
+//!   positive definite, K0 with `inertia_tensor` (at the first end), and 0 < γ < 1;
 //! - entries: one per contact (`wrong-arity`), `entries[i]` a node of contact i
 //!   (`missing-successor`);
 //! - each node r: its contact i(r) < n (`parameter-out-of-range`), then G1, G2 and F of
-//!   [`super::rest`] with the rest points m_{i,i+1}, m_{i-1,i} of contact i;
-//! - G3: for every j != i(r) with K_r ∩ C_{i(r)j} not {0}, a successor s with i(s) = j
-//!   (`missing-successor`); on each vertex p of K_r ∩ C_{i(r)j}, I_j p is 0 or lies in K_s with
-//!   v < 0 (`image-outside`, `image-not-below`), and for q in {m_{j-1,j}, m_{j,j+1}}:
-//!   (a_s·q)(-b_r·p) <= (a_r·q)(-b_s·I_j p) (`virtual-time-increases`);
-//! - G4: I_i(-m_{k,k+1}) ∈ K_e, e = `entries[i]`, for every i and k (`initial-outside`);
-//! - G5: B (-b_e·I_i(-m_{k,k+1})) >= a_e·m for e = `entries[i]`, every k and m in {m_{i,i+1},
-//!   m_{i-1,i}} (`bound-too-small`);
-//! - K4 (`CompleteChatterFromAllDown`): PCC excluded for every adjacent pair, as for family
-//!   certificates.
+//!   [`super::rest`] with the rest points m_{i,i+1}, m_{i-1,i} of contact i (none of these
+//!   depends on γ); then the number B;
+//! - then at γ₀, then at γ₁ (a failure at an end of an interval names the end in its locus):
+//!   - G3: for every j != i(r) with K_r ∩ C_{i(r)j} not {0}, a successor s with i(s) = j
+//!     (`missing-successor`); on each vertex p of K_r ∩ C_{i(r)j}, I_j p is 0 or lies in K_s with
+//!     v < 0 (`image-outside`, `image-not-below`), and for q in {m_{j-1,j}, m_{j,j+1}}:
+//!     (a_s·q)(-b_r·p) <= (a_r·q)(-b_s·I_j p) (`virtual-time-increases`);
+//!   - G4: I_i(-m_{k,k+1}) ∈ K_e, e = `entries[i]`, for every i and k (`initial-outside`);
+//!   - G5: B (-b_e·I_i(-m_{k,k+1})) >= a_e·m for e = `entries[i]`, every k and m in {m_{i,i+1},
+//!     m_{i-1,i}} (`bound-too-small`);
+//!   - K4 (`CompleteChatterFromAllDown`): PCC excluded for every adjacent pair, as for family
+//!     certificates.
 
 use super::cone::{R2, Target, check_image, int_mat, int_vec};
-use super::family::{all_down, body, cone, derived, pcc};
+use super::family::{all_down, body, cone, derived, gammas, pcc};
 use super::rest::{Failure, Rationals, Read, Rested, bound_at, decreases, fail, node_forms, triple};
 use crate::exact::{Field, ParseLimits, Ring};
 use crate::geometry::{Scalar, clip};
@@ -34,33 +38,66 @@ use crate::reject::{Code, Counted, KindDetail, KindInternal, KindLocus, Locus, R
 use crate::syntax::cone::{Claim, Param};
 use crate::syntax::family::ConvexBodyText;
 use crate::syntax::numbers::{at_most, in_time, number, total};
-use crate::syntax::rest_family::{FamilyNode, FamilyTimeToRest};
+use crate::syntax::rest_family::{FamilyNode, FamilyTimeToRest, INTERVAL_VERSION};
 use crate::syntax::{Kind, expect};
 use std::marker::PhantomData;
 
-/// Checks a time-to-rest certificate of a general body on the backend `F`.
+/// Checks a time-to-rest certificate of a general body on the backend `F`. With γ an interval
+/// [γ₀, γ₁] (version 2): the body at both ends, then the graph (which does not depend on γ),
+/// then G3 to K4 at γ₀ and at γ₁ (why the two ends suffice: docs/kernel-soundness.md §10,
+/// "General bodies").
 pub fn check<F: Field>(cert: &FamilyTimeToRest, limits: ParseLimits) -> Result<Rested, Rejection> {
     file(cert, limits)?;
-    let body = convex_body::<F>(cert, limits)?;
-    let n = body.n();
+    let ConvexBodyText::ConvexPolygon { gamma, .. } = &cert.body;
+    let ends = gammas::<F>(gamma, cert.version == INTERVAL_VERSION, cert.version, limits)?;
+    let bodies = (ends.iter().enumerate())
+        .map(|(k, (g, path))| convex_body::<F>(cert, (g, path), k == 0, limits))
+        .collect::<Result<Vec<_>, _>>()?;
+    let n = bodies[0].n();
     entries(cert, n)?;
     let nums = Rationals::<F>(limits, PhantomData);
     let graph: Vec<Read<F>> = (cert.nodes.iter().enumerate())
-        .map(|(r, node)| read(&body, r, node, &nums))
+        .map(|(r, node)| read(&bodies[0], r, node, &nums))
         .collect::<Result<_, _>>()?;
-    for r in 0..graph.len() {
-        transitions(&body, cert, &graph, r, limits)?;
-    }
     let bound: F = number("bound", &cert.bound, limits)?;
+    let interval = matches!(gamma, Param::Interval(..));
+    for ((g, _), body) in ends.iter().zip(&bodies) {
+        let end = interval.then(|| g.text());
+        at_gamma(body, cert, (&graph, &bound), limits).map_err(|e| at_end(e, end))?;
+    }
+    let gamma_interval = interval.then(|| [0, ends.len() - 1].map(|k| ends[k].0.text()));
+    let (claim, bound) = (cert.claim, cert.bound.clone());
+    Ok(Rested { claim, n: n as u64, bound, nodes: graph.len(), region: None, gamma_interval })
+}
+
+/// G3, G4, G5 and K4 at one γ.
+fn at_gamma<F: Field>(
+    body: &ConvexBody<F>,
+    cert: &FamilyTimeToRest,
+    (graph, bound): (&[Read<F>], &F),
+    limits: ParseLimits,
+) -> Result<(), Rejection> {
+    for r in 0..graph.len() {
+        transitions(body, cert, graph, r, limits)?;
+    }
     for (i, &e) in cert.entries.iter().enumerate() {
-        all_down(&body, i, &graph[e].cone)?;
+        all_down(body, i, &graph[e].cone)?;
         let maps = (&body.impact(i as i64), &body.all_down_generators()[..]);
-        bound_at(&graph[e], maps, heights(&body, i), &bound, e)?;
+        bound_at(&graph[e], maps, heights(body, i), bound, e)?;
     }
     if cert.claim == Claim::CompleteChatterFromAllDown {
-        (0..n).try_for_each(|k| pcc(&body, k))?;
+        (0..body.n()).try_for_each(|k| pcc(body, k))?;
     }
-    Ok(Rested { claim: cert.claim, n: n as u64, bound: cert.bound.clone(), nodes: graph.len(), region: None })
+    Ok(())
+}
+
+/// A rejection at one end of an interval of γ: the end's value in the locus.
+fn at_end(e: Rejection, end: Option<String>) -> Rejection {
+    let mut e = super::family::at_end(e, end.clone());
+    if let Locus::Kind(KindLocus::RestNode { gamma, .. }) = &mut e.locus {
+        *gamma = end.map(String::into_boxed_str);
+    }
+    e
 }
 
 /// The file's rules: the header, a claim about drops, the limits.
@@ -78,21 +115,20 @@ fn file(cert: &FamilyTimeToRest, limits: ParseLimits) -> Result<(), Rejection> {
     total(cert.numbers(), limits)
 }
 
-/// The body at its γ: the family certificates' body rules, K0, and 0 < γ < 1.
-fn convex_body<F: Field>(cert: &FamilyTimeToRest, limits: ParseLimits) -> Result<ConvexBody<F>, Rejection> {
-    let ConvexBodyText::ConvexPolygon { gamma, inertia_tensor, .. } = &cert.body;
-    let Param::Point(g) = gamma else {
-        return Err(Rejection::at(
-            Code::ParameterOutOfRange,
-            "body.gamma",
-            KindDetail::Rest(Failure::NotAtPoint),
-        ));
-    };
-    let body = body::<F>(&cert.body, number("body.gamma", g, limits)?, "body.gamma", limits)?;
-    if let Some(t) = inertia_tensor {
+/// The body at one γ (at `path`): the family certificates' body rules, K0 (at the first end
+/// only: it does not depend on γ), and 0 < γ < 1.
+fn convex_body<F: Field>(
+    cert: &FamilyTimeToRest,
+    (gamma, path): (&F, &str),
+    first: bool,
+    limits: ParseLimits,
+) -> Result<ConvexBody<F>, Rejection> {
+    let ConvexBodyText::ConvexPolygon { inertia_tensor, .. } = &cert.body;
+    let body = body::<F>(&cert.body, gamma.clone(), path, limits)?;
+    if let (true, Some(t)) = (first, inertia_tensor) {
         derived(&body, t, limits)?;
     }
-    super::body::gamma_range(body.gamma(), "body.gamma", cert.claim)?;
+    super::body::gamma_range(body.gamma(), path, cert.claim)?;
     Ok(body)
 }
 
@@ -177,6 +213,7 @@ fn transitions<F: Field>(
                     vertex: Some(v),
                     outside,
                     corner: None,
+                    gamma: None,
                 })
             };
             let t = Target { point: p, locus: &at, codes: R2, n: body.n() };

@@ -62,7 +62,7 @@ const HEADERS: [(&str, [u64; 2], Kind, &str, bool); 10] = [
     ("chatter-refutation", [1, 1], Kind::Refutation, "refutation", cfg!(feature = "refutation")),
     ("chatter-proof", [1, 1], Kind::Proof, "proof", cfg!(feature = "proof")),
     ("chatter-time-to-rest", [1, 3], Kind::Rest, "rest", cfg!(feature = "rest")),
-    ("chatter-family-time-to-rest", [1, 1], Kind::RestFamily, "family-rest", cfg!(feature = "family-rest")),
+    ("chatter-family-time-to-rest", [1, 2], Kind::RestFamily, "family-rest", cfg!(feature = "family-rest")),
     ("chatter-certificate", [4, 4], Kind::Family, "family", cfg!(feature = "family")),
     ("chatter-certificate", [5, 5], Kind::Orbit, "orbit", cfg!(feature = "orbit")),
 ];

@@ -45,12 +45,15 @@ pub fn end_named(why: &str) -> Option<&str> {
 /// reduction to the ends is tested.
 const SAMPLES: [(i64, i64); 2] = [(1, 3), (5, 7)];
 
+/// The interior values of γ of [lo, hi] at which a reduction to the ends is tested (`SAMPLES`).
+pub fn interior_gammas(lo: &Num, hi: &Num) -> Vec<Num> {
+    SAMPLES.iter().map(|&(a, c)| lo + &(&(hi - lo) * &Num::rational(&lo.field, ratio(a, c)))).collect()
+}
+
 /// The brute-force test of the reduction to the ends (the module's documentation): K2-K4 of the
 /// claim at the interior samples (`SAMPLES`) of [lo, hi], `b` being the body at either end.
 pub fn interior(b: &Body, claim: Claim, family: &Family, lo: &Num, hi: &Num) -> Checked<()> {
-    for (a, c) in SAMPLES {
-        let t = Num::rational(&lo.field, ratio(a, c));
-        let gamma = lo + &(&(hi - lo) * &t);
+    for gamma in interior_gammas(lo, hi) {
         if let Err(f) = check_family(&b.at_gamma(gamma.clone()), claim, family, 0) {
             let why = format!(
                 "the ends pass but gamma = {} fails ({}): {}",

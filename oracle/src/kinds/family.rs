@@ -67,23 +67,25 @@ impl FamilyFile<'_> {
     }
 }
 
-/// A value of γ at which the rules are checked: the file's one γ, or an end of its interval.
-struct End {
-    gamma: Num,
+/// A value of γ at which the rules are checked: the file's one γ, or an end of its interval
+/// (also of a general body's time-to-rest certificate, §17 version 2).
+pub struct End {
+    /// The value.
+    pub gamma: Num,
     /// The path of its number: `body.gamma`, `body.gamma[0]` or `body.gamma[1]`.
-    path: &'static str,
+    pub path: &'static str,
     /// Whether it is an end of an interval (failures of K2-K4 there name it).
-    of_interval: bool,
+    pub of_interval: bool,
 }
 
 impl End {
     /// A failure at this value of γ of a rule about the field `path`.
-    fn field(&self, code: &'static str, why: &str) -> Fail {
+    pub fn field(&self, code: &'static str, why: &str) -> Fail {
         Fail::new(code, format!("field `{}`: {why}", self.path))
     }
 
     /// A failure of K2-K4 at this value: at an end of an interval, its reason names the end.
-    fn content(&self, f: Fail) -> Fail {
+    pub fn content(&self, f: Fail) -> Fail {
         if self.of_interval { at_end(&self.gamma, f) } else { f }
     }
 }
@@ -186,8 +188,16 @@ fn file_rules(f: &FamilyFile, limits: &Limits) -> Checked<()> {
 /// The values of γ to check: the one γ; or, for an interval (version 2 only), its ends as
 /// canonical numbers with lo ≤ hi, each distinct end once.
 fn ends(f: &FamilyFile, limits: &Limits) -> Checked<Vec<End>> {
+    gamma_ends(&f.body.gamma, f.version, limits)
+}
+
+/// The values of γ written `gamma` in a file of version `version`: the one γ; or, for an
+/// interval (version 2 only, else `unsupported-version`), its ends as canonical numbers with
+/// lo ≤ hi (`parameter-out-of-range`), each distinct end once. Family certificates (§13) and
+/// general bodies' time-to-rest certificates (§17) alike.
+pub fn gamma_ends(gamma: &[&str], version: u64, limits: &Limits) -> Checked<Vec<End>> {
     let q = Field::rationals();
-    let [lo, hi] = match f.body.gamma[..] {
+    let [lo, hi] = match gamma[..] {
         [g] => {
             let gamma = element("body.gamma", g, &q, limits)?;
             return Ok(vec![End { gamma, path: "body.gamma", of_interval: false }]);
@@ -195,9 +205,8 @@ fn ends(f: &FamilyFile, limits: &Limits) -> Checked<Vec<End>> {
         [lo, hi] => [lo, hi],
         _ => return Err(Fail::new("syntax", "gamma is a number or an interval [lo, hi]")),
     };
-    if f.version != INTERVALS {
-        let why =
-            format!("field `version`: an interval of gamma needs version {INTERVALS}, not {}", f.version);
+    if version != INTERVALS {
+        let why = format!("field `version`: an interval of gamma needs version {INTERVALS}, not {version}");
         return Err(Fail::new("unsupported-version", why));
     }
     let lo =
@@ -205,8 +214,7 @@ fn ends(f: &FamilyFile, limits: &Limits) -> Checked<Vec<End>> {
     let hi =
         End { gamma: element("body.gamma[1]", hi, &q, limits)?, path: "body.gamma[1]", of_interval: true };
     if lo.gamma > hi.gamma {
-        let why =
-            format!("field `body.gamma`: the interval [{}, {}] is empty", f.body.gamma[0], f.body.gamma[1]);
+        let why = format!("field `body.gamma`: the interval [{}, {}] is empty", gamma[0], gamma[1]);
         return Err(Fail::new("parameter-out-of-range", why));
     }
     Ok(if lo.gamma == hi.gamma { vec![lo] } else { vec![lo, hi] })

@@ -1,21 +1,26 @@
 //! Time-to-rest certificates of a general convex body (docs/certificate-format.md §17, format
-//! `chatter-family-time-to-rest`, version 1; docs/time-to-rest.md §5): the body of a family
-//! certificate at one γ, one entry node per contact, and a virtual-time graph whose nodes carry
-//! the contact of the last impact. The rules, in the kernel's order (the documents leave the
-//! order open): the claim, at most 64 contacts, the limits; the body at a point (the family
-//! certificates' body rules, K0, 0 < γ < 1); the entries; node after node its contact, its cone's
-//! numbers and R1, b_r, a_r, then G1, G2 and F; G3 on every node; B; G4 and G5 contact after
-//! contact; K4 for `CompleteChatterFromAllDown` ([`crate::convex::virtual_time`]).
+//! `chatter-family-time-to-rest`, versions 1 and 2; docs/time-to-rest.md §5): the body of a
+//! family certificate at one γ (version 2: also over an interval [γ_lo, γ_hi], written as family
+//! certificates of version 2 write it), one entry node per contact, and a virtual-time graph
+//! whose nodes carry the contact of the last impact. The rules, in the kernel's order (the
+//! documents leave the order open): the claim, at most 64 contacts, the limits; γ (an interval
+//! needs version 2, canonical ends, lo ≤ hi: the family certificates' code,
+//! [`super::family::gamma_ends`]); the body at each value of γ in turn (the family certificates'
+//! body rules, K0 at the first, 0 < γ < 1); the entries; node after node its contact, its cone's
+//! numbers and R1, b_r, a_r, then G1, G2 and F (none depends on γ); B; then at each value of γ in
+//! turn G3 on every node, G4 and G5 contact after contact, K4 for `CompleteChatterFromAllDown`
+//! ([`crate::convex::virtual_time`], which also says why the ends of an interval suffice; a
+//! failure at an end names it); over an interval, the same rules at interior values of γ.
 
-use super::family::{BodyText, body_text, contact_count, convex_body};
+use super::family::{BodyText, End, body_text, contact_count, convex_body, gamma_ends};
 use super::limits::Limits;
-use super::numbers::{element, rational};
+use super::numbers::rational;
 use super::rest::{successor, triple};
 use crate::arith::rational::rational_text;
 use crate::arith::{Field, Num, Rat};
 use crate::claim::Claim;
 use crate::convex::model::Body;
-use crate::convex::virtual_time::{ContactGraph, entry_rules, g3, heights, pcc};
+use crate::convex::virtual_time::{ContactGraph, at_gamma, heights, interior};
 use crate::read::Value;
 use crate::read::schema::{integer, list, string, strings, unit_variant, walk};
 use crate::regular::rules::{Polygon2, cone_polygon};
@@ -35,6 +40,8 @@ struct NodeText<'a> {
 
 /// A general body's time-to-rest certificate as read.
 pub struct RestFamilyFile<'a> {
+    /// 1, or 2 (γ may be an interval).
+    version: u64,
     body: BodyText<'a>,
     claim: Claim,
     bound: &'a str,
@@ -62,6 +69,7 @@ fn node(v: &Value) -> Checked<NodeText<'_>> {
 /// The schema of §17 ("Fields"); the header was read first.
 pub fn read(v: &Value) -> Checked<RestFamilyFile<'_>> {
     let mut f = RestFamilyFile {
+        version: 0,
         body: BodyText::default(),
         claim: Claim::EffectivelyInvariant,
         bound: "",
@@ -83,7 +91,7 @@ pub fn read(v: &Value) -> Checked<RestFamilyFile<'_>> {
     walk(v, &fields, |name, value| {
         match name {
             "format" | "producer" => drop(string(value)?),
-            "version" => drop(integer(value)?),
+            "version" => f.version = integer(value)?,
             "body" => f.body = body_text(value)?,
             "coordinates" => drop(unit_variant(value, &[("PaperVelocities", true)])?),
             "claim" => f.claim = Claim::of_name(unit_variant(value, &known)?).expect("listed"),
@@ -115,24 +123,19 @@ fn file_rules(f: &RestFamilyFile, limits: &Limits) -> Checked<()> {
     Ok(())
 }
 
-/// The body at a point γ (`parameter-out-of-range` for an interval, before its numbers): γ
-/// first, then the family certificates' body rules and K0, then 0 < γ < 1.
-fn body(f: &RestFamilyFile, limits: &Limits) -> Checked<Body> {
-    let [gamma] = f.body.gamma[..] else {
-        return Err(Fail::new(
-            "parameter-out-of-range",
-            "field `body.gamma`: a time-to-rest certificate is about a body at a point",
-        ));
-    };
-    let gamma = element("body.gamma", gamma, &Field::rationals(), limits)?;
-    let b = convex_body(&f.body, (&gamma, "body.gamma"), true, limits)?;
-    if b.gamma.is_zero() || b.gamma == Num::int(&b.gamma.field, 1) {
-        return Err(Fail::new(
-            "parameter-out-of-range",
-            "field `body.gamma`: the claims about drops need 0 < gamma < 1",
-        ));
+/// The body at each value of γ in turn (the one γ, or γ_lo then γ_hi of an interval, version 2):
+/// the family certificates' body rules, K0 (at the first value only), then 0 < γ < 1, each
+/// failure at the value's path.
+fn bodies(f: &RestFamilyFile, ends: &[End], limits: &Limits) -> Checked<Vec<Body>> {
+    let mut out = vec![];
+    for (k, end) in ends.iter().enumerate() {
+        let b = convex_body(&f.body, (&end.gamma, end.path), k == 0, limits)?;
+        if b.gamma.is_zero() || b.gamma == Num::int(&b.gamma.field, 1) {
+            return Err(end.field("parameter-out-of-range", "the claims about drops need 0 < gamma < 1"));
+        }
+        out.push(b);
     }
-    Ok(b)
+    Ok(out)
 }
 
 /// One entry per contact (`wrong-arity`), `entries[i]` a node of contact i (`missing-successor`).
@@ -177,11 +180,23 @@ fn node_checked(b: &Body, r: usize, t: &NodeText, limits: &Limits) -> Checked<(u
     Ok((contact, node, k))
 }
 
-/// The file's rules, the body and the entries, then every node's own rules in order.
-pub fn prepare(f: &RestFamilyFile, limits: &Limits) -> Checked<ContactGraph> {
+/// A general body's graph after the rules that do not depend on γ, with the values of γ to check
+/// and the body at each.
+pub struct Prepared {
+    /// The graph, its body at the first value of γ.
+    pub graph: ContactGraph,
+    /// The values of γ (the one γ, or the distinct ends of the interval) with the body at each.
+    pub ends: Vec<(End, Body)>,
+}
+
+/// The file's rules, γ (a number, or in version 2 an interval), the body at each value of γ, the
+/// entries, then every node's own rules in order (none of these after γ depends on it).
+pub fn prepare(f: &RestFamilyFile, limits: &Limits) -> Checked<Prepared> {
     file_rules(f, limits)?;
-    let body = body(f, limits)?;
-    let entries = entries(f, body.n())?;
+    let ends = gamma_ends(&f.body.gamma, f.version, limits)?;
+    let bodies = bodies(f, &ends, limits)?;
+    let entries = entries(f, bodies[0].n())?;
+    let body = bodies[0].clone();
     let mut g = ContactGraph { body, entries, contacts: vec![], nodes: vec![], polygons: vec![] };
     for (r, t) in f.nodes.iter().enumerate() {
         let (contact, node, k) = node_checked(&g.body, r, t, limits)?;
@@ -189,19 +204,25 @@ pub fn prepare(f: &RestFamilyFile, limits: &Limits) -> Checked<ContactGraph> {
         g.nodes.push(node);
         g.polygons.push(k);
     }
-    Ok(g)
+    Ok(Prepared { graph: g, ends: ends.into_iter().zip(bodies).collect() })
 }
 
-/// Every rule after the schema; returns the checked graph and B.
+/// Every rule after the schema: [`prepare`], the number B, then G3, G4, G5 and K4 at each value of
+/// γ in turn (a failure at an end of an interval names the end); over an interval, the same rules
+/// at interior values of γ, a brute-force test of the reduction to the ends
+/// (`corner-argument-violated` if one fails). Returns the checked graph and B.
 pub fn verified(f: &RestFamilyFile, limits: &Limits) -> Checked<(ContactGraph, Rat)> {
-    let g = prepare(f, limits)?;
-    g3(&g)?;
+    let p = prepare(f, limits)?;
     let bound = rational("bound", f.bound, limits)?;
-    entry_rules(&g, &Num::rational(&g.body.gamma.field, bound.clone()))?;
-    if f.claim == Claim::CompleteChatterFromAllDown {
-        pcc(&g.body)?;
+    let complete = f.claim == Claim::CompleteChatterFromAllDown;
+    let b = Num::rational(&p.graph.body.gamma.field, bound.clone());
+    for (end, body) in &p.ends {
+        at_gamma(&p.graph, body, &b, complete).map_err(|e| end.content(e))?;
     }
-    Ok((g, bound))
+    if let [(lo, _), (hi, _)] = &p.ends[..] {
+        interior(&p.graph, (&lo.gamma, &hi.gamma), &b, complete)?;
+    }
+    Ok((p.graph, bound))
 }
 
 /// Every rule after the schema; the report (claim, n, the number of nodes) and B as canonical
@@ -215,4 +236,15 @@ pub fn check(f: &RestFamilyFile, limits: &Limits) -> Checked<(Report, String)> {
         ..Report::default()
     };
     Ok((report, rational_text(&bound)))
+}
+
+impl RestFamilyFile<'_> {
+    /// [γ_lo, γ_hi] as written when γ is an interval (an accepted file's numbers are canonical):
+    /// what the report gives as `gamma_interval`.
+    pub fn gamma_interval(&self) -> Option<[String; 2]> {
+        match self.body.gamma[..] {
+            [lo, hi] => Some([lo.to_string(), hi.to_string()]),
+            _ => None,
+        }
+    }
 }

@@ -36,7 +36,8 @@ pub enum Reader {
     Basin,
     /// Time-to-rest certificates, versions 1 to 3 (§16).
     Rest,
-    /// Time-to-rest certificates of a general convex body, version 1 (§17).
+    /// Time-to-rest certificates of a general convex body, versions 1 and 2 (version 2 allows an
+    /// interval of γ) (§17).
     RestFamily,
 }
 
@@ -80,7 +81,7 @@ pub fn header(v: &Value) -> Checked<Reader> {
         (CERTIFICATE, 5) | (ORBIT, 1) => Reader::Orbit,
         (BASIN, 1..=2) => Reader::Basin,
         (REST, 1..=3) => Reader::Rest,
-        (REST_FAMILY, 1) => Reader::RestFamily,
+        (REST_FAMILY, 1..=2) => Reader::RestFamily,
         _ => return Err(Fail::new("unsupported-version", format!("version {version}"))),
     };
     let expected_name = match reader {

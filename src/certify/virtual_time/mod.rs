@@ -346,32 +346,53 @@ fn attempt<B: Frames, C>(
 /// Exact nodes and edges, numerators and B.
 type Finished<E> = (Vec<exactify::Node<E>>, Vec<exactify::Edge<E>>, Vec<[E; 3]>, Q);
 
-/// Produces a time-to-rest certificate of a general convex body at its γ (docs/time-to-rest.md
-/// §5, "General bodies"; docs/certificate-format.md §17), accepted by the kernel on `backends`.
+/// Produces a time-to-rest certificate of a general convex body (docs/time-to-rest.md §5,
+/// "General bodies"; docs/certificate-format.md §17), accepted by the kernel on `backends`: at
+/// its γ, or, given the body at both ends of an interval of γ (`ends`, the same body but for
+/// γ), for every γ of the interval (version 2: one graph and one B, the float graph built with
+/// the images at both ends, which hold the images at every γ between since I_j is affine in γ;
+/// searched at the middle, checked exactly at both ends).
 pub fn produce_family(
-    body: &ConvexBody<Q>,
+    ends: &[ConvexBody<Q>],
     tensor: Option<[Q; 6]>,
     cfg: &Config,
     backends: &[Backend],
 ) -> Result<Produced<FamilyTimeToRest>, NotProduced> {
-    let g = body.gamma();
-    if !(g.is_positive() && g < &Q::int(1)) {
-        return Err(NotProduced::Failed("time-to-rest certificates need 0 < gamma < 1".into()));
+    let failed = NotProduced::Failed;
+    let (Some(lo), Some(hi)) = (ends.first(), ends.last()) else {
+        return Err(failed("no body to certify".into()));
+    };
+    if !(lo.gamma().is_positive() && hi.gamma() < &Q::int(1)) {
+        return Err(failed("time-to-rest certificates need 0 < gamma < 1".into()));
     }
-    let excluded = (0..body.n() as i64)
-        .all(|k| body.pair_pcc_quadratic(k).is_ok_and(|q| q.exclusion() == PccExclusion::Excluded));
+    if lo.gamma() > hi.gamma() {
+        return Err(failed("an interval's lower end is above its upper end".into()));
+    }
+    let excluded = ends.iter().all(|body| {
+        (0..body.n() as i64)
+            .all(|k| body.pair_pcc_quadratic(k).is_ok_and(|q| q.exclusion() == PccExclusion::Excluded))
+    });
     let claim = if excluded { Claim::CompleteChatterFromAllDown } else { Claim::CcOrPccFromAllDown };
+    let interval = (lo.gamma() != hi.gamma()).then(|| hi.gamma());
     let finish = |b: &Q, graph: Graph<'_, Q>| {
-        let cert = family_certificate(body, tensor.as_ref(), claim, b, graph);
+        let cert = family_certificate((lo, interval), tensor.as_ref(), claim, b, graph);
         let text = crate::write::write_rest_family(&cert);
         let v = verify_rest_family_text_in(&text, Encoding::Ron, ParseLimits::default(), backends);
         produced(v, cert, text, graph.1.len())
     };
-    let float = FloatFrames::of(body);
+    let floats: Vec<FloatFrames> = ends.iter().map(FloatFrames::of).collect();
+    let centre = match interval {
+        None => FloatFrames::of(lo),
+        Some(g) => {
+            let mid = (lo.gamma() + g) / Q::int(2);
+            let body = ConvexBody::new(lo.contacts().to_vec(), lo.inertia().clone(), mid);
+            FloatFrames::of(&body.map_err(|e| failed(format!("the body at the interval's middle: {e:?}")))?)
+        }
+    };
     let (mut best, mut why): (Option<Produced<FamilyTimeToRest>>, Vec<String>) = (None, Vec::new());
     for enlarge in GENERAL_ENLARGEMENTS {
         let cfg = Config { enlarge, ..cfg.clone() };
-        match graphs((std::slice::from_ref(body), std::slice::from_ref(&float)), &float, &cfg, &finish) {
+        match graphs((ends, &floats), &centre, &cfg, &finish) {
             Ok(p) if best.as_ref().is_none_or(|b| p.bound < b.bound) => best = Some(p),
             Ok(_) => {}
             Err(NotProduced::Failed(m)) => why.push(format!("nodes enlarged by {enlarge}: {m}")),
@@ -386,9 +407,10 @@ pub fn produce_family(
 /// B ≈ 23,530, 66.9 and none; at γ = 1/20 none, none and 1,289).
 const GENERAL_ENLARGEMENTS: [f64; 3] = [0.3, 0.5, 0.1];
 
-/// The fields of a general body's file: nodes 0..n-1 are the entries of contacts 0..n-1.
+/// The fields of a general body's file (over [γ, `hi`] when `hi` is given): nodes 0..n-1 are
+/// the entries of contacts 0..n-1.
 fn family_certificate(
-    body: &ConvexBody<Q>,
+    (body, hi): (&ConvexBody<Q>, Option<&Q>),
     tensor: Option<&[Q; 6]>,
     claim: Claim,
     bound: &Q,
@@ -404,13 +426,17 @@ fn family_certificate(
     };
     let s = |q: &Q| q.to_string();
     let j = body.inertia();
+    let (gamma, version) = match hi {
+        None => (Param::Point(s(body.gamma())), chatter_kernel::rest_family::VERSION),
+        Some(hi) => (Param::Interval(s(body.gamma()), s(hi)), chatter_kernel::rest_family::INTERVAL_VERSION),
+    };
     FamilyTimeToRest {
         format: chatter_kernel::rest_family::FORMAT.into(),
-        version: chatter_kernel::rest_family::VERSION,
+        version,
         body: ConvexBodyText::ConvexPolygon {
             contacts: body.contacts().iter().map(|c| (s(&c[0]), s(&c[1]))).collect(),
             inertia: (s(&j[0][0]), s(&j[0][1]), s(&j[1][1])),
-            gamma: Param::Point(s(body.gamma())),
+            gamma,
             inertia_tensor: tensor.map(|t| (s(&t[0]), s(&t[1]), s(&t[2]), s(&t[3]), s(&t[4]), s(&t[5]))),
         },
         coordinates: ConvexCoordinates::PaperVelocities,

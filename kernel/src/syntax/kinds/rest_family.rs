@@ -1,8 +1,8 @@
 //! The schema of time-to-rest certificates of a general convex body (docs/certificate-format.md
-//! §17): the body of a family certificate at one γ, a claim about all-down drops, a bound B, one
-//! entry node per contact and a virtual-time graph whose nodes carry the contact of the last
-//! impact (docs/time-to-rest.md §5, "General bodies"). Format `"chatter-family-time-to-rest"`,
-//! version 1. The numbers stay text here.
+//! §17): the body of a family certificate at one γ (version 1) or over an interval of γ (version
+//! 2), a claim about all-down drops, a bound B, one entry node per contact and a virtual-time
+//! graph whose nodes carry the contact of the last impact (docs/time-to-rest.md §5, "General
+//! bodies"). Format `"chatter-family-time-to-rest"`. The numbers stay text here.
 
 use crate::syntax::cone::{Claim, Generator};
 use crate::syntax::family::{ConvexBodyText, ConvexCoordinates};
@@ -11,8 +11,10 @@ use serde::Deserialize;
 
 /// Value of the `format` field.
 pub const FORMAT: &str = "chatter-family-time-to-rest";
-/// The only version.
+/// The version of a body at one γ.
 pub const VERSION: u64 = 1;
+/// The version that may give γ as an interval [γ₀, γ₁].
+pub const INTERVAL_VERSION: u64 = 2;
 
 /// A time-to-rest certificate of a general convex body.
 #[derive(Clone, Debug, PartialEq, Eq, Deserialize)]

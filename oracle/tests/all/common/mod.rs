@@ -123,7 +123,8 @@ pub fn kernel_rest_family_in(text: &str, encoding: chatter_kernel::syntax::Encod
     rested(verify_rest_family_text_in(text, encoding, Default::default(), &[MALACHITE]))
 }
 
-/// A time-to-rest verdict as plain data: claim, n, nodes, region and B.
+/// A time-to-rest verdict as plain data: claim, n, nodes, region, B and (a general body over an
+/// interval of γ) `gamma_interval`.
 fn rested(verdict: Verdict<Rested>) -> KernelView {
     match verdict {
         Verdict::Accepted(a) => KernelView {
@@ -136,6 +137,7 @@ fn rested(verdict: Verdict<Rested>) -> KernelView {
                 ..Report::default()
             },
             time_to_rest_bound: Some(Some(a.bound)),
+            gamma_interval: Some(a.gamma_interval),
             ..KernelView::default()
         },
         Verdict::Rejected(r) => {
