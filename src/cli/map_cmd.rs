@@ -40,7 +40,9 @@ With --family the horizontal axis is one parameter of a general body (docs/map.m
 the cc_criterion column is the conjectural product criterion (docs/model.md §11.11), pcc_criterion \
 says whether the PCC Lemma leaves PCC possible at some adjacent pair, finder is the family finder's \
 verdict from I_i(0, 0, -1), --certify makes family certificates checked by the kernel on both \
-backends, --simulate runs f64 drops (evidence only); --refute is for regular polygons."
+backends, --simulate runs f64 drops (evidence) and, within --proof-budget, the same drops exactly \
+against a time-to-rest certificate of the body made with the survey's budget (a drop all-down at \
+its first impact is then proved CC, with a bound on its time to rest); --refute is for regular polygons."
 )]
 pub struct MapArgs {
     #[command(subcommand)]
@@ -184,14 +186,7 @@ fn validate(a: MapArgs, env_var: impl Fn(&str) -> Option<String>) -> Result<Vali
             crate::cli::simulate_cmd::MAX_IMPACTS
         ));
     }
-    let mut proof_budget = a.proof_budget;
-    if grid.family.is_some() && simulate.is_some() && proof_budget > 0 {
-        eprintln!(
-            "note: a family map's drops are f64 evidence only (the sim_*_evidence columns): proofs by certified sets need a regular polygon"
-        );
-        proof_budget = 0;
-    }
-    let tasks = Tasks { certify: a.certify, refute: a.refute, simulate, proof_budget };
+    let tasks = Tasks { certify: a.certify, refute: a.refute, simulate, proof_budget: a.proof_budget };
     Ok(Validated { request: Request { grid, tasks, shard }, out: a.out, jobs })
 }
 

@@ -242,7 +242,7 @@ fn certified_sets(
     }
     if files.is_empty() {
         return Ok(match general {
-            Some(g) => (Some(crate::prove::made_general(model, &g.body)), false),
+            Some(g) => (Some(crate::prove::made_general(model, &g.body, crate::prove::Effort::Full)), false),
             None => (Some(crate::prove::made(model)), true),
         });
     }

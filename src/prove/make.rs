@@ -121,12 +121,20 @@ pub fn made(model: &Model) -> Certified {
 }
 
 /// The sets made on the fly for a general body (docs/model.md §11): a time-to-rest certificate
-/// of the body (docs/time-to-rest.md Theorem 5.2), made by the producer with its full budget and
-/// accepted by the kernel on both backends, whose claim excludes PCC; otherwise none, and a note
-/// says why (no drop of the run is then proved).
-pub fn made_general(model: &Model, body: &chatter_kernel::model::ConvexBody<Q>) -> Certified {
+/// of the body (docs/time-to-rest.md Theorem 5.2), made by the producer with its full budget (or
+/// the survey's, [`survey_rest_config`] with the full cap of nodes: a labelled graph has nodes
+/// per contact, and the 3/2 x 1 plate at γ = 1/50 needs 56) and accepted by the kernel on both
+/// backends, whose claim excludes PCC; otherwise none, and a note says why (no drop is then
+/// proved CC).
+pub fn made_general(model: &Model, body: &chatter_kernel::model::ConvexBody<Q>, effort: Effort) -> Certified {
     let mut sets = Certified::empty();
-    let cfg = crate::certify::virtual_time::Config::default();
+    let cfg = match effort {
+        Effort::Survey => crate::certify::virtual_time::Config {
+            max_nodes: crate::certify::virtual_time::Config::default().max_nodes,
+            ..survey_rest_config()
+        },
+        Effort::Full => crate::certify::virtual_time::Config::default(),
+    };
     let both = chatter_kernel::verify::BOTH;
     let note =
         match crate::certify::virtual_time::produce_family(std::slice::from_ref(body), None, &cfg, &both) {

@@ -3,7 +3,8 @@
 //! of its legs (docs/map.md "Body families"). At each point: the conjectural product criterion
 //! and the PCC Lemma's pairs (docs/model.md §11.11, §11.6), the family finder's verdict, with
 //! `--certify` a family certificate checked by the kernel on both backends, with `--simulate`
-//! the paper's random drops in f64 (evidence).
+//! the paper's random drops in f64 (evidence) and the same drops run exactly against a
+//! time-to-rest certificate of the body made with the survey's budget (proofs).
 
 use super::grid::{Axis, Point};
 use super::point::{Evaluation, PAPER_BUDGET, SimStats, Tasks};
@@ -156,23 +157,41 @@ pub fn point_seed(family: &BodyFamily, t: &Q, gamma: &Q) -> u64 {
         .fold(0xcbf2_9ce4_8422_2325, |h, b| (h ^ b as u64).wrapping_mul(0x0100_0000_01b3))
 }
 
-/// The paper's random drops in f64 (evidence only: proofs by certified sets need a regular
-/// polygon).
-fn simulate(family: &BodyFamily, p: &Point, body: &ConvexBody<Q>, runs: u64) -> SimStats {
+/// The paper's random drops in f64 (evidence), and with a proof budget the same drops run
+/// exactly ([`prove_drops`]).
+fn simulate(family: &BodyFamily, p: &Point, body: &ConvexBody<Q>, tasks: &Tasks, runs: u64) -> SimStats {
     let seed = point_seed(family, &p.kappa, &p.gamma);
-    let briefs = simulate_many(
-        &Model::convex(body),
-        seed,
-        runs,
-        Arithmetic::Float,
-        &Options::new(PAPER_BUDGET),
-        &|| {},
-    );
+    let model = Model::convex(body);
+    let briefs = simulate_many(&model, seed, runs, Arithmetic::Float, &Options::new(PAPER_BUDGET), &|| {});
     let impacts = briefs
         .iter()
         .map(|b| if b.outcome == Outcome::Pcc { PAPER_BUDGET } else { b.impacts.min(PAPER_BUDGET) } as u64)
         .sum();
-    SimStats { runs, counts: counts(&briefs).map(|c| c as u64), proved: None, contradicted: 0, impacts }
+    let mut sim =
+        SimStats { runs, counts: counts(&briefs).map(|c| c as u64), proved: None, contradicted: 0, impacts };
+    if tasks.proof_budget > 0 {
+        let (proved, contradicted) = prove_drops(&model, body, (seed, &briefs), tasks.proof_budget);
+        (sim.proved, sim.contradicted) = (Some(proved), contradicted);
+    }
+    sim
+}
+
+/// The drops of `evidence` run exactly (`chatter simulate --exact`'s proofs for a general body)
+/// against a time-to-rest certificate of the body made with the survey's budget
+/// (docs/time-to-rest.md Theorem 5.2; kernel on both backends): a drop all-down at its first
+/// impact is proved CC there, with a bound on its time to rest; without a certificate no drop is
+/// proved CC. The proved counts, and the drops whose proof contradicts their evidence.
+fn prove_drops(
+    model: &Model,
+    body: &ConvexBody<Q>,
+    (seed, evidence): (u64, &[crate::simulate::Brief]),
+    budget: usize,
+) -> ([u64; Outcome::COUNT], u64) {
+    let sets = crate::prove::made_general(model, body, crate::prove::Effort::Survey);
+    let runs = evidence.len() as u64;
+    let proved = crate::prove::prove_many(model, seed, runs, &Options::new(budget), sets, None, &|| {});
+    let contradicted = super::point::contradicted(&proved.briefs, evidence);
+    (crate::simulate::proved_counts(&proved.briefs).map(|c| c as u64), contradicted)
 }
 
 /// The certification pipeline of `certify` with the regular map's survey budgets; the tensor is
@@ -217,7 +236,7 @@ pub fn evaluate(family: &BodyFamily, p: &Point, tasks: Tasks) -> Evaluation {
     let (cc_criterion, pcc_criterion) = criteria(&body);
     let mut e = Evaluation::new(cc_criterion, pcc_criterion, finder(&body));
     if let Some(runs) = tasks.simulate {
-        e.sim = Some(simulate(family, p, &body, runs));
+        e.sim = Some(simulate(family, p, &body, &tasks, runs));
     }
     if tasks.certify {
         certify(body, tensor.as_ref(), &mut e);

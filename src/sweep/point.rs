@@ -195,13 +195,7 @@ fn prove_point(n: u64, p: &Point, evidence: &[Brief], budget: usize, certificate
         Some(Effort::Survey),
         &|| {},
     );
-    let decided = |o: Outcome| matches!(o, Outcome::Cc | Outcome::Pcc | Outcome::Icc);
-    let contradicted = proved
-        .briefs
-        .iter()
-        .zip(evidence)
-        .filter(|(b, e)| b.proved && decided(e.outcome) && b.outcome.contradicts(e.outcome))
-        .count();
+    let contradicted = contradicted(&proved.briefs, evidence);
     let orbit = proved.sets.sets().iter().find_map(|s| match &s.source {
         Source::Orbit(c) => Some(crate::write::write_orbit(c)),
         Source::Cone(_) | Source::Rest(_) | Source::RestFamily(_) => None,
@@ -211,7 +205,15 @@ fn prove_point(n: u64, p: &Point, evidence: &[Brief], budget: usize, certificate
         .iter()
         .map(|b| (if b.proved { b.outcome } else { Outcome::Undecided }, b.seconds))
         .collect();
-    (proved_counts(&proved.briefs).map(|c| c as u64), contradicted as u64, orbit, times)
+    (proved_counts(&proved.briefs).map(|c| c as u64), contradicted, orbit, times)
+}
+
+/// The drops whose proved outcome contradicts their decided evidence ([`Outcome::contradicts`]).
+pub(super) fn contradicted(proved: &[Brief], evidence: &[Brief]) -> u64 {
+    let decided = |o: Outcome| matches!(o, Outcome::Cc | Outcome::Pcc | Outcome::Icc);
+    (proved.iter().zip(evidence))
+        .filter(|(b, e)| b.proved && decided(e.outcome) && b.outcome.contradicts(e.outcome))
+        .count() as u64
 }
 
 /// The first seed of a point's drops: FNV-1a of "n/kappa/gamma", so that a point gets the same

@@ -252,24 +252,19 @@ fn reduced(p: u64, q: u64) -> String {
 #[test]
 fn simulate_uses_an_interval_certificate_at_every_gamma_of_its_interval() {
     let file = root().join("certificates/valid/rest-family-lander-gamma1_50-1_40.ron");
-    let args = |g: &'static str| {
-        ["--body", "lander", "--gamma", g, "--json", "--exact", "--seed", "3", "--certificate"]
+    let run = |g: &str| {
+        let args = ["simulate", "--body", "lander", "--gamma", g, "--json", "--exact", "--seed", "3"];
+        Command::new(env!("CARGO_BIN_EXE_chatter"))
+            .args(args)
+            .arg("--certificate")
+            .arg(&file)
+            .output()
+            .unwrap()
     };
-    let inside = Command::new(env!("CARGO_BIN_EXE_chatter"))
-        .arg("simulate")
-        .args(args("9/400"))
-        .arg(&file)
-        .output()
-        .unwrap();
-    let v: serde_json::Value = serde_json::from_slice(&inside.stdout).unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&run("9/400").stdout).unwrap();
     assert_eq!((v["outcome"].as_str(), v["proved"].as_bool()), (Some("CC"), Some(true)), "{v}");
     assert_eq!(v["entered"]["kind"], "time-to-rest", "{v}");
-    let outside = Command::new(env!("CARGO_BIN_EXE_chatter"))
-        .arg("simulate")
-        .args(args("1/30"))
-        .arg(&file)
-        .output()
-        .unwrap();
+    let outside = run("1/30");
     // With --json the usage error is a `chatter.error/1` report on stdout.
     let err: serde_json::Value = serde_json::from_slice(&outside.stdout).unwrap();
     assert_eq!(outside.status.code(), Some(2), "{err}");

@@ -205,14 +205,15 @@ fn rest_family_parts_mutated_alike() {
 
 /// Random structure-aware plans of up to three edits (the fuzz target's decoder: numbers nudged,
 /// scaled, negated, spoiled; elements dropped, duplicated, swapped; identifiers, integers and
-/// fields changed; γ widened) of the lander's file, judged alike by the kernel and the oracle.
-#[test]
-fn random_edits_of_the_lander_judged_alike() {
-    let base = parse(&text("valid", VALID[0]), Encoding::Ron).expect("parses");
+/// fields changed; γ widened) of a valid file, judged alike by the kernel and the oracle (a
+/// rejection at an end of an interval of γ at the same end): `cases` plans from `seed`, of which
+/// at least `rejected` must be rejected by both.
+fn random_edits_judged_alike(name: &str, seed: u64, cases: usize, rejected: usize) {
+    let base = parse(&text("valid", name), Encoding::Ron).expect("parses");
     let (mut tally, mut codes): (BTreeMap<String, usize>, BTreeMap<String, usize>) = Default::default();
     let mut failures = vec![];
-    let mut state = 37;
-    for case in 0..80 {
+    let mut state = seed;
+    for case in 0..cases {
         let len = 1 + 4 * (1 + next(&mut state) % 3) as usize;
         let bytes: Vec<u8> = (0..len).map(|_| next(&mut state) as u8).collect();
         let plan = decode(&bytes);
@@ -224,9 +225,15 @@ fn random_edits_of_the_lander_judged_alike() {
             Err(f) => failures.push(format!("case {case} {plan:?}: {f}\n{text}")),
         }
     }
-    eprintln!("lander edits: {tally:?}\nkernel verdicts: {codes:?}");
+    eprintln!("{name} edits: {tally:?}\nkernel verdicts: {codes:?}");
     assert!(failures.is_empty(), "{} disagreements:\n{}", failures.len(), failures.join("\n\n"));
-    assert!(tally.get("BothReject").copied().unwrap_or(0) >= 30, "{tally:?}");
+    assert!(tally.get("BothReject").copied().unwrap_or(0) >= rejected, "{tally:?}");
+}
+
+/// 80 random edit plans of the lander's file, judged alike.
+#[test]
+fn random_edits_of_the_lander_judged_alike() {
+    random_edits_judged_alike(VALID[0], 37, 80, 30);
 }
 
 /// The file over an interval of γ with `from` replaced by `to` (the first occurrence, which must
@@ -372,31 +379,10 @@ fn the_least_bound_over_the_interval_agrees() {
     eprintln!("least B on the grid: {hi}/64; below it G5 fails at gamma = {end:?}");
 }
 
-/// Random structure-aware plans of up to three edits (numbers nudged, scaled, negated, spoiled;
-/// elements dropped, duplicated, swapped; identifiers, integers and fields changed; γ widened) of
-/// the file over an interval of γ, judged alike by the kernel and the oracle (a rejection at an
-/// end of the interval at the same end).
+/// 40 random edit plans of the file over an interval of γ, judged alike.
 #[test]
 fn random_edits_of_the_interval_file_judged_alike() {
-    let base = parse(&text("valid", INTERVAL), Encoding::Ron).expect("parses");
-    let (mut tally, mut codes): (BTreeMap<String, usize>, BTreeMap<String, usize>) = Default::default();
-    let mut failures = vec![];
-    let mut state = 41;
-    for case in 0..40 {
-        let len = 1 + 4 * (1 + next(&mut state) % 3) as usize;
-        let bytes: Vec<u8> = (0..len).map(|_| next(&mut state) as u8).collect();
-        let plan = decode(&bytes);
-        let text = mutated(&base, &plan.edits);
-        let (kernel, _, cmp) = differential_ron(&text);
-        *codes.entry(kernel.code.clone().unwrap_or_else(|| "accepted".into())).or_default() += 1;
-        match cmp {
-            Ok(a) => *tally.entry(format!("{a:?}")).or_default() += 1,
-            Err(f) => failures.push(format!("case {case} {plan:?}: {f}\n{text}")),
-        }
-    }
-    eprintln!("interval file edits: {tally:?}\nkernel verdicts: {codes:?}");
-    assert!(failures.is_empty(), "{} disagreements:\n{}", failures.len(), failures.join("\n\n"));
-    assert!(tally.get("BothReject").copied().unwrap_or(0) >= 15, "{tally:?}");
+    random_edits_judged_alike(INTERVAL, 41, 40, 15);
 }
 
 /// The reduction to the ends by brute force: the interval file's graph at one γ (version 1) is

@@ -120,7 +120,17 @@ fn family_maps_are_identical_across_shards_and_drawn_with_the_parameter_on_the_x
     let d = tempfile::tempdir().unwrap();
     // The rectangle family: its figure's exact boundary is the square's, drawn in seconds (the
     // lander's takes about a minute; its points are tested in the lander test above).
-    let args = ["--family", "rectangle:aspect=1:3:3", "--gamma", "0:0.2:4", "--certify", "--simulate", "2"];
+    let args = [
+        "--family",
+        "rectangle:aspect=1:3:3",
+        "--gamma",
+        "0:0.2:4",
+        "--certify",
+        "--simulate",
+        "2",
+        "--proof-budget",
+        "0",
+    ];
     map(d.path(), "whole", &args);
     for k in ["0/2", "1/2"] {
         let o = chatter(
@@ -141,7 +151,7 @@ fn family_maps_are_identical_across_shards_and_drawn_with_the_parameter_on_the_x
         (s["grid"]["variable"].as_str(), s["grid"]["family"]["kind"].as_str()),
         (Some("parameter"), Some("rectangle"))
     );
-    assert_eq!(s["computed"]["proof_budget"], 0, "a family map's drops are evidence only");
+    assert_eq!(s["computed"]["proof_budget"], 0, "--proof-budget 0: the drops are evidence only");
     let o = chatter(&["plot", "map", "whole", "-o", "m.svg"], d.path());
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
     let svg = std::fs::read_to_string(d.path().join("m.svg")).unwrap();
@@ -153,6 +163,31 @@ fn family_maps_are_identical_across_shards_and_drawn_with_the_parameter_on_the_x
         svg.contains("boundary of the conjectural CC"),
         "the product criterion's boundary is drawn and named"
     );
+}
+
+/// With a proof budget a family map's drops are also run exactly against a time-to-rest
+/// certificate of the body (docs/map.md "Body families"): at the 3/2 x 1 plate, gamma = 1/50 (below
+/// the square plate's threshold, 0.0295), every drop is all-down at its first impact and proved
+/// CC, and its evidence agrees; above the threshold (gamma = 1/10) none is proved CC.
+#[test]
+fn a_family_maps_drops_are_proved_cc_by_a_time_to_rest_certificate_below_the_threshold() {
+    let d = tempfile::tempdir().unwrap();
+    let rows = map(
+        d.path(),
+        "proved",
+        &["--family", "rectangle:aspect=1:2:1", "--gamma", "0:0.12:3", "--simulate", "4", "--jobs", "2"],
+    );
+    let at = |g: &str| rows.iter().find(|r| r.gamma == q(g)).unwrap_or_else(|| panic!("gamma {g}: {rows:?}"));
+    let sim = |g: &str| at(g).sim.clone().unwrap_or_else(|| panic!("gamma {g} has drops"));
+    let below = sim("1/50");
+    let proved = below.proved.expect("proofs were tried");
+    assert_eq!((proved[0], below.counts[0], below.contradicted), (4, 4, 0), "{below:?}");
+    let above = sim("1/10");
+    assert_eq!(above.proved.expect("proofs were tried")[0], 0, "{above:?}");
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.path().join("proved/summary.json")).unwrap())
+            .unwrap();
+    assert_eq!(s["computed"]["proof_budget"], 300, "{s}");
 }
 
 #[test]
