@@ -131,6 +131,7 @@ pub fn made_general(model: &Model, body: &chatter_kernel::model::ConvexBody<Q>, 
     let cfg = match effort {
         Effort::Survey => crate::certify::virtual_time::Config {
             max_nodes: crate::certify::virtual_time::Config::default().max_nodes,
+            fallback: false,
             ..survey_rest_config()
         },
         Effort::Full => crate::certify::virtual_time::Config::default(),

@@ -153,7 +153,8 @@ fn drops(body: &Body, cert: &FamilyTimeToRest, seed: &mut u64, file: &str) -> f6
 }
 
 /// The corpus's general-body files against brute force: the lander (3 contacts, full inertia
-/// tensor) and the 2 x 1 rectangular plate, at one γ and over an interval of γ.
+/// tensor), the 2 x 1 rectangular plate, at one γ and over an interval of γ, and the triangle
+/// plate (0,0 3,0 1,2) at γ = 1/20 (made with the fallback enlargement 0.05).
 #[test]
 fn the_virtual_time_of_general_body_certificates_falls_along_simulated_drops() {
     for file in [
@@ -161,6 +162,7 @@ fn the_virtual_time_of_general_body_certificates_falls_along_simulated_drops() {
         "rest-family-rectangle2x1-gamma1_100.ron",
         "rest-family-lander-gamma1_50-1_40.ron",
         "rest-family-rectangle2x1-gamma1_100-1_50.ron",
+        "rest-family-triangle-plate-gamma1_20.ron",
     ] {
         let (largest, bound) = falls_along_drops(file);
         eprintln!("{file}: largest T|v|/h of 200 drops {largest}, B = {bound}, factor {}", bound / largest);

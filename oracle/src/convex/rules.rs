@@ -50,18 +50,23 @@ pub fn interior_gammas(lo: &Num, hi: &Num) -> Vec<Num> {
     SAMPLES.iter().map(|&(a, c)| lo + &(&(hi - lo) * &Num::rational(&lo.field, ratio(a, c)))).collect()
 }
 
+/// `corner-argument-violated`: the ends of an interval pass but `gamma` inside it fails with `f`.
+pub fn violated(gamma: &Num, f: Fail) -> Fail {
+    let why = format!(
+        "the ends pass but gamma = {} fails ({}): {}",
+        element_text(gamma),
+        f.codes.join(", "),
+        f.why
+    );
+    Fail::new("corner-argument-violated", why)
+}
+
 /// The brute-force test of the reduction to the ends (the module's documentation): K2-K4 of the
 /// claim at the interior samples (`SAMPLES`) of [lo, hi], `b` being the body at either end.
 pub fn interior(b: &Body, claim: Claim, family: &Family, lo: &Num, hi: &Num) -> Checked<()> {
     for gamma in interior_gammas(lo, hi) {
         if let Err(f) = check_family(&b.at_gamma(gamma.clone()), claim, family, 0) {
-            let why = format!(
-                "the ends pass but gamma = {} fails ({}): {}",
-                element_text(&gamma),
-                f.codes.join(", "),
-                f.why
-            );
-            return Err(Fail::new("corner-argument-violated", why));
+            return Err(violated(&gamma, f));
         }
     }
     Ok(())

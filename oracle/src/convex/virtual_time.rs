@@ -19,7 +19,6 @@
 use super::model::{Body, V3};
 use super::rules::{interior_gammas, pcc_excluded};
 use crate::arith::Num;
-use crate::arith::text::element_text;
 use crate::cone3::dot;
 use crate::plane::{HalfPlane, clip_vertices, lift};
 use crate::regular::rules::{Polygon2, misses};
@@ -176,13 +175,7 @@ pub fn at_gamma(g: &ContactGraph, b: &Body, bound: &Num, complete: bool) -> Chec
 pub fn interior(g: &ContactGraph, (lo, hi): (&Num, &Num), bound: &Num, complete: bool) -> Checked<()> {
     for gamma in interior_gammas(lo, hi) {
         if let Err(e) = at_gamma(g, &g.body.at_gamma(gamma.clone()), bound, complete) {
-            let why = format!(
-                "the ends pass but gamma = {} fails ({}): {}",
-                element_text(&gamma),
-                e.codes.join(", "),
-                e.why
-            );
-            return Err(Fail::new("corner-argument-violated", why));
+            return Err(super::rules::violated(&gamma, e));
         }
     }
     Ok(())
