@@ -242,8 +242,9 @@ fn image(f: &ImageFailure, locus: &Locus) -> String {
         #[cfg(feature = "rest")]
         Locus::Kind(KindLocus::RestNode { node, step: Some(j), vertex: Some(i), outside, gamma, .. }) => {
             let what = format!("node {node}: vertex {i} of K_{node}∩C_{j}, at {p}, maps under S_{j}");
-            let end =
-                gamma.as_ref().map_or(String::new(), |g| format!("at the end gamma = {g} of the interval: "));
+            let end = gamma
+                .as_ref()
+                .map_or(String::new(), |g| format!("at the end gamma = {} of the interval: ", abbreviate(g)));
             (format!("{end}{what} (K: the cone of the node `next` names)"), outside)
         }
         _ => (format!("the point {p}"), &None),

@@ -11,8 +11,9 @@ pub(super) fn words(f: &Failure, locus: &Locus) -> String {
             let step = step.map_or(String::new(), |j| format!(", step j = {j}"));
             let vertex = vertex.map_or(String::new(), |i| format!(", vertex {i}"));
             let corner = corner.map_or(String::new(), |c| format!(", at corner {c} of the box"));
-            let end =
-                gamma.as_ref().map_or(String::new(), |g| format!(", at the end gamma = {g} of the interval"));
+            let end = gamma
+                .as_ref()
+                .map_or(String::new(), |g| format!(", at the end gamma = {} of the interval", abbreviate(g)));
             format!("node {node}{step}{vertex}{corner}{end}: ")
         }
         _ => String::new(),
