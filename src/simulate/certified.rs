@@ -224,13 +224,13 @@ impl Certified {
         if cert.claim != Claim::CompleteChatterFromAllDown {
             return Err(format!("its claim {} does not exclude PCC", cert.claim.name()));
         }
-        let accepted = match verify_rest(cert, ParseLimits::default(), &BOTH) {
-            Verdict::Accepted(a) => a,
-            Verdict::Rejected(r) => return Err(format!("rejected by the kernel: {r}")),
-            Verdict::Disagree(s) => return Err(format!("the kernel's backends disagree: {s}")),
-        };
-        let bound = accepted.bound.parse::<Q>().map_err(|e| format!("its bound cannot be read: {e}"))?;
-        let (claim, source) = (cert.claim, Source::Rest(Box::new(cert.clone())));
+        let bound = accepted_bound(verify_rest(cert, ParseLimits::default(), &BOTH))?;
+        self.push_rest(name, cert.claim, Source::Rest(Box::new(cert.clone())), bound);
+        Ok(())
+    }
+
+    /// Adds a time-to-rest certificate's set (its B kernel-checked).
+    fn push_rest(&mut self, name: &str, claim: Claim, source: Source, bound: Q) {
         let set = Set {
             name: name.into(),
             kind: SetKind::Rest,
@@ -240,7 +240,6 @@ impl Certified {
             inner: Inner::Rest,
         };
         self.sets.push(Arc::new(set));
-        Ok(())
     }
 
     /// Adds a general body's time-to-rest certificate (docs/certificate-format.md §17) that the
@@ -256,11 +255,7 @@ impl Certified {
         if cert.claim != Claim::CompleteChatterFromAllDown {
             return Err(format!("its claim {} does not exclude PCC", cert.claim.name()));
         }
-        let accepted = match verify_rest_family(cert, ParseLimits::default(), &BOTH) {
-            Verdict::Accepted(a) => a,
-            Verdict::Rejected(r) => return Err(format!("rejected by the kernel: {r}")),
-            Verdict::Disagree(s) => return Err(format!("the kernel's backends disagree: {s}")),
-        };
+        let bound = accepted_bound(verify_rest_family(cert, ParseLimits::default(), &BOTH))?;
         let ends = crate::bodies::convex::of_text(&cert.body)?;
         // The body at the run's γ, if that lies in the file's γ (a point, or an interval).
         let (lo, hi) = (&ends[0], &ends[ends.len() - 1]);
@@ -277,16 +272,7 @@ impl Certified {
                 "it is about another body (its contacts or inertia differ from the run's, or the run's gamma is not the file's)".into()
             );
         }
-        let bound = accepted.bound.parse::<Q>().map_err(|e| format!("its bound cannot be read: {e}"))?;
-        let set = Set {
-            name: name.into(),
-            kind: SetKind::Rest,
-            claim: cert.claim,
-            source: Source::RestFamily(Box::new(cert.clone())),
-            time_to_rest_bound: Some(bound),
-            inner: Inner::Rest,
-        };
-        self.sets.push(Arc::new(set));
+        self.push_rest(name, cert.claim, Source::RestFamily(Box::new(cert.clone())), bound);
         Ok(())
     }
 
@@ -335,4 +321,13 @@ pub fn primitive_cycle(steps: &[usize]) -> Vec<usize> {
 /// "2,2,1,1".
 pub fn pattern_text(steps: &[usize]) -> String {
     steps.iter().map(ToString::to_string).collect::<Vec<_>>().join(",")
+}
+
+/// B of a time-to-rest certificate the kernel accepted on both backends, or why it cannot serve.
+fn accepted_bound(verdict: Verdict<chatter_kernel::rest::Rested>) -> Result<Q, String> {
+    match verdict {
+        Verdict::Accepted(a) => a.bound.parse::<Q>().map_err(|e| format!("its bound cannot be read: {e}")),
+        Verdict::Rejected(r) => Err(format!("rejected by the kernel: {r}")),
+        Verdict::Disagree(s) => Err(format!("the kernel's backends disagree: {s}")),
+    }
 }
