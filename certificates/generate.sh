@@ -74,6 +74,11 @@ REFUTATIONS
 # catalogue's lander, built from its 3-D geometry (docs/bodies.md).
 "$bin" certify --body lander --gamma 1/20 -o "$out/convex-lander-gamma1_20-inertia-tensor.ron" >/dev/null
 written=$((written + 1))
+# The same lander for every gamma of [1/50, 14769/250000]: the upper end lies 5.8e-6 (relative)
+# below its conjectural CC threshold 0.0590763452... (docs/bodies.md, issue 25 §4).
+"$bin" certify --body lander --gamma 1/50:14769/250000 \
+  -o "$out/convex-lander-gamma1_50-14769_250000-inertia-tensor.ron" >/dev/null
+written=$((written + 1))
 # JSON twins (docs/certificate-format.md §11) of the doc example, of a refutation and of a basin
 # certificate (written by `chatter basin`, docs/basin-certificates.md; not regenerated here).
 for name in doc-example-square refutation-n4-kappa1_6-gamma1_20 basin-icc-n3-kappa1_8-gamma1_2; do

@@ -326,8 +326,9 @@ fn attempt_rod(req: &Request, rods: &[Rod<Q>], claim: Claim, t: &mut Timings) ->
 
 /// The exactifier with `cfg`, then, while the offsets fail to converge (close to the threshold,
 /// where the maps barely contract, success depends on the grid in a way no single setting
-/// wins), with finer normals and grid, then with a larger slack; the first success, else the
-/// first error.
+/// wins), with finer normals and grid, then with a larger slack, then with the finest, then the
+/// first and the finer without overshoot (docs/bodies.md); the first success, else the first
+/// error.
 fn exactify_ladder<E: Exact>(
     bodies: &[Polygon<E>],
     polygon: &[P2],
@@ -364,11 +365,12 @@ fn ladder_if<T>(
         slack_bits: cfg.slack_bits + 16,
         ..*cfg
     };
+    let creeping = [*cfg, finer].map(|c| ExactifyConfig { overshoot: false, ..c });
     let first = run(cfg);
     if !cfg.retry || !first.as_ref().is_err_and(&retry_on) {
         return first;
     }
-    [finer, coarser, finest].iter().map(run).find(Result::is_ok).unwrap_or(first)
+    [finer, coarser, finest].iter().chain(&creeping).map(run).find(Result::is_ok).unwrap_or(first)
 }
 
 /// A regular polygon at every corner: float finder, exactifier, kernel.

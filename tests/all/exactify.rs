@@ -2,7 +2,9 @@
 
 use crate::common::body;
 use chatter::exact::{ParseLimits, Q};
+use chatter::exactify::family::exactify_family;
 use chatter::exactify::{ExactifyConfig, ExactifyError, exactify};
+use chatter::finder::family::{FamilyOutcome, FloatFamily, find_family};
 use chatter::finder::geometry::P2;
 use chatter::finder::{FinderConfig, FinderOutcome, Seed, find_cone};
 use chatter::model::{FloatBody, translation_down};
@@ -95,4 +97,30 @@ fn failures_carry_reasons() {
     let tight = ExactifyConfig { max_rounds: 1, ..ExactifyConfig::default() };
     let e = exactify(&[body(3, "3/20", "1/20")], &polygon, &[], &tight).unwrap_err();
     assert!(matches!(e, ExactifyError::NoConvergence { rounds: 1, .. }), "{e:?}");
+}
+
+/// Close to a threshold, raising an offset by its excess again (the overshoot) makes the family's
+/// offsets grow geometrically until a cone reaches v = 0, while raising by the slack alone
+/// converges: the lander at gamma = 59/1000, about 1.3e-3 below its conjectural threshold
+/// (regression, issue 25 §4; `certify` retries without the overshoot).
+#[test]
+fn near_a_threshold_offsets_converge_without_the_overshoot() {
+    let g = Q::new(59, 1000);
+    let lander = chatter::bodies::general::general_catalogue(&g).unwrap().remove(3).body;
+    let family = FloatFamily::of(&lander);
+    let FamilyOutcome::Found { cones, .. } = find_family(&family, Seed::AllDown, &FinderConfig::default())
+    else {
+        panic!("the float search finds a family at gamma = 59/1000");
+    };
+    let down = lander.all_down_generators();
+    let seeds: Vec<Vec<_>> = (0..lander.n() as i64)
+        .map(|i| down.iter().map(|d| mat_vec(&lander.impact(i), d)).filter(|p| p[2] != Q::int(0)).collect())
+        .collect();
+    let bodies = std::slice::from_ref(&lander);
+    let cfg = ExactifyConfig { retry: false, ..ExactifyConfig::default() };
+    let over = exactify_family(bodies, &cones, &seeds, &cfg);
+    assert!(matches!(over, Err(ExactifyError::TransitionAbove { .. })), "{over:?}");
+    let creeping = ExactifyConfig { overshoot: false, ..cfg };
+    let ex = exactify_family(bodies, &cones, &seeds, &creeping).expect("converges without the overshoot");
+    assert!(ex.rounds > 1 && ex.cones.iter().all(|k| k.len() >= 3), "{ex:?}");
 }
