@@ -97,8 +97,11 @@ pub struct CertifyArgs {
     /// 3 <= n <= 64, at a point with rational kappa and gamma, or, for n = 3, 4, 6, on a box of
     /// them (one graph and one B for the whole box, version 3); general bodies (--body,
     /// --rectangle, --box, --polygon) at one gamma or, with --gamma a:b, for every gamma of the
-    /// interval (format chatter-family-time-to-rest, version 2 for an interval; the whole
-    /// search below runs with new nodes enlarged by 0.3, 0.5 and 0.1, and the least B is kept). Three graphs are tried in turn (nodes padded by 10^-3, 10^-4, 10^-5), then
+    /// interval (format chatter-family-time-to-rest, version 2 for an interval; an affine image
+    /// of a regular n-gon, n = 3, 4, 6, also gets the regular polygon's certificate transported,
+    /// one copy of its graph per contact; the whole search below runs with new nodes enlarged by
+    /// 0.3, 0.5 and 0.1, and the least B is kept). Three graphs are
+    /// tried in turn (nodes padded by 10^-3, 10^-4, 10^-5), then
     /// nine that merge an image no node holds into the node it enlarges least (area factors
     /// from 1.05 to 2.5; pad 10^-3); each search stops at 200 nodes and 12 rounds of the covector
     /// search (40 x 20 directions each);

@@ -29,7 +29,7 @@ fn verify_says_that_no_cone_certificate_proves_a_finite_accumulation_time() {
     let (mut seen, mut bounded) = (0, 0);
     // Time-to-rest certificates prove the finite time (rules G1-G5, docs/time-to-rest.md §5).
     let rest: Vec<&str> = out.lines().filter(|l| l.contains("rules G1-G5")).collect();
-    assert_eq!(rest.len(), 12, "{out}");
+    assert_eq!(rest.len(), 13, "{out}");
     assert!(
         rest.iter().all(|l| l.contains("accumulate within T <= ") && !l.contains(FINITE_TIME_NOT_DERIVED))
     );

@@ -15,7 +15,9 @@ mod graph;
 mod numerator;
 mod scale;
 mod tie;
+mod transported;
 
+use crate::certify::transport::regular_preimage;
 use crate::exact::{Algebraic, CosField, Q, QExt, QField, Ring};
 use crate::model::float::FloatPolygon;
 use chatter_kernel::certificate::{Body, Claim, Coordinates, Encoding, Generator, Param};
@@ -87,8 +89,10 @@ pub struct Config {
     /// the list order of `pads` then `merges`.
     pub smallest_first: bool,
     /// For a general body: where none of the enlargements 0.3, 0.5, 0.1 gives a certificate,
-    /// also try the fallback 0.05 (`GENERAL_FALLBACK`; off in surveys, whose points above the
-    /// threshold would all pay for it).
+    /// also try the fallback 0.05 (`GENERAL_FALLBACK`), and search even where the certificate
+    /// transported from a regular polygon is accepted (off in surveys, whose points above the
+    /// threshold would all pay for the first, and which take the transported certificate as it
+    /// is).
     pub fallback: bool,
 }
 
@@ -356,7 +360,10 @@ type Finished<E> = (Vec<exactify::Node<E>>, Vec<exactify::Edge<E>>, Vec<[E; 3]>,
 /// its γ, or, given the body at both ends of an interval of γ (`ends`, the same body but for
 /// γ), for every γ of the interval (version 2: one graph and one B, the float graph built with
 /// the images at both ends, which hold the images at every γ between since I_j is affine in γ;
-/// searched at the middle, checked exactly at both ends).
+/// searched at the middle, checked exactly at both ends). An affine image of a regular n-gon
+/// (n = 3, 4, 6) also gets the regular polygon's certificate transported (`transported.rs`): in
+/// a survey (`cfg.fallback` off) that is the answer when the kernel accepts it; otherwise the
+/// search runs too and the least B is kept.
 pub fn produce_family(
     ends: &[ConvexBody<Q>],
     tensor: Option<[Q; 6]>,
@@ -394,7 +401,20 @@ pub fn produce_family(
             FloatFrames::of(&body.map_err(|e| failed(format!("the body at the interval's middle: {e:?}")))?)
         }
     };
-    let (mut best, mut why): (Option<Produced<FamilyTimeToRest>>, Vec<String>) = (None, Vec::new());
+    let mut why = Vec::new();
+    let moved = match regular_preimage(lo) {
+        None => None,
+        Some(pre) => match transported::transported(ends, &pre, tensor.as_ref(), cfg, backends) {
+            Ok(p) if !cfg.fallback => return Ok(p),
+            Ok(p) => Some(p),
+            Err(NotProduced::Failed(m)) => {
+                why.push(format!("transport from the regular n = {} polygon: {m}", pre.n));
+                None
+            }
+            Err(e) => return Err(e),
+        },
+    };
+    let mut best: Option<Produced<FamilyTimeToRest>> = None;
     for (k, enlarge) in GENERAL_ENLARGEMENTS.into_iter().chain(GENERAL_FALLBACK).enumerate() {
         if k >= GENERAL_ENLARGEMENTS.len() && (best.is_some() || !cfg.fallback) {
             break;
@@ -407,7 +427,11 @@ pub fn produce_family(
             Err(e) => return Err(e),
         }
     }
-    best.ok_or_else(|| NotProduced::Failed(why.join("; ")))
+    let least = |a: Produced<_>, b: Produced<_>| if b.bound < a.bound { b } else { a };
+    match (moved, best) {
+        (Some(a), Some(b)) => Ok(least(a, b)),
+        (a, b) => a.or(b).ok_or_else(|| NotProduced::Failed(why.join("; "))),
+    }
 }
 
 /// The enlargements of a new node tried for a general body, keeping the least B of those the
@@ -430,14 +454,32 @@ fn family_certificate(
     bound: &Q,
     (nodes, edges, a): Graph<'_, Q>,
 ) -> FamilyTimeToRest {
-    let text = |v: &[Q; 3]| Generator(v.iter().map(ToString::to_string).collect());
     let node = |(r, x): (usize, &exactify::Node<Q>)| FamilyNode {
         contact: x.label,
-        cone: x.cone.vertices.iter().map(text).collect(),
-        weight: text(&x.weight),
-        numerator: text(&a[r]),
+        cone: x.cone.vertices.iter().map(generator).collect(),
+        weight: generator(&x.weight),
+        numerator: generator(&a[r]),
         next: edges.iter().filter(|e| e.from == r).map(|e| (e.step as u64, e.to)).collect(),
     };
+    let nodes = nodes.iter().enumerate().map(node).collect();
+    family_file((body, hi), tensor, claim, bound, ((0..body.n()).collect(), nodes), PRODUCER)
+}
+
+/// Three exact numbers as a generator's canonical text.
+fn generator(v: &[Q; 3]) -> Generator {
+    Generator(v.iter().map(ToString::to_string).collect())
+}
+
+/// A general body's file (over [γ, `hi`] when `hi` is given, version 2) with these entries and
+/// nodes.
+fn family_file(
+    (body, hi): (&ConvexBody<Q>, Option<&Q>),
+    tensor: Option<&[Q; 6]>,
+    claim: Claim,
+    bound: &Q,
+    (entries, nodes): (Vec<usize>, Vec<FamilyNode>),
+    producer: &str,
+) -> FamilyTimeToRest {
     let s = |q: &Q| q.to_string();
     let j = body.inertia();
     let (gamma, version) = match hi {
@@ -456,9 +498,9 @@ fn family_certificate(
         coordinates: ConvexCoordinates::PaperVelocities,
         claim,
         bound: bound.to_string(),
-        entries: (0..body.n()).collect(),
-        nodes: nodes.iter().enumerate().map(node).collect(),
-        producer: PRODUCER.into(),
+        entries,
+        nodes,
+        producer: producer.into(),
     }
 }
 
