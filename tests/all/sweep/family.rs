@@ -190,6 +190,18 @@ fn a_family_maps_drops_are_proved_cc_by_a_time_to_rest_certificate_below_the_thr
     assert_eq!(s["computed"]["proof_budget"], 300, "{s}");
 }
 
+/// Next to the boundary a family map runs the exactifier's retries (regression, 2026-11-28): the
+/// cell (spread 193/200, gamma 27/500) of the 50 x 50 lander map (docs/map.md), whose first
+/// exactifier run fails, is certified, as it is by `certify`.
+#[test]
+fn a_family_map_certifies_next_to_the_boundary_with_the_exactifiers_retries() {
+    let d = tempfile::tempdir().unwrap();
+    let args = ["--family", "lander:spread=0.95:0.98:1", "--gamma", "0.052:0.056:1", "--certify"];
+    let rows = map(d.path(), "edge", &args);
+    assert_eq!((rows.len(), rows[0].kappa.clone(), rows[0].gamma.clone()), (1, q("193/200"), q("27/500")));
+    assert_eq!(rows[0].certified, Some(true), "{:?}", rows[0]);
+}
+
 #[test]
 fn bad_family_options_exit_2_with_a_message() {
     let d = tempfile::tempdir().unwrap();
