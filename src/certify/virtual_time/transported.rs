@@ -57,22 +57,16 @@ pub(super) fn transported(
 }
 
 /// The regular graph's nodes as the nodes (i, r), r = 0..N−1, of the last contact i (node
-/// i N + r of the file); `None` if a number of the file is not rational.
+/// i N + r of the file); `None` if a number of the file is not rational (or a numerator is
+/// missing).
 fn copies(body: &ConvexBody<Q>, i: usize, rest: &TimeToRest) -> Option<Vec<FamilyNode>> {
     let (n, count) = (body.n(), rest.nodes.len());
     let c = body.contacts();
     let node = |x: &Node| {
         let cone =
             x.cone.iter().map(|g| Some(generator(&from_contact_speeds(&c[i], &c[(i + 1) % n], &vector(g)?))));
-        let b = vector(&x.weight)?;
-        // Version 1 gives the scale c_r and a_r = c_r b_r.
-        let a = match x.numerator.0.is_empty() {
-            true => {
-                let c: Q = x.scale.parse().ok()?;
-                b.clone().map(|bk| bk.times(&c))
-            }
-            false => vector(&x.numerator)?,
-        };
+        // The producer writes versions 2 and 3, which give the numerator a_r itself.
+        let (b, a) = (vector(&x.weight)?, vector(&x.numerator)?);
         let next = x.next.iter().map(|&(j, s)| {
             let to = (i + j as usize) % n;
             (to as u64, to * count + s)
