@@ -318,11 +318,16 @@ pub(super) fn rest_line<C: virtual_time::RestFile>(
 ) -> String {
     match r {
         Ok(p) => format!(
-            "\ntime_to_rest_bound: {} (about {}): every all-down drop's impacts accumulate within B h/|v| of its first impact (time-to-rest certificate, claim {}, a virtual-time graph of {} nodes accepted by the kernel on both backends) -> {}",
+            "\ntime_to_rest_bound: {} (about {}): every all-down drop's impacts accumulate within B h/|v| of its first impact (time-to-rest certificate, claim {}, a virtual-time graph of {} nodes{} accepted by the kernel on both backends) -> {}",
             p.bound,
             p.bound.decimal(6, Rounding::Up),
             p.cert.claim().name(),
             p.nodes,
+            if p.cert.transported() {
+                ", the regular polygon's graph transported to this affine image of it, one copy per contact,"
+            } else {
+                ""
+            },
             path.display()
         ),
         Err(e) => format!("\ntime to rest: NOT CERTIFIED, no bound derived: {e}"),

@@ -369,4 +369,17 @@ fn an_affine_image_gets_the_regular_polygons_bound_by_transport() {
     let lander = chatter::bodies::general::general_catalogue(&Q::new(1, 50)).unwrap().remove(3).body;
     let p = produce_family(std::slice::from_ref(&lander), None, &survey, &BOTH).unwrap();
     assert!(!p.cert.producer.contains("transported"), "{}", p.cert.producer);
+    // `certify` says which graph it wrote.
+    let dir = tempfile::tempdir().unwrap();
+    let args = ["certify", "--rectangle", "4,1", "--gamma", "1/100", "--time-to-rest"];
+    let out = Command::new(env!("CARGO_BIN_EXE_chatter"))
+        .args(args)
+        .arg(dir.path().join("r.ron"))
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("(about 10.319624)") && text.contains("graph transported to this affine image"),
+        "{text}"
+    );
 }

@@ -128,6 +128,10 @@ pub struct Produced<C = TimeToRest> {
 /// The claim of a time-to-rest file (of a regular polygon or of a general body).
 pub trait RestFile {
     fn claim(&self) -> Claim;
+    /// Whether the file is a regular polygon's certificate transported to an affine image of it.
+    fn transported(&self) -> bool {
+        false
+    }
 }
 
 impl RestFile for TimeToRest {
@@ -139,6 +143,9 @@ impl RestFile for TimeToRest {
 impl RestFile for FamilyTimeToRest {
     fn claim(&self) -> Claim {
         self.claim
+    }
+    fn transported(&self) -> bool {
+        self.producer == transported::PRODUCER
     }
 }
 

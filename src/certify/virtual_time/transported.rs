@@ -22,7 +22,7 @@ use chatter_kernel::rest_family::{FamilyNode, FamilyTimeToRest};
 use chatter_kernel::verify::{Backend, verify_rest_family_text_in};
 
 /// The `producer` field of a transported file.
-const PRODUCER: &str =
+pub(super) const PRODUCER: &str =
     "chatter certify --time-to-rest (the regular polygon's certificate, transported to its affine image)";
 
 /// The regular polygon `pre`'s time-to-rest certificate over the γ of `ends` (one body, or the
